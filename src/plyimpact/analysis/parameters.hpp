@@ -1,0 +1,70 @@
+#pragma once
+// Plain parameter sets of the analyses (SPEC §4, §7, §8, §10). SI units throughout.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+enum class AnalysisKind { impact, static_, modal, buckling, laminate, threshold };
+
+/// Rigid spherical impactor (SPEC §4).
+struct Impactor {
+  double mass = 0.0;     ///< [kg]
+  double radius = 0.0;   ///< [m]
+  double E = 0.0;        ///< Young's modulus [Pa]
+  double nu = 0.3;       ///< Poisson ratio [-]
+  double velocity = 0.0; ///< initial velocity, positive towards the plate (+z) [m/s]
+  double x = 0.0;        ///< impact point [m]
+  double y = 0.0;        ///< [m]
+};
+
+enum class UnloadingLaw { tan_sun, elastic };
+enum class ContactLoad { point, hertz_pressure };
+
+/// Contact law (2.5)–(2.7): loading k α^1.5, Tan–Sun unloading, Yang–Sun reloading.
+struct ContactLawParameters {
+  std::optional<double> k;      ///< [N/m^1.5]; empty = "auto" (modified Hertz constant)
+  UnloadingLaw unloading = UnloadingLaw::tan_sun;
+  double q = 2.5;               ///< unloading exponent
+  double beta = 0.094;          ///< permanent-indentation factor
+  double alpha_cr = 1.7e-4;     ///< critical indentation [m]
+  ContactLoad load = ContactLoad::point;
+};
+
+/// Newmark time stepping (2.11)–(2.16).
+struct TimeStepping {
+  std::optional<double> dt;  ///< [s]; empty = "auto"
+  std::optional<double> end; ///< [s]; empty = "auto" (SPEC §4 end-of-event rule)
+  double newmark_beta = 0.25;
+  double newmark_gamma = 0.5;
+  long max_steps = 2'000'000;
+};
+
+struct PointLoad {
+  double x = 0.0, y = 0.0, force = 0.0; ///< [m], [m], [N] (positive along +z, the impact direction)
+};
+struct PatchLoad {
+  double x = 0.0, y = 0.0, dx = 0.0, dy = 0.0, force = 0.0; ///< centre, size [m], total force [N]
+};
+struct StaticLoad {
+  double pressure = 0.0; ///< uniform pressure on the top face, positive along +z [Pa]
+  std::optional<PointLoad> point;
+  std::optional<PatchLoad> patch;
+};
+
+struct ModalSettings {
+  int count = 10;
+};
+
+struct BucklingSettings {
+  double Nx = 0.0, Ny = 0.0, Nxy = 0.0; ///< reference in-plane loads [N/m], compression negative
+  int count = 5;
+};
+
+struct DamageSettings {
+  std::vector<std::string> criteria; ///< deck names, e.g. "choi-chang-matrix"
+  int every = 1;
+};
+
+} // namespace plyimpact

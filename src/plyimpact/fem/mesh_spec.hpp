@@ -1,0 +1,28 @@
+#pragma once
+// What the user asks of the plate and its mesh (SPEC §3, §10 [plate], [mesh]).
+namespace plyimpact {
+
+/// Rectangular plate 0 ≤ x ≤ a, 0 ≤ y ≤ b (mid-plane is z = 0).
+struct PlateGeometry {
+  double a = 0.0; ///< length along x [m]
+  double b = 0.0; ///< width along y [m]
+};
+
+enum class MassMatrix {
+  lumped,     ///< diagonal, 3-point Lobatto quadrature (thesis (3.7)/(3.8), default)
+  consistent, ///< 3×3 Gauss
+};
+
+enum class ElementFormulation {
+  q9,    ///< 9-node Lagrange, 3×3 Gauss membrane/bending, 2×2 Gauss shear (thesis)
+  mitc9, ///< 9-node with mixed-interpolated tensorial shear components (Bucalem & Bathe)
+};
+
+struct MeshSpec {
+  int nx = 15; ///< elements along x
+  int ny = 11; ///< elements along y
+  MassMatrix mass = MassMatrix::lumped;
+  ElementFormulation element = ElementFormulation::q9;
+};
+
+} // namespace plyimpact

@@ -1,0 +1,74 @@
+#pragma once
+// Input decks (TOML, SPEC §10): one file describes a whole analysis. See docs/deck.md.
+#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/mesh_spec.hpp"
+#include "plyimpact/laminate/laminate.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace plyimpact {
+
+/// A deck that cannot be used. what() reads "FILE:LINE:COLUMN: error: ..." naming what was expected.
+class DeckError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Per-ply overrides of the layup's default material and thickness ([[laminate.override]]).
+struct PlyOverride {
+  std::vector<int> plies; ///< 1-based ply numbers (1 = impacted face)
+  std::optional<std::string> material;
+  std::optional<double> thickness;
+};
+
+/// The laminate as written in the deck, kept for reports and parameter sweeps.
+struct LaminateSpec {
+  std::string material;
+  std::string layup;
+  double ply_thickness = 0.0;
+  double shear_correction = 5.0 / 6.0;
+  ReducedStiffnessModel reduced_stiffness = ReducedStiffnessModel::exact;
+  std::vector<PlyOverride> overrides;
+};
+
+struct Deck {
+  std::string source;  ///< file name used in messages
+  std::string title;
+  AnalysisKind analysis = AnalysisKind::impact;
+  std::vector<Material> materials;
+  std::optional<LaminateSpec> laminate_spec;
+  std::optional<Laminate> laminate;
+  std::optional<PlateGeometry> plate;
+  std::optional<MeshSpec> mesh;
+  std::optional<BoundaryConditions> boundary;
+  std::optional<Impactor> impactor;
+  ContactLawParameters contact;
+  TimeStepping time;
+  std::optional<StaticLoad> load;
+  ModalSettings modal;
+  std::optional<BucklingSettings> buckling;
+  DamageSettings damage;
+  std::string output_dir = "results";
+  std::string text; ///< the deck's own text, recorded next to results
+};
+
+/// Parses a deck from text; `source` names it in messages. Throws DeckError.
+[[nodiscard]] Deck parse_deck(std::string_view text, const std::string& source);
+/// Reads and parses a deck file. Throws DeckError (also for an unreadable file).
+[[nodiscard]] Deck load_deck(const std::filesystem::path& path);
+/// Checks that every section `kind` needs is present; throws DeckError naming the missing ones.
+void require_sections(const Deck& deck, AnalysisKind kind);
+
+[[nodiscard]] std::string_view to_string(AnalysisKind kind);
+[[nodiscard]] std::optional<AnalysisKind> parse_analysis_kind(std::string_view name);
+
+/// Edit distance used for "did you mean" suggestions (case-insensitive).
+[[nodiscard]] std::size_t edit_distance(std::string_view a, std::string_view b);
+
+} // namespace plyimpact

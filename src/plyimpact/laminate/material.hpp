@@ -1,0 +1,37 @@
+#pragma once
+// Orthotropic ply material (SPEC §2, thesis chapter 1) and its strengths (SPEC §6).
+#include <optional>
+#include <string>
+
+namespace plyimpact {
+
+/// Ply strengths in material axes, all positive (compressive values given as magnitudes).
+/// Each is optional: a failure criterion that needs a missing strength reports which one.
+struct Strengths {
+  std::optional<double> Xt;  ///< longitudinal tension [Pa]
+  std::optional<double> Xc;  ///< longitudinal compression [Pa]
+  std::optional<double> Yt;  ///< transverse tension [Pa]
+  std::optional<double> Yc;  ///< transverse compression [Pa]
+  std::optional<double> S12; ///< in-plane shear strength S_L [Pa]
+  std::optional<double> S23; ///< transverse shear strength S_T (S_i of Choi–Chang) [Pa]
+  std::optional<double> Zt;  ///< through-thickness tension [Pa]
+  std::optional<double> Da;  ///< Choi–Chang delamination constant (2.43) [-]
+};
+
+/// Transversely isotropic / orthotropic ply material (SI).
+struct Material {
+  std::string name;
+  double E1 = 0.0;   ///< fibre-direction modulus [Pa]
+  double E2 = 0.0;   ///< transverse modulus [Pa]
+  double G12 = 0.0;  ///< in-plane shear modulus [Pa]
+  double G13 = 0.0;  ///< transverse shear modulus, 1–3 plane [Pa]
+  double G23 = 0.0;  ///< transverse shear modulus, 2–3 plane [Pa]
+  double nu12 = 0.0; ///< major Poisson ratio [-]
+  double rho = 0.0;  ///< density [kg/m³]
+  Strengths strength{};
+
+  /// Minor Poisson ratio ν21 = ν12·E2/E1 (1.3).
+  [[nodiscard]] double nu21() const { return nu12 * E2 / E1; }
+};
+
+} // namespace plyimpact

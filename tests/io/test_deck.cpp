@@ -1,0 +1,176 @@
+// Input decks: the SPEC §10 vocabulary is read as written, bad input names file, line, column and
+// the expected form.
+#include "plyimpact/io/deck.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+// Line numbers matter: the error cases below refer to them.
+const std::string base_deck = R"(analysis = "impact"
+[materials.T300_976]
+E1 = 144.8e9
+E2 = 9.65e9
+G12 = 7.10e9
+G23 = 5.92e9
+nu12 = 0.30
+rho = 1389.2
+[laminate]
+material = "T300_976"
+layup = "[0_2/90_4/0_2]"
+ply_thickness = 0.465e-3
+[plate]
+a = 0.127
+b = 0.0762
+[mesh]
+nx = 15
+ny = 11
+[boundary]
+x0 = "ss"
+xa = "ss"
+y0 = "clamped"
+yb = "10101"
+[impactor]
+mass = 6.14
+radius = 12.7e-3
+E = 207e9
+nu = 0.3
+velocity = 1.76
+[contact]
+k = 0.6e9
+[time]
+dt = 1.0e-6
+end = "auto"
+)";
+
+std::string replace_line(const std::string& text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  std::string out = text;
+  out.replace(pos, from.size(), to);
+  return out;
+}
+
+TEST(Deck, ReadsTheSpecVocabulary) {
+  const Deck d = parse_deck(base_deck, "deck.toml");
+  EXPECT_EQ(d.analysis, AnalysisKind::impact);
+  ASSERT_EQ(d.materials.size(), 1U);
+  EXPECT_EQ(d.materials[0].G13, 7.10e9); // default G13 = G12
+  ASSERT_TRUE(d.laminate);
+  EXPECT_EQ(d.laminate->ply_count(), 8U);
+  EXPECT_NEAR(d.laminate->thickness(), 3.72e-3, 1e-15);
+  EXPECT_EQ(d.mesh->nx, 15);
+  EXPECT_EQ(d.mesh->mass, MassMatrix::lumped);
+  EXPECT_EQ(d.boundary->edge(Edge::x0).code(), "01101");
+  EXPECT_EQ(d.boundary->edge(Edge::y0).code(), "11111");
+  EXPECT_EQ(d.boundary->edge(Edge::yb).code(), "10101");
+  EXPECT_EQ(d.impactor->mass, 6.14);
+  EXPECT_NEAR(d.impactor->x, 0.0635, 1e-15); // default impact point: plate centre
+  EXPECT_NEAR(d.impactor->y, 0.0381, 1e-15);
+  EXPECT_EQ(*d.contact.k, 0.6e9);
+  EXPECT_EQ(*d.time.dt, 1.0e-6);
+  EXPECT_FALSE(d.time.end.has_value());
+  EXPECT_EQ(d.time.newmark_beta, 0.25);
+  EXPECT_NO_THROW(require_sections(d, AnalysisKind::impact));
+}
+
+TEST(Deck, ImpactorMassFromDensityIsTheSphereMass) {
+  const Deck d = parse_deck(replace_line(base_deck, "mass = 6.14", "density = 7870.0"), "deck.toml");
+  EXPECT_NEAR(d.impactor->mass, 7870.0 * 4.0 / 3.0 * 3.14159265358979 * std::pow(12.7e-3, 3), 1e-12);
+}
+
+TEST(Deck, PlyOverridesChangeMaterialAndThickness) {
+  const std::string deck = base_deck + R"([materials.glass]
+E1 = 40e9
+E2 = 10e9
+G12 = 4e9
+nu12 = 0.25
+rho = 2000
+[[laminate.override]]
+plies = [1, 8]
+material = "glass"
+thickness = 1e-3
+)";
+  const Deck d = parse_deck(deck, "deck.toml");
+  EXPECT_EQ(d.laminate->material_of(0).name, "glass");
+  EXPECT_EQ(d.laminate->material_of(1).name, "T300_976");
+  EXPECT_EQ(d.laminate->material_of(7).name, "glass");
+  EXPECT_NEAR(d.laminate->thickness(), 6 * 0.465e-3 + 2e-3, 1e-15);
+}
+
+struct BadDeck {
+  const char* name;
+  std::string from, to;  // line edit applied to base_deck ("" = append `to`)
+  std::string expected;  // substring of the message, with location
+};
+
+class DeckErrors : public ::testing::TestWithParam<BadDeck> {};
+
+TEST_P(DeckErrors, NameFileLineColumnAndWhatWasExpected) {
+  const BadDeck& c = GetParam();
+  const std::string text = c.from.empty() ? base_deck + c.to : replace_line(base_deck, c.from, c.to);
+  try {
+    const Deck d = parse_deck(text, "deck.toml");
+    require_sections(d, AnalysisKind::impact);
+    FAIL() << "accepted";
+  } catch (const DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Deck, DeckErrors,
+    ::testing::Values(
+        BadDeck{"InvalidToml", "nu12 = 0.30", "nu12 = = 0.30", "deck.toml:7:"},
+        BadDeck{"UnknownKey", "a = 0.127", "aa = 0.127", "deck.toml:14:1: error: unknown key 'aa' in [plate] (did you mean 'a'?)"},
+        BadDeck{"UnknownSection", "[impactor]", "[impacter]", "unknown key 'impacter' in [] (did you mean 'impactor'?)"},
+        BadDeck{"UnknownKeyFarFromAll", "a = 0.127", "zzzzzz = 1", "expected one of: a, b"},
+        BadDeck{"MissingKey", "E1 = 144.8e9\n", "", "deck.toml:2:1: error: missing key materials.T300_976.E1 (a number in Pa)"},
+        BadDeck{"WrongType", "E1 = 144.8e9", "E1 = \"big\"", "deck.toml:3:6: error: materials.T300_976.E1 must be a number in Pa, got a string"},
+        BadDeck{"NegativeSize", "a = 0.127", "a = -0.127", "deck.toml:14:5: error: plate.a must be positive"},
+        BadDeck{"ZeroThickness", "ply_thickness = 0.465e-3", "ply_thickness = 0", "laminate.ply_thickness must be positive"},
+        BadDeck{"NonPhysicalPoisson", "nu12 = 0.30", "nu12 = 4.0", "deck.toml:7:8: error: material 'T300_976' is not physical: 1 - nu12*nu21"},
+        BadDeck{"NegativeModulus", "E2 = 9.65e9", "E2 = -9.65e9", "materials.T300_976.E2 must be positive"},
+        BadDeck{"NonFinite", "E2 = 9.65e9", "E2 = inf", "must be a finite number"},
+        BadDeck{"BadLayup", "layup = \"[0_2/90_4/0_2]\"", "layup = \"[0_2/90_4/0_2\"", "deck.toml:11:23: error: layup \"[0_2/90_4/0_2\", column 14: expected '/' between plies or ']'"},
+        BadDeck{"UnknownMaterial", "material = \"T300_976\"", "material = \"T300_967\"", "unknown material 'T300_967' (did you mean 'T300_976'?)"},
+        BadDeck{"ZeroElements", "nx = 15", "nx = 0", "deck.toml:17:6: error: mesh.nx must be an element count from 1 to 2000"},
+        BadDeck{"FractionalElements", "nx = 15", "nx = 15.5", "mesh.nx must be an integer, got a number"},
+        BadDeck{"AbsurdMesh", "nx = 15", "nx = 1000000000", "mesh.nx must be an element count from 1 to 2000"},
+        BadDeck{"BadEdge", "x0 = \"ss\"", "x0 = \"simply\"", "deck.toml:20:6: error: boundary.x0 must be ss | ss-soft | clamped | free or a 5-character code"},
+        BadDeck{"BadEdgeCode", "yb = \"10101\"", "yb = \"10201\"", "boundary.yb must be"},
+        BadDeck{"NegativeMass", "mass = 6.14", "mass = -6.14", "deck.toml:25:8: error: impactor.mass must be positive"},
+        BadDeck{"ZeroVelocity", "velocity = 1.76", "velocity = 0.0", "impactor.velocity must be positive"},
+        BadDeck{"MassAndDensity", "mass = 6.14", "mass = 6.14\ndensity = 7870", "give impactor.mass or impactor.density, not both"},
+        BadDeck{"ImpactOutsidePlate", "velocity = 1.76", "velocity = 1.76\nx = 0.2", "deck.toml:30:5: error: impact point x = 0.2 m lies outside the plate"},
+        BadDeck{"ZeroTimeStep", "dt = 1.0e-6", "dt = 0.0", "deck.toml:33:6: error: time.dt must be positive"},
+        BadDeck{"NegativeTimeStep", "dt = 1.0e-6", "dt = -1e-6", "time.dt must be positive"},
+        BadDeck{"AutoMisspelt", "end = \"auto\"", "end = \"atuo\"", "time.end must be a positive number in s or \"auto\""},
+        BadDeck{"AbsurdStepCount", "end = \"auto\"", "end = 1e6", "more than the limit of 100000000 steps"},
+        BadDeck{"BadNewmarkGamma", "end = \"auto\"", "newmark_gamma = 0.4", "time.newmark_gamma must be at least 0.5"},
+        BadDeck{"BadAnalysis", "analysis = \"impact\"", "analysis = \"explode\"", "deck.toml:1:12: error: analysis must be one of impact"},
+        BadDeck{"MissingSection", "[impactor]\nmass = 6.14\nradius = 12.7e-3\nE = 207e9\nnu = 0.3\nvelocity = 1.76\n", "", "deck.toml: error: the impact analysis needs [impactor]"},
+        BadDeck{"BadChoice", "nx = 15", "nx = 15\nmass = \"diagonal\"", "mesh.mass must be one of lumped | consistent, got \"diagonal\""},
+        BadDeck{"BadOverride", "", "[[laminate.override]]\nplies = [9]\n", "laminate.override.plies: expected ply numbers from 1 to 8"}),
+    [](const ::testing::TestParamInfo<BadDeck>& p) { return p.param.name; });
+
+TEST(Deck, UnreadableFileIsAClearError) {
+  try {
+    (void)load_deck("/nonexistent/deck.toml");
+    FAIL();
+  } catch (const DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/deck.toml: error: cannot open"), std::string::npos);
+  }
+}
+
+TEST(Deck, EditDistanceCountsSingleEdits) {
+  EXPECT_EQ(edit_distance("impacter", "impactor"), 1U);
+  EXPECT_EQ(edit_distance("E1", "e1"), 0U);
+  EXPECT_EQ(edit_distance("", "abc"), 3U);
+}
+
+} // namespace
+} // namespace plyimpact
