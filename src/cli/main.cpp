@@ -2,19 +2,34 @@
 //
 //   plyimpact laminate examples/annex2.toml          # ABD, F, inertias, Hertz constant
 //   plyimpact laminate examples/annex2.toml --json   # the same as JSON (SI)
+//   plyimpact static   examples/static-navier.toml -o results/static
+//   plyimpact modal    examples/modal-navier.toml  -o results/modal
+//   plyimpact buckling examples/buckling-isotropic.toml -o results/buckling
+#include "plyimpact/analysis/buckling_analysis.hpp"
+#include "plyimpact/analysis/modal_analysis.hpp"
+#include "plyimpact/analysis/static_analysis.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/laminate_report.hpp"
+#include "plyimpact/io/plate_from_deck.hpp"
+#include "plyimpact/io/results.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 
 namespace {
 
 using namespace plyimpact;
+
+struct Options {
+  std::string deck_path;
+  std::string output_dir;
+  bool json = false;
+};
 
 Deck read_deck_for(const std::string& path, AnalysisKind kind) {
   Deck deck = load_deck(path);
@@ -22,33 +37,104 @@ Deck read_deck_for(const std::string& path, AnalysisKind kind) {
   return deck;
 }
 
-int run_laminate(const std::string& deck_path, bool json) {
-  const Deck deck = read_deck_for(deck_path, AnalysisKind::laminate);
-  fmt::print("{}", json ? laminate_report_json(deck) : laminate_report_text(deck));
+std::optional<ResultsFolder> results_folder(const Options& o, const Deck& deck) {
+  if (o.output_dir.empty()) return std::nullopt;
+  return ResultsFolder(o.output_dir, deck);
+}
+
+int run_laminate(const Options& o) {
+  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::laminate);
+  fmt::print("{}", o.json ? laminate_report_json(deck) : laminate_report_text(deck));
   return 0;
 }
 
-} // namespace
+int run_static(const Options& o) {
+  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::static_);
+  const PlateModel model = plate_from_deck(deck);
+  const StaticResult r = solve_static(model, *deck.load);
+  fmt::print("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
+  fmt::print("  center_deflection     = {:.6e} m\n", r.center_deflection);
+  fmt::print("  load_point_deflection = {:.6e} m\n", r.load_point_deflection);
+  fmt::print("  max_abs_deflection    = {:.6e} m\n", r.max_abs_deflection);
+  if (const auto out = results_folder(o, deck)) {
+    nlohmann::json j = summary_header(deck, "static");
+    j["center_deflection"] = r.center_deflection;
+    j["load_point_deflection"] = r.load_point_deflection;
+    j["max_abs_deflection"] = r.max_abs_deflection;
+    j["dofs"] = model.size();
+    out->write_nodal_field("displacements.csv", model, r.u);
+    out->write_json("summary.json", j);
+  }
+  return 0;
+}
 
-int main(int argc, char** argv) {
+int run_modal(const Options& o) {
+  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::modal);
+  const PlateModel model = plate_from_deck(deck);
+  const ModalResult r = solve_modal(model, deck.modal.count);
+  fmt::print("modal: {} elements, {} free DOFs, {} zero-energy modes (rigid-body or spurious)\n",
+             model.mesh().element_count(), model.size(), r.zero_energy_modes);
+  for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k)
+    fmt::print("  mode {:>3}: {:12.4f} Hz\n", k + 1, r.frequencies_hz[k]);
+  if (const auto out = results_folder(o, deck)) {
+    nlohmann::json j = summary_header(deck, "modal");
+    j["frequencies_hz"] = r.frequencies_hz;
+    j["zero_energy_modes"] = r.zero_energy_modes;
+    out->write_mode_shapes("modes.csv", model, r.modes, "mode");
+    out->write_json("summary.json", j);
+  }
+  return 0;
+}
+
+int run_buckling(const Options& o) {
+  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::buckling);
+  const PlateModel model = plate_from_deck(deck);
+  const BucklingResult r = solve_buckling(model, *deck.buckling);
+  const auto& b = *deck.buckling;
+  fmt::print("buckling: reference load Nx = {} N/m, Ny = {} N/m, Nxy = {} N/m\n", b.Nx, b.Ny, b.Nxy);
+  for (std::size_t k = 0; k < r.load_factors.size(); ++k)
+    fmt::print("  mode {:>3}: load factor {:12.6g}  (Nx_cr = {:.6g} N/m)\n", k + 1, r.load_factors[k],
+               r.load_factors[k] * b.Nx);
+  if (const auto out = results_folder(o, deck)) {
+    nlohmann::json j = summary_header(deck, "buckling");
+    j["load_factors"] = r.load_factors;
+    j["reference_load"] = {{"Nx", b.Nx}, {"Ny", b.Ny}, {"Nxy", b.Nxy}};
+    out->write_mode_shapes("modes.csv", model, r.modes, "buckling");
+    out->write_json("summary.json", j);
+  }
+  return 0;
+}
+
+CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
+  CLI::App* sub = app.add_subcommand(name, what);
+  sub->add_option("deck", o.deck_path, "TOML input deck")->required();
+  sub->add_option("-o,--output", o.output_dir, "results folder (summary.json, CSV tables)");
+  return sub;
+}
+
+int run(int argc, char** argv) {
   CLI::App app{"plyimpact: low-velocity impact analysis of laminated composite plates"};
   app.set_version_flag("--version", std::string("plyimpact ") + PLYIMPACT_VERSION);
   app.require_subcommand(1);
-
-  std::string deck_path;
-  bool json = false;
-  auto* laminate = app.add_subcommand("laminate", "Ply and laminate properties (A, B, D, F, inertias, Hertz k)");
-  laminate->add_option("deck", deck_path, "TOML input deck")->required();
-  laminate->add_flag("--json", json, "print JSON (SI units) instead of text");
+  Options o;
+  CLI::App* laminate =
+      app.add_subcommand("laminate", "Ply and laminate properties (A, B, D, F, inertias, Hertz k)");
+  laminate->add_option("deck", o.deck_path, "TOML input deck")->required();
+  laminate->add_flag("--json", o.json, "print JSON (SI units) instead of text");
+  CLI::App* stat = add_analysis(app, "static", "Linear static analysis (point, patch, pressure loads)", o);
+  CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
+  CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-
   try {
-    if (*laminate) return run_laminate(deck_path, json);
+    if (*laminate) return run_laminate(o);
+    if (*stat) return run_static(o);
+    if (*modal) return run_modal(o);
+    if (*buckling) return run_buckling(o);
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return 2;
@@ -57,4 +143,15 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    std::fputs("plyimpact: internal error\n", stderr);
+    return 1;
+  }
 }

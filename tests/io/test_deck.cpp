@@ -103,8 +103,8 @@ thickness = 1e-3
 
 struct BadDeck {
   const char* name;
-  std::string from, to;  // line edit applied to base_deck ("" = append `to`)
-  std::string expected;  // substring of the message, with location
+  std::string from, to; // line edit applied to base_deck ("" = append `to`)
+  std::string expected; // substring of the message, with location
 };
 
 class DeckErrors : public ::testing::TestWithParam<BadDeck> {};
@@ -125,36 +125,59 @@ INSTANTIATE_TEST_SUITE_P(
     Deck, DeckErrors,
     ::testing::Values(
         BadDeck{"InvalidToml", "nu12 = 0.30", "nu12 = = 0.30", "deck.toml:7:"},
-        BadDeck{"UnknownKey", "a = 0.127", "aa = 0.127", "deck.toml:14:1: error: unknown key 'aa' in [plate] (did you mean 'a'?)"},
-        BadDeck{"UnknownSection", "[impactor]", "[impacter]", "unknown key 'impacter' in [] (did you mean 'impactor'?)"},
+        BadDeck{"UnknownKey", "a = 0.127", "aa = 0.127",
+                "deck.toml:14:1: error: unknown key 'aa' in [plate] (did you mean 'a'?)"},
+        BadDeck{"UnknownSection", "[impactor]", "[impacter]",
+                "unknown key 'impacter' in [] (did you mean 'impactor'?)"},
         BadDeck{"UnknownKeyFarFromAll", "a = 0.127", "zzzzzz = 1", "expected one of: a, b"},
-        BadDeck{"MissingKey", "E1 = 144.8e9\n", "", "deck.toml:2:1: error: missing key materials.T300_976.E1 (a number in Pa)"},
-        BadDeck{"WrongType", "E1 = 144.8e9", "E1 = \"big\"", "deck.toml:3:6: error: materials.T300_976.E1 must be a number in Pa, got a string"},
+        BadDeck{"MissingKey", "E1 = 144.8e9\n", "",
+                "deck.toml:2:1: error: missing key materials.T300_976.E1 (a number in Pa)"},
+        BadDeck{"WrongType", "E1 = 144.8e9", "E1 = \"big\"",
+                "deck.toml:3:6: error: materials.T300_976.E1 must be a number in Pa, got a string"},
         BadDeck{"NegativeSize", "a = 0.127", "a = -0.127", "deck.toml:14:5: error: plate.a must be positive"},
-        BadDeck{"ZeroThickness", "ply_thickness = 0.465e-3", "ply_thickness = 0", "laminate.ply_thickness must be positive"},
-        BadDeck{"NonPhysicalPoisson", "nu12 = 0.30", "nu12 = 4.0", "deck.toml:7:8: error: material 'T300_976' is not physical: 1 - nu12*nu21"},
+        BadDeck{"ZeroThickness", "ply_thickness = 0.465e-3", "ply_thickness = 0",
+                "laminate.ply_thickness must be positive"},
+        BadDeck{"NonPhysicalPoisson", "nu12 = 0.30", "nu12 = 4.0",
+                "deck.toml:7:8: error: material 'T300_976' is not physical: 1 - nu12*nu21"},
         BadDeck{"NegativeModulus", "E2 = 9.65e9", "E2 = -9.65e9", "materials.T300_976.E2 must be positive"},
         BadDeck{"NonFinite", "E2 = 9.65e9", "E2 = inf", "must be a finite number"},
-        BadDeck{"BadLayup", "layup = \"[0_2/90_4/0_2]\"", "layup = \"[0_2/90_4/0_2\"", "deck.toml:11:23: error: layup \"[0_2/90_4/0_2\", column 14: expected '/' between plies or ']'"},
-        BadDeck{"UnknownMaterial", "material = \"T300_976\"", "material = \"T300_967\"", "unknown material 'T300_967' (did you mean 'T300_976'?)"},
-        BadDeck{"ZeroElements", "nx = 15", "nx = 0", "deck.toml:17:6: error: mesh.nx must be an element count from 1 to 2000"},
+        BadDeck{
+            "BadLayup", "layup = \"[0_2/90_4/0_2]\"", "layup = \"[0_2/90_4/0_2\"",
+            "deck.toml:11:23: error: layup \"[0_2/90_4/0_2\", column 14: expected '/' between plies or ']'"},
+        BadDeck{"UnknownMaterial", "material = \"T300_976\"", "material = \"T300_967\"",
+                "unknown material 'T300_967' (did you mean 'T300_976'?)"},
+        BadDeck{"ZeroElements", "nx = 15", "nx = 0",
+                "deck.toml:17:6: error: mesh.nx must be an element count from 1 to 2000"},
         BadDeck{"FractionalElements", "nx = 15", "nx = 15.5", "mesh.nx must be an integer, got a number"},
-        BadDeck{"AbsurdMesh", "nx = 15", "nx = 1000000000", "mesh.nx must be an element count from 1 to 2000"},
-        BadDeck{"BadEdge", "x0 = \"ss\"", "x0 = \"simply\"", "deck.toml:20:6: error: boundary.x0 must be ss | ss-soft | clamped | free or a 5-character code"},
+        BadDeck{"AbsurdMesh", "nx = 15", "nx = 1000000000",
+                "mesh.nx must be an element count from 1 to 2000"},
+        BadDeck{
+            "BadEdge", "x0 = \"ss\"", "x0 = \"simply\"",
+            "deck.toml:20:6: error: boundary.x0 must be ss | ss-soft | clamped | free or a 5-character code"},
         BadDeck{"BadEdgeCode", "yb = \"10101\"", "yb = \"10201\"", "boundary.yb must be"},
-        BadDeck{"NegativeMass", "mass = 6.14", "mass = -6.14", "deck.toml:25:8: error: impactor.mass must be positive"},
+        BadDeck{"NegativeMass", "mass = 6.14", "mass = -6.14",
+                "deck.toml:25:8: error: impactor.mass must be positive"},
         BadDeck{"ZeroVelocity", "velocity = 1.76", "velocity = 0.0", "impactor.velocity must be positive"},
-        BadDeck{"MassAndDensity", "mass = 6.14", "mass = 6.14\ndensity = 7870", "give impactor.mass or impactor.density, not both"},
-        BadDeck{"ImpactOutsidePlate", "velocity = 1.76", "velocity = 1.76\nx = 0.2", "deck.toml:30:5: error: impact point x = 0.2 m lies outside the plate"},
+        BadDeck{"MassAndDensity", "mass = 6.14", "mass = 6.14\ndensity = 7870",
+                "give impactor.mass or impactor.density, not both"},
+        BadDeck{"ImpactOutsidePlate", "velocity = 1.76", "velocity = 1.76\nx = 0.2",
+                "deck.toml:30:5: error: impact point x = 0.2 m lies outside the plate"},
         BadDeck{"ZeroTimeStep", "dt = 1.0e-6", "dt = 0.0", "deck.toml:33:6: error: time.dt must be positive"},
         BadDeck{"NegativeTimeStep", "dt = 1.0e-6", "dt = -1e-6", "time.dt must be positive"},
-        BadDeck{"AutoMisspelt", "end = \"auto\"", "end = \"atuo\"", "time.end must be a positive number in s or \"auto\""},
+        BadDeck{"AutoMisspelt", "end = \"auto\"", "end = \"atuo\"",
+                "time.end must be a positive number in s or \"auto\""},
         BadDeck{"AbsurdStepCount", "end = \"auto\"", "end = 1e6", "more than the limit of 100000000 steps"},
-        BadDeck{"BadNewmarkGamma", "end = \"auto\"", "newmark_gamma = 0.4", "time.newmark_gamma must be at least 0.5"},
-        BadDeck{"BadAnalysis", "analysis = \"impact\"", "analysis = \"explode\"", "deck.toml:1:12: error: analysis must be one of impact"},
-        BadDeck{"MissingSection", "[impactor]\nmass = 6.14\nradius = 12.7e-3\nE = 207e9\nnu = 0.3\nvelocity = 1.76\n", "", "deck.toml: error: the impact analysis needs [impactor]"},
-        BadDeck{"BadChoice", "nx = 15", "nx = 15\nmass = \"diagonal\"", "mesh.mass must be one of lumped | consistent, got \"diagonal\""},
-        BadDeck{"BadOverride", "", "[[laminate.override]]\nplies = [9]\n", "laminate.override.plies: expected ply numbers from 1 to 8"}),
+        BadDeck{"BadNewmarkGamma", "end = \"auto\"", "newmark_gamma = 0.4",
+                "time.newmark_gamma must be at least 0.5"},
+        BadDeck{"BadAnalysis", "analysis = \"impact\"", "analysis = \"explode\"",
+                "deck.toml:1:12: error: analysis must be one of impact"},
+        BadDeck{"MissingSection",
+                "[impactor]\nmass = 6.14\nradius = 12.7e-3\nE = 207e9\nnu = 0.3\nvelocity = 1.76\n", "",
+                "deck.toml: error: the impact analysis needs [impactor]"},
+        BadDeck{"BadChoice", "nx = 15", "nx = 15\nmass = \"diagonal\"",
+                "mesh.mass must be one of lumped | consistent, got \"diagonal\""},
+        BadDeck{"BadOverride", "", "[[laminate.override]]\nplies = [9]\n",
+                "laminate.override.plies: expected ply numbers from 1 to 8"}),
     [](const ::testing::TestParamInfo<BadDeck>& p) { return p.param.name; });
 
 TEST(Deck, UnreadableFileIsAClearError) {

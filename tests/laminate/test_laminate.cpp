@@ -22,9 +22,11 @@ Material t300() {
   return m;
 }
 
-Laminate make(const std::string& layup, double t, ReducedStiffnessModel model = ReducedStiffnessModel::exact) {
+Laminate make(const std::string& layup, double t,
+              ReducedStiffnessModel model = ReducedStiffnessModel::exact) {
   std::vector<Ply> plies;
-  for (const double a : parse_layup(layup)) plies.push_back({a, t, 0});
+  for (const double a : parse_layup(layup))
+    plies.push_back({a, t, 0});
   return Laminate({t300()}, plies, 5.0 / 6.0, model);
 }
 
@@ -46,8 +48,8 @@ TEST(Laminate, Annex2PlateHasTheSpecCheckValues) {
   EXPECT_TRUE(four_digits(L.D()(0, 1), 12.494));
   EXPECT_TRUE(four_digits(L.D()(1, 1), 114.56));
   EXPECT_TRUE(four_digits(L.D()(2, 2), 30.458));
-  EXPECT_TRUE(four_digits(L.F()(0, 0), 2.0181e7)); // F44 (yz)
-  EXPECT_TRUE(four_digits(L.F()(1, 1), 2.0181e7)); // F55 (xz)
+  EXPECT_TRUE(four_digits(L.F()(0, 0), 2.0181e7));                             // F44 (yz)
+  EXPECT_TRUE(four_digits(L.F()(1, 1), 2.0181e7));                             // F55 (xz)
   EXPECT_LE(L.B().cwiseAbs().maxCoeff(), 1e-14 * L.A()(0, 0) * L.thickness()); // B = 0 to round-off
 }
 
@@ -78,7 +80,8 @@ TEST(Laminate, InertiaCouplingI1OfTwoMaterialsHasTheSignOfTheHeavierLowerPly) {
 }
 
 TEST(Laminate, SymmetricLayupsHaveNoCouplingAndBalancedOnesNoA16A26) {
-  for (const char* layup : {"[0_2/90_4/0_2]", "[45/90/-45/0]3s", "[0/±45/90]s", "[0/45/0/-45/0]2s", "[30/-30/60*]s"}) {
+  for (const char* layup :
+       {"[0_2/90_4/0_2]", "[45/90/-45/0]3s", "[0/±45/90]s", "[0/45/0/-45/0]2s", "[30/-30/60*]s"}) {
     const Laminate L = make(layup, 0.2e-3);
     EXPECT_TRUE(L.is_symmetric()) << layup << " B max " << L.B().cwiseAbs().maxCoeff();
     EXPECT_LE(L.B().cwiseAbs().maxCoeff(), 1e-12 * L.A().cwiseAbs().maxCoeff() * L.thickness()) << layup;

@@ -26,8 +26,10 @@ TEST(Layup, ThesisValidationLayupIs24PliesMirrored) {
   const Angles a = parse_layup("[45/90/-45/0]3s");
   ASSERT_EQ(a.size(), 24U);
   const Angles head{45, 90, -45, 0};
-  for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(a[i], head[i % 4]);
-  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(a[i], a[23 - i]);
+  for (std::size_t i = 0; i < 12; ++i)
+    EXPECT_EQ(a[i], head[i % 4]);
+  for (std::size_t i = 0; i < 24; ++i)
+    EXPECT_EQ(a[i], a[23 - i]);
 }
 
 TEST(Layup, StarMarksTheUnrepeatedMiddlePlyOfAnOddSymmetricLayup) {
@@ -55,14 +57,14 @@ TEST_P(LayupErrors, PointAtTheOffendingCharacter) {
 
 INSTANTIATE_TEST_SUITE_P(
     Layup, LayupErrors,
-    ::testing::Values(BadLayup{"0/90", 1, "'['"}, BadLayup{"[0/90", 6, "']'"}, BadLayup{"[0//90]", 4, "ply angle"},
-                      BadLayup{"[0/9x0]", 5, "']'"}, BadLayup{"[0_/90]", 4, "repeat count"},
-                      BadLayup{"[0_0/90]", 4, "at least 1"}, BadLayup{"[0/90]q", 7, "end of layup"},
-                      BadLayup{"[0/400]", 4, "between -360 and 360"}, BadLayup{"[0/±45*]s", 7, "single ply"},
-                      BadLayup{"[0/90*]", 6, "symmetric"}, BadLayup{"[0/90]s 3", 9, "end of layup"},
-                      BadLayup{"[±]", 3, "ply angle"}, BadLayup{"[]", 2, "ply angle"},
-                      BadLayup{"[0_99999999]", 4, "below 100000"}, BadLayup{"", 1, "'['"},
-                      BadLayup{"[1.2.3]", 2, "ply angle"}));
+    ::testing::Values(BadLayup{"0/90", 1, "'['"}, BadLayup{"[0/90", 6, "']'"},
+                      BadLayup{"[0//90]", 4, "ply angle"}, BadLayup{"[0/9x0]", 5, "']'"},
+                      BadLayup{"[0_/90]", 4, "repeat count"}, BadLayup{"[0_0/90]", 4, "at least 1"},
+                      BadLayup{"[0/90]q", 7, "end of layup"}, BadLayup{"[0/400]", 4, "between -360 and 360"},
+                      BadLayup{"[0/±45*]s", 7, "single ply"}, BadLayup{"[0/90*]", 6, "symmetric"},
+                      BadLayup{"[0/90]s 3", 9, "end of layup"}, BadLayup{"[±]", 3, "ply angle"},
+                      BadLayup{"[]", 2, "ply angle"}, BadLayup{"[0_99999999]", 4, "below 100000"},
+                      BadLayup{"", 1, "'['"}, BadLayup{"[1.2.3]", 2, "ply angle"}));
 
 } // namespace
 } // namespace plyimpact

@@ -24,11 +24,11 @@ enum class ContactLoad { point, hertz_pressure };
 
 /// Contact law (2.5)–(2.7): loading k α^1.5, Tan–Sun unloading, Yang–Sun reloading.
 struct ContactLawParameters {
-  std::optional<double> k;      ///< [N/m^1.5]; empty = "auto" (modified Hertz constant)
+  std::optional<double> k; ///< [N/m^1.5]; empty = "auto" (modified Hertz constant)
   UnloadingLaw unloading = UnloadingLaw::tan_sun;
-  double q = 2.5;               ///< unloading exponent
-  double beta = 0.094;          ///< permanent-indentation factor
-  double alpha_cr = 1.7e-4;     ///< critical indentation [m]
+  double q = 2.5;           ///< unloading exponent
+  double beta = 0.094;      ///< permanent-indentation factor
+  double alpha_cr = 1.7e-4; ///< critical indentation [m]
   ContactLoad load = ContactLoad::point;
 };
 

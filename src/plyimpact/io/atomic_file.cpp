@@ -13,7 +13,9 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   namespace fs = std::filesystem;
   std::error_code ec;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-  if (ec) throw std::runtime_error(fmt::format("{}: cannot create folder: {}", path.parent_path().string(), ec.message()));
+  if (ec)
+    throw std::runtime_error(
+        fmt::format("{}: cannot create folder: {}", path.parent_path().string(), ec.message()));
   const fs::path tmp = path.string() + fmt::format(".tmp.{}", static_cast<long>(::getpid()));
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

@@ -17,7 +17,8 @@ namespace plyimpact {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    prev[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
@@ -32,12 +33,18 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 
 std::string_view to_string(AnalysisKind kind) {
   switch (kind) {
-  case AnalysisKind::impact: return "impact";
-  case AnalysisKind::static_: return "static";
-  case AnalysisKind::modal: return "modal";
-  case AnalysisKind::buckling: return "buckling";
-  case AnalysisKind::laminate: return "laminate";
-  case AnalysisKind::threshold: return "threshold";
+  case AnalysisKind::impact:
+    return "impact";
+  case AnalysisKind::static_:
+    return "static";
+  case AnalysisKind::modal:
+    return "modal";
+  case AnalysisKind::buckling:
+    return "buckling";
+  case AnalysisKind::laminate:
+    return "laminate";
+  case AnalysisKind::threshold:
+    return "threshold";
   }
   return "?";
 }
@@ -56,7 +63,8 @@ constexpr long max_elements = 1'000'000;
 constexpr long max_step_cap = 100'000'000;
 
 /// Formats "FILE:LINE:COL: error: message".
-[[noreturn]] void fail(const std::string& file, const toml::source_region& where, const std::string& message) {
+[[noreturn]] void fail(const std::string& file, const toml::source_region& where,
+                       const std::string& message) {
   if (where.begin.line > 0)
     throw DeckError(fmt::format("{}:{}:{}: error: {}", file, where.begin.line, where.begin.column, message));
   throw DeckError(fmt::format("{}: error: {}", file, message));
@@ -64,19 +72,27 @@ constexpr long max_step_cap = 100'000'000;
 
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
-  case toml::node_type::table: return "a table";
-  case toml::node_type::array: return "an array";
-  case toml::node_type::string: return "a string";
-  case toml::node_type::integer: return "an integer";
-  case toml::node_type::floating_point: return "a number";
-  case toml::node_type::boolean: return "a boolean";
-  default: return "a date/time";
+  case toml::node_type::table:
+    return "a table";
+  case toml::node_type::array:
+    return "an array";
+  case toml::node_type::string:
+    return "a string";
+  case toml::node_type::integer:
+    return "an integer";
+  case toml::node_type::floating_point:
+    return "a number";
+  case toml::node_type::boolean:
+    return "a boolean";
+  default:
+    return "a date/time";
   }
 }
 
 std::string join(std::initializer_list<std::string_view> names) {
   std::string s;
-  for (const auto n : names) s += (s.empty() ? "" : ", ") + std::string(n);
+  for (const auto n : names)
+    s += (s.empty() ? "" : ", ") + std::string(n);
   return s;
 }
 
@@ -108,8 +124,10 @@ public:
         if (d < best_d) best_d = d, best = a;
       }
       std::string msg = fmt::format("unknown key '{}' in [{}]", k, path_);
-      if (best_d <= std::max<std::size_t>(2, k.size() / 3)) msg += fmt::format(" (did you mean '{}'?)", best);
-      else msg += fmt::format(" (expected one of: {})", join(allowed));
+      if (best_d <= std::max<std::size_t>(2, k.size() / 3))
+        msg += fmt::format(" (did you mean '{}'?)", best);
+      else
+        msg += fmt::format(" (expected one of: {})", join(allowed));
       fail(file_, key.source().begin.line > 0 ? key.source() : node.source(), msg);
     }
   }
@@ -123,9 +141,12 @@ public:
     const toml::node* n = table_.get(key);
     if (n == nullptr) return std::nullopt;
     double v = 0.0;
-    if (const auto* f = n->as_floating_point()) v = f->get();
-    else if (const auto* i = n->as_integer()) v = static_cast<double>(i->get());
-    else fail_at(key, fmt::format("{}.{} must be a number in {}, got {}", path_, key, unit, type_name(*n)));
+    if (const auto* f = n->as_floating_point())
+      v = f->get();
+    else if (const auto* i = n->as_integer())
+      v = static_cast<double>(i->get());
+    else
+      fail_at(key, fmt::format("{}.{} must be a number in {}, got {}", path_, key, unit, type_name(*n)));
     if (!std::isfinite(v)) fail_at(key, fmt::format("{}.{} must be a finite number in {}", path_, key, unit));
     return v;
   }
@@ -156,7 +177,8 @@ public:
     const toml::node* n = table_.get(key);
     if (n == nullptr) return std::nullopt;
     const auto* i = n->as_integer();
-    if (i == nullptr) fail_at(key, fmt::format("{}.{} must be an integer, got {}", path_, key, type_name(*n)));
+    if (i == nullptr)
+      fail_at(key, fmt::format("{}.{} must be an integer, got {}", path_, key, type_name(*n)));
     return static_cast<long>(i->get());
   }
 
@@ -176,8 +198,8 @@ public:
 
   /// A string that must be one of `choices`.
   template <class T>
-  [[nodiscard]] std::optional<T> optional_choice(std::string_view key,
-                                                 std::initializer_list<std::pair<std::string_view, T>> choices) const {
+  [[nodiscard]] std::optional<T>
+  optional_choice(std::string_view key, std::initializer_list<std::pair<std::string_view, T>> choices) const {
     const auto s = optional_string(key);
     if (!s) return std::nullopt;
     std::string names;
@@ -202,8 +224,8 @@ public:
     if (n == nullptr) return std::nullopt;
     if (const auto* s = n->as_string()) {
       if (s->get() == "auto") return std::nullopt;
-      fail_at(key, fmt::format("{}.{} must be a positive number in {} or \"auto\", got \"{}\"", path_, key, unit,
-                               s->get()));
+      fail_at(key, fmt::format("{}.{} must be a positive number in {} or \"auto\", got \"{}\"", path_, key,
+                               unit, s->get()));
     }
     return optional_positive(key, unit);
   }
@@ -242,7 +264,8 @@ Material read_material(const TableReader& t, const std::string& name) {
   return m;
 }
 
-std::size_t material_index(const Deck& d, const TableReader& t, std::string_view key, const std::string& name) {
+std::size_t material_index(const Deck& d, const TableReader& t, std::string_view key,
+                           const std::string& name) {
   for (std::size_t i = 0; i < d.materials.size(); ++i)
     if (d.materials[i].name == name) return i;
   std::string known;
@@ -253,7 +276,8 @@ std::size_t material_index(const Deck& d, const TableReader& t, std::string_view
     const std::size_t dist = edit_distance(name, m.name);
     if (dist < best_d) best_d = dist, best = m.name;
   }
-  if (known.empty()) t.fail_at(key, fmt::format("material '{}' is not defined: add a [materials.{}] table", name, name));
+  if (known.empty())
+    t.fail_at(key, fmt::format("material '{}' is not defined: add a [materials.{}] table", name, name));
   if (best_d <= std::max<std::size_t>(2, name.size() / 3))
     t.fail_at(key, fmt::format("unknown material '{}' (did you mean '{}'?)", name, best));
   t.fail_at(key, fmt::format("unknown material '{}' (defined: {})", name, known));
@@ -268,8 +292,8 @@ void read_laminate(Deck& d, const TableReader& t, const std::string& file) {
   spec.ply_thickness = t.positive("ply_thickness", "m");
   spec.shear_correction = t.optional_positive("shear_correction", "-").value_or(5.0 / 6.0);
   spec.reduced_stiffness = t.optional_choice<ReducedStiffnessModel>(
-                                 "reduced_stiffness", {{"exact", ReducedStiffnessModel::exact},
-                                                       {"poisson-free", ReducedStiffnessModel::poisson_free}})
+                                "reduced_stiffness", {{"exact", ReducedStiffnessModel::exact},
+                                                      {"poisson-free", ReducedStiffnessModel::poisson_free}})
                                .value_or(ReducedStiffnessModel::exact);
   std::vector<double> angles;
   try {
@@ -283,7 +307,8 @@ void read_laminate(Deck& d, const TableReader& t, const std::string& file) {
   }
   std::vector<Ply> plies;
   plies.reserve(angles.size());
-  for (const double a : angles) plies.push_back({a, spec.ply_thickness, default_material});
+  for (const double a : angles)
+    plies.push_back({a, spec.ply_thickness, default_material});
 
   if (const toml::node* ov = t.node("override")) {
     const toml::array* arr = ov->as_array();
@@ -300,14 +325,16 @@ void read_laminate(Deck& d, const TableReader& t, const std::string& file) {
         const auto* i = p.as_integer();
         if (i == nullptr || i->get() < 1 || i->get() > static_cast<std::int64_t>(plies.size()))
           fail(file, p.source(),
-               fmt::format("laminate.override.plies: expected ply numbers from 1 to {} (the layup has {} plies)",
-                           plies.size(), plies.size()));
+               fmt::format(
+                   "laminate.override.plies: expected ply numbers from 1 to {} (the layup has {} plies)",
+                   plies.size(), plies.size()));
         po.plies.push_back(static_cast<int>(i->get()));
       }
       po.material = o.optional_string("material");
       po.thickness = o.optional_positive("thickness", "m");
       const std::optional<std::size_t> mi =
-          po.material ? std::optional<std::size_t>(material_index(d, o, "material", *po.material)) : std::nullopt;
+          po.material ? std::optional<std::size_t>(material_index(d, o, "material", *po.material))
+                      : std::nullopt;
       for (const int k : po.plies) {
         if (mi) plies[static_cast<std::size_t>(k - 1)].material = *mi;
         if (po.thickness) plies[static_cast<std::size_t>(k - 1)].thickness = *po.thickness;
@@ -331,8 +358,10 @@ MeshSpec read_mesh(const TableReader& t) {
     (std::string_view(key) == "nx" ? m.nx : m.ny) = static_cast<int>(*v);
   }
   if (static_cast<long>(m.nx) * m.ny > max_elements)
-    t.fail_here(fmt::format("mesh of {} x {} elements exceeds the limit of {} elements", m.nx, m.ny, max_elements));
-  m.mass = t.optional_choice<MassMatrix>("mass", {{"lumped", MassMatrix::lumped}, {"consistent", MassMatrix::consistent}})
+    t.fail_here(
+        fmt::format("mesh of {} x {} elements exceeds the limit of {} elements", m.nx, m.ny, max_elements));
+  m.mass = t.optional_choice<MassMatrix>(
+                "mass", {{"lumped", MassMatrix::lumped}, {"consistent", MassMatrix::consistent}})
                .value_or(MassMatrix::lumped);
   m.element = t.optional_choice<ElementFormulation>(
                    "element", {{"q9", ElementFormulation::q9}, {"mitc9", ElementFormulation::mitc9}})
@@ -348,17 +377,19 @@ BoundaryConditions read_boundary(const TableReader& t) {
     const std::string text = t.optional_string(key).value_or("ss");
     const auto r = parse_restraint(text, e);
     if (!r)
-      t.fail_at(key, fmt::format("boundary.{} must be ss | ss-soft | clamped | free or a 5-character code of 0/1 "
-                                 "for (u, v, w, θx, θy) such as \"01101\", got \"{}\"",
-                                 key, text));
+      t.fail_at(key,
+                fmt::format("boundary.{} must be ss | ss-soft | clamped | free or a 5-character code of 0/1 "
+                            "for (u, v, w, θx, θy) such as \"01101\", got \"{}\"",
+                            key, text));
     bc.edges[static_cast<int>(e)] = *r;
   }
   if (const auto c = t.optional_string("corners")) {
     const auto r = parse_restraint(*c, Edge::x0);
     if (!r || c->size() != 5)
-      t.fail_at("corners", fmt::format("boundary.corners must be a 5-character code of 0/1 for (u, v, w, θx, θy), "
-                                       "got \"{}\"",
-                                       *c));
+      t.fail_at("corners",
+                fmt::format("boundary.corners must be a 5-character code of 0/1 for (u, v, w, θx, θy), "
+                            "got \"{}\"",
+                            *c));
     bc.corners = r;
   }
   return bc;
@@ -376,7 +407,8 @@ Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>&
   imp.mass = mass ? *mass : *density * 4.0 / 3.0 * std::numbers::pi * imp.radius * imp.radius * imp.radius;
   imp.E = t.positive("E", "Pa");
   imp.nu = t.optional_number("nu", "-").value_or(0.3);
-  if (!(imp.nu > -1.0 && imp.nu < 0.5)) t.fail_at("nu", fmt::format("impactor.nu must lie in (-1, 0.5), got {}", imp.nu));
+  if (!(imp.nu > -1.0 && imp.nu < 0.5))
+    t.fail_at("nu", fmt::format("impactor.nu must lie in (-1, 0.5), got {}", imp.nu));
   imp.velocity = t.positive("velocity", "m/s");
   const auto x = t.optional_number("x", "m");
   const auto y = t.optional_number("y", "m");
@@ -385,10 +417,12 @@ Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>&
     imp.y = y.value_or(plate->b / 2.0);
     if (!(imp.x > 0.0 && imp.x < plate->a))
       t.fail_at(x ? "x" : "radius",
-                fmt::format("impact point x = {} m lies outside the plate: expected 0 < x < a = {} m", imp.x, plate->a));
+                fmt::format("impact point x = {} m lies outside the plate: expected 0 < x < a = {} m", imp.x,
+                            plate->a));
     if (!(imp.y > 0.0 && imp.y < plate->b))
       t.fail_at(y ? "y" : "radius",
-                fmt::format("impact point y = {} m lies outside the plate: expected 0 < y < b = {} m", imp.y, plate->b));
+                fmt::format("impact point y = {} m lies outside the plate: expected 0 < y < b = {} m", imp.y,
+                            plate->b));
   }
   return imp;
 }
@@ -397,16 +431,17 @@ ContactLawParameters read_contact(const TableReader& t) {
   t.only({"k", "unloading", "q", "beta", "alpha_cr", "load"});
   ContactLawParameters c;
   c.k = t.positive_or_auto("k", "N/m^1.5");
-  c.unloading = t.optional_choice<UnloadingLaw>("unloading", {{"tan-sun", UnloadingLaw::tan_sun},
-                                                              {"elastic", UnloadingLaw::elastic}})
+  c.unloading = t.optional_choice<UnloadingLaw>(
+                     "unloading", {{"tan-sun", UnloadingLaw::tan_sun}, {"elastic", UnloadingLaw::elastic}})
                     .value_or(UnloadingLaw::tan_sun);
   c.q = t.optional_positive("q", "-").value_or(2.5);
   c.beta = t.optional_number("beta", "-").value_or(0.094);
-  if (!(c.beta >= 0.0 && c.beta < 1.0)) t.fail_at("beta", fmt::format("contact.beta must lie in [0, 1), got {}", c.beta));
+  if (!(c.beta >= 0.0 && c.beta < 1.0))
+    t.fail_at("beta", fmt::format("contact.beta must lie in [0, 1), got {}", c.beta));
   c.alpha_cr = t.optional_number("alpha_cr", "m").value_or(1.7e-4);
   if (!(c.alpha_cr >= 0.0)) t.fail_at("alpha_cr", "contact.alpha_cr must be zero or positive (m)");
-  c.load = t.optional_choice<ContactLoad>("load", {{"point", ContactLoad::point},
-                                                   {"hertz-pressure", ContactLoad::hertz_pressure}})
+  c.load = t.optional_choice<ContactLoad>(
+                "load", {{"point", ContactLoad::point}, {"hertz-pressure", ContactLoad::hertz_pressure}})
                .value_or(ContactLoad::point);
   return c;
 }
@@ -425,12 +460,13 @@ TimeStepping read_time(const TableReader& t) {
   if (!(ts.newmark_beta <= 0.5)) t.fail_at("newmark_beta", "time.newmark_beta must lie in (0, 0.5]");
   if (const auto m = t.optional_integer("max_steps")) {
     if (*m < 1 || *m > max_step_cap)
-      t.fail_at("max_steps", fmt::format("time.max_steps must lie between 1 and {}, got {}", max_step_cap, *m));
+      t.fail_at("max_steps",
+                fmt::format("time.max_steps must lie between 1 and {}, got {}", max_step_cap, *m));
     ts.max_steps = *m;
   }
   if (ts.dt && ts.end && *ts.end / *ts.dt > static_cast<double>(max_step_cap))
-    t.fail_at("end", fmt::format("time.end / time.dt = {:.3g} steps: more than the limit of {} steps", *ts.end / *ts.dt,
-                                 max_step_cap));
+    t.fail_at("end", fmt::format("time.end / time.dt = {:.3g} steps: more than the limit of {} steps",
+                                 *ts.end / *ts.dt, max_step_cap));
   return ts;
 }
 
@@ -440,7 +476,8 @@ StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& p
   l.pressure = t.optional_number("pressure", "Pa").value_or(0.0);
   auto inside = [&](const TableReader& r, double x, double y) {
     if (plate && !(x >= 0.0 && x <= plate->a && y >= 0.0 && y <= plate->b))
-      r.fail_at("x", fmt::format("load point ({}, {}) m lies outside the plate {} x {} m", x, y, plate->a, plate->b));
+      r.fail_at("x", fmt::format("load point ({}, {}) m lies outside the plate {} x {} m", x, y, plate->a,
+                                 plate->b));
   };
   if (const auto p = t.optional_table("point")) {
     p->only({"x", "y", "force"});
@@ -449,8 +486,8 @@ StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& p
   }
   if (const auto p = t.optional_table("patch")) {
     p->only({"x", "y", "dx", "dy", "force"});
-    l.patch = PatchLoad{p->number("x", "m"), p->number("y", "m"), p->positive("dx", "m"), p->positive("dy", "m"),
-                        p->number("force", "N")};
+    l.patch = PatchLoad{p->number("x", "m"), p->number("y", "m"), p->positive("dx", "m"),
+                        p->positive("dy", "m"), p->number("force", "N")};
     inside(*p, l.patch->x, l.patch->y);
   }
   if (l.pressure == 0.0 && !l.point && !l.patch)
@@ -471,15 +508,16 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   d.source = source;
   d.text = std::string(text);
   const TableReader top(root, "", source);
-  top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact", "time",
-            "load", "modal", "buckling", "damage", "output"});
+  top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact",
+            "time", "load", "modal", "buckling", "damage", "output"});
   d.title = top.optional_string("title").value_or("");
   if (const auto a = top.optional_string("analysis")) {
     const auto kind = parse_analysis_kind(*a);
     if (!kind)
-      top.fail_at("analysis", fmt::format("analysis must be one of impact | static | modal | buckling | laminate | "
-                                          "threshold, got \"{}\"",
-                                          *a));
+      top.fail_at("analysis",
+                  fmt::format("analysis must be one of impact | static | modal | buckling | laminate | "
+                              "threshold, got \"{}\"",
+                              *a));
     d.analysis = *kind;
   }
   if (const auto mats = top.optional_table("materials")) {
@@ -487,7 +525,8 @@ Deck parse_deck(std::string_view text, const std::string& source) {
       const auto* t = node.as_table();
       if (t == nullptr)
         fail(source, node.source(),
-             fmt::format("materials.{} must be a table of material constants ([materials.{}])", name.str(), name.str()));
+             fmt::format("materials.{} must be a table of material constants ([materials.{}])", name.str(),
+                         name.str()));
       d.materials.push_back(read_material(TableReader(*t, "materials." + std::string(name.str()), source),
                                           std::string(name.str())));
     }
@@ -506,7 +545,8 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   if (const auto t = top.optional_table("modal")) {
     t->only({"count"});
     const long n = t->optional_integer("count").value_or(10);
-    if (n < 1 || n > 1000) t->fail_at("count", fmt::format("modal.count must lie between 1 and 1000, got {}", n));
+    if (n < 1 || n > 1000)
+      t->fail_at("count", fmt::format("modal.count must lie between 1 and 1000, got {}", n));
     d.modal.count = static_cast<int>(n);
   }
   if (const auto t = top.optional_table("buckling")) {
@@ -516,10 +556,12 @@ Deck parse_deck(std::string_view text, const std::string& source) {
     b.Ny = t->optional_number("Ny", "N/m").value_or(0.0);
     b.Nxy = t->optional_number("Nxy", "N/m").value_or(0.0);
     const long n = t->optional_integer("count").value_or(5);
-    if (n < 1 || n > 1000) t->fail_at("count", fmt::format("buckling.count must lie between 1 and 1000, got {}", n));
+    if (n < 1 || n > 1000)
+      t->fail_at("count", fmt::format("buckling.count must lie between 1 and 1000, got {}", n));
     b.count = static_cast<int>(n);
     if (b.Nx == 0.0 && b.Ny == 0.0 && b.Nxy == 0.0)
-      fail(source, t->where(), "[buckling] needs a non-zero reference load Nx, Ny or Nxy (N/m, compression negative)");
+      fail(source, t->where(),
+           "[buckling] needs a non-zero reference load Nx, Ny or Nxy (N/m, compression negative)");
     d.buckling = b;
   }
   if (const auto t = top.optional_table("damage")) {
@@ -534,7 +576,8 @@ Deck parse_deck(std::string_view text, const std::string& source) {
       }
     }
     const long every = t->optional_integer("every").value_or(1);
-    if (every < 1) t->fail_at("every", fmt::format("damage.every must be a positive step count, got {}", every));
+    if (every < 1)
+      t->fail_at("every", fmt::format("damage.every must be a positive step count, got {}", every));
     d.damage.every = static_cast<int>(every);
   }
   if (const auto t = top.optional_table("output")) {
@@ -564,10 +607,12 @@ void require_sections(const Deck& d, AnalysisKind kind) {
   }
   if (kind == AnalysisKind::static_) need(d.load.has_value(), "[load]");
   if (kind == AnalysisKind::buckling) need(d.buckling.has_value(), "[buckling]");
-  if (kind == AnalysisKind::impact || kind == AnalysisKind::threshold) need(d.impactor.has_value(), "[impactor]");
+  if (kind == AnalysisKind::impact || kind == AnalysisKind::threshold)
+    need(d.impactor.has_value(), "[impactor]");
   if (missing.empty()) return;
   std::string list;
-  for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+  for (const auto& m : missing)
+    list += (list.empty() ? "" : ", ") + m;
   throw DeckError(fmt::format("{}: error: the {} analysis needs {}", d.source, to_string(kind), list));
 }
 

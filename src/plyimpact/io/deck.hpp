@@ -38,7 +38,7 @@ struct LaminateSpec {
 };
 
 struct Deck {
-  std::string source;  ///< file name used in messages
+  std::string source; ///< file name used in messages
   std::string title;
   AnalysisKind analysis = AnalysisKind::impact;
   std::vector<Material> materials;

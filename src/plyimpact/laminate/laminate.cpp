@@ -18,7 +18,8 @@ Laminate::Laminate(std::vector<Material> materials, std::vector<Ply> plies, doub
   }
   z_.reserve(plies_.size() + 1);
   z_.push_back(-0.5 * thickness_);
-  for (const Ply& p : plies_) z_.push_back(z_.back() + p.thickness);
+  for (const Ply& p : plies_)
+    z_.push_back(z_.back() + p.thickness);
   z_.back() = 0.5 * thickness_; // exact face position, no accumulated round-off
 
   A_.setZero();

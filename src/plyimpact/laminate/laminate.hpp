@@ -32,7 +32,9 @@ public:
   [[nodiscard]] const std::vector<Material>& materials() const { return materials_; }
   [[nodiscard]] const std::vector<Ply>& plies() const { return plies_; }
   [[nodiscard]] std::size_t ply_count() const { return plies_.size(); }
-  [[nodiscard]] const Material& material_of(std::size_t ply) const { return materials_[plies_[ply].material]; }
+  [[nodiscard]] const Material& material_of(std::size_t ply) const {
+    return materials_[plies_[ply].material];
+  }
   [[nodiscard]] double thickness() const { return thickness_; }
   [[nodiscard]] double shear_correction() const { return shear_correction_; }
   [[nodiscard]] ReducedStiffnessModel stiffness_model() const { return model_; }

@@ -37,13 +37,15 @@ public:
     if (seq.middle_marked && !symmetric)
       fail_at(seq.middle_column, "'*' marks the unrepeated middle ply of a symmetric layup ('...]s') only");
     std::vector<double> plies;
-    for (int i = 0; i < count; ++i) plies.insert(plies.end(), seq.angles.begin(), seq.angles.end());
+    for (int i = 0; i < count; ++i)
+      plies.insert(plies.end(), seq.angles.begin(), seq.angles.end());
     if (seq.middle_marked && count != 1)
       fail_at(seq.middle_column, "'*' (odd middle ply) cannot be combined with a repeat count");
     if (symmetric) {
       const std::size_t n = plies.size();
       const std::size_t mirror_from = seq.middle_marked ? n - 1 : n;
-      for (std::size_t i = mirror_from; i-- > 0;) plies.push_back(plies[i]);
+      for (std::size_t i = mirror_from; i-- > 0;)
+        plies.push_back(plies[i]);
     }
     check_size(plies.size());
     return plies;
@@ -63,7 +65,8 @@ private:
       std::vector<double> item;
       if (accept('(')) {
         Sequence inner = parse_sequence();
-        if (inner.middle_marked) fail_at(inner.middle_column, "'*' only on the last ply of the outer sequence");
+        if (inner.middle_marked)
+          fail_at(inner.middle_column, "'*' only on the last ply of the outer sequence");
         expect(')', "'/' or ')' closing the group");
         item = std::move(inner.angles);
       } else {
@@ -75,7 +78,8 @@ private:
         if (!peek_digit()) fail("a repeat count after '_'");
         const int n = parse_count();
         std::vector<double> repeated;
-        for (int i = 0; i < n; ++i) repeated.insert(repeated.end(), item.begin(), item.end());
+        for (int i = 0; i < n; ++i)
+          repeated.insert(repeated.end(), item.begin(), item.end());
         item = std::move(repeated);
       }
       skip_space();
@@ -104,15 +108,18 @@ private:
       return {-a, a};
     }
     double sign = 1.0;
-    if (accept('-')) sign = -1.0;
-    else accept('+');
+    if (accept('-'))
+      sign = -1.0;
+    else
+      accept('+');
     return {sign * parse_unsigned_angle()};
   }
 
   double parse_unsigned_angle() {
     skip_space();
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '.'))
+    while (pos_ < text_.size() &&
+           (std::isdigit(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '.'))
       ++pos_;
     if (pos_ == start) fail("a ply angle in degrees (e.g. 0, 45, -45, 22.5, ±45)");
     const std::string digits(text_.substr(start, pos_ - start));
@@ -148,7 +155,8 @@ private:
     return pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]));
   }
   void skip_space() {
-    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])))
+      ++pos_;
   }
   bool accept(char c) {
     if (pos_ < text_.size() && text_[pos_] == c) {
@@ -204,12 +212,14 @@ private:
     const std::size_t byte = byte_of(column);
     if (byte < text_.size()) {
       std::size_t len = 1;
-      while (byte + len < text_.size() && is_continuation(text_[byte + len])) ++len;
+      while (byte + len < text_.size() && is_continuation(text_[byte + len]))
+        ++len;
       found = "'" + std::string(text_.substr(byte, len)) + "'";
     }
     std::string caret(column > 0 ? column - 1 : 0, ' ');
-    throw LayupError("layup \"" + std::string(text_) + "\", column " + std::to_string(column) + ": expected " +
-                         expected + ", found " + found + "\n  " + std::string(text_) + "\n  " + caret + "^",
+    throw LayupError("layup \"" + std::string(text_) + "\", column " + std::to_string(column) +
+                         ": expected " + expected + ", found " + found + "\n  " + std::string(text_) +
+                         "\n  " + caret + "^",
                      column);
   }
 
@@ -219,6 +229,8 @@ private:
 
 } // namespace
 
-std::vector<double> parse_layup(std::string_view text) { return LayupParser(text).parse(); }
+std::vector<double> parse_layup(std::string_view text) {
+  return LayupParser(text).parse();
+}
 
 } // namespace plyimpact

@@ -1,0 +1,93 @@
+#include "plyimpact/analysis/modal_analysis.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace plyimpact {
+
+namespace {
+
+/// y = (K − σM)⁻¹ x with one sparse LDLᵀ factorization per shift (Spectra's shift-invert operator).
+class ShiftInvertOp {
+public:
+  using Scalar = double;
+  ShiftInvertOp(const SparseMatrix& K, const SparseMatrix& M) : K_(K), M_(M) {}
+  [[nodiscard]] Eigen::Index rows() const { return K_.rows(); }
+  [[nodiscard]] Eigen::Index cols() const { return K_.cols(); }
+  void set_shift(double sigma) {
+    const SparseMatrix A = K_ - sigma * M_;
+    ldlt_.compute(A);
+    if (ldlt_.info() != Eigen::Success)
+      throw std::runtime_error("modal analysis: K - sigma M could not be factored");
+  }
+  void perform_op(const double* x_in, double* y_out) const {
+    Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
+    Eigen::Map<Eigen::VectorXd> y(y_out, rows());
+    y = ldlt_.solve(x);
+  }
+
+private:
+  const SparseMatrix& K_;
+  const SparseMatrix& M_;
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
+};
+
+} // namespace
+
+ModalResult solve_modal(const PlateModel& model, int count) {
+  return solve_modal(model, count, model.spec().mass);
+}
+
+ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {
+  const SparseMatrix K = model.stiffness();
+  const SparseMatrix M = model.mass(mass);
+  const auto n = static_cast<int>(K.rows());
+  const int nev = std::min(count, n - 2);
+  if (nev < 1) throw std::invalid_argument("modal analysis: the plate has too few free DOFs");
+  // Scale of ω² on this mesh: mean of K_ii / M_ii. A small negative shift keeps K − σM positive
+  // definite even for a free plate, so rigid-body modes are found and reported, not hidden.
+  double ratio = 0.0;
+  int terms = 0;
+  for (int i = 0; i < n; ++i)
+    if (M.coeff(i, i) > 0.0) ratio += K.coeff(i, i) / M.coeff(i, i), ++terms;
+  ratio /= std::max(terms, 1);
+  const double sigma = -1e-6 * ratio;
+
+  ShiftInvertOp op(K, M);
+  Spectra::SparseSymMatProd<double> Bop(M);
+  const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>,
+                               Spectra::GEigsMode::ShiftInvert>
+      solver(op, Bop, nev, ncv, sigma);
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestMagn, 2000, 1e-12);
+  if (solver.info() != Spectra::CompInfo::Successful)
+    throw std::runtime_error("modal analysis: the eigensolver did not converge");
+
+  const Eigen::VectorXd lambda = solver.eigenvalues(); // ω², nearest the shift first = ascending
+  const Eigen::MatrixXd vectors = solver.eigenvectors();
+  std::vector<int> order(static_cast<std::size_t>(lambda.size()));
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lambda(a) < lambda(b); });
+
+  ModalResult r;
+  r.modes.resize(n, lambda.size());
+  const double zero = 1e-10 * ratio; // ω² below this is round-off of a zero-energy mode
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const double l = lambda(order[i]);
+    if (std::abs(l) < zero) ++r.zero_energy_modes;
+    r.frequencies_hz.push_back(std::abs(l) < zero ? 0.0
+                                                  : std::sqrt(std::max(l, 0.0)) / (2.0 * std::numbers::pi));
+    r.modes.col(static_cast<Eigen::Index>(i)) = vectors.col(order[i]);
+  }
+  return r;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,19 @@
+#pragma once
+// Free vibration K φ = ω² M φ (SPEC §8): lowest frequencies by shift-invert Lanczos (Spectra).
+#include "plyimpact/fem/plate_model.hpp"
+
+#include <vector>
+
+namespace plyimpact {
+
+struct ModalResult {
+  std::vector<double> frequencies_hz; ///< ascending; rigid-body and spurious modes appear as ≈ 0
+  Eigen::MatrixXd modes;              ///< free-DOF mode shapes (columns), M-normalised
+  int zero_energy_modes = 0;          ///< modes with ω² below round-off of K (rigid + mechanisms)
+};
+
+/// The `count` lowest modes with the deck's mass matrix (or `mass` when given).
+[[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count);
+[[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass);
+
+} // namespace plyimpact

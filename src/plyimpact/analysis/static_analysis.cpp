@@ -1,0 +1,76 @@
+#include "plyimpact/analysis/static_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace plyimpact {
+
+namespace {
+
+std::string restraint_advice(const PlateModel& model) {
+  const auto free = unrestrained_rigid_motions(model);
+  std::string s;
+  if (!free.empty()) {
+    s = "the plate can move as a rigid body: ";
+    for (std::size_t i = 0; i < free.size(); ++i)
+      s += (i ? "; " : "") + free[i];
+    s +=
+        ". Restrain it, e.g. boundary.x0 = \"ss\" and boundary.xa = \"ss\" (w, tangential u/v and rotation), "
+        "or boundary.x0 = \"clamped\" for a cantilever";
+  } else {
+    s = "no rigid-body motion is free, so a zero-energy mechanism of the elements is: use [mesh] element = "
+        "\"mitc9\" or restrain w on more edges";
+  }
+  std::string codes;
+  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
+    codes +=
+        fmt::format("{}{} = {}", codes.empty() ? "" : ", ", to_string(e), model.boundary().edge(e).code());
+  return s + fmt::format(" (current edge codes uvwθxθy: {})", codes);
+}
+
+} // namespace
+
+SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K, SparseSolverKind kind) {
+  if (const auto free = unrestrained_rigid_motions(model); !free.empty())
+    throw InsufficientRestraint("insufficient restraint for a static solve: " + restraint_advice(model));
+  SpdSolver solver(kind);
+  try {
+    solver.factorize(K);
+  } catch (const NotPositiveDefinite& e) {
+    throw InsufficientRestraint(
+        fmt::format("the stiffness matrix is singular ({}): {}", e.what(), restraint_advice(model)));
+  }
+  return solver;
+}
+
+Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
+  if (load.pressure != 0.0) f += model.pressure_load(load.pressure);
+  if (load.point) f += model.point_load(load.point->x, load.point->y, load.point->force);
+  if (load.patch) f += model.patch_load(*load.patch);
+  return f;
+}
+
+StaticResult solve_static(const PlateModel& model, const StaticLoad& load) {
+  const SparseMatrix K = model.stiffness();
+  const SpdSolver solver = factor_stiffness(model, K);
+  StaticResult r;
+  r.u = solver.solve(static_load_vector(model, load));
+  if (!r.u.allFinite())
+    throw InsufficientRestraint("the static solution is not finite: " + restraint_advice(model));
+  const PlateGeometry& p = model.mesh().plate();
+  r.center_deflection = model.sampler(p.a / 2, p.b / 2).value(r.u);
+  if (load.point)
+    r.load_point_deflection = model.sampler(load.point->x, load.point->y).value(r.u);
+  else if (load.patch)
+    r.load_point_deflection = model.sampler(load.patch->x, load.patch->y).value(r.u);
+  else
+    r.load_point_deflection = r.center_deflection;
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    if (const int eq = model.dofs().equation(n, 2); eq >= 0)
+      r.max_abs_deflection = std::max(r.max_abs_deflection, std::abs(r.u(eq)));
+  return r;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,32 @@
+#pragma once
+// Linear static analysis: K u = f for point, patch and pressure loads (SPEC §8).
+#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/spd_solver.hpp"
+
+#include <stdexcept>
+
+namespace plyimpact {
+
+/// The plate cannot carry the load: rigid-body motions or mechanisms are left free. The message
+/// names them and what to restrain.
+class InsufficientRestraint : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct StaticResult {
+  Eigen::VectorXd u;                  ///< free DOFs
+  double center_deflection = 0.0;     ///< w at (a/2, b/2) [m]
+  double load_point_deflection = 0.0; ///< w under the point (or patch centre) load [m]; centre if none
+  double max_abs_deflection = 0.0;    ///< max |w| over the nodes [m]
+};
+
+/// Factors K and checks it; throws InsufficientRestraint with advice when it is singular.
+[[nodiscard]] SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K,
+                                         SparseSolverKind kind = SparseSolverKind::simplicial_ldlt);
+
+[[nodiscard]] Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load);
+[[nodiscard]] StaticResult solve_static(const PlateModel& model, const StaticLoad& load);
+
+} // namespace plyimpact

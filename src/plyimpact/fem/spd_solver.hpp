@@ -1,0 +1,45 @@
+#pragma once
+// Sparse symmetric positive-definite direct solver: factor once, solve many times.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <stdexcept>
+
+namespace plyimpact {
+
+enum class SparseSolverKind {
+  cholmod,         ///< CHOLMOD supernodal LLᵀ with its fill-reducing ordering (AMD/METIS)
+  simplicial_ldlt, ///< Eigen's SimplicialLDLT with AMD ordering
+};
+
+/// The matrix is not positive definite (insufficient restraint, zero thickness, ...).
+class NotPositiveDefinite : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class SpdSolver {
+public:
+  explicit SpdSolver(SparseSolverKind kind = SparseSolverKind::simplicial_ldlt);
+  ~SpdSolver();
+  SpdSolver(SpdSolver&&) noexcept;
+  SpdSolver& operator=(SpdSolver&&) noexcept;
+  SpdSolver(const SpdSolver&) = delete;
+  SpdSolver& operator=(const SpdSolver&) = delete;
+
+  /// Analyses the pattern (fill-reducing ordering) and factors A. Throws NotPositiveDefinite.
+  void factorize(const Eigen::SparseMatrix<double>& A);
+  /// x = A⁻¹ b with the current factor.
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  [[nodiscard]] SparseSolverKind kind() const { return kind_; }
+  /// Non-zeros of the factor (memory estimate), after factorize().
+  [[nodiscard]] long factor_nonzeros() const;
+
+private:
+  struct Impl;
+  SparseSolverKind kind_;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace plyimpact

@@ -1,0 +1,11 @@
+#pragma once
+// The discretized plate a deck describes.
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/io/deck.hpp"
+
+namespace plyimpact {
+
+/// Needs [laminate], [plate], [boundary]; [mesh] defaults to 15 × 11, lumped mass, q9.
+[[nodiscard]] PlateModel plate_from_deck(const Deck& deck);
+
+} // namespace plyimpact

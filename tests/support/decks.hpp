@@ -1,0 +1,59 @@
+#pragma once
+// Small laminates and plates for tests, written out in full so each test shows its inputs.
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/laminate/laminate.hpp"
+#include "plyimpact/laminate/layup.hpp"
+
+#include <string>
+
+namespace plyimpact::test {
+
+inline Material isotropic(double E, double nu, double rho) {
+  Material m;
+  m.name = "isotropic";
+  m.E1 = m.E2 = E;
+  m.G12 = m.G13 = m.G23 = E / (2.0 * (1.0 + nu));
+  m.nu12 = nu;
+  m.rho = rho;
+  return m;
+}
+
+inline Material t300_976() {
+  Material m;
+  m.name = "T300_976";
+  m.E1 = 144.8e9;
+  m.E2 = 9.65e9;
+  m.G12 = m.G13 = 7.10e9;
+  m.G23 = 5.92e9;
+  m.nu12 = 0.30;
+  m.rho = 1389.2;
+  return m;
+}
+
+/// §3.6 material of the thesis (Table 3.1): E1 = 129, E2 = 7.5, G12 = 3.5 GPa, ν12 = 0.33, ρ = 1540.
+inline Material thesis_3_6() {
+  Material m;
+  m.name = "thesis_3_6";
+  m.E1 = 129e9;
+  m.E2 = 7.5e9;
+  m.G12 = m.G13 = m.G23 = 3.5e9;
+  m.nu12 = 0.33;
+  m.rho = 1540.0;
+  return m;
+}
+
+inline Laminate laminate_of(const Material& m, const std::string& layup, double ply_thickness) {
+  std::vector<Ply> plies;
+  for (const double a : parse_layup(layup))
+    plies.push_back({a, ply_thickness, 0});
+  return Laminate({m}, plies);
+}
+
+inline BoundaryConditions all_edges(const std::string& type) {
+  BoundaryConditions bc;
+  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
+    bc.edges[static_cast<int>(e)] = *parse_restraint(type, e);
+  return bc;
+}
+
+} // namespace plyimpact::test
