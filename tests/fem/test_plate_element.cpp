@@ -279,3 +279,21 @@ TEST(Mesh, PointLoadIsDistributedByShapeFunctionsAndSumsToTheForce) {
 
 } // namespace
 } // namespace plyimpact
+
+namespace plyimpact {
+namespace {
+
+using test::all_edges;
+
+TEST(ElementChoice, AutomaticUsesTheThesisElementUnlessNoNodeHoldsW) {
+  const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
+  const PlateModel free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
+  EXPECT_EQ(free_plate.element().formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(solve_modal(free_plate, 8).zero_energy_modes, 6); // rigid-body modes only
+  BoundaryConditions cantilever = all_edges("free");
+  cantilever.edges[0] = *parse_restraint("clamped", Edge::x0);
+  EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, cantilever).element().formulation(), ElementFormulation::q9);
+}
+
+} // namespace
+} // namespace plyimpact

@@ -50,15 +50,22 @@ ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {
   const auto n = static_cast<int>(K.rows());
   const int nev = std::min(count, n - 2);
   if (nev < 1) throw std::invalid_argument("modal analysis: the plate has too few free DOFs");
-  // Scale of ω² on this mesh: mean of K_ii / M_ii. A small negative shift keeps K − σM positive
-  // definite even for a free plate, so rigid-body modes are found and reported, not hidden.
-  double ratio = 0.0;
-  int terms = 0;
-  for (int i = 0; i < n; ++i)
-    if (M.coeff(i, i) > 0.0) ratio += K.coeff(i, i) / M.coeff(i, i), ++terms;
-  ratio /= std::max(terms, 1);
-  const double sigma = -1e-6 * ratio;
-
+  // Shift: σ = 0 (plain inverse iteration on K) when K is positive definite. A free or partly free
+  // plate has a singular K; then a small negative shift keeps K − σM positive definite so rigid-body
+  // and spurious modes are found and reported, not hidden.
+  double sigma = 0.0;
+  {
+    const Eigen::SimplicialLDLT<SparseMatrix> ldlt(K);
+    const bool definite =
+        ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 1e-12 * ldlt.vectorD().maxCoeff();
+    if (!definite) {
+      double ratio = 0.0;
+      int terms = 0;
+      for (int i = 0; i < n; ++i)
+        if (M.coeff(i, i) > 0.0) ratio += K.coeff(i, i) / M.coeff(i, i), ++terms;
+      sigma = -1e-6 * ratio / std::max(terms, 1);
+    }
+  }
   ShiftInvertOp op(K, M);
   Spectra::SparseSymMatProd<double> Bop(M);
   const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
@@ -79,13 +86,18 @@ ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {
 
   ModalResult r;
   r.modes.resize(n, lambda.size());
-  const double zero = 1e-10 * ratio; // ω² below this is round-off of a zero-energy mode
+  // Zero-energy test on the Rayleigh quotient: φᵀKφ relative to the largest stiffness entry times
+  // φᵀφ is round-off (< 1e-12) for rigid and spurious modes, and above 1e-11 for the lowest elastic
+  // mode of plates up to a/h ≈ 1e5.
+  const double k_scale = K.diagonal().cwiseAbs().maxCoeff();
   for (std::size_t i = 0; i < order.size(); ++i) {
     const double l = lambda(order[i]);
-    if (std::abs(l) < zero) ++r.zero_energy_modes;
-    r.frequencies_hz.push_back(std::abs(l) < zero ? 0.0
-                                                  : std::sqrt(std::max(l, 0.0)) / (2.0 * std::numbers::pi));
-    r.modes.col(static_cast<Eigen::Index>(i)) = vectors.col(order[i]);
+    const Eigen::VectorXd phi = vectors.col(order[i]);
+    const double energy = phi.dot(K * phi) / (k_scale * phi.squaredNorm());
+    const bool zero = std::abs(energy) < 1e-12;
+    if (zero) ++r.zero_energy_modes;
+    r.frequencies_hz.push_back(zero ? 0.0 : std::sqrt(std::max(l, 0.0)) / (2.0 * std::numbers::pi));
+    r.modes.col(static_cast<Eigen::Index>(i)) = phi;
   }
   return r;
 }

@@ -9,7 +9,7 @@ namespace plyimpact {
 struct ModalResult {
   std::vector<double> frequencies_hz; ///< ascending; rigid-body and spurious modes appear as ≈ 0
   Eigen::MatrixXd modes;              ///< free-DOF mode shapes (columns), M-normalised
-  int zero_energy_modes = 0;          ///< modes with ω² below round-off of K (rigid + mechanisms)
+  int zero_energy_modes = 0;          ///< modes with φᵀKφ at round-off level (rigid + mechanisms)
 };
 
 /// The `count` lowest modes with the deck's mass matrix (or `mass` when given).

@@ -14,15 +14,16 @@ enum class MassMatrix {
 };
 
 enum class ElementFormulation {
-  q9,    ///< 9-node Lagrange, 3×3 Gauss membrane/bending, 2×2 Gauss shear (thesis)
-  mitc9, ///< 9-node with mixed-interpolated tensorial shear components (Bucalem & Bathe)
+  automatic, ///< q9, unless no node has w restrained (then its spurious w–θ mode would survive): mitc9
+  q9,        ///< 9-node Lagrange, 3×3 Gauss membrane/bending, 2×2 Gauss shear (thesis)
+  mitc9,     ///< 9-node with mixed-interpolated tensorial shear components (Bucalem & Bathe 1993)
 };
 
 struct MeshSpec {
   int nx = 15; ///< elements along x
   int ny = 11; ///< elements along y
   MassMatrix mass = MassMatrix::lumped;
-  ElementFormulation element = ElementFormulation::q9;
+  ElementFormulation element = ElementFormulation::automatic;
 };
 
 } // namespace plyimpact

@@ -52,7 +52,8 @@ ShearB shear_B(const PointKinematics& k) {
 }
 
 MindlinQ9::MindlinQ9(const Laminate& laminate, ElementFormulation formulation)
-    : F_(laminate.F()), inertia_(laminate.inertia()), formulation_(formulation) {
+    : F_(laminate.F()), inertia_(laminate.inertia()),
+      formulation_(formulation == ElementFormulation::automatic ? ElementFormulation::q9 : formulation) {
   C_mb_.topLeftCorner<3, 3>() = laminate.A();
   C_mb_.topRightCorner<3, 3>() = laminate.B();
   C_mb_.bottomLeftCorner<3, 3>() = laminate.B();

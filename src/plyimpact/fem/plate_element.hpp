@@ -43,6 +43,7 @@ struct GeneralizedStrains {
 
 class MindlinQ9 {
 public:
+  /// `formulation` must be q9 or mitc9 (resolve `automatic` first, see resolve_formulation).
   explicit MindlinQ9(const Laminate& laminate, ElementFormulation formulation = ElementFormulation::q9);
 
   /// Ke = ∫ B_Lᵀ C B_L dA: 3×3 Gauss for membrane/coupling/bending, 2×2 Gauss for shear (q9), or

@@ -25,8 +25,17 @@ Eigen::VectorXd PointSampler::as_vector(int size) const {
 
 PlateModel::PlateModel(Laminate laminate, PlateGeometry plate, MeshSpec spec, BoundaryConditions bc)
     : laminate_(std::move(laminate)), mesh_(plate, spec.nx, spec.ny), spec_(spec), bc_(std::move(bc)),
-      dofs_(mesh_, bc_), element_(laminate_, spec.element) {
+      dofs_(mesh_, bc_), element_(laminate_, resolve_formulation(spec.element, mesh_, bc_)) {
+  spec_.element = element_.formulation();
   build_pattern();
+}
+
+ElementFormulation resolve_formulation(ElementFormulation requested, const PlateMesh& mesh,
+                                       const BoundaryConditions& bc) {
+  if (requested != ElementFormulation::automatic) return requested;
+  for (int n = 0; n < mesh.node_count(); ++n)
+    if (node_restraint(mesh, bc, n).fixed[2]) return ElementFormulation::q9;
+  return ElementFormulation::mitc9;
 }
 
 void PlateModel::build_pattern() {

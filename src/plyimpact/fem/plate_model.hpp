@@ -69,6 +69,11 @@ private:
   std::vector<int> first_equation_; ///< first free equation of each node (−1 if none)
 };
 
+/// The formulation actually used: `automatic` becomes q9 when some node has w restrained (which
+/// suppresses q9's single spurious mode, docs/elements.md) and mitc9 otherwise.
+[[nodiscard]] ElementFormulation resolve_formulation(ElementFormulation requested, const PlateMesh& mesh,
+                                                     const BoundaryConditions& bc);
+
 /// Rigid-body motions of the plate that the restraints leave free (empty when properly supported),
 /// each described in words, e.g. "translation along z (w)".
 [[nodiscard]] std::vector<std::string> unrestrained_rigid_motions(const PlateModel& model);

@@ -363,9 +363,10 @@ MeshSpec read_mesh(const TableReader& t) {
   m.mass = t.optional_choice<MassMatrix>(
                 "mass", {{"lumped", MassMatrix::lumped}, {"consistent", MassMatrix::consistent}})
                .value_or(MassMatrix::lumped);
-  m.element = t.optional_choice<ElementFormulation>(
-                   "element", {{"q9", ElementFormulation::q9}, {"mitc9", ElementFormulation::mitc9}})
-                  .value_or(ElementFormulation::q9);
+  m.element = t.optional_choice<ElementFormulation>("element", {{"auto", ElementFormulation::automatic},
+                                                                {"q9", ElementFormulation::q9},
+                                                                {"mitc9", ElementFormulation::mitc9}})
+                  .value_or(ElementFormulation::automatic);
   return m;
 }
 
