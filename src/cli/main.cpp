@@ -1,14 +1,17 @@
 // plyimpact — low-velocity impact of laminated composite plates.
 //
+//   plyimpact impact   examples/thesis-3.6-v268.toml -o results/v268   # the default analysis
 //   plyimpact laminate examples/annex2.toml          # ABD, F, inertias, Hertz constant
 //   plyimpact laminate examples/annex2.toml --json   # the same as JSON (SI)
 //   plyimpact static   examples/static-navier.toml -o results/static
 //   plyimpact modal    examples/modal-navier.toml  -o results/modal
 //   plyimpact buckling examples/buckling-isotropic.toml -o results/buckling
 #include "plyimpact/analysis/buckling_analysis.hpp"
+#include "plyimpact/analysis/impact_analysis.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/static_analysis.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/plate_from_deck.hpp"
 #include "plyimpact/io/results.hpp"
@@ -16,10 +19,14 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <optional>
 #include <string>
+#include <unistd.h>
 
 namespace {
 
@@ -105,6 +112,60 @@ int run_buckling(const Options& o) {
   return 0;
 }
 
+std::atomic<bool> interrupted{false};
+
+extern "C" void on_signal(int /*signal*/) {
+  interrupted.store(true);
+}
+
+/// Progress on a terminal only, and only once a run has taken more than a second.
+class ProgressBar {
+public:
+  ProgressBar() : enabled_(::isatty(STDOUT_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+  void operator()(double t, long step) {
+    if (!enabled_) return;
+    if (std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
+    shown_ = true;
+    fmt::print(stderr, "\r  t = {:10.1f} us, step {:>9}", t * 1e6, step);
+    std::fflush(stderr);
+  }
+  ~ProgressBar() {
+    if (shown_) fmt::print(stderr, "\r{:40}\r", "");
+  }
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+private:
+  bool enabled_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point start_;
+};
+
+int run_impact(const Options& o) {
+  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
+  ImpactSettings settings = impact_settings_from_deck(deck);
+  std::optional<PlateModel> model;
+  if (settings.rigid_target) {
+    model.emplace(*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{}));
+  } else {
+    if (!deck.boundary)
+      throw DeckError(fmt::format("{}: error: the impact analysis needs [boundary]", deck.source));
+    model.emplace(plate_from_deck(deck));
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  settings.cancel = &interrupted;
+  auto bar = std::make_shared<ProgressBar>();
+  settings.progress = [bar](double t, long step) { (*bar)(t, step); };
+  const ImpactSolver solver(*model, settings);
+  const ImpactResult r = solver.run();
+  bar.reset();
+  fmt::print("{}", impact_summary_text(settings, r));
+  if (const auto out = results_folder(o, deck)) write_impact_results(*out, deck, &*model, settings, r);
+  if (interrupted.load()) return 130;
+  return r.complete ? 0 : 3;
+}
+
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->add_option("deck", o.deck_path, "TOML input deck")->required();
@@ -121,6 +182,8 @@ int run(int argc, char** argv) {
       app.add_subcommand("laminate", "Ply and laminate properties (A, B, D, F, inertias, Hertz k)");
   laminate->add_option("deck", o.deck_path, "TOML input deck")->required();
   laminate->add_flag("--json", o.json, "print JSON (SI units) instead of text");
+  CLI::App* impact =
+      add_analysis(app, "impact", "Impact of a rigid sphere: contact force, deflection, energies", o);
   CLI::App* stat = add_analysis(app, "static", "Linear static analysis (point, patch, pressure loads)", o);
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
@@ -132,6 +195,7 @@ int run(int argc, char** argv) {
   }
   try {
     if (*laminate) return run_laminate(o);
+    if (*impact) return run_impact(o);
     if (*stat) return run_static(o);
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);

@@ -4,8 +4,9 @@ namespace plyimpact {
 
 /// Rectangular plate 0 ≤ x ≤ a, 0 ≤ y ≤ b (mid-plane is z = 0).
 struct PlateGeometry {
-  double a = 0.0; ///< length along x [m]
-  double b = 0.0; ///< width along y [m]
+  double a = 0.0;     ///< length along x [m]
+  double b = 0.0;     ///< width along y [m]
+  bool rigid = false; ///< a rigid, immovable target instead of the plate (impact checks)
 };
 
 enum class MassMatrix {

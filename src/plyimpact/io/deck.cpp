@@ -533,8 +533,12 @@ Deck parse_deck(std::string_view text, const std::string& source) {
     }
   }
   if (const auto p = top.optional_table("plate")) {
-    p->only({"a", "b"});
+    p->only({"a", "b", "rigid"});
     d.plate = PlateGeometry{p->positive("a", "m"), p->positive("b", "m")};
+    if (const toml::node* r = p->node("rigid")) {
+      if (r->as_boolean() == nullptr) p->fail_at("rigid", "plate.rigid must be true or false");
+      d.plate->rigid = r->as_boolean()->get();
+    }
   }
   if (const auto t = top.optional_table("laminate")) read_laminate(d, *t, source);
   if (const auto t = top.optional_table("mesh")) d.mesh = read_mesh(*t);
@@ -582,8 +586,23 @@ Deck parse_deck(std::string_view text, const std::string& source) {
     d.damage.every = static_cast<int>(every);
   }
   if (const auto t = top.optional_table("output")) {
-    t->only({"dir"});
+    t->only({"dir", "fields_at", "history_every"});
     d.output_dir = t->optional_string("dir").value_or("results");
+    if (const toml::node* f = t->node("fields_at")) {
+      const toml::array* arr = f->as_array();
+      if (arr == nullptr) t->fail_at("fields_at", "output.fields_at must be an array of times in s");
+      for (const toml::node& item : *arr) {
+        const auto v = item.value<double>();
+        if (!v || !(*v >= 0.0) || !std::isfinite(*v))
+          fail(source, item.source(), "output.fields_at: expected a time in s (a number >= 0)");
+        d.field_times.push_back(*v);
+      }
+    }
+    const long every = t->optional_integer("history_every").value_or(1);
+    if (every < 1)
+      t->fail_at("history_every",
+                 fmt::format("output.history_every must be a positive step count, got {}", every));
+    d.history_every = static_cast<int>(every);
   }
   return d;
 }
@@ -604,7 +623,7 @@ void require_sections(const Deck& d, AnalysisKind kind) {
   need(d.laminate.has_value(), "[laminate] (with [materials.NAME])");
   if (kind != AnalysisKind::laminate) {
     need(d.plate.has_value(), "[plate]");
-    need(d.boundary.has_value(), "[boundary]");
+    need(d.boundary.has_value() || (d.plate && d.plate->rigid), "[boundary]");
   }
   if (kind == AnalysisKind::static_) need(d.load.has_value(), "[load]");
   if (kind == AnalysisKind::buckling) need(d.buckling.has_value(), "[buckling]");

@@ -55,7 +55,9 @@ struct Deck {
   std::optional<BucklingSettings> buckling;
   DamageSettings damage;
   std::string output_dir = "results";
-  std::string text; ///< the deck's own text, recorded next to results
+  std::vector<double> field_times; ///< [output] fields_at: displacement fields at these times [s]
+  int history_every = 1;           ///< [output] history_every
+  std::string text;                ///< the deck's own text, recorded next to results
 };
 
 /// Parses a deck from text; `source` names it in messages. Throws DeckError.

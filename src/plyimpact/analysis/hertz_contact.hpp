@@ -1,0 +1,52 @@
+#pragma once
+// Contact law between the rigid sphere and the plate (SPEC §4, thesis (2.5)–(2.7)).
+//
+//   loading      F = k α^1.5                                  (Hertz, modified constant k)
+//   unloading    F = Fm ((α − α0)/(αm − α0))^q                (Tan & Sun), α0 = β(αm − αcr) if αm > αcr
+//   reloading    F = Fm ((α − α0)/(αm − α0))^1.5  for α ≤ αm  (Yang & Sun), after a full unload
+//
+// αm, Fm: indentation and force at the start of unloading (the largest indentation so far). The
+// unloading and reloading curves are reversible: moving back and forth below αm retraces them (no
+// chatter from switching exponents mid-way). Beyond αm the loading law applies. No tension: F = 0
+// for α ≤ α0.
+#include "plyimpact/analysis/parameters.hpp"
+
+namespace plyimpact {
+
+class HertzContact {
+public:
+  HertzContact(double k, const ContactLawParameters& law);
+
+  /// Contact force for indentation α with the current history (does not change the history).
+  [[nodiscard]] double force(double alpha) const;
+  /// dF/dα at α (one-sided from the right at kinks; 0 where F = 0).
+  [[nodiscard]] double stiffness(double alpha) const;
+  /// Records a converged indentation: updates αm, Fm, α0 and the branch.
+  void commit(double alpha);
+
+  [[nodiscard]] double k() const { return k_; }
+  [[nodiscard]] double max_indentation() const { return alpha_m_; }
+  [[nodiscard]] double permanent_indentation() const { return alpha_0_; }
+  [[nodiscard]] bool reloading() const { return reloading_; }
+
+private:
+  double k_;
+  ContactLawParameters law_;
+  double alpha_m_ = 0.0;   ///< largest indentation reached
+  double force_m_ = 0.0;   ///< force at αm (on the loading curve)
+  double alpha_0_ = 0.0;   ///< permanent indentation
+  bool reloading_ = false; ///< a full unload (separation) happened since αm was reached
+};
+
+/// Solves Fc = F(α̂ − C·Fc) for the contact force, with F the contact law, α̂ the indentation the
+/// step would have without contact force and C > 0 the combined compliance of impactor and plate at
+/// the contact point (SPEC §4: ws is affine in Fc). Safeguarded Newton; |ΔF| ≤ 1e-13·F at exit.
+struct ContactSolution {
+  double force = 0.0;
+  double alpha = 0.0;
+  int iterations = 0;
+};
+[[nodiscard]] ContactSolution solve_contact_force(const HertzContact& law, double alpha_free,
+                                                  double compliance);
+
+} // namespace plyimpact
