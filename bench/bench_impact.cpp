@@ -1,0 +1,82 @@
+// Impact solver benchmarks (issue: impact speed targets). Run:
+//   ./build/release/bench/bench_impact --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Counters: steps, us_per_step, solve_us (one triangular solve pair with the same factor, measured
+// in the same process) and overhead = us_per_step / solve_us − 1.
+#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/impact_report.hpp"
+#include "plyimpact/io/plate_from_deck.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+namespace {
+
+using namespace plyimpact;
+
+Deck section36(int nx, int ny, std::optional<double> end) {
+  Deck deck = load_deck(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/thesis-3.6-v268.toml");
+  deck.mesh->nx = nx;
+  deck.mesh->ny = ny;
+  deck.time.end = end;
+  return deck;
+}
+
+void run_impact(benchmark::State& state, const Deck& deck, SparseSolverKind kind) {
+  const PlateModel model = plate_from_deck(deck);
+  ImpactSettings settings = impact_settings_from_deck(deck);
+  settings.solver = kind;
+  const ImpactSolver solver(model, settings);
+  ImpactResult r;
+  for (auto _ : state) {
+    r = solver.run();
+    benchmark::DoNotOptimize(r.peak_force);
+  }
+  const double solve = solver.time_one_solve(101);
+  const double per_step = r.wall_time / static_cast<double>(r.steps);
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["equations"] = solver.equations();
+  state.counters["us_per_step"] = per_step * 1e6;
+  state.counters["solve_us"] = solve * 1e6;
+  state.counters["overhead"] = per_step / solve - 1.0;
+  state.counters["peak_force_N"] = r.peak_force;
+}
+
+/// §3.6 case, 15×11, 6.14 kg at 2.68 m/s, Δt = 1 µs, full event (end = auto).
+void BM_Impact_Section36_15x11_FullEvent(benchmark::State& state) {
+  run_impact(state, section36(15, 11, std::nullopt), static_cast<SparseSolverKind>(state.range(0)));
+}
+BENCHMARK(BM_Impact_Section36_15x11_FullEvent)
+    ->Arg(static_cast<int>(SparseSolverKind::simplicial_ldlt))
+    ->Arg(static_cast<int>(SparseSolverKind::cholmod))
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+/// Setup cost: assembly, factorization of K̄ and the fundamental period for the end rule.
+void BM_Impact_Section36_15x11_Setup(benchmark::State& state) {
+  const Deck deck = section36(15, 11, std::nullopt);
+  const PlateModel model = plate_from_deck(deck);
+  const ImpactSettings settings = impact_settings_from_deck(deck);
+  for (auto _ : state) {
+    const ImpactSolver solver(model, settings);
+    benchmark::DoNotOptimize(solver.equations());
+  }
+}
+BENCHMARK(BM_Impact_Section36_15x11_Setup)->Unit(benchmark::kMillisecond);
+
+/// Per-step cost on the finer meshes: the first 500 µs (500 steps) of the same event.
+void BM_Impact_Section36_500Steps(benchmark::State& state) {
+  run_impact(state, section36(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 500e-6),
+             SparseSolverKind::simplicial_ldlt);
+}
+BENCHMARK(BM_Impact_Section36_500Steps)
+    ->Args({15, 11})
+    ->Args({30, 22})
+    ->Args({60, 44})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+} // namespace
+
+BENCHMARK_MAIN();

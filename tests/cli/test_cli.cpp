@@ -1,0 +1,175 @@
+// The command line: every analysis writes DIR/summary.json with the SPEC §10 keys; bad decks exit
+// non-zero with the file:line:column message.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status = -1;
+  std::string out;
+};
+
+CommandResult run(const std::string& args) {
+  const std::string cmd = std::string(PLYIMPACT_EXE) + " " + args + " 2>&1";
+  CommandResult r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe) != nullptr)
+    r.out += buf.data();
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("plyimpact-cli-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string small_deck(const std::string& analysis, const std::string& extra) {
+  return "analysis = \"" + analysis + R"("
+[materials.T300_976]
+E1 = 144.8e9
+E2 = 9.65e9
+G12 = 7.10e9
+G23 = 5.92e9
+nu12 = 0.30
+rho = 1389.2
+[laminate]
+material = "T300_976"
+layup = "[0_2/90_4/0_2]"
+ply_thickness = 0.465e-3
+[plate]
+a = 0.127
+b = 0.0762
+[mesh]
+nx = 6
+ny = 4
+[boundary]
+x0 = "ss"
+xa = "ss"
+y0 = "ss"
+yb = "ss"
+)" + extra;
+}
+
+fs::path write(const fs::path& dir, const std::string& text) {
+  const fs::path p = dir / "deck.toml";
+  std::ofstream(p) << text;
+  return p;
+}
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+TEST(Cli, ImpactWritesHistoryAndSummaryWithTheSpecKeys) {
+  const fs::path dir = scratch("impact");
+  const fs::path deck = write(dir, small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+[time]
+dt = 1e-6
+)"));
+  const CommandResult r = run("impact " + deck.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("peak force"), std::string::npos);
+  const auto j = read_json(dir / "out" / "summary.json");
+  for (const char* key :
+       {"peak_force", "time_of_peak_force", "contact_duration", "episodes", "peak_contact_deflection",
+        "max_indentation", "permanent_indentation", "rebound_velocity", "absorbed_energy", "contacts",
+        "steps", "complete", "wall_time"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_TRUE(j["complete"].get<bool>());
+  EXPECT_GT(j["peak_force"].get<double>(), 0.0);
+  std::ifstream csv(dir / "out" / "history.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
+                    "plate_strain_J,impactor_energy_J,contact_work_J");
+  EXPECT_TRUE(fs::exists(dir / "out" / "deck.toml"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "provenance.json"));
+}
+
+TEST(Cli, StaticModalBucklingSummariesCarryTheirKeys) {
+  const fs::path dir = scratch("fem");
+  const fs::path deck = write(dir, small_deck("static", R"(
+[load]
+pressure = 1e5
+point = { x = 0.0635, y = 0.0381, force = 100.0 }
+[modal]
+count = 4
+[buckling]
+Nx = -1e5
+count = 2
+)"));
+  for (const std::string analysis : {"static", "modal", "buckling"}) {
+    const CommandResult r = run(analysis + " " + deck.string() + " -o " + (dir / analysis).string());
+    ASSERT_EQ(r.status, 0) << analysis << ": " << r.out;
+  }
+  const auto s = read_json(dir / "static" / "summary.json");
+  EXPECT_GT(s["center_deflection"].get<double>(), 0.0); // load along +z deflects along +z
+  EXPECT_TRUE(s.contains("load_point_deflection"));
+  EXPECT_TRUE(s.contains("max_abs_deflection"));
+  const auto m = read_json(dir / "modal" / "summary.json");
+  const auto f = m["frequencies_hz"].get<std::vector<double>>();
+  ASSERT_EQ(f.size(), 4U);
+  EXPECT_TRUE(std::is_sorted(f.begin(), f.end()));
+  const auto b = read_json(dir / "buckling" / "summary.json");
+  EXPECT_EQ(b["load_factors"].size(), 2U);
+  EXPECT_TRUE(fs::exists(dir / "static" / "displacements.csv"));
+}
+
+TEST(Cli, LaminateJsonHasTheScriptKeys) {
+  const CommandResult r =
+      run("laminate --json " + std::string(PLYIMPACT_SOURCE_DIR) + "/examples/annex2.toml");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"thickness", "plies", "A", "B", "D", "F", "inertia", "hertz_k"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_NEAR(j["A"][0][0].get<double>(), 2.8901e8, 0.0001e8);
+  EXPECT_EQ(j["plies"].size(), 8U);
+  EXPECT_NEAR(j["hertz_k"].get<double>(), 0.98218e9, 0.00001e9);
+}
+
+TEST(Cli, BadDeckExitsNonZeroWithTheLocation) {
+  const fs::path dir = scratch("bad");
+  const fs::path deck = write(dir, "analysis = \"impact\"\n[plate]\na = -1\nb = 1\n");
+  const CommandResult r = run("impact " + deck.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("deck.toml:3:5: error: plate.a must be positive"), std::string::npos) << r.out;
+  EXPECT_NE(run("impact /nonexistent.toml").status, 0);
+}
+
+TEST(Cli, UnrestrainedStaticPlateIsAClearErrorNotNaN) {
+  const fs::path dir = scratch("free");
+  std::string text = small_deck("static", "[load]\npressure = 1e5\n");
+  for (const char* e : {"x0", "xa", "y0", "yb"}) {
+    const std::string from = std::string(e) + " = \"ss\"";
+    text.replace(text.find(from), from.size(), std::string(e) + " = \"free\"");
+  }
+  const CommandResult r = run("static " + write(dir, text).string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("insufficient restraint"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos);
+}
+
+} // namespace
