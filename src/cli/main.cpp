@@ -7,9 +7,13 @@
 //   plyimpact modal    examples/modal-navier.toml  -o results/modal
 //   plyimpact buckling examples/buckling-isotropic.toml -o results/buckling
 #include "plyimpact/analysis/buckling_analysis.hpp"
+#include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_analysis.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/static_analysis.hpp"
+#include "plyimpact/analysis/stress_probe.hpp"
+#include "plyimpact/analysis/threshold_search.hpp"
+#include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/laminate_report.hpp"
@@ -36,6 +40,8 @@ struct Options {
   std::string deck_path;
   std::string output_dir;
   bool json = false;
+  std::string criterion;
+  double tolerance = 0.0;
 };
 
 Deck read_deck_for(const std::string& path, AnalysisKind kind) {
@@ -141,29 +147,96 @@ private:
   std::chrono::steady_clock::time_point start_;
 };
 
+PlateModel impact_model(const Deck& deck, const ImpactSettings& settings) {
+  if (settings.rigid_target)
+    return {*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{})};
+  return plate_from_deck(deck);
+}
+
+DamageOptions damage_options(const Deck& deck) {
+  DamageOptions d;
+  d.every = deck.damage.every;
+  d.criterion_options.delamination_ply_n =
+      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
+  return d;
+}
+
 int run_impact(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
   ImpactSettings settings = impact_settings_from_deck(deck);
-  std::optional<PlateModel> model;
-  if (settings.rigid_target) {
-    model.emplace(*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{}));
-  } else {
-    if (!deck.boundary)
-      throw DeckError(fmt::format("{}: error: the impact analysis needs [boundary]", deck.source));
-    model.emplace(plate_from_deck(deck));
-  }
+  const PlateModel model = impact_model(deck, settings);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   settings.cancel = &interrupted;
   auto bar = std::make_shared<ProgressBar>();
   settings.progress = [bar](double t, long step) { (*bar)(t, step); };
-  const ImpactSolver solver(*model, settings);
-  const ImpactResult r = solver.run();
+  std::optional<DamageTracker> damage;
+  if (!deck.damage.criteria.empty() && !settings.rigid_target)
+    damage.emplace(model, parse_criteria(deck.damage.criteria), damage_options(deck));
+  std::optional<StressProbes> probes;
+  if (!deck.probes.empty() && !settings.rigid_target) probes.emplace(model, deck.probes);
+  ImpactObserver observer;
+  if (damage || probes)
+    observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
+      if (damage) damage->observe(step, t, force, u);
+      if (probes) probes->observe(step, t, force, u);
+    };
+  const ImpactSolver solver(model, settings);
+  const ImpactResult r = solver.run(observer);
   bar.reset();
   fmt::print("{}", impact_summary_text(settings, r));
-  if (const auto out = results_folder(o, deck)) write_impact_results(*out, deck, &*model, settings, r);
+  const std::vector<DamageOnset> first = damage ? damage->first_onsets() : std::vector<DamageOnset>{};
+  if (damage)
+    fmt::print("first failures (per criterion, mode and ply/interface):\n{}", first_failures_text(first));
+  if (const auto out = results_folder(o, deck)) {
+    if (damage) {
+      out->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
+      out->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
+    }
+    if (probes) out->write_text("probes.csv", probes_csv(*probes));
+    write_impact_results(*out, deck, &model, settings, r, [&](nlohmann::json& j) {
+      if (!damage) return;
+      j["first_failures"] = nlohmann::json::array();
+      for (const auto& f : first)
+        j["first_failures"].push_back(onset_json(f));
+    });
+  }
   if (interrupted.load()) return 130;
   return r.complete ? 0 : 3;
+}
+
+int run_threshold(const Options& o) {
+  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::threshold);
+  const ImpactSettings settings = impact_settings_from_deck(deck);
+  std::string name = !o.criterion.empty() ? o.criterion : deck.threshold.criterion;
+  if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
+  if (name.empty())
+    throw DeckError(fmt::format("{}: error: give --criterion NAME or [threshold] criterion", deck.source));
+  const auto criterion = parse_criterion(name);
+  if (!criterion) throw DeckError(fmt::format("{}: error: unknown criterion '{}'", deck.source, name));
+  const PlateModel model = plate_from_deck(deck);
+  ThresholdOptions options;
+  options.tolerance = o.tolerance > 0.0 ? o.tolerance : deck.threshold.tolerance;
+  options.max_velocity = deck.threshold.max_velocity;
+  options.damage = damage_options(deck);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ThresholdResult r = find_threshold_velocity(model, settings, *criterion, options);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  fmt::print("{}", threshold_text(name, r));
+  if (const auto out = results_folder(o, deck)) {
+    nlohmann::json j = summary_header(deck, "threshold");
+    j["criterion"] = name;
+    j["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
+    j["lower_velocity"] = r.lower;
+    j["tolerance"] = options.tolerance;
+    j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
+    j["trials"] = nlohmann::json::array();
+    for (const auto& t : r.trials)
+      j["trials"].push_back({{"velocity", t.velocity}, {"failed", t.failed}, {"peak_index", t.peak_index}});
+    j["wall_time"] = wall;
+    out->write_json("summary.json", j);
+  }
+  return r.found ? 0 : 4;
 }
 
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
@@ -184,6 +257,11 @@ int run(int argc, char** argv) {
   laminate->add_flag("--json", o.json, "print JSON (SI units) instead of text");
   CLI::App* impact =
       add_analysis(app, "impact", "Impact of a rigid sphere: contact force, deflection, energies", o);
+  CLI::App* threshold = add_analysis(
+      app, "threshold", "Smallest impact velocity at which a failure criterion first reaches 1", o);
+  threshold->add_option("--criterion", o.criterion,
+                        "criterion name (default: [threshold] or the first [damage] one)");
+  threshold->add_option("--tolerance", o.tolerance, "bracket width in m/s (default 0.01)");
   CLI::App* stat = add_analysis(app, "static", "Linear static analysis (point, patch, pressure loads)", o);
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
@@ -196,6 +274,7 @@ int run(int argc, char** argv) {
   try {
     if (*laminate) return run_laminate(o);
     if (*impact) return run_impact(o);
+    if (*threshold) return run_threshold(o);
     if (*stat) return run_static(o);
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);

@@ -65,6 +65,23 @@ struct BucklingSettings {
 struct DamageSettings {
   std::vector<std::string> criteria; ///< deck names, e.g. "choi-chang-matrix"
   int every = 1;
+  bool delamination_ply_n_lower = false; ///< (2.43): ply k+1 plays "n" (thesis wording) instead of ply k
+};
+
+/// Threshold-velocity search (SPEC §7).
+struct ThresholdSettings {
+  std::string criterion;     ///< empty: the first of [damage] criteria
+  double tolerance = 0.01;   ///< [m/s]
+  double max_velocity = 500; ///< [m/s]
+};
+
+/// A point where stress histories are written: ply (1-based) at z = top | bottom | average, or an
+/// interface (1-based, stresses from both adjacent plies).
+struct StressProbeSpec {
+  std::string name;
+  double x = 0.0, y = 0.0;
+  int ply = 0, interface = 0;
+  std::string position = "average";
 };
 
 } // namespace plyimpact

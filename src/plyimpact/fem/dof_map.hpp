@@ -17,7 +17,8 @@ public:
   [[nodiscard]] int total_count() const { return static_cast<int>(equation_.size()); }
   /// Equation of DOF d (0..4 = u, v, w, θx, θy) of node n, or −1 when restrained.
   [[nodiscard]] int equation(int node, int dof) const {
-    return equation_[static_cast<std::size_t>(dofs_per_node * node + dof)];
+    return equation_[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(node) +
+                     static_cast<std::size_t>(dof)];
   }
   [[nodiscard]] std::array<int, q9_dofs> element_equations(const PlateMesh& mesh, int e) const;
   /// Restraint actually applied at a node (edge codes, corners).

@@ -1,5 +1,6 @@
 #include "plyimpact/io/deck.hpp"
 
+#include "plyimpact/laminate/failure_criteria.hpp"
 #include "plyimpact/laminate/layup.hpp"
 
 #include <fmt/format.h>
@@ -570,13 +571,28 @@ Deck parse_deck(std::string_view text, const std::string& source) {
     d.buckling = b;
   }
   if (const auto t = top.optional_table("damage")) {
-    t->only({"criteria", "every"});
+    t->only({"criteria", "every", "delamination_ply_n"});
     if (const toml::node* c = t->node("criteria")) {
       const toml::array* arr = c->as_array();
       if (arr == nullptr) t->fail_at("criteria", "damage.criteria must be an array of criterion names");
       for (const toml::node& n : *arr) {
         const auto* s = n.as_string();
-        if (s == nullptr) fail(source, n.source(), "damage.criteria: expected a criterion name (a string)");
+        if (s == nullptr || !parse_criterion(s->get())) {
+          std::string names;
+          for (const Criterion k : all_criteria())
+            names += (names.empty() ? "" : " | ") + std::string(to_string(k));
+          fail(source, n.source(), "damage.criteria: expected a criterion name, one of " + names);
+        }
+        const Criterion crit = *parse_criterion(s->get());
+        if (d.laminate)
+          for (std::size_t k = 0; k < d.laminate->ply_count(); ++k) {
+            const Material& m = d.laminate->material_of(k);
+            const auto missing = missing_strengths(crit, m.strength);
+            if (!missing.empty())
+              fail(source, n.source(),
+                   fmt::format("criterion {} needs {} of material '{}' (add it to [materials.{}])", s->get(),
+                               to_string(missing.front()), m.name, m.name));
+          }
         d.damage.criteria.push_back(s->get());
       }
     }
@@ -584,9 +600,51 @@ Deck parse_deck(std::string_view text, const std::string& source) {
     if (every < 1)
       t->fail_at("every", fmt::format("damage.every must be a positive step count, got {}", every));
     d.damage.every = static_cast<int>(every);
+    d.damage.delamination_ply_n_lower =
+        t->optional_choice<bool>("delamination_ply_n", {{"upper", false}, {"lower", true}}).value_or(false);
+  }
+  if (const auto t = top.optional_table("threshold")) {
+    t->only({"criterion", "tolerance", "max_velocity"});
+    if (const auto c = t->optional_string("criterion")) {
+      if (!parse_criterion(*c))
+        t->fail_at("criterion", fmt::format("threshold.criterion: unknown criterion \"{}\"", *c));
+      d.threshold.criterion = *c;
+    }
+    d.threshold.tolerance = t->optional_positive("tolerance", "m/s").value_or(0.01);
+    d.threshold.max_velocity = t->optional_positive("max_velocity", "m/s").value_or(500.0);
   }
   if (const auto t = top.optional_table("output")) {
-    t->only({"dir", "fields_at", "history_every"});
+    t->only({"dir", "fields_at", "history_every", "probe"});
+    if (const toml::node* pr = t->node("probe")) {
+      const toml::array* arr = pr->as_array();
+      if (arr == nullptr || !arr->is_array_of_tables())
+        t->fail_at("probe", "output.probe must be an array of tables: [[output.probe]]");
+      for (const toml::node& item : *arr) {
+        const TableReader p(*item.as_table(), "output.probe", source);
+        p.only({"name", "x", "y", "ply", "interface", "position"});
+        StressProbeSpec spec;
+        spec.x = p.number("x", "m");
+        spec.y = p.number("y", "m");
+        spec.ply = static_cast<int>(p.optional_integer("ply").value_or(0));
+        spec.interface = static_cast<int>(p.optional_integer("interface").value_or(0));
+        spec.position = p.optional_choice<std::string>(
+                             "position", {{"average", "average"}, {"top", "top"}, {"bottom", "bottom"}})
+                            .value_or("average");
+        const int plies = d.laminate ? static_cast<int>(d.laminate->ply_count()) : 0;
+        if ((spec.ply > 0) == (spec.interface > 0))
+          p.fail_here("output.probe needs exactly one of ply = N or interface = N (1-based)");
+        if (d.laminate &&
+            (spec.ply > plies || spec.interface > plies - 1 || spec.ply < 0 || spec.interface < 0))
+          p.fail_here(
+              fmt::format("output.probe: the laminate has {} plies and {} interfaces", plies, plies - 1));
+        if (d.plate && !(spec.x >= 0 && spec.x <= d.plate->a && spec.y >= 0 && spec.y <= d.plate->b))
+          p.fail_at("x", fmt::format("output.probe point ({}, {}) m lies outside the plate", spec.x, spec.y));
+        spec.name =
+            p.optional_string("name").value_or(spec.ply > 0 ? fmt::format("ply{}_{}", spec.ply, spec.position)
+                                                            : fmt::format("interface{}", spec.interface));
+        d.probes.push_back(spec);
+      }
+    }
     d.output_dir = t->optional_string("dir").value_or("results");
     if (const toml::node* f = t->node("fields_at")) {
       const toml::array* arr = f->as_array();

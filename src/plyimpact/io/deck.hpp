@@ -54,6 +54,8 @@ struct Deck {
   ModalSettings modal;
   std::optional<BucklingSettings> buckling;
   DamageSettings damage;
+  ThresholdSettings threshold;
+  std::vector<StressProbeSpec> probes; ///< [[output.probe]]
   std::string output_dir = "results";
   std::vector<double> field_times; ///< [output] fields_at: displacement fields at these times [s]
   int history_every = 1;           ///< [output] history_every

@@ -99,13 +99,15 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
 }
 
 void write_impact_results(const ResultsFolder& folder, const Deck& deck, const PlateModel* model,
-                          const ImpactSettings& s, const ImpactResult& r) {
+                          const ImpactSettings& s, const ImpactResult& r,
+                          const std::function<void(nlohmann::json&)>& extend) {
   folder.write_text("history.csv", impact_history_csv(r));
   if (model != nullptr)
     for (const auto& f : r.fields)
       folder.write_nodal_field(fmt::format("field_t{:.6e}.csv", f.t), *model, f.u);
-  folder.write_json("summary.json",
-                    impact_summary_json(deck, s, r)); // last: its presence marks a finished write
+  nlohmann::json j = impact_summary_json(deck, s, r);
+  if (extend) extend(j);
+  folder.write_json("summary.json", j); // last: its presence marks a finished write
 }
 
 } // namespace plyimpact

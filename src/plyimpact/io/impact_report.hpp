@@ -5,6 +5,7 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/results.hpp"
 
+#include <functional>
 #include <string>
 
 namespace plyimpact {
@@ -21,8 +22,9 @@ namespace plyimpact {
                                                  const ImpactResult& result);
 [[nodiscard]] std::string impact_history_csv(const ImpactResult& result);
 [[nodiscard]] std::string impact_summary_text(const ImpactSettings& settings, const ImpactResult& result);
-/// history.csv, summary.json and field_<t>.csv for every snapshot.
+/// history.csv, field_<t>.csv for every snapshot and, last, summary.json (`extend` may add keys).
 void write_impact_results(const ResultsFolder& folder, const Deck& deck, const PlateModel* model,
-                          const ImpactSettings& settings, const ImpactResult& result);
+                          const ImpactSettings& settings, const ImpactResult& result,
+                          const std::function<void(nlohmann::json&)>& extend = {});
 
 } // namespace plyimpact

@@ -27,6 +27,8 @@ struct ModeValue {
   double b; ///< linear part at λ = 1
 };
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 /// Smallest R > 0 with a R² + b R = 1, or +inf if the ray never reaches 1.
 /// Written as 2 / (b + √(b² + 4a)) to avoid cancellation; covers a > 0, a = 0 and a < 0.
 double ray_ratio(double a, double b) {
@@ -351,12 +353,6 @@ FailureResult sun(const PlyStress& s, const Strengths& st) {
 }
 
 // (2.42): index e_M (degree 1 in the stresses).
-FailureResult choi_chang_matrix_cracking(const PlyStress& avg, const Strengths& st) {
-  const ResolvedStrengths r = resolve(st, Criterion::choi_chang_matrix);
-  const double Y = avg.s22 >= 0.0 ? r.Yt : r.Yc;
-  const double e = std::hypot(avg.s22 / Y, avg.t23 / r.S23);
-  return govern({{FailureMode::matrix_cracking, 0.0, e}});
-}
 
 // (2.43): index e_D (degree 1 in the stresses).
 FailureResult choi_chang_delamination(const PlyStress& upper_avg, const Strengths& upper,

@@ -4,6 +4,7 @@
 // See docs/failure_criteria.md for the formulas, the modes and every convention used here.
 #include "plyimpact/laminate/material.hpp"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string_view>
@@ -162,7 +163,18 @@ inline constexpr double tsai_wu_default_f12_star = -0.5;
 
 /// Choi–Chang matrix cracking (2.42) on ply-averaged stresses: index e_M with
 /// e_M² = (σ̄22/Y)² + (τ̄23/S23)², Y = Yt if σ̄22 ≥ 0 else Yc. Mode matrix_cracking.
-[[nodiscard]] FailureResult choi_chang_matrix_cracking(const PlyStress& avg, const Strengths& st);
+/// Inline: it runs at every Gauss point of every ply at every step of an impact.
+[[nodiscard]] inline FailureResult choi_chang_matrix_cracking(const PlyStress& avg, const Strengths& st) {
+  if (!st.Yt || !st.Yc || !st.S23) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, FailureMode::none, nan};
+  }
+  const double y = avg.s22 / (avg.s22 >= 0.0 ? *st.Yt : *st.Yc);
+  const double s = avg.t23 / *st.S23;
+  const double e = std::sqrt(y * y + s * s);
+  return {e, e > 0.0 ? FailureMode::matrix_cracking : FailureMode::none,
+          e > 0.0 ? 1.0 / e : std::numeric_limits<double>::infinity()};
+}
 
 /// Which ply adjacent to an interface plays "n" in (2.43) (the other plays "n+1").
 /// SPEC §1 numbering: interface k lies between ply k (upper, impact side) and ply k+1 (lower).

@@ -1,0 +1,340 @@
+#include "plyimpact/analysis/damage_tracker.hpp"
+
+#include "plyimpact/fem/quadrature.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+namespace plyimpact {
+
+std::vector<Criterion> parse_criteria(const std::vector<std::string>& names) {
+  std::vector<Criterion> out;
+  for (const auto& n : names) {
+    const auto c = parse_criterion(n);
+    if (!c) throw std::invalid_argument("unknown failure criterion '" + n + "'");
+    out.push_back(*c);
+  }
+  return out;
+}
+
+DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options)
+    : model_(model), criteria_(std::move(criteria)), options_(options),
+      layers_(model.laminate().ply_count()) {
+  if (options_.every < 1) throw std::invalid_argument("damage: evaluation interval must be at least 1 step");
+  track_cracks_for_delamination_ =
+      std::find(criteria_.begin(), criteria_.end(), Criterion::choi_chang_delamination) != criteria_.end();
+  const PlateMesh& mesh = model.mesh();
+  regular_ = mesh.is_regular();
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const ElementCoordinates xy = mesh.element_coordinates(e);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const double xi = gauss3.points[static_cast<std::size_t>(i)],
+                     eta = gauss3.points[static_cast<std::size_t>(j)];
+        const PointKinematics k = point_kinematics(xy, xi, eta);
+        const Eigen::Vector2d p = xy.transpose() * k.shape.N;
+        const double w =
+            gauss3.weights[static_cast<std::size_t>(i)] * gauss3.weights[static_cast<std::size_t>(j)];
+        points_.push_back({e, i, j, p.x(), p.y(), w * k.detJ});
+        // The strain–displacement matrices of a regular mesh repeat from element to element.
+        if (!regular_ || e == 0) {
+          StrainOperator B;
+          B.topRows<6>() = membrane_bending_B(k);
+          if (model.element().formulation() == ElementFormulation::mitc9) {
+            // Assumed shear strains: recover them as the element defines them, via unit vectors.
+            for (int d = 0; d < q9_dofs; ++d) {
+              ElementVector unit = ElementVector::Zero();
+              unit(d) = 1.0;
+              B.block<2, 1>(6, d) = model.element().strains(xy, unit, xi, eta).shear;
+            }
+          } else {
+            B.bottomRows<2>() = shear_B(k);
+          }
+          B_.push_back(B);
+        }
+      }
+    element_equations_.push_back(model.dofs().element_equations(mesh, e));
+  }
+  // Material-axis ply stresses are linear in (ε0, κ, γ): fold Q̄, the height z and the rotation into
+  // one 5×8 matrix per ply and position, once.
+  const Laminate& lam = model.laminate();
+  A_average_.resize(5 * static_cast<Eigen::Index>(layers_), 8);
+  A_top_.resize(A_average_.rows(), 8);
+  A_bottom_.resize(A_average_.rows(), 8);
+  for (std::size_t k = 0; k < layers_; ++k) {
+    const auto op = [&](double z) {
+      StressOperator A;
+      for (int c = 0; c < 8; ++c) {
+        Eigen::Matrix<double, 8, 1> unit = Eigen::Matrix<double, 8, 1>::Zero();
+        unit(c) = 1.0;
+        const PlateAxesStress ps{lam.Qbar(k) * (unit.head<3>() + z * unit.segment<3>(3)),
+                                 lam.Qbar_shear(k) * unit.tail<2>()};
+        const PlyStress m = to_material_axes(ps, lam.plies()[k].angle_deg);
+        A.col(c) << m.s11, m.s22, m.t12, m.t13, m.t23;
+      }
+      return A;
+    };
+    const auto row = 5 * static_cast<Eigen::Index>(k);
+    A_average_.middleRows<5>(row) = op(0.5 * (lam.z_top(k) + lam.z_bottom(k)));
+    A_top_.middleRows<5>(row) = op(lam.z_top(k));
+    A_bottom_.middleRows<5>(row) = op(lam.z_bottom(k));
+  }
+  needs_faces_ = std::any_of(criteria_.begin(), criteria_.end(), [](Criterion c) {
+    return c != Criterion::choi_chang_matrix && c != Criterion::choi_chang_delamination;
+  });
+  const auto n_points = static_cast<Eigen::Index>(points_.size());
+  U_.resize(q9_dofs, static_cast<Eigen::Index>(element_equations_.size()));
+  local_strains_.resize(8, static_cast<Eigen::Index>(element_equations_.size()));
+  E_.resize(8, n_points);
+  for (std::size_t k = 0; k < layers_; ++k) {
+    const auto row = 5 * static_cast<Eigen::Index>(k);
+    average_bending_.emplace_back(A_average_.block<5, 5>(row, 3));
+    Eigen::Matrix<double, 3, 5> transverse;
+    transverse << A_average_.block<1, 5>(row + 1, 3), A_average_.block<1, 5>(row + 3, 3),
+        A_average_.block<1, 5>(row + 4, 3);
+    transverse_bending_.push_back(transverse);
+    top_bending_.emplace_back(A_top_.block<5, 5>(row, 3));
+    bottom_bending_.emplace_back(A_bottom_.block<5, 5>(row, 3));
+  }
+  if (regular_)
+    for (const StrainOperator& B : B_) {
+      Eigen::Matrix<double, 5, 27> Bb;
+      for (int a = 0; a < 9; ++a)
+        Bb.middleCols<3>(3 * a) = B.block<5, 3>(3, 5 * a + 2);
+      B_bending_.push_back(Bb);
+    }
+  for (int n = 0; n < mesh.node_count(); ++n)
+    for (int d = 0; d < 2; ++d)
+      if (const int eq = model.dofs().equation(n, d); eq >= 0) inplane_equations_.push_back(eq);
+  S_average_.setZero(A_average_.rows(), n_points);
+  // ‖T e‖ ≤ Σ_j ‖T(:, j)‖ |e_j| with T_k the (σ̄22, τ̄13, τ̄23) rows of ply k and e = (κ, γ), so
+  // e_M ≤ Σ_j max_k [max(1/Yt, 1/Yc, 1/S23)_k ‖T_k(:, j)‖] |e_j|, and likewise for e_D with
+  // √Da and the two plies of an interface. A point whose bound stays below both 1 and the peak index
+  // so far can neither fail nor raise the peak, and is skipped (Choi–Chang-only runs).
+  for (const Criterion c : criteria_) {
+    Eigen::Matrix<double, 5, 1> bound = Eigen::Matrix<double, 5, 1>::Zero();
+    const auto inv = [](const std::optional<double>& v) { return v ? 1.0 / *v : 0.0; };
+    for (std::size_t k = 0; k < layers_; ++k) {
+      const Strengths& st = lam.material_of(k).strength;
+      const double ik = std::max({inv(st.Yt), inv(st.Yc), inv(st.S23)});
+      for (int j = 0; j < 5; ++j) {
+        const double nk = transverse_bending_[k].col(j).norm();
+        if (c == Criterion::choi_chang_matrix) bound(j) = std::max(bound(j), ik * nk);
+        if (c == Criterion::choi_chang_delamination && k + 1 < layers_) {
+          const Strengths& s1 = lam.material_of(k + 1).strength;
+          const double i1 = std::max({inv(s1.Yt), inv(s1.Yc), inv(s1.S23)});
+          const double da = 0.5 * (st.Da.value_or(0.0) + s1.Da.value_or(0.0));
+          const double n1 = transverse_bending_[k + 1].col(j).norm();
+          bound(j) = std::max(bound(j), std::sqrt(da) * std::max(ik, i1) * std::sqrt(nk * nk + n1 * n1));
+        }
+      }
+    }
+    choi_chang_bound_.push_back(bound);
+  }
+  if (needs_faces_) {
+    S_top_.resize(A_top_.rows(), n_points);
+    S_bottom_.resize(A_bottom_.rows(), n_points);
+  }
+  averaged_.resize(layers_);
+  matrix_.resize(layers_);
+  needs_matrix_ =
+      track_cracks_for_delamination_ ||
+      std::find(criteria_.begin(), criteria_.end(), Criterion::choi_chang_matrix) != criteria_.end();
+  failed_.assign(criteria_.size() * layers_ * points_.size(), 0);
+  cracked_.assign(layers_ * points_.size(), 0);
+  area_.assign(criteria_.size() * layers_, 0.0);
+  peak_.assign(criteria_.size(), 0.0);
+  for (const Criterion c : criteria_)
+    for (std::size_t k = 0; k < layers_; ++k)
+      for (const StrengthId s : required_strengths(c))
+        if (!strength_value(model.laminate().material_of(k).strength, s))
+          throw std::invalid_argument("criterion " + std::string(to_string(c)) + " needs " +
+                                      std::string(to_string(s)) + " for material '" +
+                                      model.laminate().material_of(k).name + "'");
+}
+
+void DamageTracker::observe(long step, double t, double force, const Eigen::VectorXd& u) {
+  if (step % options_.every != 0) return;
+  // Batched: element DOFs U (45 × elements) → generalized strains E (8 × points) → ply stresses
+  // S = A E (5·plies × points), as dense matrix products; then the criteria point by point.
+  for (std::size_t e = 0; e < element_equations_.size(); ++e) {
+    const auto& eq = element_equations_[e];
+    for (int i = 0; i < q9_dofs; ++i)
+      U_(i, static_cast<Eigen::Index>(e)) =
+          eq[static_cast<std::size_t>(i)] >= 0 ? u(eq[static_cast<std::size_t>(i)]) : 0.0;
+  }
+  const auto ne = static_cast<Eigen::Index>(element_equations_.size());
+  // Under a transverse load a laminate with B = 0 and I1 = 0 never moves in-plane: then only the
+  // bending DOFs (w, θx, θy) and strains (κ, γ) enter, 27 of 45 columns and 5 of 8 rows.
+  bool bending_only = regular_;
+  for (std::size_t i = 0; i < inplane_equations_.size() && bending_only; ++i)
+    bending_only = u(inplane_equations_[i]) == 0.0;
+  if (bending_only) {
+    // Fixed-size products, point by point: 5×27 for the strains, 5×5 per ply for the stresses.
+    Eigen::Matrix<double, 27, 1> ub;
+    const auto plies = static_cast<Eigen::Index>(layers_);
+    for (Eigen::Index e = 0; e < ne; ++e) {
+      for (Eigen::Index a = 0; a < 9; ++a)
+        ub.segment<3>(3 * a) = U_.block<3, 1>(5 * a + 2, e);
+      for (Eigen::Index l = 0; l < 9; ++l) {
+        const Eigen::Matrix<double, 5, 1> eb = B_bending_[static_cast<std::size_t>(l)] * ub;
+        const Eigen::Index g = e * 9 + l;
+        if (!needs_faces_ && cannot_change(eb)) continue; // proven: no new failure, no new peak
+        for (Eigen::Index k = 0; k < plies; ++k) {
+          const auto kk = static_cast<std::size_t>(k);
+          if (!needs_faces_) { // Choi–Chang only: σ̄22, τ̄13, τ̄23 are all they read
+            const Eigen::Matrix<double, 3, 1> v = transverse_bending_[kk] * eb;
+            S_average_(5 * k + 1, g) = v(0);
+            S_average_(5 * k + 3, g) = v(1);
+            S_average_(5 * k + 4, g) = v(2);
+            continue;
+          }
+          S_average_.block<5, 1>(5 * k, g).noalias() = average_bending_[kk] * eb;
+          S_top_.block<5, 1>(5 * k, g).noalias() = top_bending_[kk] * eb;
+          S_bottom_.block<5, 1>(5 * k, g).noalias() = bottom_bending_[kk] * eb;
+        }
+        evaluate_point(static_cast<std::size_t>(g), t, force);
+      }
+    }
+    return;
+  }
+  if (regular_) {
+    for (Eigen::Index l = 0; l < 9; ++l) {
+      local_strains_.noalias() = B_[static_cast<std::size_t>(l)].lazyProduct(U_);
+      for (Eigen::Index e = 0; e < ne; ++e)
+        E_.col(e * 9 + l) = local_strains_.col(e);
+    }
+  } else {
+    for (Eigen::Index g = 0; g < E_.cols(); ++g)
+      E_.col(g).noalias() = B_[static_cast<std::size_t>(g)] * U_.col(g / 9);
+  }
+  S_average_.noalias() = A_average_.lazyProduct(E_);
+  if (needs_faces_) {
+    S_top_.noalias() = A_top_.lazyProduct(E_);
+    S_bottom_.noalias() = A_bottom_.lazyProduct(E_);
+  }
+  for (std::size_t g = 0; g < points_.size(); ++g)
+    evaluate_point(g, t, force);
+}
+
+bool DamageTracker::cannot_change(const Eigen::Matrix<double, 5, 1>& strains) const {
+  // Upper bounds of the Choi–Chang indices at a point from |κ|, |γ| (see choi_chang_bound_).
+  for (std::size_t c = 0; c < criteria_.size(); ++c) {
+    const double bound = choi_chang_bound_[c].dot(strains.cwiseAbs());
+    if (!(bound < 1.0 && bound <= peak_[c])) return false;
+  }
+  return true;
+}
+
+namespace {
+
+PlyStress as_ply_stress(const Eigen::Matrix<double, 5, 1>& v) {
+  PlyStress s;
+  s.s11 = v(0);
+  s.s22 = v(1);
+  s.t12 = v(2);
+  s.t13 = v(3);
+  s.t23 = v(4);
+  return s;
+}
+
+} // namespace
+
+void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
+  const Laminate& lam = model_.laminate();
+  const GaussPoint& p = points_[g];
+  // Ply-averaged stresses in material axes (what Choi–Chang use), and the faces of each ply for the
+  // point-wise criteria (their indices are convex along the linear through-ply distribution, so the
+  // largest value over the ply is at a face).
+  std::vector<PlyStress>& avg = averaged_; // reused buffer: no allocation per point
+  const auto col = static_cast<Eigen::Index>(g);
+  for (std::size_t k = 0; k < layers_; ++k)
+    avg[k] = as_ply_stress(S_average_.block<5, 1>(5 * static_cast<Eigen::Index>(k), col));
+  const auto record = [&](std::size_t c, std::size_t layer, const FailureResult& r, bool interface) {
+    peak_[c] = std::max(peak_[c], r.index);
+    char& flag = failed_[slot(c, layer, g)];
+    if (flag != 0 || !r.failed()) return;
+    flag = 1;
+    DamageOnset o;
+    o.criterion = criteria_[c];
+    o.mode = r.mode;
+    o.ply = interface ? 0 : static_cast<int>(layer) + 1;
+    o.interface = interface ? static_cast<int>(layer) + 1 : 0;
+    o.element = p.element + 1;
+    o.ipgs = p.i + 1;
+    o.jpgs = p.j + 1;
+    o.x = p.x;
+    o.y = p.y;
+    o.time = t;
+    o.force = force;
+    o.sigma22 = avg[layer].s22;
+    o.tau23 = avg[layer].t23;
+    o.index = r.index;
+    onsets_.push_back(o);
+    double& a = area_[c * layers_ + layer];
+    a += p.area;
+    areas_.push_back({t, criteria_[c], o.ply, o.interface, a});
+  };
+  // Choi–Chang matrix cracking, once per ply: a criterion of its own and the gate of (2.43).
+  std::vector<FailureResult>& matrix = matrix_;
+  if (needs_matrix_)
+    for (std::size_t k = 0; k < layers_; ++k) {
+      matrix[k] = choi_chang_matrix_cracking(avg[k], lam.material_of(k).strength);
+      if (track_cracks_for_delamination_ && matrix[k].failed()) cracked_[k * points_.size() + g] = 1;
+    }
+  for (std::size_t c = 0; c < criteria_.size(); ++c) {
+    const Criterion crit = criteria_[c];
+    if (crit == Criterion::choi_chang_delamination) {
+      for (std::size_t k = 0; k + 1 < layers_; ++k) {
+        // (2.43) is checked where an adjacent ply has a matrix crack.
+        if (cracked_[k * points_.size() + g] == 0 && cracked_[(k + 1) * points_.size() + g] == 0) continue;
+        record(c, k,
+               choi_chang_delamination(avg[k], lam.material_of(k).strength, avg[k + 1],
+                                       lam.material_of(k + 1).strength,
+                                       options_.criterion_options.delamination_ply_n),
+               true);
+      }
+      continue;
+    }
+    for (std::size_t k = 0; k < layers_; ++k) {
+      if (crit == Criterion::choi_chang_matrix) {
+        record(c, k, matrix[k], false);
+        continue;
+      }
+      FailureResult worst{0.0, FailureMode::none, 0.0};
+      for (const Eigen::MatrixXd* S : {&S_top_, &S_bottom_}) {
+        const PlyStress face = as_ply_stress(S->block<5, 1>(5 * static_cast<Eigen::Index>(k), col));
+        const FailureResult r = evaluate(crit, face, lam.material_of(k), options_.criterion_options);
+        if (r.index > worst.index) worst = r;
+      }
+      record(c, k, worst, false);
+    }
+  }
+}
+
+std::vector<DamageOnset> DamageTracker::first_onsets() const {
+  std::vector<DamageOnset> first;
+  std::map<std::tuple<int, int, int, int>, std::size_t> seen; // (criterion, mode, ply, interface)
+  for (const DamageOnset& o : onsets_) {
+    const auto key =
+        std::make_tuple(static_cast<int>(o.criterion), static_cast<int>(o.mode), o.ply, o.interface);
+    const auto it = seen.find(key);
+    if (it == seen.end()) {
+      seen.emplace(key, first.size());
+      first.push_back(o);
+    } else if (first[it->second].time == o.time && o.index > first[it->second].index) {
+      first[it->second] = o; // same step: the point with the larger index
+    }
+  }
+  return first;
+}
+
+double DamageTracker::peak_index(Criterion criterion) const {
+  for (std::size_t c = 0; c < criteria_.size(); ++c)
+    if (criteria_[c] == criterion) return peak_[c];
+  return 0.0;
+}
+
+} // namespace plyimpact

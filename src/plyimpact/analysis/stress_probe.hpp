@@ -1,0 +1,29 @@
+#pragma once
+// Stress histories at chosen points (thesis Fig. 4.12–4.15, 4.24–4.29): material-axis stresses of a
+// ply (its top or bottom face, or its average) or of both plies at an interface, every step.
+#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/analysis/stress_recovery.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+class StressProbes {
+public:
+  StressProbes(const PlateModel& model, std::vector<StressProbeSpec> specs);
+  void observe(long step, double t, double force, const Eigen::VectorXd& u);
+  /// Column names (unit in each): t_s, then per probe <name>_s11_Pa, ... (interfaces: _upper_/_lower_).
+  [[nodiscard]] std::vector<std::string> columns() const;
+  [[nodiscard]] const std::vector<std::vector<double>>& rows() const { return rows_; }
+  [[nodiscard]] bool empty() const { return specs_.empty(); }
+
+private:
+  const PlateModel& model_;
+  std::vector<StressProbeSpec> specs_;
+  std::vector<PointLocation> where_;
+  std::vector<std::vector<double>> rows_;
+};
+
+} // namespace plyimpact

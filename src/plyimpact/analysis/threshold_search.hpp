@@ -1,0 +1,38 @@
+#pragma once
+// Threshold velocity (SPEC §7; thesis Table 4.3): the smallest impact velocity at which a criterion
+// first reaches 1 anywhere in the plate during the event, by bracketing and bisection. All runs
+// share one factorization of K̄ (the time step is fixed).
+#include "plyimpact/analysis/damage_tracker.hpp"
+#include "plyimpact/analysis/impact_analysis.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace plyimpact {
+
+struct ThresholdOptions {
+  double tolerance = 0.01;     ///< bracket width at the end [m/s]
+  double max_velocity = 500.0; ///< give up above this [m/s]
+  DamageOptions damage;
+};
+
+struct ThresholdTrial {
+  double velocity = 0.0;
+  bool failed = false;
+  double peak_index = 0.0;
+};
+
+struct ThresholdResult {
+  bool found = false;
+  double velocity = 0.0;                    ///< upper end of the final bracket: fails at this velocity [m/s]
+  double lower = 0.0;                       ///< lower end: no failure [m/s]
+  std::optional<DamageOnset> first_failure; ///< at `velocity`
+  std::vector<ThresholdTrial> trials;       ///< in the order run
+};
+
+/// Runs the search starting from settings.impactor.velocity as the first trial.
+[[nodiscard]] ThresholdResult find_threshold_velocity(const PlateModel& model, const ImpactSettings& settings,
+                                                      Criterion criterion,
+                                                      const ThresholdOptions& options = {});
+
+} // namespace plyimpact
