@@ -1,6 +1,8 @@
 #include "plyimpact/analysis/threshold_search.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 
 namespace plyimpact {
@@ -41,13 +43,39 @@ ThresholdResult find_threshold_velocity(const PlateModel& model, const ImpactSet
     if (upper > options.max_velocity) return result; // not found below max_velocity
   }
   std::optional<DamageOnset> best = onset_at_upper;
-  while (upper - lower > options.tolerance) {
-    const double mid = 0.5 * (lower + upper);
-    if (trial(mid)) {
-      upper = mid;
+  // Safeguarded interpolation: the peak index of a run without failure grows with velocity about
+  // like a power law, index ∝ v^p; fit p to the two highest non-failing runs (p = 1 with one) and aim
+  // just below the predicted v(index = 1), then just above it. Bisection whenever the prediction
+  // leaves the bracket, so the bracket always shrinks and holds [no failure, failure].
+  const double tol = options.tolerance;
+  const auto predicted = [&]() -> std::optional<double> {
+    std::vector<ThresholdTrial> safe;
+    for (const auto& t : result.trials)
+      if (!t.failed && t.peak_index > 0.0) safe.push_back(t);
+    if (safe.empty()) return std::nullopt;
+    std::sort(safe.begin(), safe.end(), [](const auto& a, const auto& b) { return a.velocity < b.velocity; });
+    const ThresholdTrial& hi = safe.back();
+    double p = 1.0;
+    if (safe.size() >= 2) {
+      const ThresholdTrial& lo = safe[safe.size() - 2];
+      if (hi.velocity > lo.velocity && hi.peak_index > lo.peak_index)
+        p = std::log(hi.peak_index / lo.peak_index) / std::log(hi.velocity / lo.velocity);
+    }
+    if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
+    return hi.velocity * std::pow(1.0 / hi.peak_index, 1.0 / p);
+  };
+  while (upper - lower > tol) {
+    double v = 0.5 * (lower + upper);
+    if (const auto est = predicted(); est && *est > lower && *est < upper) {
+      v = *est - 0.45 * tol;                               // expect no failure just below
+      if (*est - lower < 0.9 * tol) v = lower + 0.9 * tol; // expect failure: closes the bracket
+      v = std::clamp(v, lower + 0.05 * tol, upper - 0.05 * tol);
+    }
+    if (trial(v)) {
+      upper = v;
       best = onset_at_upper;
     } else {
-      lower = mid;
+      lower = v;
     }
   }
   result.found = true;
