@@ -23,6 +23,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -246,8 +247,27 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
   return sub;
 }
 
+/// `plyimpact DECK [options]` runs the deck's own `analysis` (impact by default).
+std::vector<std::string> with_default_command(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  static const std::vector<std::string> commands{"laminate", "static", "modal",
+                                                 "buckling", "impact", "threshold"};
+  if (args.empty() || args[0].empty() || args[0][0] == '-' ||
+      std::find(commands.begin(), commands.end(), args[0]) != commands.end())
+    return args;
+  std::string command = "impact";
+  try {
+    command = std::string(to_string(load_deck(args[0]).analysis));
+  } catch (const DeckError&) {
+    // reported with file, line and column when the impact command reads the deck
+  }
+  args.insert(args.begin(), command);
+  return args;
+}
+
 int run(int argc, char** argv) {
-  CLI::App app{"plyimpact: low-velocity impact analysis of laminated composite plates"};
+  CLI::App app{"plyimpact: low-velocity impact analysis of laminated composite plates\n"
+               "  plyimpact DECK [-o DIR] runs the deck's analysis (impact by default)"};
   app.set_version_flag("--version", std::string("plyimpact ") + PLYIMPACT_VERSION);
   app.require_subcommand(1);
   Options o;
@@ -267,7 +287,9 @@ int run(int argc, char** argv) {
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
 
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args = with_default_command(argc, argv);
+    std::reverse(args.begin(), args.end()); // CLI11 takes the arguments in reverse order
+    app.parse(args);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }

@@ -109,6 +109,14 @@ dt = 1e-6
   EXPECT_TRUE(fs::exists(dir / "out" / "provenance.json"));
 }
 
+TEST(Cli, ADeckAloneRunsItsOwnAnalysis) {
+  const fs::path dir = scratch("default");
+  const fs::path deck = write(dir, small_deck("modal", "[modal]\ncount = 3\n"));
+  const CommandResult r = run(deck.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(read_json(dir / "out" / "summary.json")["analysis"], "modal");
+}
+
 TEST(Cli, StaticModalBucklingSummariesCarryTheirKeys) {
   const fs::path dir = scratch("fem");
   const fs::path deck = write(dir, small_deck("static", R"(
