@@ -16,12 +16,13 @@ Restraint node_restraint(const PlateMesh& mesh, const BoundaryConditions& bc, in
 }
 
 DofMap::DofMap(const PlateMesh& mesh, const BoundaryConditions& bc)
-    : equation_(static_cast<std::size_t>(dofs_per_node * mesh.node_count()), -1) {
+    : equation_(static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(mesh.node_count()), -1) {
   for (int n = 0; n < mesh.node_count(); ++n) {
     const Restraint r = node_restraint(mesh, bc, n);
     for (int d = 0; d < dofs_per_node; ++d)
       if (!r.fixed[static_cast<std::size_t>(d)])
-        equation_[static_cast<std::size_t>(dofs_per_node * n + d)] = free_count_++;
+        equation_[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(n) +
+                  static_cast<std::size_t>(d)] = free_count_++;
   }
 }
 
@@ -30,7 +31,8 @@ std::array<int, q9_dofs> DofMap::element_equations(const PlateMesh& mesh, int e)
   const auto& conn = mesh.element_nodes(e);
   for (int a = 0; a < 9; ++a)
     for (int d = 0; d < dofs_per_node; ++d)
-      eq[static_cast<std::size_t>(dofs_per_node * a + d)] = equation(conn[static_cast<std::size_t>(a)], d);
+      eq[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(a) +
+         static_cast<std::size_t>(d)] = equation(conn[static_cast<std::size_t>(a)], d);
   return eq;
 }
 

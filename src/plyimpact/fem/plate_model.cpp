@@ -24,8 +24,8 @@ Eigen::VectorXd PointSampler::as_vector(int size) const {
 }
 
 PlateModel::PlateModel(Laminate laminate, PlateGeometry plate, MeshSpec spec, BoundaryConditions bc)
-    : laminate_(std::move(laminate)), mesh_(plate, spec.nx, spec.ny), spec_(spec), bc_(std::move(bc)),
-      dofs_(mesh_, bc_), element_(laminate_, resolve_formulation(spec.element, mesh_, bc_)) {
+    : laminate_(std::move(laminate)), mesh_(plate, spec.nx, spec.ny), spec_(spec), bc_(bc), dofs_(mesh_, bc_),
+      element_(laminate_, resolve_formulation(spec.element, mesh_, bc_)) {
   spec_.element = element_.formulation();
   build_pattern();
 }

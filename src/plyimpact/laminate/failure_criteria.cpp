@@ -27,8 +27,6 @@ struct ModeValue {
   double b; ///< linear part at λ = 1
 };
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 /// Smallest R > 0 with a R² + b R = 1, or +inf if the ray never reaches 1.
 /// Written as 2 / (b + √(b² + 4a)) to avoid cancellation; covers a > 0, a = 0 and a < 0.
 double ray_ratio(double a, double b) {
