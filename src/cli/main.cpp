@@ -13,6 +13,7 @@
 #include "plyimpact/analysis/static_analysis.hpp"
 #include "plyimpact/analysis/stress_probe.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
+#include "plyimpact/io/damage_maps.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
@@ -193,6 +194,8 @@ int run_impact(const Options& o) {
     if (damage) {
       out->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
       out->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
+      const DamageMapFiles maps = write_damage_maps(out->path(), model.mesh(), damage->onsets());
+      if (!maps.warning.empty()) fmt::print(stderr, "plyimpact: warning: {}\n", maps.warning);
     }
     if (probes) out->write_text("probes.csv", probes_csv(*probes));
     write_impact_results(*out, deck, &model, settings, r, [&](nlohmann::json& j) {
