@@ -285,7 +285,7 @@ namespace {
 
 using test::all_edges;
 
-TEST(ElementChoice, AutomaticUsesTheThesisElementUnlessNoNodeHoldsW) {
+TEST(ElementChoice, AutomaticUsesTheThesisElementOnlyWhereAnEdgeHoldsW) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
   const PlateModel free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
   EXPECT_EQ(free_plate.element().formulation(), ElementFormulation::mitc9);
@@ -293,6 +293,14 @@ TEST(ElementChoice, AutomaticUsesTheThesisElementUnlessNoNodeHoldsW) {
   BoundaryConditions cantilever = all_edges("free");
   cantilever.edges[0] = *parse_restraint("clamped", Edge::x0);
   EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, cantilever).element().formulation(), ElementFormulation::q9);
+  // Four corner point supports leave q9's mode alive (it vanishes at every element-corner node).
+  BoundaryConditions corners = all_edges("free");
+  corners.corners = *parse_restraint("00100", Edge::x0);
+  const PlateModel on_points(lam, {0.1, 0.1}, {4, 4}, corners);
+  EXPECT_EQ(on_points.element().formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(solve_modal(on_points, 6).zero_energy_modes, 3); // u, v and rotation about z only
+  const PlateModel q9_on_points(lam, {0.1, 0.1}, {4, 4, MassMatrix::lumped, ElementFormulation::q9}, corners);
+  EXPECT_EQ(solve_modal(q9_on_points, 6).zero_energy_modes, 4);
 }
 
 } // namespace

@@ -30,11 +30,13 @@ PlateModel::PlateModel(Laminate laminate, PlateGeometry plate, MeshSpec spec, Bo
   build_pattern();
 }
 
-ElementFormulation resolve_formulation(ElementFormulation requested, const PlateMesh& mesh,
+ElementFormulation resolve_formulation(ElementFormulation requested, const PlateMesh& /*mesh*/,
                                        const BoundaryConditions& bc) {
   if (requested != ElementFormulation::automatic) return requested;
-  for (int n = 0; n < mesh.node_count(); ++n)
-    if (node_restraint(mesh, bc, n).fixed[2]) return ElementFormulation::q9;
+  // q9's spurious mode w = c(3ξ² − 1)(3η² − 1) is killed by w held along a whole edge, not by point
+  // supports at element corners (docs/elements.md §4): only then is the thesis's element safe.
+  for (const Restraint& edge : bc.edges)
+    if (edge.fixed[2]) return ElementFormulation::q9;
   return ElementFormulation::mitc9;
 }
 

@@ -69,8 +69,9 @@ private:
   std::vector<int> first_equation_; ///< first free equation of each node (−1 if none)
 };
 
-/// The formulation actually used: `automatic` becomes q9 when some node has w restrained (which
-/// suppresses q9's single spurious mode, docs/elements.md) and mitc9 otherwise.
+/// The formulation actually used: `automatic` becomes q9 when some edge has w restrained along its
+/// whole length (which suppresses q9's single spurious mode, docs/elements.md) and mitc9 otherwise
+/// (free plates, plates on point supports).
 [[nodiscard]] ElementFormulation resolve_formulation(ElementFormulation requested, const PlateMesh& mesh,
                                                      const BoundaryConditions& bc);
 

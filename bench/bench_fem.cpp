@@ -1,0 +1,205 @@
+// Benchmarks of the FE core on the thesis §3.6 plate (bench/README.md has the commands and results):
+//
+//   assemble_K/<nx>x<ny>               PlateModel::stiffness()
+//   assemble_M/<nx>x<ny>               PlateModel::mass() (lumped, 3-point Lobatto)
+//   factor_K/<backend>/<nx>x<ny>       SpdSolver::factorize(K): ordering + symbolic + numeric
+//   factor_Keff/<backend>/<nx>x<ny>    SpdSolver::factorize(K + M/(β Δt²)), β = 1/4, Δt = 1 µs,
+//                                      the matrix the impact solver factors once per run
+//   solve/<backend>/<nx>x<ny>          one forward + back substitution with the factor of K
+//                                      (unit point load at the plate centre)
+//
+// for meshes 15×11 (the thesis's), 30×22, 60×44, 120×88 and both SpdSolver backends (CHOLMOD
+// supernodal LLᵀ, Eigen SimplicialLDLT). Counters: dofs = model.size(), nnz_K = stored non-zeros of
+// the (full, symmetric) global matrix, nnz_L = non-zeros of the Cholesky factor L including its
+// diagonal (CHOLMOD: Common->lnz of the ordering it selected; SimplicialLDLT: strictly lower nnz + n),
+// flops_L = CHOLMOD's floating-point operation count of the numeric factorization (Common->fl).
+// The label of the CHOLMOD runs names the fill-reducing ordering CHOLMOD chose.
+#include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/spd_solver.hpp"
+#include "plyimpact/laminate/laminate.hpp"
+#include "plyimpact/laminate/layup.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace plyimpact;
+
+constexpr double plate_a = 0.127, plate_b = 0.0762;
+constexpr double newmark_beta = 0.25, time_step = 1e-6;
+
+Laminate thesis_3_6_laminate() {
+  Material m;
+  m.name = "thesis_3_6";
+  m.E1 = 129e9;
+  m.E2 = 7.5e9;
+  m.G12 = m.G13 = m.G23 = 3.5e9;
+  m.nu12 = 0.33;
+  m.rho = 1540.0;
+  std::vector<Ply> plies;
+  for (const double angle : parse_layup("[45/90/-45/0]3s"))
+    plies.push_back({angle, 0.19375e-3, 0});
+  return Laminate({m}, plies);
+}
+
+BoundaryConditions all_edges_ss() {
+  BoundaryConditions bc;
+  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
+    bc.edges[static_cast<std::size_t>(e)] = *parse_restraint("ss", e);
+  return bc;
+}
+
+/// One mesh: the model and its matrices, built once and shared by every benchmark of that mesh.
+struct Case {
+  PlateModel model;
+  SparseMatrix K, M, Keff;
+  Eigen::VectorXd f;
+
+  Case(int nx, int ny)
+      : model(thesis_3_6_laminate(), {plate_a, plate_b}, {nx, ny, MassMatrix::lumped, ElementFormulation::q9},
+              all_edges_ss()),
+        K(model.stiffness()), M(model.mass()), Keff(K + M / (newmark_beta * time_step * time_step)),
+        f(model.point_load(plate_a / 2, plate_b / 2, 1.0)) {}
+};
+
+Case& get_case(int nx, int ny) {
+  static std::map<std::pair<int, int>, std::unique_ptr<Case>> cases;
+  auto& c = cases[{nx, ny}];
+  if (!c) c = std::make_unique<Case>(nx, ny);
+  return *c;
+}
+
+/// CHOLMOD's own statistics (fill and chosen ordering), which SpdSolver does not expose.
+class CholmodProbe : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
+public:
+  explicit CholmodProbe(const SparseMatrix& A) { analyzePattern(A); }
+  [[nodiscard]] double factor_nonzeros() { return cholmod().lnz; }
+  [[nodiscard]] double factor_flops() { return cholmod().fl; }
+  [[nodiscard]] std::string ordering() {
+    switch (cholmod().method[cholmod().selected].ordering) {
+    case CHOLMOD_NATURAL:
+      return "natural";
+    case CHOLMOD_AMD:
+      return "AMD";
+    case CHOLMOD_METIS:
+      return "METIS";
+    case CHOLMOD_NESDIS:
+      return "NESDIS";
+    case CHOLMOD_COLAMD:
+      return "COLAMD";
+    default:
+      return "other";
+    }
+  }
+};
+
+const char* backend_name(SparseSolverKind kind) {
+  return kind == SparseSolverKind::cholmod ? "cholmod" : "simplicial_ldlt";
+}
+
+void set_size_counters(benchmark::State& state, const Case& c) {
+  state.counters["dofs"] = static_cast<double>(c.model.size());
+  state.counters["nnz_K"] = static_cast<double>(c.K.nonZeros());
+}
+
+void set_factor_counters(benchmark::State& state, const Case& c, const SparseMatrix& A, SparseSolverKind kind,
+                         const SpdSolver& solver) {
+  set_size_counters(state, c);
+  if (kind == SparseSolverKind::cholmod) {
+    CholmodProbe probe(A);
+    state.counters["nnz_L"] = probe.factor_nonzeros();
+    state.counters["flops_L"] = probe.factor_flops();
+    state.SetLabel(probe.ordering());
+  } else {
+    state.counters["nnz_L"] = static_cast<double>(solver.factor_nonzeros() + A.rows());
+  }
+}
+
+void assemble_K(benchmark::State& state, int nx, int ny) {
+  Case& c = get_case(nx, ny);
+  for (auto _ : state) {
+    SparseMatrix K = c.model.stiffness();
+    benchmark::DoNotOptimize(K.valuePtr());
+    benchmark::ClobberMemory();
+  }
+  set_size_counters(state, c);
+}
+
+void assemble_M(benchmark::State& state, int nx, int ny) {
+  Case& c = get_case(nx, ny);
+  for (auto _ : state) {
+    SparseMatrix M = c.model.mass();
+    benchmark::DoNotOptimize(M.valuePtr());
+    benchmark::ClobberMemory();
+  }
+  set_size_counters(state, c);
+}
+
+void factor(benchmark::State& state, int nx, int ny, SparseSolverKind kind, bool effective) {
+  Case& c = get_case(nx, ny);
+  const SparseMatrix& A = effective ? c.Keff : c.K;
+  SpdSolver solver(kind);
+  for (auto _ : state) {
+    solver.factorize(A);
+    benchmark::ClobberMemory();
+  }
+  set_factor_counters(state, c, A, kind, solver);
+}
+
+void solve(benchmark::State& state, int nx, int ny, SparseSolverKind kind) {
+  Case& c = get_case(nx, ny);
+  SpdSolver solver(kind);
+  solver.factorize(c.K);
+  for (auto _ : state) {
+    Eigen::VectorXd u = solver.solve(c.f);
+    benchmark::DoNotOptimize(u.data());
+    benchmark::ClobberMemory();
+  }
+  // Sanity: the residual of the solve is round-off (a wrong factor would make the timing meaningless).
+  const Eigen::VectorXd u = solver.solve(c.f);
+  const double residual = (c.K * u - c.f).norm() / c.f.norm();
+  if (!(residual < 1e-8)) state.SkipWithError(("solve residual " + std::to_string(residual)).c_str());
+  set_factor_counters(state, c, c.K, kind, solver);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  const std::vector<std::pair<int, int>> meshes{{15, 11}, {30, 22}, {60, 44}, {120, 88}};
+  const std::vector<SparseSolverKind> kinds{SparseSolverKind::cholmod, SparseSolverKind::simplicial_ldlt};
+  for (const auto& [nx, ny] : meshes) {
+    const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
+    benchmark::RegisterBenchmark(("assemble_K/" + mesh).c_str(), assemble_K, nx, ny)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("assemble_M/" + mesh).c_str(), assemble_M, nx, ny)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    for (const SparseSolverKind kind : kinds) {
+      const std::string tag = std::string(backend_name(kind)) + "/" + mesh;
+      benchmark::RegisterBenchmark(("factor_K/" + tag).c_str(), factor, nx, ny, kind, false)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark(("factor_Keff/" + tag).c_str(), factor, nx, ny, kind, true)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark(("solve/" + tag).c_str(), solve, nx, ny, kind)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
