@@ -180,6 +180,32 @@ INSTANTIATE_TEST_SUITE_P(
                 "laminate.override.plies: expected ply numbers from 1 to 8"}),
     [](const ::testing::TestParamInfo<BadDeck>& p) { return p.param.name; });
 
+TEST(Deck, ThresholdProbesAndDamageKeysAreRead) {
+  std::string text = base_deck;
+  text.replace(text.find("E1 = 144.8e9"), 12,
+               "E1 = 144.8e9\nYt = 55.2e6\nYc = 294e6\nS23 = 32.94e6\nDa = 1.8");
+  text += R"([damage]
+criteria = ["choi-chang-matrix", "choi-chang-delamination"]
+delamination_ply_n = "lower"
+[threshold]
+criterion = "choi-chang-matrix"
+tolerance = 0.02
+[[output.probe]]
+x = 0.0635
+y = 0.0381
+interface = 7
+)";
+  const Deck d = parse_deck(text, "deck.toml");
+  EXPECT_EQ(d.threshold.criterion, "choi-chang-matrix");
+  EXPECT_EQ(d.threshold.tolerance, 0.02);
+  EXPECT_TRUE(d.damage.delamination_ply_n_lower);
+  ASSERT_EQ(d.probes.size(), 1U);
+  EXPECT_EQ(d.probes[0].name, "interface7");
+  // A criterion whose strengths the material lacks is refused when the deck is read.
+  std::string no_strength = base_deck + "[damage]\ncriteria = [\"tsai-wu\"]\n";
+  EXPECT_THROW((void)parse_deck(no_strength, "deck.toml"), DeckError);
+}
+
 TEST(Deck, UnreadableFileIsAClearError) {
   try {
     (void)load_deck("/nonexistent/deck.toml");

@@ -511,7 +511,7 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   d.text = std::string(text);
   const TableReader top(root, "", source);
   top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact",
-            "time", "load", "modal", "buckling", "damage", "output"});
+            "time", "load", "modal", "buckling", "damage", "threshold", "output"});
   d.title = top.optional_string("title").value_or("");
   if (const auto a = top.optional_string("analysis")) {
     const auto kind = parse_analysis_kind(*a);
