@@ -164,11 +164,12 @@ DamageOptions damage_options(const Deck& deck) {
 }
 
 int run_impact(const Options& o) {
+  // First thing: an interrupt during set-up still ends in consistent, incomplete results.
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
   ImpactSettings settings = impact_settings_from_deck(deck);
   const PlateModel model = impact_model(deck, settings);
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
   settings.cancel = &interrupted;
   auto bar = std::make_shared<ProgressBar>();
   settings.progress = [bar](double t, long step) { (*bar)(t, step); };

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -165,6 +167,27 @@ TEST(Cli, BadDeckExitsNonZeroWithTheLocation) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("deck.toml:3:5: error: plate.a must be positive"), std::string::npos) << r.out;
   EXPECT_NE(run("impact /nonexistent.toml").status, 0);
+}
+
+TEST(Cli, SigintFinishesTheStepAndWritesConsistentPartialResults) {
+  const fs::path dir = scratch("sigint");
+  // `timeout` sends SIGINT after 0.5 s to the §3.6 run (about 2 s long); --preserve-status keeps our code.
+  const std::string cmd = "timeout --preserve-status -s INT 0.5 " + std::string(PLYIMPACT_EXE) + " impact " +
+                          std::string(PLYIMPACT_SOURCE_DIR) + "/examples/thesis-3.6-v268.toml -o " +
+                          (dir / "out").string() + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const auto j = read_json(dir / "out" / "summary.json");
+  EXPECT_FALSE(j["complete"].get<bool>());
+  std::ifstream csv(dir / "out" / "history.csv");
+  std::string line;
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 9) << line; // every row complete
+    ++rows;
+  }
+  EXPECT_EQ(rows, j["steps"].get<std::size_t>() + 2); // header + t = 0 + one row per step
 }
 
 TEST(Cli, UnrestrainedStaticPlateIsAClearErrorNotNaN) {
