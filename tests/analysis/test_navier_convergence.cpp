@@ -5,6 +5,7 @@
 #include "plyimpact/analysis/static_analysis.hpp"
 #include "support/decks.hpp"
 #include "support/navier.hpp"
+#include "support/navier_plies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,24 +20,7 @@ namespace nv = test::navier;
 
 /// The Navier plate built independently from the material constants (0°/90° plies only).
 nv::Plate navier_plate(const Material& m, const std::vector<double>& angles, double t, double a, double b) {
-  const double nu21 = m.nu12 * m.E2 / m.E1, d = 1.0 - m.nu12 * nu21;
-  std::vector<nv::Ply> plies;
-  double z = -0.5 * t * static_cast<double>(angles.size());
-  for (const double angle : angles) {
-    nv::Ply p;
-    p.z_top = z;
-    p.z_bottom = z += t;
-    const bool zero = angle == 0.0;
-    p.Q11 = (zero ? m.E1 : m.E2) / d;
-    p.Q22 = (zero ? m.E2 : m.E1) / d;
-    p.Q12 = m.nu12 * m.E2 / d;
-    p.Q66 = m.G12;
-    p.Q44 = zero ? m.G23 : m.G13; // yz
-    p.Q55 = zero ? m.G13 : m.G23; // xz
-    p.rho = m.rho;
-    plies.push_back(p);
-  }
-  return nv::plate_from_plies(a, b, plies);
+  return nv::plate_from_plies(a, b, test::navier_cross_ply(m, angles, t));
 }
 
 struct CrossPlyCase {

@@ -1,5 +1,6 @@
 // Failure criteria of thesis chapter 2.5 (2.32)–(2.43), SPEC §6.
 #include "plyimpact/laminate/failure_criteria.hpp"
+#include "support/decks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -38,16 +39,9 @@ Strengths t300_strengths() {
   return s;
 }
 
+/// T300/976 elastic constants (tests/support/decks.hpp) with the SPEC §6 strengths.
 Material t300() {
-  Material m;
-  m.name = "T300_976";
-  m.E1 = 144.8e9;
-  m.E2 = 9.65e9;
-  m.G12 = 7.10e9;
-  m.G13 = 7.10e9;
-  m.G23 = 5.92e9;
-  m.nu12 = 0.30;
-  m.rho = 1389.2;
+  Material m = test::t300_976();
   m.strength = t300_strengths();
   return m;
 }

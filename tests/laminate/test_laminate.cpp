@@ -1,6 +1,7 @@
 // Laminate stiffness A, B, D, F and inertias (SPEC §2, (1.24), (1.25), (2.109)).
 #include "plyimpact/laminate/laminate.hpp"
 #include "plyimpact/laminate/layup.hpp"
+#include "support/decks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,25 +10,12 @@
 namespace plyimpact {
 namespace {
 
-Material t300() {
-  Material m;
-  m.name = "T300_976";
-  m.E1 = 144.8e9;
-  m.E2 = 9.65e9;
-  m.G12 = 7.10e9;
-  m.G13 = 7.10e9;
-  m.G23 = 5.92e9;
-  m.nu12 = 0.30;
-  m.rho = 1389.2;
-  return m;
-}
-
 Laminate make(const std::string& layup, double t,
               ReducedStiffnessModel model = ReducedStiffnessModel::exact) {
   std::vector<Ply> plies;
   for (const double a : parse_layup(layup))
     plies.push_back({a, t, 0});
-  return Laminate({t300()}, plies, 5.0 / 6.0, model);
+  return Laminate({test::t300_976()}, plies, 5.0 / 6.0, model);
 }
 
 /// x rounds to `ref` at 4 significant digits: |x − ref| ≤ half a unit of the 4th digit of ref.
@@ -71,11 +59,11 @@ TEST(Laminate, InertiasOfASingleMaterialPlate) {
 }
 
 TEST(Laminate, InertiaCouplingI1OfTwoMaterialsHasTheSignOfTheHeavierLowerPly) {
-  Material heavy = t300();
+  Material heavy = test::t300_976();
   heavy.name = "heavy";
   heavy.rho = 3000.0;
   const double t = 1e-3;
-  const Laminate L({t300(), heavy}, {{0.0, t, 0}, {0.0, t, 1}}); // ply 2 (z > 0) is heavier
+  const Laminate L({test::t300_976(), heavy}, {{0.0, t, 0}, {0.0, t, 1}}); // ply 2 (z > 0) is heavier
   EXPECT_NEAR(L.inertia()[1], (3000.0 - 1389.2) * t * t / 2.0, 1e-12);
 }
 
@@ -96,7 +84,7 @@ TEST(Laminate, CrossPlyCouplingHasTheRightSign) {
   // [0/90]: ply 1 (0°) lies at z < 0, so B11 = −(Q11 − Q22) t²/2 = −B22, B12 = B66 = 0.
   const double t = 0.5e-3;
   const Laminate L = make("[0/90]", t);
-  const Eigen::Matrix3d Q = reduced_stiffness(t300());
+  const Eigen::Matrix3d Q = reduced_stiffness(test::t300_976());
   const double expected = -(Q(0, 0) - Q(1, 1)) * t * t / 2.0;
   EXPECT_NEAR(L.B()(0, 0), expected, 1e-9 * std::abs(expected));
   EXPECT_NEAR(L.B()(1, 1), -expected, 1e-9 * std::abs(expected));
@@ -109,7 +97,7 @@ TEST(Laminate, AnglePlyCouplingIsPureBendTwist) {
   // [45/−45]: Q̄16(±45°) = ±(Q11 − Q22)/4, so B16 = B26 = −(Q11 − Q22) t²/4 and all other B vanish.
   const double t = 0.5e-3;
   const Laminate L = make("[45/-45]", t);
-  const Eigen::Matrix3d Q = reduced_stiffness(t300());
+  const Eigen::Matrix3d Q = reduced_stiffness(test::t300_976());
   const double expected = -(Q(0, 0) - Q(1, 1)) * t * t / 4.0;
   const double tol = 1e-9 * std::abs(expected);
   EXPECT_NEAR(L.B()(0, 2), expected, tol);
