@@ -5,7 +5,7 @@
 
 namespace plyimpact {
 
-/// Needs [laminate], [plate], [boundary]; [mesh] defaults to 15 × 11, lumped mass, q9.
+/// Needs [laminate], [plate], [boundary]; [mesh] defaults to 15 × 11, lumped mass, element "auto".
 [[nodiscard]] PlateModel plate_from_deck(const Deck& deck);
 
 } // namespace plyimpact
