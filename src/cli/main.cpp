@@ -17,9 +17,12 @@
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
+#include "plyimpact/io/impact_text_report.hpp"
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/plate_from_deck.hpp"
+#include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/results.hpp"
+#include "plyimpact/io/vtk_output.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -30,6 +33,7 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <unistd.h>
@@ -163,6 +167,32 @@ DamageOptions damage_options(const Deck& deck) {
   return d;
 }
 
+/// ParaView frames every `every` steps and at the requested times (docs/deck.md, [output] vtk*).
+class VtkFrames {
+public:
+  VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const PlateModel& model,
+            VtkOptions options)
+      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)) {
+    std::sort(at_.begin(), at_.end());
+  }
+  void observe(long step, double t, double dt, const Eigen::VectorXd& u,
+               const std::vector<DamageOnset>& onsets) {
+    bool due = every_ > 0 && step % every_ == 0;
+    while (next_ < at_.size() && t >= at_[next_] - 1e-9 * dt) {
+      due = true;
+      ++next_;
+    }
+    if (due) series_.write(step, t, u, onsets);
+  }
+  [[nodiscard]] std::size_t frames() const { return series_.frames(); }
+
+private:
+  int every_;
+  std::vector<double> at_;
+  std::size_t next_ = 0;
+  VtkSeries series_;
+};
+
 int run_impact(const Options& o) {
   // First thing: an interrupt during set-up still ends in consistent, incomplete results.
   std::signal(SIGINT, on_signal);
@@ -173,25 +203,38 @@ int run_impact(const Options& o) {
   settings.cancel = &interrupted;
   auto bar = std::make_shared<ProgressBar>();
   settings.progress = [bar](double t, long step) { (*bar)(t, step); };
+  const std::vector<Criterion> criteria = parse_criteria(deck.damage.criteria);
   std::optional<DamageTracker> damage;
-  if (!deck.damage.criteria.empty() && !settings.rigid_target)
-    damage.emplace(model, parse_criteria(deck.damage.criteria), damage_options(deck));
+  if (!criteria.empty() && !settings.rigid_target) damage.emplace(model, criteria, damage_options(deck));
   std::optional<StressProbes> probes;
   if (!deck.probes.empty() && !settings.rigid_target) probes.emplace(model, deck.probes);
-  ImpactObserver observer;
-  if (damage || probes)
-    observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
-      if (damage) damage->observe(step, t, force, u);
-      if (probes) probes->observe(step, t, force, u);
-    };
+  // The folder exists before the run: ParaView frames are written while it runs.
+  const auto out = results_folder(o, deck);
+  std::optional<VtkFrames> vtk;
+  if (out && deck.vtk.enabled && !settings.rigid_target)
+    vtk.emplace(deck.vtk, out->path(), model,
+                VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
+                           damage_options(deck).criterion_options});
+  std::optional<NodalSnapshot> report_state;
+  const std::vector<DamageOnset> no_onsets;
+  const ImpactObserver observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
+    if (damage) damage->observe(step, t, force, u);
+    if (probes) probes->observe(step, t, force, u);
+    if (vtk) vtk->observe(step, t, settings.dt, u, damage ? damage->onsets() : no_onsets);
+    if (deck.report_displacements_at && !report_state &&
+        t >= *deck.report_displacements_at - 1e-9 * settings.dt)
+      report_state = NodalSnapshot{t, u};
+  };
   const ImpactSolver solver(model, settings);
-  const ImpactResult r = solver.run(observer);
+  // No observer when nothing watches the plate: the solver then skips expanding u every step.
+  const bool watched = damage || probes || vtk || deck.report_displacements_at;
+  const ImpactResult r = solver.run(watched && !settings.rigid_target ? observer : ImpactObserver{});
   bar.reset();
   fmt::print("{}", impact_summary_text(settings, r));
   const std::vector<DamageOnset> first = damage ? damage->first_onsets() : std::vector<DamageOnset>{};
   if (damage)
     fmt::print("first failures (per criterion, mode and ply/interface):\n{}", first_failures_text(first));
-  if (const auto out = results_folder(o, deck)) {
+  if (out) {
     if (damage) {
       out->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
       out->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
@@ -199,7 +242,9 @@ int run_impact(const Options& o) {
       if (!maps.warning.empty()) fmt::print(stderr, "plyimpact: warning: {}\n", maps.warning);
     }
     if (probes) out->write_text("probes.csv", probes_csv(*probes));
+    out->write_text("report.txt", impact_report_text(deck, model, settings, r, first, report_state));
     write_impact_results(*out, deck, &model, settings, r, [&](nlohmann::json& j) {
+      if (vtk) j["vtk_frames"] = vtk->frames();
       if (!damage) return;
       j["first_failures"] = nlohmann::json::array();
       for (const auto& f : first)
@@ -208,6 +253,23 @@ int run_impact(const Options& o) {
   }
   if (interrupted.load()) return 130;
   return r.complete ? 0 : 3;
+}
+
+/// `plyimpact plot DIR... [-o OUT]`: PNG and SVG pictures of one run, or overlays of several.
+int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir) {
+  std::vector<PlotRun> runs;
+  for (const std::string& d : dirs) {
+    if (!std::filesystem::exists(std::filesystem::path(d) / "history.csv"))
+      throw std::runtime_error(
+          d + ": not an impact results folder (no history.csv; run plyimpact impact DECK -o " + d + ")");
+    runs.push_back({d, run_label(d)});
+  }
+  const std::filesystem::path out =
+      !output_dir.empty() ? std::filesystem::path(output_dir) : std::filesystem::path(dirs.front()) / "plots";
+  const PlotFiles files = draw_plots(impact_plots(runs), out);
+  for (const auto& f : files.images)
+    fmt::print("{}\n", f.string());
+  return 0;
 }
 
 int run_threshold(const Options& o) {
@@ -254,8 +316,8 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 /// `plyimpact DECK [options]` runs the deck's own `analysis` (impact by default).
 std::vector<std::string> with_default_command(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  static const std::vector<std::string> commands{"laminate", "static", "modal",
-                                                 "buckling", "impact", "threshold"};
+  static const std::vector<std::string> commands{"laminate", "static",    "modal", "buckling",
+                                                 "impact",   "threshold", "plot"};
   if (args.empty() || args[0].empty() || args[0][0] == '-' ||
       std::find(commands.begin(), commands.end(), args[0]) != commands.end())
     return args;
@@ -289,6 +351,11 @@ int run(int argc, char** argv) {
   CLI::App* stat = add_analysis(app, "static", "Linear static analysis (point, patch, pressure loads)", o);
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
+  std::vector<std::string> plot_dirs;
+  CLI::App* plot =
+      app.add_subcommand("plot", "PNG and SVG plots of impact results (several folders: overlaid curves)");
+  plot->add_option("results", plot_dirs, "impact results folder(s) written with -o")->required();
+  plot->add_option("-o,--output", o.output_dir, "folder for the pictures (default: RESULTS/plots)");
 
   try {
     std::vector<std::string> args = with_default_command(argc, argv);
@@ -304,6 +371,7 @@ int run(int argc, char** argv) {
     if (*stat) return run_static(o);
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);
+    if (*plot) return run_plot(plot_dirs, o.output_dir);
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return 2;

@@ -1,5 +1,7 @@
 // The command line: every analysis writes DIR/summary.json with the SPEC §10 keys; bad decks exit
 // non-zero with the file:line:column message.
+#include "support/cli.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -15,70 +17,7 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-
-struct CommandResult {
-  int status = -1;
-  std::string out;
-};
-
-CommandResult run(const std::string& args) {
-  const std::string cmd = std::string(PLYIMPACT_EXE) + " " + args + " 2>&1";
-  CommandResult r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe) != nullptr)
-    r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("plyimpact-cli-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string small_deck(const std::string& analysis, const std::string& extra) {
-  return "analysis = \"" + analysis + R"("
-[materials.T300_976]
-E1 = 144.8e9
-E2 = 9.65e9
-G12 = 7.10e9
-G23 = 5.92e9
-nu12 = 0.30
-rho = 1389.2
-[laminate]
-material = "T300_976"
-layup = "[0_2/90_4/0_2]"
-ply_thickness = 0.465e-3
-[plate]
-a = 0.127
-b = 0.0762
-[mesh]
-nx = 6
-ny = 4
-[boundary]
-x0 = "ss"
-xa = "ss"
-y0 = "ss"
-yb = "ss"
-)" + extra;
-}
-
-fs::path write(const fs::path& dir, const std::string& text) {
-  const fs::path p = dir / "deck.toml";
-  std::ofstream(p) << text;
-  return p;
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
+using namespace plyimpact::test;
 
 TEST(Cli, ImpactWritesHistoryAndSummaryWithTheSpecKeys) {
   const fs::path dir = scratch("impact");

@@ -177,7 +177,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadDeck{"BadChoice", "nx = 15", "nx = 15\nmass = \"diagonal\"",
                 "mesh.mass must be one of lumped | consistent, got \"diagonal\""},
         BadDeck{"BadOverride", "", "[[laminate.override]]\nplies = [9]\n",
-                "laminate.override.plies: expected ply numbers from 1 to 8"}),
+                "laminate.override.plies: expected ply numbers from 1 to 8"},
+        BadDeck{"VtkEveryZero", "", "[output]\nvtk_every = 0\n",
+                "deck.toml:36:13: error: output.vtk_every must be a positive step count, got 0"},
+        BadDeck{"VtkNotBool", "", "[output]\nvtk = \"yes\"\n",
+                "deck.toml:36:7: error: output.vtk must be true or false"},
+        BadDeck{"VtkPlyOutOfRange", "", "[output]\nvtk_plies = [1, 9]\n",
+                "deck.toml:36:17: error: output.vtk_plies: expected a ply number from 1 to 8"},
+        BadDeck{"VtkInterfaceOutOfRange", "", "[output]\nvtk_interfaces = [8]\n",
+                "deck.toml:36:19: error: output.vtk_interfaces: expected an interface number from 1 to 7"},
+        BadDeck{"VtkAtNegative", "", "[output]\nvtk_at = [1e-6, -2e-6]\n",
+                "deck.toml:36:17: error: output.vtk_at: expected a time in s (a number >= 0)"},
+        BadDeck{"VtkScaleZero", "", "[output]\nvtk_thickness_scale = 0\n",
+                "output.vtk_thickness_scale must be positive"}),
     [](const ::testing::TestParamInfo<BadDeck>& p) { return p.param.name; });
 
 TEST(Deck, ThresholdProbesAndDamageKeysAreRead) {
@@ -219,6 +231,25 @@ TEST(Deck, EditDistanceCountsSingleEdits) {
   EXPECT_EQ(edit_distance("impacter", "impactor"), 1U);
   EXPECT_EQ(edit_distance("E1", "e1"), 0U);
   EXPECT_EQ(edit_distance("", "abc"), 3U);
+}
+
+TEST(Deck, ParaViewAndReportKeysAreRead) {
+  const Deck none = parse_deck(base_deck, "deck.toml");
+  EXPECT_FALSE(none.vtk.enabled);
+  const Deck d =
+      parse_deck(base_deck + "[output]\nvtk = true\nreport_displacements_at = 2e-5\n", "deck.toml");
+  EXPECT_TRUE(d.vtk.enabled);
+  EXPECT_EQ(d.vtk.every, VtkOutputSettings::default_every); // vtk = true alone: every 100 steps
+  EXPECT_EQ(*d.report_displacements_at, 2e-5);
+  const Deck at = parse_deck(base_deck + "[output]\nvtk_at = [1e-5, 3e-5]\nvtk_plies = [1, "
+                                         "8]\nvtk_interfaces = [7]\nvtk_thickness_scale = 10\n",
+                             "deck.toml");
+  EXPECT_TRUE(at.vtk.enabled); // asking for times switches the output on
+  EXPECT_EQ(at.vtk.every, 0);  // ... and only those times
+  EXPECT_EQ(at.vtk.at, (std::vector<double>{1e-5, 3e-5}));
+  EXPECT_EQ(at.vtk.plies, (std::vector<int>{1, 8}));
+  EXPECT_EQ(at.vtk.interfaces, (std::vector<int>{7}));
+  EXPECT_EQ(at.vtk.thickness_scale, 10.0);
 }
 
 } // namespace

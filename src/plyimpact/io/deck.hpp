@@ -37,6 +37,17 @@ struct LaminateSpec {
   std::vector<PlyOverride> overrides;
 };
 
+/// [output] ParaView files (docs/deck.md): a frame every `every` steps and/or at the times `at`.
+struct VtkOutputSettings {
+  static constexpr int default_every = 100;
+  bool enabled = false;
+  int every = 0;                ///< steps between frames; 0: only at `at`
+  std::vector<double> at;       ///< [s]
+  std::vector<int> plies;       ///< 1-based plies with cell data in plate.pvd (empty: all)
+  std::vector<int> interfaces;  ///< 1-based interfaces with cell data in plate.pvd (empty: all)
+  double thickness_scale = 1.0; ///< thickness exaggeration of the layered (3-D) view
+};
+
 struct Deck {
   std::string source; ///< file name used in messages
   std::string title;
@@ -59,7 +70,9 @@ struct Deck {
   std::string output_dir = "results";
   std::vector<double> field_times; ///< [output] fields_at: displacement fields at these times [s]
   int history_every = 1;           ///< [output] history_every
-  std::string text;                ///< the deck's own text, recorded next to results
+  VtkOutputSettings vtk;           ///< [output] vtk*
+  std::optional<double> report_displacements_at; ///< [output] nodal displacements in report.txt [s]
+  std::string text;                              ///< the deck's own text, recorded next to results
 };
 
 /// Parses a deck from text; `source` names it in messages. Throws DeckError.

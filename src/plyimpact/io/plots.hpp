@@ -1,0 +1,58 @@
+#pragma once
+// Pictures of impact results (`plyimpact plot`): contact force, contact-point deflection and impactor
+// velocity versus time, the energy balance, force versus indentation (the Tan–Sun loop) and, when
+// the run tracked damage, the failed area versus time. Drawn by gnuplot (Debian's gnuplot-nox) from
+// generated scripts that read the results' CSV files directly; the scripts are kept next to the
+// images so a picture can be restyled and redrawn by hand. Several results folders give overlays
+// (e.g. three impact velocities, thesis Fig. 4.8).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+/// One curve: a CSV file with a gnuplot `using` expression (named columns), or inline CSV rows
+/// (`data`, for curves that need regrouping, e.g. one layer of damage_area.csv); legend title; style.
+struct PlotCurve {
+  std::filesystem::path csv;
+  std::string using_expr;
+  std::string title;
+  std::string data;            ///< inline CSV (a header line, then x,y rows); replaces csv if set
+  std::string style = "lines"; ///< gnuplot style: lines, steps, ...
+};
+
+struct PlotSpec {
+  std::string name; ///< file stem: <name>.gp, <name>.svg, <name>.png
+  std::string title, xlabel, ylabel;
+  std::vector<PlotCurve> curves;
+  std::string key = "top right"; ///< legend position
+  std::string extra;             ///< further gnuplot commands (ranges, ...)
+};
+
+/// One results folder to draw, with its legend label.
+struct PlotRun {
+  std::filesystem::path dir;
+  std::string label;
+};
+
+inline constexpr int plot_width_px = 900, plot_height_px = 600;
+
+/// The plots for these runs (one run: its own plots; several: overlays of the time histories).
+[[nodiscard]] std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs);
+
+/// gnuplot script drawing `spec` to `svg` and `png`; CSV paths are written relative to `cwd`.
+[[nodiscard]] std::string gnuplot_script(const PlotSpec& spec, const std::filesystem::path& cwd,
+                                         const std::string& svg, const std::string& png);
+
+struct PlotFiles {
+  std::vector<std::filesystem::path> images, scripts;
+};
+
+/// Draws every spec into `out` (created): <name>.gp always, <name>.svg and <name>.png atomically.
+/// Throws std::runtime_error when gnuplot is missing or fails.
+[[nodiscard]] PlotFiles draw_plots(const std::vector<PlotSpec>& specs, const std::filesystem::path& out);
+
+/// Legend label of a results folder: "v0 = 2.68 m/s, m = 6.14 kg" from its summary.json, or its name.
+[[nodiscard]] std::string run_label(const std::filesystem::path& dir);
+
+} // namespace plyimpact

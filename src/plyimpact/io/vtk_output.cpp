@@ -1,0 +1,290 @@
+#include "plyimpact/io/vtk_output.hpp"
+
+#include "plyimpact/analysis/element_fields.hpp"
+#include "plyimpact/io/atomic_file.hpp"
+
+#include <fmt/format.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+#include <vtkXMLUtilities.h>
+
+#include <array>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+namespace plyimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A named cell or point array of `count` tuples of `components` doubles, initialised to zero.
+vtkNew<vtkDoubleArray> double_array(const std::string& name, vtkIdType count, int components = 1) {
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name.c_str());
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(count);
+  a->Fill(0.0);
+  return a;
+}
+
+/// Field data "TimeValue" (which ParaView shows as the time of a lone file).
+void set_time(vtkUnstructuredGrid& grid, double t) {
+  vtkNew<vtkDoubleArray> time;
+  time->SetName("TimeValue");
+  time->InsertNextValue(t);
+  grid.GetFieldData()->AddArray(time);
+}
+
+void write_grid(const fs::path& file, vtkUnstructuredGrid& grid) {
+  fs::create_directories(file.parent_path());
+  const fs::path tmp = fs::path(file).concat(".tmp");
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(tmp.string().c_str());
+  writer->SetInputData(&grid);
+  writer->SetDataModeToBinary(); // zlib-compressed base64 inline: one self-contained file
+  if (writer->Write() != 1) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw std::runtime_error("cannot write " + file.string());
+  }
+  fs::rename(tmp, file);
+}
+
+/// Layers (1-based) selected for cell data, or all of 1..count when none was asked for.
+std::vector<int> selected(const std::vector<int>& asked, int count) {
+  if (!asked.empty()) return asked;
+  std::vector<int> all(static_cast<std::size_t>(std::max(count, 0)));
+  std::iota(all.begin(), all.end(), 1);
+  return all;
+}
+
+/// Nodal DOFs (u, v, w, θx, θy) of every node, restrained ones zero.
+Eigen::Matrix<double, 5, Eigen::Dynamic> nodal_dofs(const PlateModel& model, const Eigen::VectorXd& u) {
+  const Eigen::VectorXd full = model.to_nodal(u);
+  return Eigen::Map<const Eigen::Matrix<double, 5, Eigen::Dynamic>>(full.data(), 5, full.size() / 5);
+}
+
+/// The five ply stresses in material axes, in the order of `stress_names`.
+std::array<double, 5> components(const PlyStress& s) {
+  return {s.s11, s.s22, s.t12, s.t13, s.t23};
+}
+constexpr std::array<const char*, 5> stress_names{"s11_Pa", "s22_Pa", "t12_Pa", "t13_Pa", "t23_Pa"};
+
+} // namespace
+
+void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+                     const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options) {
+  const PlateMesh& mesh = model.mesh();
+  const vtkIdType nodes = mesh.node_count(), elements = mesh.element_count();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nodes);
+  for (vtkIdType n = 0; n < nodes; ++n)
+    points->SetPoint(n, mesh.node(int(n)).x(), mesh.node(int(n)).y(), 0.0);
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->Allocate(elements);
+  for (int e = 0; e < int(elements); ++e) {
+    std::array<vtkIdType, 9> ids{}; // Q9 local order = VTK_BIQUADRATIC_QUAD order
+    for (std::size_t a = 0; a < 9; ++a)
+      ids[a] = mesh.element_nodes(e)[a];
+    grid->InsertNextCell(VTK_BIQUADRATIC_QUAD, 9, ids.data());
+  }
+  set_time(*grid, t);
+
+  // Point data: the five nodal DOFs and the displacement vector of the mid-plane.
+  const auto dofs = nodal_dofs(model, u);
+  const std::array<const char*, 5> dof_names{"u_m", "v_m", "w_m", "theta_x_rad", "theta_y_rad"};
+  for (int d = 0; d < 5; ++d) {
+    auto a = double_array(dof_names[std::size_t(d)], nodes);
+    for (vtkIdType n = 0; n < nodes; ++n)
+      a->SetValue(n, dofs(d, n));
+    grid->GetPointData()->AddArray(a);
+  }
+  auto displacement = double_array("displacement_m", nodes, 3);
+  for (vtkIdType n = 0; n < nodes; ++n)
+    displacement->SetTuple3(n, dofs(0, n), dofs(1, n), dofs(2, n));
+  grid->GetPointData()->SetVectors(displacement);
+
+  // Cell data at element centres: ply and interface stresses, failure indices, damage.
+  const ElementCentreFields f = element_centre_fields(model, u, options.criteria, options.criterion_options);
+  const DamageFractions damage = damage_fractions(onsets, f.elements, f.plies, t);
+  vtkCellData& cells = *grid->GetCellData();
+  for (const int ply : selected(options.plies, f.plies)) {
+    const int k = ply - 1;
+    for (std::size_t c = 0; c < 5; ++c) {
+      auto a = double_array(fmt::format("ply{}_{}", ply, stress_names[c]), elements);
+      for (int e = 0; e < int(elements); ++e)
+        a->SetValue(e, components(f.ply(k, e))[c]);
+      cells.AddArray(a);
+    }
+    for (std::size_t c = 0; c < f.criteria.size(); ++c) {
+      if (is_interface_criterion(f.criteria[c])) continue;
+      auto a = double_array(fmt::format("ply{}_{}_index", ply, to_string(f.criteria[c])), elements);
+      for (int e = 0; e < int(elements); ++e)
+        a->SetValue(e, f.failure_index(c, k, e));
+      cells.AddArray(a);
+    }
+    auto a = double_array(fmt::format("ply{}_damaged", ply), elements);
+    for (int e = 0; e < int(elements); ++e)
+      a->SetValue(e, damage.ply[std::size_t(k * f.elements + e)]);
+    cells.AddArray(a);
+  }
+  for (const int interface : selected(options.interfaces, f.interfaces())) {
+    const int i = interface - 1;
+    for (int c = 0; c < 2; ++c) {
+      auto a = double_array(fmt::format("interface{}_{}", interface, c == 0 ? "tyz_Pa" : "txz_Pa"), elements);
+      for (int e = 0; e < int(elements); ++e)
+        a->SetValue(e, f.shear(i, e)(c));
+      cells.AddArray(a);
+    }
+    for (std::size_t c = 0; c < f.criteria.size(); ++c) {
+      if (!is_interface_criterion(f.criteria[c])) continue;
+      auto a =
+          double_array(fmt::format("interface{}_{}_index", interface, to_string(f.criteria[c])), elements);
+      for (int e = 0; e < int(elements); ++e)
+        a->SetValue(e, f.failure_index(c, i, e));
+      cells.AddArray(a);
+    }
+    auto a = double_array(fmt::format("interface{}_delaminated", interface), elements);
+    for (int e = 0; e < int(elements); ++e)
+      a->SetValue(e, damage.interface[std::size_t(i * f.elements + e)]);
+    cells.AddArray(a);
+  }
+  write_grid(file, *grid);
+}
+
+void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options) {
+  const PlateMesh& mesh = model.mesh();
+  const Laminate& lam = model.laminate();
+  const int plies = static_cast<int>(lam.ply_count());
+  const vtkIdType nodes = mesh.node_count();
+  // Surfaces s = 0 (impacted face) … N (back face) at heights z_s; point p = s·nodes + n.
+  std::vector<double> z{lam.z_top(0)};
+  for (int k = 0; k < plies; ++k)
+    z.push_back(lam.z_bottom(std::size_t(k)));
+  const auto dofs = nodal_dofs(model, u);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nodes * vtkIdType(z.size()));
+  auto displacement = double_array("displacement_m", points->GetNumberOfPoints(), 3);
+  for (std::size_t s = 0; s < z.size(); ++s)
+    for (vtkIdType n = 0; n < nodes; ++n) {
+      const vtkIdType p = vtkIdType(s) * nodes + n;
+      points->SetPoint(p, mesh.node(int(n)).x(), mesh.node(int(n)).y(), z[s] * options.thickness_scale);
+      // (1.1): u = u0 + z θx, v = v0 + z θy, w = w0 at the true height z.
+      displacement->SetTuple3(p, dofs(0, n) + z[s] * dofs(3, n), dofs(1, n) + z[s] * dofs(4, n), dofs(2, n));
+    }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->GetPointData()->SetVectors(displacement);
+  set_time(*grid, t);
+
+  const ElementCentreFields f = element_centre_fields(model, u, options.criteria, options.criterion_options);
+  const DamageFractions damage = damage_fractions(onsets, f.elements, f.plies, t);
+  const vtkIdType cells_per_ply = vtkIdType(4) * mesh.element_count();
+  const vtkIdType count = cells_per_ply * plies;
+  grid->Allocate(count);
+  vtkNew<vtkIntArray> ply_number;
+  ply_number->SetName("ply");
+  ply_number->SetNumberOfTuples(count);
+  auto angle = double_array("angle_deg", count);
+  std::array<vtkSmartPointer<vtkDoubleArray>, 5> stress;
+  for (std::size_t c = 0; c < 5; ++c)
+    stress[c] = double_array(stress_names[c], count).Get();
+  auto damaged = double_array("damaged", count);
+  auto delaminated = double_array("delaminated_below", count);
+  std::vector<std::pair<std::size_t, vtkSmartPointer<vtkDoubleArray>>> indices;
+  for (std::size_t c = 0; c < f.criteria.size(); ++c)
+    if (!is_interface_criterion(f.criteria[c]))
+      indices.emplace_back(c, double_array(fmt::format("{}_index", to_string(f.criteria[c])), count).Get());
+
+  vtkIdType cell = 0;
+  for (int k = 0; k < plies; ++k)
+    for (int j = 0; j + 1 < mesh.grid_rows(); ++j)
+      for (int i = 0; i + 1 < mesh.grid_columns(); ++i, ++cell) {
+        // The 2×2 node cells of each Q9, extruded through ply k (VTK_HEXAHEDRON order: lower
+        // face counter-clockwise, then the upper face).
+        const std::array<int, 4> quad{mesh.node_id(i, j), mesh.node_id(i + 1, j), mesh.node_id(i + 1, j + 1),
+                                      mesh.node_id(i, j + 1)};
+        std::array<vtkIdType, 8> ids{};
+        for (std::size_t a = 0; a < 4; ++a) {
+          ids[a] = vtkIdType(k) * nodes + quad[a];
+          ids[a + 4] = vtkIdType(k + 1) * nodes + quad[a];
+        }
+        grid->InsertNextCell(VTK_HEXAHEDRON, 8, ids.data());
+        const int e = i / 2 + (j / 2) * mesh.nx();
+        ply_number->SetValue(cell, k + 1);
+        angle->SetValue(cell, lam.plies()[std::size_t(k)].angle_deg);
+        const auto s = components(f.ply(k, e));
+        for (std::size_t c = 0; c < 5; ++c)
+          stress[c]->SetValue(cell, s[c]);
+        for (const auto& [c, a] : indices)
+          a->SetValue(cell, f.failure_index(c, k, e));
+        damaged->SetValue(cell, damage.ply[std::size_t(k * f.elements + e)]);
+        if (k + 1 < plies) delaminated->SetValue(cell, damage.interface[std::size_t(k * f.elements + e)]);
+      }
+  vtkCellData& data = *grid->GetCellData();
+  data.AddArray(ply_number);
+  data.AddArray(angle);
+  for (const auto& a : stress)
+    data.AddArray(a);
+  for (const auto& [c, a] : indices)
+    data.AddArray(a);
+  data.AddArray(damaged);
+  data.AddArray(delaminated);
+  write_grid(file, *grid);
+}
+
+void write_pvd(const fs::path& file, const std::vector<PvdEntry>& entries) {
+  vtkNew<vtkXMLDataElement> root;
+  root->SetName("VTKFile");
+  root->SetAttribute("type", "Collection");
+  root->SetAttribute("version", "0.1");
+  root->SetAttribute("byte_order", "LittleEndian");
+  vtkNew<vtkXMLDataElement> collection;
+  collection->SetName("Collection");
+  for (const PvdEntry& entry : entries) {
+    vtkNew<vtkXMLDataElement> dataset;
+    dataset->SetName("DataSet");
+    dataset->SetAttribute("timestep", fmt::format("{:.10g}", entry.t).c_str());
+    dataset->SetAttribute("group", "");
+    dataset->SetAttribute("part", "0");
+    dataset->SetAttribute("file", entry.file.c_str());
+    collection->AddNestedElement(dataset);
+  }
+  root->AddNestedElement(collection);
+  std::ostringstream xml;
+  xml << "<?xml version=\"1.0\"?>\n";
+  vtkXMLUtilities::FlattenElement(root, xml);
+  xml << "\n";
+  write_file_atomically(file, xml.str());
+}
+
+VtkSeries::VtkSeries(fs::path dir, const PlateModel& model, VtkOptions options)
+    : dir_(std::move(dir)), model_(model), options_(std::move(options)) {}
+
+void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets) {
+  const std::string plate = fmt::format("paraview/plate_{:07d}.vtu", step);
+  const std::string layers = fmt::format("paraview/layers_{:07d}.vtu", step);
+  write_plate_vtu(dir_ / plate, model_, u, onsets, t, options_);
+  write_layers_vtu(dir_ / layers, model_, u, onsets, t, options_);
+  plate_.push_back({t, plate});
+  layers_.push_back({t, layers});
+  write_pvd(dir_ / "plate.pvd", plate_);
+  write_pvd(dir_ / "layers.pvd", layers_);
+}
+
+} // namespace plyimpact

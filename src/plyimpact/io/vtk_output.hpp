@@ -1,0 +1,65 @@
+#pragma once
+// ParaView output through VTK (Debian's libvtk9-dev): two time series, each a `.pvd` collection of
+// `.vtu` unstructured grids, written while the impact runs.
+//
+//   plate.pvd   the mid-plane as VTK_BIQUADRATIC_QUAD cells (our Q9 node order is VTK's): point data
+//               u, v, w, θx, θy and the displacement vector (for "Warp By Vector"); cell data per
+//               selected ply: σ̄11, σ̄22, τ̄12, τ̄13, τ̄23 (material axes), failure indices and the
+//               damaged fraction; per selected interface: (τyz, τxz) and the delaminated fraction.
+//   layers.pvd  the laminate in 3-D, one VTK_HEXAHEDRON layer per ply (each Q9 split into its 2×2
+//               node cells), thickness optionally exaggerated; cell data ply number, angle, stresses,
+//               damaged fraction and the delaminated fraction of the interface below.
+//
+// Coordinates are SPEC §1's: z points in the impact direction (the impacted face is z = −h/2).
+// Cell values are sampled at element centres (analysis/element_fields.hpp). Every file is written to
+// a temporary name and renamed, and the collections are rewritten after every frame, so an
+// interrupted run leaves valid `.pvd` files listing every frame already written.
+#include "plyimpact/analysis/damage_tracker.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/laminate/failure_criteria.hpp"
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+struct VtkOptions {
+  std::vector<int> plies;          ///< 1-based plies with cell data in plate.pvd (empty: all)
+  std::vector<int> interfaces;     ///< 1-based interfaces with cell data in plate.pvd (empty: all)
+  double thickness_scale = 1.0;    ///< z-scale of the layered view (1: true thickness)
+  std::vector<Criterion> criteria; ///< failure indices written (usually the [damage] criteria)
+  CriterionOptions criterion_options;
+};
+
+/// One frame of plate.pvd: the mid-plane grid with its point and cell data.
+void write_plate_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+                     const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options);
+/// One frame of layers.pvd: the laminate as hexahedra, one layer per ply.
+void write_layers_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options);
+
+/// A `.pvd` collection: (time, file relative to the .pvd) pairs.
+struct PvdEntry {
+  double t = 0.0;
+  std::string file;
+};
+void write_pvd(const std::filesystem::path& file, const std::vector<PvdEntry>& entries);
+
+/// Writes frames into DIR/paraview/ and keeps DIR/plate.pvd and DIR/layers.pvd up to date.
+class VtkSeries {
+public:
+  VtkSeries(std::filesystem::path dir, const PlateModel& model, VtkOptions options);
+  /// Writes the frame of `step` at time t (seconds) for the plate state u (free DOFs).
+  void write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets);
+  [[nodiscard]] std::size_t frames() const { return plate_.size(); }
+
+private:
+  std::filesystem::path dir_;
+  const PlateModel& model_;
+  VtkOptions options_;
+  std::vector<PvdEntry> plate_, layers_;
+};
+
+} // namespace plyimpact

@@ -1,0 +1,83 @@
+#pragma once
+// Running the plyimpact executable from tests: command, scratch folders, small decks.
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace plyimpact::test {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status = -1;
+  std::string out;
+};
+
+/// Runs `plyimpact ARGS` (stdout and stderr together).
+inline CommandResult run(const std::string& args) {
+  const std::string cmd = std::string(PLYIMPACT_EXE) + " " + args + " 2>&1";
+  CommandResult r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe) != nullptr)
+    r.out += buf.data();
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// An empty folder under the system temporary folder.
+inline fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("plyimpact-cli-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// The [0_2/90_4/0_2] T300/976 plate of Annex 2 on a 6 × 4 mesh, simply supported, plus `extra`.
+inline std::string small_deck(const std::string& analysis, const std::string& extra) {
+  return "analysis = \"" + analysis + R"("
+[materials.T300_976]
+E1 = 144.8e9
+E2 = 9.65e9
+G12 = 7.10e9
+G23 = 5.92e9
+nu12 = 0.30
+rho = 1389.2
+[laminate]
+material = "T300_976"
+layup = "[0_2/90_4/0_2]"
+ply_thickness = 0.465e-3
+[plate]
+a = 0.127
+b = 0.0762
+[mesh]
+nx = 6
+ny = 4
+[boundary]
+x0 = "ss"
+xa = "ss"
+y0 = "ss"
+yb = "ss"
+)" + extra;
+}
+
+/// Writes DIR/deck.toml.
+inline fs::path write(const fs::path& dir, const std::string& text) {
+  const fs::path p = dir / "deck.toml";
+  std::ofstream(p) << text;
+  return p;
+}
+
+inline nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+} // namespace plyimpact::test
