@@ -260,8 +260,8 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
   std::vector<PlotRun> runs;
   for (const std::string& d : dirs) {
     if (!std::filesystem::exists(std::filesystem::path(d) / "history.csv"))
-      throw std::runtime_error(
-          d + ": not an impact results folder (no history.csv; run plyimpact impact DECK -o " + d + ")");
+      throw std::runtime_error(fmt::format(
+          "{0}: not an impact results folder (no history.csv; run plyimpact impact DECK -o {0})", d));
     runs.push_back({d, run_label(d)});
   }
   const std::filesystem::path out =

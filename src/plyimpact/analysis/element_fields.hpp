@@ -23,10 +23,12 @@ struct ElementCentreFields {
   std::vector<Criterion> criteria;              ///< the evaluated criteria, in order
   std::vector<double> index; ///< [(c·layers + layer)·elements + e]; layer = ply or interface
   [[nodiscard]] int interfaces() const { return plies - 1; }
-  [[nodiscard]] const PlyStress& ply(int k, int e) const { return ply_stress[std::size_t(k * elements + e)]; }
-  [[nodiscard]] const Eigen::Vector2d& shear(int i, int e) const {
-    return interface_shear[std::size_t(i * elements + e)];
+  /// Position of (layer, element) in the per-layer arrays.
+  [[nodiscard]] std::size_t at(int layer, int e) const {
+    return std::size_t(layer) * std::size_t(elements) + std::size_t(e);
   }
+  [[nodiscard]] const PlyStress& ply(int k, int e) const { return ply_stress[at(k, e)]; }
+  [[nodiscard]] const Eigen::Vector2d& shear(int i, int e) const { return interface_shear[at(i, e)]; }
   /// Failure index of criterion c (position in `criteria`) at ply or interface `layer` (0-based).
   [[nodiscard]] double failure_index(std::size_t c, int layer, int e) const {
     return index[(c * std::size_t(plies) + std::size_t(layer)) * std::size_t(elements) + std::size_t(e)];
@@ -44,6 +46,12 @@ struct DamageFractions {
   int elements = 0;
   std::vector<double> ply;       ///< [ply·elements + e], any ply criterion
   std::vector<double> interface; ///< [interface·elements + e], any interface criterion
+  [[nodiscard]] double of_ply(int k, int e) const {
+    return ply[std::size_t(k) * std::size_t(elements) + std::size_t(e)];
+  }
+  [[nodiscard]] double of_interface(int i, int e) const {
+    return interface[std::size_t(i) * std::size_t(elements) + std::size_t(e)];
+  }
 };
 [[nodiscard]] DamageFractions damage_fractions(const std::vector<DamageOnset>& onsets, int elements,
                                                int plies, double t);

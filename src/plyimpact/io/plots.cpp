@@ -45,6 +45,7 @@ constexpr const char* t_us = "(column('t_s')*1e6)";
 
 std::vector<PlotCurve> per_run(const std::vector<PlotRun>& runs, const std::string& using_expr) {
   std::vector<PlotCurve> curves;
+  curves.reserve(runs.size());
   for (const PlotRun& r : runs)
     curves.push_back(csv_curve(r.dir / "history.csv", using_expr, r.label));
   return curves;

@@ -138,7 +138,7 @@ void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen:
     }
     auto a = double_array(fmt::format("ply{}_damaged", ply), elements);
     for (int e = 0; e < int(elements); ++e)
-      a->SetValue(e, damage.ply[std::size_t(k * f.elements + e)]);
+      a->SetValue(e, damage.of_ply(k, e));
     cells.AddArray(a);
   }
   for (const int interface : selected(options.interfaces, f.interfaces())) {
@@ -159,7 +159,7 @@ void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen:
     }
     auto a = double_array(fmt::format("interface{}_delaminated", interface), elements);
     for (int e = 0; e < int(elements); ++e)
-      a->SetValue(e, damage.interface[std::size_t(i * f.elements + e)]);
+      a->SetValue(e, damage.of_interface(i, e));
     cells.AddArray(a);
   }
   write_grid(file, *grid);
@@ -233,8 +233,8 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
           stress[c]->SetValue(cell, s[c]);
         for (const auto& [c, a] : indices)
           a->SetValue(cell, f.failure_index(c, k, e));
-        damaged->SetValue(cell, damage.ply[std::size_t(k * f.elements + e)]);
-        if (k + 1 < plies) delaminated->SetValue(cell, damage.interface[std::size_t(k * f.elements + e)]);
+        damaged->SetValue(cell, damage.of_ply(k, e));
+        if (k + 1 < plies) delaminated->SetValue(cell, damage.of_interface(k, e));
       }
   vtkCellData& data = *grid->GetCellData();
   data.AddArray(ply_number);
