@@ -38,6 +38,15 @@ vtkNew<vtkDoubleArray> double_array(const std::string& name, vtkIdType count, in
   return a;
 }
 
+/// Adds the cell array `name` with value(e) for every element e.
+template <class Value>
+void add_cell_array(vtkCellData& cells, const std::string& name, vtkIdType elements, const Value& value) {
+  auto a = double_array(name, elements);
+  for (vtkIdType e = 0; e < elements; ++e)
+    a->SetValue(e, value(static_cast<int>(e)));
+  cells.AddArray(a);
+}
+
 /// Field data "TimeValue" (which ParaView shows as the time of a lone file).
 void set_time(vtkUnstructuredGrid& grid, double t) {
   vtkNew<vtkDoubleArray> time;
@@ -123,44 +132,27 @@ void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen:
   vtkCellData& cells = *grid->GetCellData();
   for (const int ply : selected(options.plies, f.plies)) {
     const int k = ply - 1;
-    for (std::size_t c = 0; c < 5; ++c) {
-      auto a = double_array(fmt::format("ply{}_{}", ply, stress_names[c]), elements);
-      for (int e = 0; e < int(elements); ++e)
-        a->SetValue(e, components(f.ply(k, e))[c]);
-      cells.AddArray(a);
-    }
-    for (std::size_t c = 0; c < f.criteria.size(); ++c) {
-      if (is_interface_criterion(f.criteria[c])) continue;
-      auto a = double_array(fmt::format("ply{}_{}_index", ply, to_string(f.criteria[c])), elements);
-      for (int e = 0; e < int(elements); ++e)
-        a->SetValue(e, f.failure_index(c, k, e));
-      cells.AddArray(a);
-    }
-    auto a = double_array(fmt::format("ply{}_damaged", ply), elements);
-    for (int e = 0; e < int(elements); ++e)
-      a->SetValue(e, damage.of_ply(k, e));
-    cells.AddArray(a);
+    for (std::size_t c = 0; c < 5; ++c)
+      add_cell_array(cells, fmt::format("ply{}_{}", ply, stress_names[c]), elements,
+                     [&](int e) { return components(f.ply(k, e))[c]; });
+    for (std::size_t c = 0; c < f.criteria.size(); ++c)
+      if (!is_interface_criterion(f.criteria[c]))
+        add_cell_array(cells, fmt::format("ply{}_{}_index", ply, to_string(f.criteria[c])), elements,
+                       [&](int e) { return f.failure_index(c, k, e); });
+    add_cell_array(cells, fmt::format("ply{}_damaged", ply), elements,
+                   [&](int e) { return damage.of_ply(k, e); });
   }
   for (const int interface : selected(options.interfaces, f.interfaces())) {
     const int i = interface - 1;
-    for (int c = 0; c < 2; ++c) {
-      auto a = double_array(fmt::format("interface{}_{}", interface, c == 0 ? "tyz_Pa" : "txz_Pa"), elements);
-      for (int e = 0; e < int(elements); ++e)
-        a->SetValue(e, f.shear(i, e)(c));
-      cells.AddArray(a);
-    }
-    for (std::size_t c = 0; c < f.criteria.size(); ++c) {
-      if (!is_interface_criterion(f.criteria[c])) continue;
-      auto a =
-          double_array(fmt::format("interface{}_{}_index", interface, to_string(f.criteria[c])), elements);
-      for (int e = 0; e < int(elements); ++e)
-        a->SetValue(e, f.failure_index(c, i, e));
-      cells.AddArray(a);
-    }
-    auto a = double_array(fmt::format("interface{}_delaminated", interface), elements);
-    for (int e = 0; e < int(elements); ++e)
-      a->SetValue(e, damage.of_interface(i, e));
-    cells.AddArray(a);
+    for (int c = 0; c < 2; ++c)
+      add_cell_array(cells, fmt::format("interface{}_{}", interface, c == 0 ? "tyz_Pa" : "txz_Pa"), elements,
+                     [&](int e) { return f.shear(i, e)(c); });
+    for (std::size_t c = 0; c < f.criteria.size(); ++c)
+      if (is_interface_criterion(f.criteria[c]))
+        add_cell_array(cells, fmt::format("interface{}_{}_index", interface, to_string(f.criteria[c])),
+                       elements, [&](int e) { return f.failure_index(c, i, e); });
+    add_cell_array(cells, fmt::format("interface{}_delaminated", interface), elements,
+                   [&](int e) { return damage.of_interface(i, e); });
   }
   write_grid(file, *grid);
 }
