@@ -1,5 +1,6 @@
 #pragma once
 // Input decks (TOML, SPEC §10): one file describes a whole analysis. See docs/deck.md.
+#include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/boundary.hpp"
 #include "plyimpact/fem/mesh_spec.hpp"
@@ -60,6 +61,8 @@ struct Deck {
   std::vector<double> field_times; ///< [output] fields_at: displacement fields at these times [s]
   int history_every = 1;           ///< [output] history_every
   std::string text;                ///< the deck's own text, recorded next to results
+  bool nonlinear = false;          ///< top-level `nonlinear`: large deflections (SPEC §8)
+  NonlinearSettings nonlinear_settings; ///< top-level `strain_measure`, `load_steps`
 };
 
 /// Parses a deck from text; `source` names it in messages. Throws DeckError.
