@@ -52,18 +52,15 @@ std::span<const QuadraticTerm> terms_of(StrainMeasure m) {
   return green_lagrange_terms;
 }
 
-/// g = G uₑ at a point.
+/// Element DOFs as a 5×9 matrix: column a holds node a's (u, v, w, θx, θy).
+using NodalMatrix = Eigen::Matrix<double, dofs_per_node, 9>;
+
+/// g = G uₑ at a point, as three small matrix–vector products over the nodes.
 Gradients gradients(const IntegrationPoint& p, const ElementVector& ue) {
-  Gradients g = Gradients::Zero();
-  for (int a = 0; a < 9; ++a) {
-    const double Nx = p.dN_dx(a), Ny = p.dN_dy(a), N = p.N(a);
-    const double* d = ue.data() + 5 * a;
-    g(ux) += Nx * d[0], g(uy) += Ny * d[0];
-    g(vx) += Nx * d[1], g(vy) += Ny * d[1];
-    g(wx) += Nx * d[2], g(wy) += Ny * d[2];
-    g(tx_x) += Nx * d[3], g(tx_y) += Ny * d[3], g(tx) += N * d[3];
-    g(ty_x) += Nx * d[4], g(ty_y) += Ny * d[4], g(ty) += N * d[4];
-  }
+  const Eigen::Map<const NodalMatrix> U(ue.data());
+  const Eigen::Matrix<double, 5, 1> dx = U * p.dN_dx, dy = U * p.dN_dy, at = U * p.N;
+  Gradients g;
+  g << dx(0), dy(0), dx(1), dy(1), dx(2), dy(2), dx(3), dy(3), dx(4), dy(4), at(3), at(4);
   return g;
 }
 
@@ -81,17 +78,13 @@ GradientOperator gradient_operator(const IntegrationPoint& p) {
   return G;
 }
 
-/// f += Gᵀ r (r a generalized stress conjugate to g).
+/// f += Gᵀ r (r a generalized stress conjugate to g), as outer products over the nodes.
 void add_gradient_transpose(const IntegrationPoint& p, const Gradients& r, ElementVector& f) {
-  for (int a = 0; a < 9; ++a) {
-    const double Nx = p.dN_dx(a), Ny = p.dN_dy(a), N = p.N(a);
-    double* fa = f.data() + 5 * a;
-    fa[0] += r(ux) * Nx + r(uy) * Ny;
-    fa[1] += r(vx) * Nx + r(vy) * Ny;
-    fa[2] += r(wx) * Nx + r(wy) * Ny;
-    fa[3] += r(tx_x) * Nx + r(tx_y) * Ny + r(tx) * N;
-    fa[4] += r(ty_x) * Nx + r(ty_y) * Ny + r(ty) * N;
-  }
+  Eigen::Map<NodalMatrix> F(f.data());
+  const Eigen::Matrix<double, 5, 1> rx(r(ux), r(vx), r(wx), r(tx_x), r(ty_x));
+  const Eigen::Matrix<double, 5, 1> ry(r(uy), r(vy), r(wy), r(tx_y), r(ty_y));
+  const Eigen::Matrix<double, 5, 1> rn(0.0, 0.0, 0.0, r(tx), r(ty));
+  F.noalias() += rx * p.dN_dx.transpose() + ry * p.dN_dy.transpose() + rn * p.N.transpose();
 }
 
 /// e(g) and E = ∂e/∂g: linear part L (2.49)–(2.51) plus the quadratic terms.
@@ -113,6 +106,30 @@ StrainState strain_state(const Gradients& g, std::span<const QuadraticTerm> term
     s.E(t.strain, t.b) += t.c * g(t.a);
   }
   return s;
+}
+
+/// e(g) only (the force path): L g plus the quadratic terms.
+Strains strains_of(const Gradients& g, std::span<const QuadraticTerm> terms) {
+  Strains e;
+  e << g(ux), g(vy), g(uy) + g(vx), g(tx_x), g(ty_y), g(tx_y) + g(ty_x), g(ty) + g(wy), g(tx) + g(wx);
+  for (const QuadraticTerm& t : terms)
+    e(t.strain) += t.c * g(t.a) * g(t.b);
+  return e;
+}
+
+/// r = Eᵀ S without forming E (S holds the resultants of the strain rows [first, first + count), zero
+/// elsewhere): the linear map Lᵀ S plus, per quadratic term, S_i ∂e_i/∂g.
+Gradients conjugate_stress(const Gradients& g, const Strains& S, std::span<const QuadraticTerm> terms) {
+  Gradients r;
+  r(ux) = S(ex), r(vy) = S(ey), r(uy) = S(gxy), r(vx) = S(gxy);
+  r(tx_x) = S(kx), r(ty_y) = S(ky), r(tx_y) = S(kxy), r(ty_x) = S(kxy);
+  r(ty) = S(gyz), r(wy) = S(gyz), r(tx) = S(gxz), r(wx) = S(gxz);
+  for (const QuadraticTerm& t : terms) {
+    const double cs = t.c * S(t.strain);
+    r(t.a) += cs * g(t.b);
+    r(t.b) += cs * g(t.a);
+  }
+  return r;
 }
 
 /// Σ_i S_i H_i over the strain rows [first, first + count) (H_i = ∂²e_i/∂g²).
@@ -168,20 +185,22 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
   const auto terms = terms_of(measure_);
   ElementVector f = ElementVector::Zero();
   for (const IntegrationPoint& p : geo.membrane_bending) {
-    const StrainState s = strain_state(gradients(p, ue), terms);
-    const Eigen::Matrix<double, 6, 1> S = C_mb_ * s.e.head<6>(); // (N, M) (1.24)
-    const Gradients r = p.weight * (s.E.topRows<6>().transpose() * S);
-    add_gradient_transpose(p, r, f);
+    const Gradients g = gradients(p, ue);
+    const Strains e = strains_of(g, terms);
+    Strains S = Strains::Zero();
+    S.head<6>() = C_mb_ * e.head<6>(); // (N, M) (1.24)
+    add_gradient_transpose(p, p.weight * conjugate_stress(g, S, terms), f);
   }
   if (formulation_ == ElementFormulation::mitc9) {
     f.noalias() += geo.shear_stiffness * ue; // linear shear (von Kármán only)
     return f;
   }
   for (const IntegrationPoint& p : geo.shear) {
-    const StrainState s = strain_state(gradients(p, ue), terms);
-    const Eigen::Vector2d Q = F_ * s.e.tail<2>(); // (Qy, Qx)
-    const Gradients r = p.weight * (s.E.bottomRows<2>().transpose() * Q);
-    add_gradient_transpose(p, r, f);
+    const Gradients g = gradients(p, ue);
+    const Strains e = strains_of(g, terms);
+    Strains S = Strains::Zero();
+    S.tail<2>() = F_ * e.tail<2>(); // (Qy, Qx)
+    add_gradient_transpose(p, p.weight * conjugate_stress(g, S, terms), f);
   }
   return f;
 }
