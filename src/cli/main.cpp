@@ -93,10 +93,11 @@ int run_static(const Options& o) {
 int run_static_nonlinear(const Options& o, const Deck& deck) {
   const PlateModel model = plate_from_deck(deck);
   const NonlinearStaticResult r = solve_static_nonlinear(model, *deck.load, deck.nonlinear_settings);
-  fmt::print("static, non-linear ({}): {} elements, {} free DOFs, {} load steps, {} Newton iterations, {} step "
-             "cuts\n",
-             to_string(deck.nonlinear_settings.measure), model.mesh().element_count(), model.size(),
-             r.load_deflection.size() - 1, r.newton_iterations, r.step_cuts);
+  fmt::print(
+      "static, non-linear ({}): {} elements, {} free DOFs, {} load steps, {} Newton iterations, {} step "
+      "cuts\n",
+      to_string(deck.nonlinear_settings.measure), model.mesh().element_count(), model.size(),
+      r.load_deflection.size() - 1, r.newton_iterations, r.step_cuts);
   fmt::print("  center_deflection     = {:.6e} m\n", r.state.center_deflection);
   fmt::print("  load_point_deflection = {:.6e} m\n", r.state.load_point_deflection);
   fmt::print("  max_abs_deflection    = {:.6e} m\n", r.state.max_abs_deflection);
@@ -198,8 +199,8 @@ DamageOptions damage_options(const Deck& deck) {
 }
 
 /// Large-deflection impact (SPEC §8): the same results plus Newton statistics.
-NonlinearImpactResult run_nonlinear_impact(const Deck& deck, const PlateModel& model, const ImpactSettings& settings,
-                                           const ImpactObserver& observer) {
+NonlinearImpactResult run_nonlinear_impact(const Deck& deck, const PlateModel& model,
+                                           const ImpactSettings& settings, const ImpactObserver& observer) {
   NonlinearImpactSettings ns;
   ns.measure = deck.nonlinear_settings.measure;
   const NonlinearImpactSolver solver(model, settings, ns);

@@ -16,7 +16,8 @@ namespace {
 /// The §3.6 material, 127 × 76.2 mm, hard simple support, 8×6 q9 mesh, steel sphere R = 12.7 mm,
 /// k = 0.6e9; layup, ply thickness, impactor mass and velocity vary.
 std::string deck(const std::string& layup, double ply, double mass, double velocity,
-                 const std::string& unloading = "tan-sun", const std::string& end = "\"auto\"", double dt = 1.0e-6) {
+                 const std::string& unloading = "tan-sun", const std::string& end = "\"auto\"",
+                 double dt = 1.0e-6) {
   return "[materials.m]\nE1 = 129.0e9\nE2 = 7.5e9\nG12 = 3.5e9\nnu12 = 0.33\nrho = 1540.0\n"
          "[laminate]\nmaterial = \"m\"\nlayup = \"" +
          layup + "\"\nply_thickness = " + std::to_string(ply) +
@@ -24,7 +25,8 @@ std::string deck(const std::string& layup, double ply, double mass, double veloc
          "[boundary]\nx0 = \"ss\"\nxa = \"ss\"\ny0 = \"ss\"\nyb = \"ss\"\n"
          "[impactor]\nradius = 12.7e-3\nE = 207e9\nnu = 0.3\nmass = " +
          std::to_string(mass) + "\nvelocity = " + std::to_string(velocity) +
-         "\n[contact]\nk = 0.6e9\nunloading = \"" + unloading + "\"\n[time]\ndt = " + std::to_string(dt) + "\nend = " + end + "\n";
+         "\n[contact]\nk = 0.6e9\nunloading = \"" + unloading + "\"\n[time]\ndt = " + std::to_string(dt) +
+         "\nend = " + end + "\n";
 }
 
 struct Pair {
@@ -50,13 +52,15 @@ TEST(NonlinearImpact, LowVelocityEqualsTheLinearRun) {
   EXPECT_NEAR(p.nonlinear.impact.peak_force, p.linear.peak_force, 0.005 * p.linear.peak_force);
   EXPECT_NEAR(p.nonlinear.impact.peak_contact_deflection, p.linear.peak_contact_deflection,
               0.005 * p.linear.peak_contact_deflection);
-  EXPECT_NEAR(p.nonlinear.impact.contact_duration, p.linear.contact_duration, 0.005 * p.linear.contact_duration);
-  std::printf("0.3 m/s: peak force %.3f N (linear %.3f N, %+.4f %%), peak deflection %.5f mm (linear %.5f mm), "
-              "%.2f Newton iterations/step\n",
-              p.nonlinear.impact.peak_force, p.linear.peak_force,
-              100.0 * (p.nonlinear.impact.peak_force / p.linear.peak_force - 1.0),
-              p.nonlinear.impact.peak_contact_deflection * 1e3, p.linear.peak_contact_deflection * 1e3,
-              static_cast<double>(p.nonlinear.newton_iterations) / static_cast<double>(p.nonlinear.impact.steps));
+  EXPECT_NEAR(p.nonlinear.impact.contact_duration, p.linear.contact_duration,
+              0.005 * p.linear.contact_duration);
+  std::printf(
+      "0.3 m/s: peak force %.3f N (linear %.3f N, %+.4f %%), peak deflection %.5f mm (linear %.5f mm), "
+      "%.2f Newton iterations/step\n",
+      p.nonlinear.impact.peak_force, p.linear.peak_force,
+      100.0 * (p.nonlinear.impact.peak_force / p.linear.peak_force - 1.0),
+      p.nonlinear.impact.peak_contact_deflection * 1e3, p.linear.peak_contact_deflection * 1e3,
+      static_cast<double>(p.nonlinear.newton_iterations) / static_cast<double>(p.nonlinear.impact.steps));
 }
 
 TEST(NonlinearImpact, ThinPlateAtHighVelocityStiffensChenSunTrend) {
@@ -71,13 +75,14 @@ TEST(NonlinearImpact, ThinPlateAtHighVelocityStiffensChenSunTrend) {
   EXPECT_GT(p.linear.peak_contact_deflection / 1e-3, 2.0);
   EXPECT_GT(nl.peak_force, 1.5 * p.linear.peak_force);
   EXPECT_LT(nl.peak_contact_deflection, 0.8 * p.linear.peak_contact_deflection);
-  std::printf("thin plate 3 m/s: peak force %.1f N (linear %.1f N), peak deflection %.4f mm (linear %.4f mm), "
-              "main contact %.0f us (linear %.0f us), %.2f Newton iterations/step (max %d), %d factorizations\n",
-              nl.peak_force, p.linear.peak_force, nl.peak_contact_deflection * 1e3,
-              p.linear.peak_contact_deflection * 1e3, (nl.episodes.back().end - nl.episodes.back().start) * 1e6,
-              (p.linear.episodes.back().end - p.linear.episodes.back().start) * 1e6,
-              static_cast<double>(p.nonlinear.newton_iterations) / static_cast<double>(nl.steps),
-              p.nonlinear.max_iterations_per_step, p.nonlinear.factorizations);
+  std::printf(
+      "thin plate 3 m/s: peak force %.1f N (linear %.1f N), peak deflection %.4f mm (linear %.4f mm), "
+      "main contact %.0f us (linear %.0f us), %.2f Newton iterations/step (max %d), %d factorizations\n",
+      nl.peak_force, p.linear.peak_force, nl.peak_contact_deflection * 1e3,
+      p.linear.peak_contact_deflection * 1e3, (nl.episodes.back().end - nl.episodes.back().start) * 1e6,
+      (p.linear.episodes.back().end - p.linear.episodes.back().start) * 1e6,
+      static_cast<double>(p.nonlinear.newton_iterations) / static_cast<double>(nl.steps),
+      p.nonlinear.max_iterations_per_step, p.nonlinear.factorizations);
 
   // The Green–Lagrange measure adds terms of the order of the in-plane gradients and of rotation
   // products, small next to w,x² here: the two measures agree to 2 % in peak force and deflection.

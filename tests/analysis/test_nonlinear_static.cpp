@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdio>
 
 namespace plyimpact {
 namespace {

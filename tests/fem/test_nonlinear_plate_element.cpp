@@ -88,8 +88,9 @@ TEST_P(NonlinearTangent, EqualsFiniteDifferenceOfInternalForceAtRandomStates) {
     const ElementMatrix K = el.tangent_stiffness(geo, u);
     EXPECT_LT((K - K.transpose()).norm(), 1e-12 * K.norm()); // conservative: K_T symmetric
   }
-  std::printf("tangent vs finite differences: worst relative error %.2e (whole K_T), %.2e (non-linear part)\n",
-              worst_full, worst_nonlinear);
+  std::printf(
+      "tangent vs finite differences: worst relative error %.2e (whole K_T), %.2e (non-linear part)\n",
+      worst_full, worst_nonlinear);
 }
 
 TEST_P(NonlinearTangent, ReducesToTheLinearElementAtSmallDisplacements) {
@@ -116,8 +117,10 @@ INSTANTIATE_TEST_SUITE_P(StrainMeasures, NonlinearTangent,
                                            Case{ElementFormulation::q9, StrainMeasure::green_lagrange},
                                            Case{ElementFormulation::mitc9, StrainMeasure::von_karman}),
                          [](const ::testing::TestParamInfo<Case>& p) {
-                           return std::string(p.param.formulation == ElementFormulation::q9 ? "q9_" : "mitc9_") +
-                                  (p.param.measure == StrainMeasure::von_karman ? "von_karman" : "green_lagrange");
+                           return std::string(p.param.formulation == ElementFormulation::q9 ? "q9_"
+                                                                                            : "mitc9_") +
+                                  (p.param.measure == StrainMeasure::von_karman ? "von_karman"
+                                                                                : "green_lagrange");
                          });
 
 TEST(NonlinearElement, GreenLagrangeWithMitc9IsRefusedWithAClearMessage) {
@@ -144,12 +147,14 @@ TEST(NonlinearPlateModel, AssembledTangentIsTheDerivativeOfTheAssembledForce) {
   for (int i = 0; i < model.size(); ++i)
     du(i) = 1e-3 * r(rng);
   const double step = 1e-5;
-  const Eigen::VectorXd fd = (nl.internal_force(u + step * du) - nl.internal_force(u - step * du)) / (2 * step);
+  const Eigen::VectorXd fd =
+      (nl.internal_force(u + step * du) - nl.internal_force(u - step * du)) / (2 * step);
   const Eigen::VectorXd Kdu = nl.tangent_stiffness(u) * du;
   EXPECT_LT((Kdu - fd).norm(), 1e-6 * Kdu.norm());
   // At u = 0 the tangent is the linear stiffness.
-  EXPECT_LT(SparseMatrix(nl.tangent_stiffness(Eigen::VectorXd::Zero(model.size())) - model.stiffness()).norm(),
-            1e-13 * model.stiffness().norm());
+  EXPECT_LT(
+      SparseMatrix(nl.tangent_stiffness(Eigen::VectorXd::Zero(model.size())) - model.stiffness()).norm(),
+      1e-13 * model.stiffness().norm());
 }
 
 } // namespace

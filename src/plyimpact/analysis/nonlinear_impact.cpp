@@ -17,7 +17,8 @@ NonlinearImpactSolver::NonlinearImpactSolver(const PlateModel& model, ImpactSett
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
   if (!(settings_.impactor.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");
   if (settings_.rigid_target)
-    throw std::invalid_argument("non-linear impact needs a plate: a rigid target has no deflection to stiffen");
+    throw std::invalid_argument(
+        "non-linear impact needs a plate: a rigid target has no deflection to stiffen");
   if (settings_.contact.load != ContactLoad::point)
     throw std::invalid_argument(
         "non-linear impact applies the contact force as a point load: set contact.load = \"point\"");
@@ -100,6 +101,8 @@ NonlinearImpactResult NonlinearImpactSolver::run(const Impactor& imp, const Impa
   record(0, 0.0, true);
 
   long step = 0;
+  long last_refactor = 0;
+  bool refresh = false; // the last step needed more than one solve: refactor at uₙ first
   double t = 0.0;
   for (;;) {
     if (step >= s.max_steps) {
@@ -117,6 +120,10 @@ NonlinearImpactResult NonlinearImpactSolver::run(const Impactor& imp, const Impa
     t = static_cast<double>(step) * s.dt;
 
     // Newton iterations on (u, Fc); start from constant acceleration (a_{n+1} = aₙ).
+    if (refresh && step - last_refactor >= ns.refresh_interval) {
+      refactor(u);
+      last_refactor = step;
+    }
     Eigen::VectorXd uk = u + s.dt * v + (0.5 * s.dt * s.dt) * a;
     ContactSolution cs;
     double previous_correction = INFINITY;
@@ -142,7 +149,8 @@ NonlinearImpactResult NonlinearImpactSolver::run(const Impactor& imp, const Impa
             step, t, ns.max_iterations));
       // Plate predictor û and the exact scalar contact problem with ws affine in Fc (SPEC §4).
       const Eigen::VectorXd u_hat = uk + factor.solve(g);
-      cs = solve_contact_force(law, impactor.predicted_displacement() - sw.dot(u_hat), impactor.compliance() + c);
+      cs = solve_contact_force(law, impactor.predicted_displacement() - sw.dot(u_hat),
+                               impactor.compliance() + c);
       Eigen::VectorXd u_next = u_hat + cs.force * t_load;
       const double correction = (u_next - uk).norm();
       ++iterations;
@@ -157,6 +165,7 @@ NonlinearImpactResult NonlinearImpactSolver::run(const Impactor& imp, const Impa
         previous_correction = INFINITY;
       }
     }
+    refresh = iterations > 1;
     out.newton_iterations += iterations;
     out.max_iterations_per_step = std::max(out.max_iterations_per_step, iterations);
 

@@ -23,6 +23,8 @@ struct NonlinearImpactSettings {
   double displacement_tolerance = 1e-6; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖
   int refresh_after = 4;                ///< refactor K̄ when a step needs more iterations
   double refresh_ratio = 0.25;          ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  long refresh_interval =
+      200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
 };
 
 struct NonlinearImpactResult {
@@ -36,11 +38,13 @@ class NonlinearImpactSolver {
 public:
   /// Assembles M, the tangent at rest, and factors K̄. Throws std::invalid_argument for options the
   /// non-linear solver does not support (rigid target, Hertzian pressure load).
-  NonlinearImpactSolver(const PlateModel& model, ImpactSettings settings, NonlinearImpactSettings nonlinear = {});
+  NonlinearImpactSolver(const PlateModel& model, ImpactSettings settings,
+                        NonlinearImpactSettings nonlinear = {});
 
   /// Throws NewtonFailure when a step does not converge (with time and step in the message).
   [[nodiscard]] NonlinearImpactResult run(const ImpactObserver& observer = {}) const;
-  [[nodiscard]] NonlinearImpactResult run(const Impactor& impactor, const ImpactObserver& observer = {}) const;
+  [[nodiscard]] NonlinearImpactResult run(const Impactor& impactor,
+                                          const ImpactObserver& observer = {}) const;
 
   [[nodiscard]] const ImpactSettings& settings() const { return settings_; }
 

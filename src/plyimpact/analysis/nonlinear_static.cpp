@@ -101,7 +101,8 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
     if (!o.converged) {
       if (++cuts_in_a_row > s.max_step_cuts)
         throw NewtonFailure(fmt::format(
-            "non-linear static: Newton-Raphson failed between load factors {:.6g} and {:.6g} even after {} step "
+            "non-linear static: Newton-Raphson failed between load factors {:.6g} and {:.6g} even after {} "
+            "step "
             "cuts: {}. Try more load steps (nonlinear_load_steps) or check the supports and the load",
             lambda, target, s.max_step_cuts, o.why));
       increment /= 2.0; // automatic step cutting

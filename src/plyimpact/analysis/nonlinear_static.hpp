@@ -27,7 +27,7 @@ public:
 };
 
 struct NonlinearStaticResult {
-  StaticResult state;                                ///< at load factor 1
+  StaticResult state;                                 ///< at load factor 1
   std::vector<std::array<double, 2>> load_deflection; ///< [λ, w(a/2, b/2)], from [0, 0]
   int newton_iterations = 0;                          ///< total over all load steps
   int max_iterations_per_step = 0;

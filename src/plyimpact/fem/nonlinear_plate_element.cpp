@@ -32,19 +32,20 @@ struct QuadraticTerm {
 };
 
 // von Kármán: only the slopes of w enter the membrane strains.
-constexpr std::array<QuadraticTerm, 3> von_karman_terms{{{ex, wx, wx, 0.5}, {ey, wy, wy, 0.5}, {gxy, wx, wy, 1.0}}};
+constexpr std::array<QuadraticTerm, 3> von_karman_terms{
+    {{ex, wx, wx, 0.5}, {ey, wy, wy, 0.5}, {gxy, wx, wy, 1.0}}};
 
 // Green–Lagrange (2.53)–(2.55).
 constexpr std::array<QuadraticTerm, 21> green_lagrange_terms{{
-    {ex, ux, ux, 0.5},     {ex, vx, vx, 0.5},     {ex, wx, wx, 0.5}, // (2.53)
-    {ey, uy, uy, 0.5},     {ey, vy, vy, 0.5},     {ey, wy, wy, 0.5},     //
-    {gxy, ux, uy, 1.0},    {gxy, vx, vy, 1.0},    {gxy, wx, wy, 1.0},    //
-    {kx, tx_x, ux, 1.0},   {kx, ty_x, vx, 1.0},                          // (2.54)
-    {ky, tx_y, uy, 1.0},   {ky, ty_y, vy, 1.0},                          //
-    {kxy, tx_y, ux, 1.0},  {kxy, tx_x, uy, 1.0},  {kxy, ty_y, vx, 1.0},  //
-    {kxy, ty_x, vy, 1.0},                                                //
-    {gyz, tx, uy, 1.0},    {gyz, ty, vy, 1.0},                           // (2.55)
-    {gxz, tx, ux, 1.0},    {gxz, ty, vx, 1.0},                           //
+    {ex, ux, ux, 0.5},    {ex, vx, vx, 0.5},    {ex, wx, wx, 0.5},    // (2.53)
+    {ey, uy, uy, 0.5},    {ey, vy, vy, 0.5},    {ey, wy, wy, 0.5},    //
+    {gxy, ux, uy, 1.0},   {gxy, vx, vy, 1.0},   {gxy, wx, wy, 1.0},   //
+    {kx, tx_x, ux, 1.0},  {kx, ty_x, vx, 1.0},                        // (2.54)
+    {ky, tx_y, uy, 1.0},  {ky, ty_y, vy, 1.0},                        //
+    {kxy, tx_y, ux, 1.0}, {kxy, tx_x, uy, 1.0}, {kxy, ty_y, vx, 1.0}, //
+    {kxy, ty_x, vy, 1.0},                                             //
+    {gyz, tx, uy, 1.0},   {gyz, ty, vy, 1.0},                         // (2.55)
+    {gxz, tx, ux, 1.0},   {gxz, ty, vx, 1.0},                         //
 }};
 
 std::span<const QuadraticTerm> terms_of(StrainMeasure m) {
@@ -133,8 +134,8 @@ Gradients conjugate_stress(const Gradients& g, const Strains& S, std::span<const
 }
 
 /// Σ_i S_i H_i over the strain rows [first, first + count) (H_i = ∂²e_i/∂g²).
-Eigen::Matrix<double, n_gradients, n_gradients> stress_hessian(std::span<const QuadraticTerm> terms, int first,
-                                                               int count, const Eigen::VectorXd& S) {
+Eigen::Matrix<double, n_gradients, n_gradients>
+stress_hessian(std::span<const QuadraticTerm> terms, int first, int count, const Eigen::VectorXd& S) {
   Eigen::Matrix<double, n_gradients, n_gradients> H = Eigen::Matrix<double, n_gradients, n_gradients>::Zero();
   for (const QuadraticTerm& t : terms) {
     if (t.strain < first || t.strain >= first + count) continue;
@@ -154,7 +155,8 @@ IntegrationPoint integration_point(const ElementCoordinates& xy, double xi, doub
 
 NonlinearMindlinQ9::NonlinearMindlinQ9(const Laminate& laminate, ElementFormulation formulation,
                                        StrainMeasure measure)
-    : linear_(laminate, formulation), F_(laminate.F()), formulation_(linear_.formulation()), measure_(measure) {
+    : linear_(laminate, formulation), F_(laminate.F()), formulation_(linear_.formulation()),
+      measure_(measure) {
   if (measure_ == StrainMeasure::green_lagrange && formulation_ == ElementFormulation::mitc9)
     throw std::invalid_argument(
         "the Green-Lagrange strain measure is available with the q9 element only (its transverse-shear terms "
@@ -205,7 +207,8 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
   return f;
 }
 
-ElementMatrix NonlinearMindlinQ9::tangent_stiffness(const ElementGeometry& geo, const ElementVector& ue) const {
+ElementMatrix NonlinearMindlinQ9::tangent_stiffness(const ElementGeometry& geo,
+                                                    const ElementVector& ue) const {
   const auto terms = terms_of(measure_);
   ElementMatrix K = ElementMatrix::Zero();
   for (const IntegrationPoint& p : geo.membrane_bending) {

@@ -25,8 +25,9 @@ NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure 
       for (int i = 0; i < q9_dofs; ++i) {
         const int row = eq[static_cast<std::size_t>(i)], col = eq[static_cast<std::size_t>(j)];
         int s = -1;
-        if (row >= 0 && col >= 0) s = static_cast<int>(std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner);
-        slot[static_cast<std::size_t>(j * q9_dofs + i)] = s;
+        if (row >= 0 && col >= 0)
+          s = static_cast<int>(std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner);
+        slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)] = s;
       }
     slot_.push_back(slot);
   }
@@ -62,7 +63,8 @@ SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) co
     const auto& slot = slot_[e];
     for (int j = 0; j < q9_dofs; ++j)
       for (int i = 0; i < q9_dofs; ++i)
-        if (const int s = slot[static_cast<std::size_t>(j * q9_dofs + i)]; s >= 0) values[s] += Ke(i, j);
+        if (const int s = slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)]; s >= 0)
+          values[s] += Ke(i, j);
   }
   return K;
 }

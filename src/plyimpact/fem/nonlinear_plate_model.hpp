@@ -27,9 +27,9 @@ private:
 
   const PlateModel& model_;
   NonlinearMindlinQ9 element_;
-  std::vector<ElementGeometry> geometry_;             ///< one per element, or one shared (regular mesh)
-  std::vector<std::array<int, q9_dofs>> equations_;   ///< element DOF → free equation (−1 restrained)
-  SparseMatrix pattern_;                              ///< structure of K_T, values zero
+  std::vector<ElementGeometry> geometry_;                ///< one per element, or one shared (regular mesh)
+  std::vector<std::array<int, q9_dofs>> equations_;      ///< element DOF → free equation (−1 restrained)
+  SparseMatrix pattern_;                                 ///< structure of K_T, values zero
   std::vector<std::array<int, q9_dofs * q9_dofs>> slot_; ///< (i, j) of Kₑ → index in pattern_ values
 };
 

@@ -505,7 +505,8 @@ namespace {
 void parse_nonlinear_keys(const TableReader& top, Deck& d) {
   if (const toml::node* n = top.table().get("nonlinear")) {
     const auto* b = n->as_boolean();
-    if (b == nullptr) top.fail_at("nonlinear", fmt::format("nonlinear must be true or false, got {}", type_name(*n)));
+    if (b == nullptr)
+      top.fail_at("nonlinear", fmt::format("nonlinear must be true or false, got {}", type_name(*n)));
     d.nonlinear = b->get();
   }
   if (const auto m = top.optional_string("strain_measure")) {
@@ -538,8 +539,8 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   d.text = std::string(text);
   const TableReader top(root, "", source);
   top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact",
-            "time", "load", "modal", "buckling", "damage", "threshold", "output", "nonlinear", "strain_measure",
-            "load_steps"});
+            "time", "load", "modal", "buckling", "damage", "threshold", "output", "nonlinear",
+            "strain_measure", "load_steps"});
   d.title = top.optional_string("title").value_or("");
   parse_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {

@@ -58,10 +58,10 @@ struct Deck {
   ThresholdSettings threshold;
   std::vector<StressProbeSpec> probes; ///< [[output.probe]]
   std::string output_dir = "results";
-  std::vector<double> field_times; ///< [output] fields_at: displacement fields at these times [s]
-  int history_every = 1;           ///< [output] history_every
-  std::string text;                ///< the deck's own text, recorded next to results
-  bool nonlinear = false;          ///< top-level `nonlinear`: large deflections (SPEC §8)
+  std::vector<double> field_times;      ///< [output] fields_at: displacement fields at these times [s]
+  int history_every = 1;                ///< [output] history_every
+  std::string text;                     ///< the deck's own text, recorded next to results
+  bool nonlinear = false;               ///< top-level `nonlinear`: large deflections (SPEC §8)
   NonlinearSettings nonlinear_settings; ///< top-level `strain_measure`, `load_steps`
 };
 
