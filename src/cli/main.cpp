@@ -10,6 +10,8 @@
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_analysis.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
+#include "plyimpact/analysis/nonlinear_impact.hpp"
+#include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/static_analysis.hpp"
 #include "plyimpact/analysis/stress_probe.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
@@ -48,6 +50,7 @@ struct Options {
   bool json = false;
   std::string criterion;
   double tolerance = 0.0;
+  bool nonlinear = false; ///< --nonlinear (or the deck's top-level nonlinear = true)
 };
 
 Deck read_deck_for(const std::string& path, AnalysisKind kind) {
@@ -67,8 +70,11 @@ int run_laminate(const Options& o) {
   return 0;
 }
 
+int run_static_nonlinear(const Options& o, const Deck& deck);
+
 int run_static(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::static_);
+  if (o.nonlinear || deck.nonlinear) return run_static_nonlinear(o, deck);
   const PlateModel model = plate_from_deck(deck);
   const StaticResult r = solve_static(model, *deck.load);
   fmt::print("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
@@ -82,6 +88,35 @@ int run_static(const Options& o) {
     j["max_abs_deflection"] = r.max_abs_deflection;
     j["dofs"] = model.size();
     out->write_nodal_field("displacements.csv", model, r.u);
+    out->write_json("summary.json", j);
+  }
+  return 0;
+}
+
+/// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.
+int run_static_nonlinear(const Options& o, const Deck& deck) {
+  const PlateModel model = plate_from_deck(deck);
+  const NonlinearStaticResult r = solve_static_nonlinear(model, *deck.load, deck.nonlinear_settings);
+  fmt::print(
+      "static, non-linear ({}): {} elements, {} free DOFs, {} load steps, {} Newton iterations, {} step "
+      "cuts\n",
+      to_string(deck.nonlinear_settings.measure), model.mesh().element_count(), model.size(),
+      r.load_deflection.size() - 1, r.newton_iterations, r.step_cuts);
+  fmt::print("  center_deflection     = {:.6e} m\n", r.state.center_deflection);
+  fmt::print("  load_point_deflection = {:.6e} m\n", r.state.load_point_deflection);
+  fmt::print("  max_abs_deflection    = {:.6e} m\n", r.state.max_abs_deflection);
+  if (const auto out = results_folder(o, deck)) {
+    nlohmann::json j = summary_header(deck, "static");
+    j["nonlinear"] = true;
+    j["strain_measure"] = to_string(deck.nonlinear_settings.measure);
+    j["center_deflection"] = r.state.center_deflection;
+    j["load_point_deflection"] = r.state.load_point_deflection;
+    j["max_abs_deflection"] = r.state.max_abs_deflection;
+    j["load_deflection"] = r.load_deflection;
+    j["newton_iterations"] = r.newton_iterations;
+    j["step_cuts"] = r.step_cuts;
+    j["dofs"] = model.size();
+    out->write_nodal_field("displacements.csv", model, r.state.u);
     out->write_json("summary.json", j);
   }
   return 0;
@@ -193,6 +228,29 @@ private:
   VtkSeries series_;
 };
 
+/// Large-deflection impact (SPEC §8): the same results plus Newton statistics.
+NonlinearImpactResult run_nonlinear_impact(const Deck& deck, const PlateModel& model,
+                                           const ImpactSettings& settings, const ImpactObserver& observer) {
+  NonlinearImpactSettings ns;
+  ns.measure = deck.nonlinear_settings.measure;
+  const NonlinearImpactSolver solver(model, settings, ns);
+  NonlinearImpactResult r = solver.run(observer);
+  fmt::print("non-linear ({}): {} Newton iterations in {} steps ({:.2f} per step, at most {}), {} "
+             "factorizations of K_T + c0 M\n",
+             to_string(ns.measure), r.newton_iterations, r.impact.steps,
+             static_cast<double>(r.newton_iterations) / static_cast<double>(std::max(1L, r.impact.steps)),
+             r.max_iterations_per_step, r.factorizations);
+  return r;
+}
+
+void add_nonlinear_impact_summary(nlohmann::json& j, const Deck& deck, const NonlinearImpactResult& r) {
+  j["nonlinear"] = true;
+  j["strain_measure"] = to_string(deck.nonlinear_settings.measure);
+  j["newton_iterations"] = r.newton_iterations;
+  j["max_newton_iterations_per_step"] = r.max_iterations_per_step;
+  j["factorizations"] = r.factorizations;
+}
+
 int run_impact(const Options& o) {
   // First thing: an interrupt during set-up still ends in consistent, incomplete results.
   std::signal(SIGINT, on_signal);
@@ -225,10 +283,12 @@ int run_impact(const Options& o) {
         t >= *deck.report_displacements_at - 1e-9 * settings.dt)
       report_state = NodalSnapshot{t, u};
   };
-  const ImpactSolver solver(model, settings);
   // No observer when nothing watches the plate: the solver then skips expanding u every step.
   const bool watched = damage || probes || vtk || deck.report_displacements_at;
-  const ImpactResult r = solver.run(watched && !settings.rigid_target ? observer : ImpactObserver{});
+  const ImpactObserver watch = watched && !settings.rigid_target ? observer : ImpactObserver{};
+  std::optional<NonlinearImpactResult> nonlinear;
+  if (o.nonlinear || deck.nonlinear) nonlinear = run_nonlinear_impact(deck, model, settings, watch);
+  const ImpactResult r = nonlinear ? nonlinear->impact : ImpactSolver(model, settings).run(watch);
   bar.reset();
   fmt::print("{}", impact_summary_text(settings, r));
   const std::vector<DamageOnset> first = damage ? damage->first_onsets() : std::vector<DamageOnset>{};
@@ -245,6 +305,7 @@ int run_impact(const Options& o) {
     out->write_text("report.txt", impact_report_text(deck, model, settings, r, first, report_state));
     write_impact_results(*out, deck, &model, settings, r, [&](nlohmann::json& j) {
       if (vtk) j["vtk_frames"] = vtk->frames();
+      if (nonlinear) add_nonlinear_impact_summary(j, deck, *nonlinear);
       if (!damage) return;
       j["first_failures"] = nlohmann::json::array();
       for (const auto& f : first)
@@ -348,7 +409,10 @@ int run(int argc, char** argv) {
   threshold->add_option("--criterion", o.criterion,
                         "criterion name (default: [threshold] or the first [damage] one)");
   threshold->add_option("--tolerance", o.tolerance, "bracket width in m/s (default 0.01)");
-  CLI::App* stat = add_analysis(app, "static", "Linear static analysis (point, patch, pressure loads)", o);
+  CLI::App* stat = add_analysis(app, "static", "Static analysis (point, patch, pressure loads)", o);
+  for (CLI::App* sub : {impact, stat})
+    sub->add_flag("--nonlinear", o.nonlinear,
+                  "large deflections: geometrically non-linear plate (or nonlinear = true in the deck)");
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
   std::vector<std::string> plot_dirs;

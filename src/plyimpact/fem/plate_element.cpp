@@ -147,6 +147,26 @@ ElementMatrix MindlinQ9::stiffness(const ElementCoordinates& xy) const {
   return K;
 }
 
+ElementMatrix MindlinQ9::shear_stiffness(const ElementCoordinates& xy) const {
+  ElementMatrix K = ElementMatrix::Zero();
+  if (formulation_ == ElementFormulation::mitc9) {
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        const PointKinematics k = point_kinematics(xy, gauss3.points[i], gauss3.points[j]);
+        const ShearB Bs = assumed_shear_B(xy, gauss3.points[i], gauss3.points[j]);
+        K.noalias() += (gauss3.weights[i] * gauss3.weights[j] * k.detJ) * Bs.transpose() * F_ * Bs;
+      }
+    return K;
+  }
+  for (std::size_t i = 0; i < 2; ++i)
+    for (std::size_t j = 0; j < 2; ++j) {
+      const PointKinematics k = point_kinematics(xy, gauss2.points[i], gauss2.points[j]);
+      const ShearB Bs = shear_B(k);
+      K.noalias() += (gauss2.weights[i] * gauss2.weights[j] * k.detJ) * Bs.transpose() * F_ * Bs;
+    }
+  return K;
+}
+
 namespace {
 
 /// m̄ of (2.108) on (u, v, w, θx, θy).

@@ -61,6 +61,10 @@ public:
   [[nodiscard]] GeneralizedStrains strains(const ElementCoordinates& xy, const ElementVector& ue, double xi,
                                            double eta) const;
 
+  /// The transverse-shear part of `stiffness` alone: ∫ B_sᵀ F B_s dA with the formulation's shear
+  /// interpolation and rule (q9 2×2 Gauss, MITC9 assumed strains 3×3). Used by the non-linear element.
+  [[nodiscard]] ElementMatrix shear_stiffness(const ElementCoordinates& xy) const;
+
   [[nodiscard]] ElementFormulation formulation() const { return formulation_; }
 
 private:

@@ -559,6 +559,34 @@ void read_vtk_output(const TableReader& t, Deck& d) {
 
 } // namespace
 
+namespace {
+
+/// Top-level `nonlinear` (bool), `strain_measure` and `load_steps` (SPEC §8, docs/deck.md).
+void parse_nonlinear_keys(const TableReader& top, Deck& d) {
+  if (const toml::node* n = top.table().get("nonlinear")) {
+    const auto* b = n->as_boolean();
+    if (b == nullptr)
+      top.fail_at("nonlinear", fmt::format("nonlinear must be true or false, got {}", type_name(*n)));
+    d.nonlinear = b->get();
+  }
+  if (const auto m = top.optional_string("strain_measure")) {
+    if (*m == "von-karman")
+      d.nonlinear_settings.measure = StrainMeasure::von_karman;
+    else if (*m == "green-lagrange")
+      d.nonlinear_settings.measure = StrainMeasure::green_lagrange;
+    else
+      top.fail_at("strain_measure",
+                  fmt::format("strain_measure must be \"von-karman\" or \"green-lagrange\", got \"{}\"", *m));
+  }
+  if (const auto steps = top.optional_integer("load_steps")) {
+    if (*steps < 1 || *steps > 100000)
+      top.fail_at("load_steps", fmt::format("load_steps must be between 1 and 100000, got {}", *steps));
+    d.nonlinear_settings.load_steps = static_cast<int>(*steps);
+  }
+}
+
+} // namespace
+
 Deck parse_deck(std::string_view text, const std::string& source) {
   toml::table root;
   try {
@@ -571,8 +599,10 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   d.text = std::string(text);
   const TableReader top(root, "", source);
   top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact",
-            "time", "load", "modal", "buckling", "damage", "threshold", "output"});
+            "time", "load", "modal", "buckling", "damage", "threshold", "output", "nonlinear",
+            "strain_measure", "load_steps"});
   d.title = top.optional_string("title").value_or("");
+  parse_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {
     const auto kind = parse_analysis_kind(*a);
     if (!kind)

@@ -1,5 +1,6 @@
 #pragma once
 // Input decks (TOML, SPEC §10): one file describes a whole analysis. See docs/deck.md.
+#include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/boundary.hpp"
 #include "plyimpact/fem/mesh_spec.hpp"
@@ -73,6 +74,8 @@ struct Deck {
   VtkOutputSettings vtk;           ///< [output] vtk*
   std::optional<double> report_displacements_at; ///< [output] nodal displacements in report.txt [s]
   std::string text;                              ///< the deck's own text, recorded next to results
+  bool nonlinear = false;                        ///< top-level `nonlinear`: large deflections (SPEC §8)
+  NonlinearSettings nonlinear_settings;          ///< top-level `strain_measure`, `load_steps`
 };
 
 /// Parses a deck from text; `source` names it in messages. Throws DeckError.

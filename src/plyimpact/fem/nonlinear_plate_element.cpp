@@ -1,0 +1,240 @@
+#include "plyimpact/fem/nonlinear_plate_element.hpp"
+
+#include "plyimpact/fem/quadrature.hpp"
+
+#include <span>
+#include <stdexcept>
+
+namespace plyimpact {
+
+std::string to_string(StrainMeasure m) {
+  return m == StrainMeasure::von_karman ? "von-karman" : "green-lagrange";
+}
+
+namespace {
+
+constexpr int n_gradients = 12; // g, see the header
+constexpr int n_strains = 8;    // e = (εx, εy, γxy, κx, κy, κxy, γyz, γxz)
+using Gradients = Eigen::Matrix<double, n_gradients, 1>;
+using Strains = Eigen::Matrix<double, n_strains, 1>;
+using StrainJacobian = Eigen::Matrix<double, n_strains, n_gradients>; // E = ∂e/∂g
+using GradientOperator = Eigen::Matrix<double, n_gradients, q9_dofs>; // G
+
+// Gradient indices.
+enum : int { ux, uy, vx, vy, wx, wy, tx_x, tx_y, ty_x, ty_y, tx, ty };
+// Strain indices.
+enum : int { ex, ey, gxy, kx, ky, kxy, gyz, gxz };
+
+/// One term c·g_a·g_b of a non-linear strain component (c = ½ on squares).
+struct QuadraticTerm {
+  int strain, a, b;
+  double c;
+};
+
+// von Kármán: only the slopes of w enter the membrane strains.
+constexpr std::array<QuadraticTerm, 3> von_karman_terms{
+    {{ex, wx, wx, 0.5}, {ey, wy, wy, 0.5}, {gxy, wx, wy, 1.0}}};
+
+// Green–Lagrange (2.53)–(2.55).
+constexpr std::array<QuadraticTerm, 21> green_lagrange_terms{{
+    {ex, ux, ux, 0.5},    {ex, vx, vx, 0.5},    {ex, wx, wx, 0.5},    // (2.53)
+    {ey, uy, uy, 0.5},    {ey, vy, vy, 0.5},    {ey, wy, wy, 0.5},    //
+    {gxy, ux, uy, 1.0},   {gxy, vx, vy, 1.0},   {gxy, wx, wy, 1.0},   //
+    {kx, tx_x, ux, 1.0},  {kx, ty_x, vx, 1.0},                        // (2.54)
+    {ky, tx_y, uy, 1.0},  {ky, ty_y, vy, 1.0},                        //
+    {kxy, tx_y, ux, 1.0}, {kxy, tx_x, uy, 1.0}, {kxy, ty_y, vx, 1.0}, //
+    {kxy, ty_x, vy, 1.0},                                             //
+    {gyz, tx, uy, 1.0},   {gyz, ty, vy, 1.0},                         // (2.55)
+    {gxz, tx, ux, 1.0},   {gxz, ty, vx, 1.0},                         //
+}};
+
+std::span<const QuadraticTerm> terms_of(StrainMeasure m) {
+  if (m == StrainMeasure::von_karman) return von_karman_terms;
+  return green_lagrange_terms;
+}
+
+/// Element DOFs as a 5×9 matrix: column a holds node a's (u, v, w, θx, θy).
+using NodalMatrix = Eigen::Matrix<double, dofs_per_node, 9>;
+
+/// g = G uₑ at a point, as three small matrix–vector products over the nodes.
+Gradients gradients(const IntegrationPoint& p, const ElementVector& ue) {
+  const Eigen::Map<const NodalMatrix> U(ue.data());
+  const Eigen::Matrix<double, 5, 1> dx = U * p.dN_dx, dy = U * p.dN_dy, at = U * p.N;
+  Gradients g;
+  g << dx(0), dy(0), dx(1), dy(1), dx(2), dy(2), dx(3), dy(3), dx(4), dy(4), at(3), at(4);
+  return g;
+}
+
+/// G as a dense matrix (tangent assembly).
+GradientOperator gradient_operator(const IntegrationPoint& p) {
+  GradientOperator G = GradientOperator::Zero();
+  for (int a = 0; a < 9; ++a) {
+    const int c = 5 * a;
+    G(ux, c) = p.dN_dx(a), G(uy, c) = p.dN_dy(a);
+    G(vx, c + 1) = p.dN_dx(a), G(vy, c + 1) = p.dN_dy(a);
+    G(wx, c + 2) = p.dN_dx(a), G(wy, c + 2) = p.dN_dy(a);
+    G(tx_x, c + 3) = p.dN_dx(a), G(tx_y, c + 3) = p.dN_dy(a), G(tx, c + 3) = p.N(a);
+    G(ty_x, c + 4) = p.dN_dx(a), G(ty_y, c + 4) = p.dN_dy(a), G(ty, c + 4) = p.N(a);
+  }
+  return G;
+}
+
+/// f += Gᵀ r (r a generalized stress conjugate to g), as outer products over the nodes.
+void add_gradient_transpose(const IntegrationPoint& p, const Gradients& r, ElementVector& f) {
+  Eigen::Map<NodalMatrix> F(f.data());
+  const Eigen::Matrix<double, 5, 1> rx(r(ux), r(vx), r(wx), r(tx_x), r(ty_x));
+  const Eigen::Matrix<double, 5, 1> ry(r(uy), r(vy), r(wy), r(tx_y), r(ty_y));
+  const Eigen::Matrix<double, 5, 1> rn(0.0, 0.0, 0.0, r(tx), r(ty));
+  F.noalias() += rx * p.dN_dx.transpose() + ry * p.dN_dy.transpose() + rn * p.N.transpose();
+}
+
+/// e(g) and E = ∂e/∂g: linear part L (2.49)–(2.51) plus the quadratic terms.
+struct StrainState {
+  Strains e;
+  StrainJacobian E;
+};
+
+StrainState strain_state(const Gradients& g, std::span<const QuadraticTerm> terms) {
+  StrainState s;
+  s.e << g(ux), g(vy), g(uy) + g(vx), g(tx_x), g(ty_y), g(tx_y) + g(ty_x), g(ty) + g(wy), g(tx) + g(wx);
+  s.E.setZero();
+  s.E(ex, ux) = 1, s.E(ey, vy) = 1, s.E(gxy, uy) = 1, s.E(gxy, vx) = 1;
+  s.E(kx, tx_x) = 1, s.E(ky, ty_y) = 1, s.E(kxy, tx_y) = 1, s.E(kxy, ty_x) = 1;
+  s.E(gyz, ty) = 1, s.E(gyz, wy) = 1, s.E(gxz, tx) = 1, s.E(gxz, wx) = 1;
+  for (const QuadraticTerm& t : terms) {
+    s.e(t.strain) += t.c * g(t.a) * g(t.b);
+    s.E(t.strain, t.a) += t.c * g(t.b);
+    s.E(t.strain, t.b) += t.c * g(t.a);
+  }
+  return s;
+}
+
+/// e(g) only (the force path): L g plus the quadratic terms.
+Strains strains_of(const Gradients& g, std::span<const QuadraticTerm> terms) {
+  Strains e;
+  e << g(ux), g(vy), g(uy) + g(vx), g(tx_x), g(ty_y), g(tx_y) + g(ty_x), g(ty) + g(wy), g(tx) + g(wx);
+  for (const QuadraticTerm& t : terms)
+    e(t.strain) += t.c * g(t.a) * g(t.b);
+  return e;
+}
+
+/// r = Eᵀ S without forming E (S holds the resultants of the strain rows [first, first + count), zero
+/// elsewhere): the linear map Lᵀ S plus, per quadratic term, S_i ∂e_i/∂g.
+Gradients conjugate_stress(const Gradients& g, const Strains& S, std::span<const QuadraticTerm> terms) {
+  Gradients r;
+  r(ux) = S(ex), r(vy) = S(ey), r(uy) = S(gxy), r(vx) = S(gxy);
+  r(tx_x) = S(kx), r(ty_y) = S(ky), r(tx_y) = S(kxy), r(ty_x) = S(kxy);
+  r(ty) = S(gyz), r(wy) = S(gyz), r(tx) = S(gxz), r(wx) = S(gxz);
+  for (const QuadraticTerm& t : terms) {
+    const double cs = t.c * S(t.strain);
+    r(t.a) += cs * g(t.b);
+    r(t.b) += cs * g(t.a);
+  }
+  return r;
+}
+
+/// Σ_i S_i H_i over the strain rows [first, first + count) (H_i = ∂²e_i/∂g²).
+Eigen::Matrix<double, n_gradients, n_gradients>
+stress_hessian(std::span<const QuadraticTerm> terms, int first, int count, const Eigen::VectorXd& S) {
+  Eigen::Matrix<double, n_gradients, n_gradients> H = Eigen::Matrix<double, n_gradients, n_gradients>::Zero();
+  for (const QuadraticTerm& t : terms) {
+    if (t.strain < first || t.strain >= first + count) continue;
+    const double s = S(t.strain - first) * t.c;
+    H(t.a, t.b) += s;
+    H(t.b, t.a) += s;
+  }
+  return H;
+}
+
+IntegrationPoint integration_point(const ElementCoordinates& xy, double xi, double eta, double w) {
+  const PointKinematics k = point_kinematics(xy, xi, eta);
+  return {k.shape.N, k.dN_dx, k.dN_dy, w * k.detJ};
+}
+
+} // namespace
+
+NonlinearMindlinQ9::NonlinearMindlinQ9(const Laminate& laminate, ElementFormulation formulation,
+                                       StrainMeasure measure)
+    : linear_(laminate, formulation), F_(laminate.F()), formulation_(linear_.formulation()),
+      measure_(measure) {
+  if (measure_ == StrainMeasure::green_lagrange && formulation_ == ElementFormulation::mitc9)
+    throw std::invalid_argument(
+        "the Green-Lagrange strain measure is available with the q9 element only (its transverse-shear terms "
+        "(2.55) have no MITC9 interpolation): set [mesh] element = \"q9\" or use strain_measure = "
+        "\"von-karman\"");
+  C_mb_.topLeftCorner<3, 3>() = laminate.A();
+  C_mb_.topRightCorner<3, 3>() = laminate.B();
+  C_mb_.bottomLeftCorner<3, 3>() = laminate.B();
+  C_mb_.bottomRightCorner<3, 3>() = laminate.D();
+}
+
+ElementGeometry NonlinearMindlinQ9::geometry(const ElementCoordinates& xy) const {
+  ElementGeometry geo;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      geo.membrane_bending[3 * i + j] =
+          integration_point(xy, gauss3.points[i], gauss3.points[j], gauss3.weights[i] * gauss3.weights[j]);
+  for (std::size_t i = 0; i < 2; ++i)
+    for (std::size_t j = 0; j < 2; ++j)
+      geo.shear[2 * i + j] =
+          integration_point(xy, gauss2.points[i], gauss2.points[j], gauss2.weights[i] * gauss2.weights[j]);
+  geo.shear_stiffness = formulation_ == ElementFormulation::mitc9 ? linear_.shear_stiffness(xy)
+                                                                  : ElementMatrix(ElementMatrix::Zero());
+  return geo;
+}
+
+ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, const ElementVector& ue) const {
+  const auto terms = terms_of(measure_);
+  ElementVector f = ElementVector::Zero();
+  for (const IntegrationPoint& p : geo.membrane_bending) {
+    const Gradients g = gradients(p, ue);
+    const Strains e = strains_of(g, terms);
+    Strains S = Strains::Zero();
+    S.head<6>() = C_mb_ * e.head<6>(); // (N, M) (1.24)
+    add_gradient_transpose(p, p.weight * conjugate_stress(g, S, terms), f);
+  }
+  if (formulation_ == ElementFormulation::mitc9) {
+    f.noalias() += geo.shear_stiffness * ue; // linear shear (von Kármán only)
+    return f;
+  }
+  for (const IntegrationPoint& p : geo.shear) {
+    const Gradients g = gradients(p, ue);
+    const Strains e = strains_of(g, terms);
+    Strains S = Strains::Zero();
+    S.tail<2>() = F_ * e.tail<2>(); // (Qy, Qx)
+    add_gradient_transpose(p, p.weight * conjugate_stress(g, S, terms), f);
+  }
+  return f;
+}
+
+ElementMatrix NonlinearMindlinQ9::tangent_stiffness(const ElementGeometry& geo,
+                                                    const ElementVector& ue) const {
+  const auto terms = terms_of(measure_);
+  ElementMatrix K = ElementMatrix::Zero();
+  for (const IntegrationPoint& p : geo.membrane_bending) {
+    const StrainState s = strain_state(gradients(p, ue), terms);
+    const Eigen::Matrix<double, 6, n_gradients> E = s.E.topRows<6>();
+    const Eigen::VectorXd S = C_mb_ * s.e.head<6>();
+    // K_L + K_NL from Eᵀ C E, K_σ from the resultants times the strain curvature (2.100)–(2.103).
+    const Eigen::Matrix<double, n_gradients, n_gradients> Kg =
+        E.transpose() * C_mb_ * E + stress_hessian(terms, ex, 6, S);
+    const GradientOperator G = gradient_operator(p);
+    K.noalias() += p.weight * (G.transpose() * (Kg * G));
+  }
+  if (formulation_ == ElementFormulation::mitc9) {
+    K += geo.shear_stiffness;
+    return K;
+  }
+  for (const IntegrationPoint& p : geo.shear) {
+    const StrainState s = strain_state(gradients(p, ue), terms);
+    const Eigen::Matrix<double, 2, n_gradients> E = s.E.bottomRows<2>();
+    const Eigen::VectorXd Q = F_ * s.e.tail<2>();
+    const Eigen::Matrix<double, n_gradients, n_gradients> Kg =
+        E.transpose() * F_ * E + stress_hessian(terms, gyz, 2, Q);
+    const GradientOperator G = gradient_operator(p);
+    K.noalias() += p.weight * (G.transpose() * (Kg * G));
+  }
+  return K;
+}
+
+} // namespace plyimpact

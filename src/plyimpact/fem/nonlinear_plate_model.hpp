@@ -1,0 +1,36 @@
+#pragma once
+// The plate's non-linear internal force vector and tangent stiffness over the free DOFs (SPEC §8),
+// assembled from NonlinearMindlinQ9 into the sparsity pattern of the linear PlateModel.
+#include "plyimpact/fem/nonlinear_plate_element.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+
+#include <vector>
+
+namespace plyimpact {
+
+class NonlinearPlateModel {
+public:
+  /// Throws std::invalid_argument when the strain measure is not available with the model's element.
+  NonlinearPlateModel(const PlateModel& model, StrainMeasure measure);
+
+  [[nodiscard]] const PlateModel& linear() const { return model_; }
+  [[nodiscard]] const NonlinearMindlinQ9& element() const { return element_; }
+  [[nodiscard]] int size() const { return model_.size(); }
+
+  /// f_int(u) = Σₑ ∫ Gᵀ Eᵀ S dA over the free DOFs.
+  [[nodiscard]] Eigen::VectorXd internal_force(const Eigen::VectorXd& u) const;
+  /// K_T(u) = ∂f_int/∂u, same pattern as PlateModel::stiffness().
+  [[nodiscard]] SparseMatrix tangent_stiffness(const Eigen::VectorXd& u) const;
+
+private:
+  [[nodiscard]] const ElementGeometry& geometry_of(int e) const;
+
+  const PlateModel& model_;
+  NonlinearMindlinQ9 element_;
+  std::vector<ElementGeometry> geometry_;                ///< one per element, or one shared (regular mesh)
+  std::vector<std::array<int, q9_dofs>> equations_;      ///< element DOF → free equation (−1 restrained)
+  SparseMatrix pattern_;                                 ///< structure of K_T, values zero
+  std::vector<std::array<int, q9_dofs * q9_dofs>> slot_; ///< (i, j) of Kₑ → index in pattern_ values
+};
+
+} // namespace plyimpact
