@@ -20,6 +20,7 @@
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/plate_from_deck.hpp"
 #include "plyimpact/io/results.hpp"
+#include "sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -254,8 +255,8 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 /// `plyimpact DECK [options]` runs the deck's own `analysis` (impact by default).
 std::vector<std::string> with_default_command(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  static const std::vector<std::string> commands{"laminate", "static", "modal",
-                                                 "buckling", "impact", "threshold"};
+  static const std::vector<std::string> commands{"laminate", "static", "modal",    "buckling",
+                                                 "impact",   "threshold", "sweep"};
   if (args.empty() || args[0].empty() || args[0][0] == '-' ||
       std::find(commands.begin(), commands.end(), args[0]) != commands.end())
     return args;
@@ -289,6 +290,8 @@ int run(int argc, char** argv) {
   CLI::App* stat = add_analysis(app, "static", "Linear static analysis (point, patch, pressure loads)", o);
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
+  SweepCommandOptions sweep_options;
+  CLI::App* sweep = add_sweep_command(app, sweep_options);
 
   try {
     std::vector<std::string> args = with_default_command(argc, argv);
@@ -304,6 +307,11 @@ int run(int argc, char** argv) {
     if (*stat) return run_static(o);
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);
+    if (*sweep) {
+      std::signal(SIGINT, on_signal);
+      std::signal(SIGTERM, on_signal);
+      return run_sweep_command(sweep_options, interrupted);
+    }
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return 2;

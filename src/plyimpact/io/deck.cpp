@@ -1,4 +1,5 @@
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/deck_table.hpp"
 
 #include "plyimpact/laminate/failure_criteria.hpp"
 #include "plyimpact/laminate/layup.hpp"
@@ -506,12 +507,16 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   } catch (const toml::parse_error& e) {
     fail(source, e.source(), fmt::format("invalid TOML: {}", e.description()));
   }
+  return parse_deck_table(root, text, source);
+}
+
+Deck parse_deck_table(const toml::table& root, std::string_view text, const std::string& source) {
   Deck d;
   d.source = source;
   d.text = std::string(text);
   const TableReader top(root, "", source);
   top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact",
-            "time", "load", "modal", "buckling", "damage", "threshold", "output"});
+            "time", "load", "modal", "buckling", "damage", "threshold", "output", "sweep"});
   d.title = top.optional_string("title").value_or("");
   if (const auto a = top.optional_string("analysis")) {
     const auto kind = parse_analysis_kind(*a);
