@@ -255,7 +255,7 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 /// `plyimpact DECK [options]` runs the deck's own `analysis` (impact by default).
 std::vector<std::string> with_default_command(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  static const std::vector<std::string> commands{"laminate", "static", "modal",    "buckling",
+  static const std::vector<std::string> commands{"laminate", "static",    "modal", "buckling",
                                                  "impact",   "threshold", "sweep"};
   if (args.empty() || args[0].empty() || args[0][0] == '-' ||
       std::find(commands.begin(), commands.end(), args[0]) != commands.end())

@@ -182,11 +182,13 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   ranks.barrier();
   const std::vector<std::size_t> pending = folder.pending();
   ranks.barrier(); // every rank has the same list before any record is written
-  const int jobs = o.jobs > 0 ? o.jobs
-                              : (ranks.size() > 1 ? 1 : static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
+  const int jobs =
+      o.jobs > 0
+          ? o.jobs
+          : (ranks.size() > 1 ? 1 : static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
   if (root)
-    fmt::print("sweep: {} cases ({} to run) on {} rank{} x {} thread{}, {} analysis\n", sweep.size(), pending.size(),
-               ranks.size(), ranks.size() > 1 ? "s" : "", jobs, jobs > 1 ? "s" : "",
+    fmt::print("sweep: {} cases ({} to run) on {} rank{} x {} thread{}, {} analysis\n", sweep.size(),
+               pending.size(), ranks.size(), ranks.size() > 1 ? "s" : "", jobs, jobs > 1 ? "s" : "",
                to_string(sweep.spec().analysis));
   std::fflush(stdout);
   SweepOptions options;
@@ -207,8 +209,9 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   if (!root) return interrupted.load() ? 130 : 0;
   const SweepFolder::TableStatus status = folder.write_table();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("sweep: {} cases run in {:.3f} s ({:.3f} cases/s), {} factorization{} of K\n", pending.size(), wall,
-             static_cast<double>(pending.size()) / wall, factorizations, factorizations == 1 ? "" : "s");
+  fmt::print("sweep: {} cases run in {:.3f} s ({:.3f} cases/s), {} factorization{} of K\n", pending.size(),
+             wall, static_cast<double>(pending.size()) / wall, factorizations,
+             factorizations == 1 ? "" : "s");
   if (status.missing > 0) {
     fmt::print(stderr, "plyimpact: {} of {} cases have no record: run again with --resume\n", status.missing,
                sweep.size());
@@ -224,15 +227,18 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
 } // namespace
 
 CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
-  CLI::App* sub = app.add_subcommand("sweep", "Parameter study: many decks from one ([sweep] table or --set), "
-                                              "on all cores and MPI ranks, resumable");
+  CLI::App* sub =
+      app.add_subcommand("sweep", "Parameter study: many decks from one ([sweep] table or --set), "
+                                  "on all cores and MPI ranks, resumable");
   sub->add_option("deck", o.deck_path, "base TOML deck, with an optional [sweep] table")->required();
   sub->add_option("-o,--output", o.output_dir, "results folder: sweep.csv, sweep.json, cases/")->required();
-  sub->add_option("--set", o.set, "KEY=V1,V2,... or KEY=start:stop:count (repeatable), e.g. impactor.velocity=1,2")
+  sub->add_option("--set", o.set,
+                  "KEY=V1,V2,... or KEY=start:stop:count (repeatable), e.g. impactor.velocity=1,2")
       ->allow_extra_args(false);
   sub->add_option("--mode", o.mode, "product (every combination, default) or zip (lists in step)")
       ->check(CLI::IsMember({"product", "zip"}));
-  sub->add_option("--analysis", o.analysis, "impact or threshold (default: [sweep] analysis, else the deck's)")
+  sub->add_option("--analysis", o.analysis,
+                  "impact or threshold (default: [sweep] analysis, else the deck's)")
       ->check(CLI::IsMember({"impact", "threshold"}));
   sub->add_option("-j,--jobs", o.jobs, "threads per process (default: all cores; 1 per MPI rank)")
       ->check(CLI::PositiveNumber);

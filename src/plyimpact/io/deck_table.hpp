@@ -12,6 +12,7 @@ namespace plyimpact {
 
 /// Validates `root` exactly as parse_deck validates a file; `text` is recorded as Deck::text and
 /// `source` names the deck in messages. Throws DeckError. The [sweep] table is accepted and ignored.
-[[nodiscard]] Deck parse_deck_table(const toml::table& root, std::string_view text, const std::string& source);
+[[nodiscard]] Deck parse_deck_table(const toml::table& root, std::string_view text,
+                                    const std::string& source);
 
 } // namespace plyimpact

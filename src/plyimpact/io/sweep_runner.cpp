@@ -13,8 +13,8 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -89,8 +89,10 @@ DamageOptions damage_options(const Deck& deck) {
 
 void put_first_failure(nlohmann::json& results, const std::optional<DamageOnset>& f) {
   results["first_failure_time"] = f ? nlohmann::json(f->time) : nlohmann::json(nullptr);
-  results["first_failure_criterion"] = f ? nlohmann::json(std::string(to_string(f->criterion))) : nlohmann::json(nullptr);
-  results["first_failure_mode"] = f ? nlohmann::json(std::string(to_string(f->mode))) : nlohmann::json(nullptr);
+  results["first_failure_criterion"] =
+      f ? nlohmann::json(std::string(to_string(f->criterion))) : nlohmann::json(nullptr);
+  results["first_failure_mode"] =
+      f ? nlohmann::json(std::string(to_string(f->mode))) : nlohmann::json(nullptr);
   results["first_failure_ply"] = f && f->ply > 0 ? nlohmann::json(f->ply) : nlohmann::json(nullptr);
   results["first_failure_interface"] =
       f && f->interface > 0 ? nlohmann::json(f->interface) : nlohmann::json(nullptr);
@@ -244,15 +246,15 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
     if (sweep_.spec().analysis == AnalysisKind::threshold) {
       std::string name = deck.threshold.criterion;
       if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
-      if (name.empty()) throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
+      if (name.empty())
+        throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
       const PlateModel model = plate_from_deck(deck);
       ThresholdOptions to;
       to.tolerance = deck.threshold.tolerance;
       to.max_velocity = deck.threshold.max_velocity;
       to.damage = damage_options(deck);
       const ThresholdResult r = find_threshold_velocity(model, settings, *parse_criterion(name), to);
-      ++factorizations_;
-      if (options_.cancel != nullptr && options_.cancel->load()) return std::nullopt;
+      ++factorizations_; // a finished search is recorded even after an interrupt: its result is whole
       results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
       results["threshold_criterion"] = name;
       put_first_failure(results, r.first_failure);

@@ -19,8 +19,8 @@
 namespace plyimpact {
 
 struct SweepOptions {
-  bool case_folders = false;                ///< also write DIR/cases/NNNNNN/ (summary.json, history.csv…)
-  bool share_factorization = true;          ///< reuse a worker's plate and K̄ factor across cases
+  bool case_folders = false;                 ///< also write DIR/cases/NNNNNN/ (summary.json, history.csv…)
+  bool share_factorization = true;           ///< reuse a worker's plate and K̄ factor across cases
   const std::atomic<bool>* cancel = nullptr; ///< stop taking cases; a case cut short is not recorded
 };
 

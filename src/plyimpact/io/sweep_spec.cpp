@@ -58,7 +58,8 @@ std::string located(const std::string& source, const toml::source_region& where)
   return fmt::format("{}:{}:{}", source, where.begin.line, where.begin.column);
 }
 
-template <class T> std::optional<T> parse_number(std::string_view s) {
+template <class T>
+std::optional<T> parse_number(std::string_view s) {
   T v{};
   const char* end = s.data() + s.size();
   const auto [ptr, ec] = std::from_chars(s.data(), end, v);
@@ -67,7 +68,8 @@ template <class T> std::optional<T> parse_number(std::string_view s) {
 }
 
 bool written_as_integer(std::string_view s) {
-  return !s.empty() && s.find_first_of(".eEnN") == std::string_view::npos && parse_number<long>(s).has_value();
+  return !s.empty() && s.find_first_of(".eEnN") == std::string_view::npos &&
+         parse_number<long>(s).has_value();
 }
 
 std::vector<std::string_view> split(std::string_view s, char sep) {
@@ -104,17 +106,20 @@ std::optional<SweepValue> value_from_node(const toml::node& n) {
 std::vector<std::string> key_path(const std::string& key, const std::string& origin) {
   std::vector<std::string> parts;
   for (const auto p : split(key, '.')) {
-    if (p.empty()) fail(origin, fmt::format("malformed key '{}': expected a dotted deck key such as "
-                                            "impactor.velocity",
-                                            key));
+    if (p.empty())
+      fail(origin, fmt::format("malformed key '{}': expected a dotted deck key such as "
+                               "impactor.velocity",
+                               key));
     parts.emplace_back(p);
   }
   if (parts.size() < 2)
-    fail(origin, fmt::format("'{}' is not a deck value: expected SECTION.KEY such as impactor.velocity", key));
+    fail(origin,
+         fmt::format("'{}' is not a deck value: expected SECTION.KEY such as impactor.velocity", key));
   return parts;
 }
 
-void set_value(toml::table& root, const std::string& key, const SweepValue& value, const std::string& origin) {
+void set_value(toml::table& root, const std::string& key, const SweepValue& value,
+               const std::string& origin) {
   const std::vector<std::string> path = key_path(key, origin);
   toml::table* t = &root;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -144,7 +149,8 @@ struct KeyedNode {
 };
 
 template <class IsLeaf>
-void flatten(const toml::table& t, const std::string& prefix, const IsLeaf& is_leaf, std::vector<KeyedNode>& out) {
+void flatten(const toml::table& t, const std::string& prefix, const IsLeaf& is_leaf,
+             std::vector<KeyedNode>& out) {
   for (auto&& [k, node] : t) {
     const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (const auto* sub = node.as_table(); sub != nullptr && !is_leaf(*sub))
@@ -181,7 +187,8 @@ std::string serialize(const toml::table& t) {
 std::vector<SweepValue> parse_range(std::string_view text, const std::string& origin) {
   const auto parts = split(text, ':');
   const auto malformed = [&](const std::string& why) {
-    fail(origin, fmt::format("malformed range \"{}\": {} (expected start:stop:count, e.g. 0.5:3.0:11)", text, why));
+    fail(origin,
+         fmt::format("malformed range \"{}\": {} (expected start:stop:count, e.g. 0.5:3.0:11)", text, why));
   };
   if (parts.size() != 3) malformed("it needs exactly three fields");
   const auto start = parse_number<double>(parts[0]);
@@ -202,8 +209,8 @@ std::vector<SweepValue> parse_range(std::string_view text, const std::string& or
     }
   }
   for (long i = 0; i < n; ++i) // end points exact; x_i = start + i (stop − start)/(count − 1)
-    values.emplace_back(i == n - 1 ? *stop
-                                   : *start + static_cast<double>(i) * (*stop - *start) / static_cast<double>(n - 1));
+    values.emplace_back(
+        i == n - 1 ? *stop : *start + static_cast<double>(i) * (*stop - *start) / static_cast<double>(n - 1));
   return values;
 }
 
@@ -236,8 +243,7 @@ void read_sweep_table(const toml::table& sweep, const std::string& source, Sweep
     const std::string_view key = k.str();
     if (key != "mode" && key != "analysis" && key != "values" && key != "random")
       fail(located(source, k.source()),
-           fmt::format("unknown key '{}' in [sweep] (expected one of: mode, analysis, values, random)",
-                                 key));
+           fmt::format("unknown key '{}' in [sweep] (expected one of: mode, analysis, values, random)", key));
   }
   if (const toml::node* m = sweep.get("mode")) {
     const auto s = m->value<std::string>();
@@ -254,9 +260,11 @@ void read_sweep_table(const toml::table& sweep, const std::string& source, Sweep
   }
   if (const toml::node* v = sweep.get("values")) {
     const toml::table* t = v->as_table();
-    if (t == nullptr) fail(at(*v), "sweep.values must be a table: KEY = [V1, V2, …] or KEY = \"start:stop:count\"");
+    if (t == nullptr)
+      fail(at(*v), "sweep.values must be a table: KEY = [V1, V2, …] or KEY = \"start:stop:count\"");
     std::vector<KeyedNode> items;
-    flatten(*t, "", [](const toml::table&) { return false; }, items);
+    flatten(
+        *t, "", [](const toml::table&) { return false; }, items);
     sort_by_position(items);
     for (const auto& [key, node, where] : items) {
       SweepAxis axis{key, {}, located(source, where)};
@@ -272,15 +280,17 @@ void read_sweep_table(const toml::table& sweep, const std::string& source, Sweep
           axis.values.push_back(*value);
         }
       } else {
-        fail(axis.origin, fmt::format("sweep.values.{}: expected a list [V1, V2, …] or a range \"start:stop:count\"",
-                                      key));
+        fail(
+            axis.origin,
+            fmt::format("sweep.values.{}: expected a list [V1, V2, …] or a range \"start:stop:count\"", key));
       }
       spec.axes.push_back(std::move(axis));
     }
   }
   if (const toml::node* r = sweep.get("random")) {
     const toml::table* t = r->as_table();
-    if (t == nullptr) fail(at(*r), "sweep.random must be a table: samples, seed and KEY = { normal = [mean, sd] }");
+    if (t == nullptr)
+      fail(at(*r), "sweep.random must be a table: samples, seed and KEY = { normal = [mean, sd] }");
     const auto is_distribution = [](const toml::table& d) {
       return d.size() == 1 && (d.contains("normal") || d.contains("uniform"));
     };
@@ -292,9 +302,11 @@ void read_sweep_table(const toml::table& sweep, const std::string& source, Sweep
       const std::string origin = located(source, where);
       if (key == "samples" || key == "seed") {
         const auto* i = node->as_integer();
-        if (i == nullptr || i->get() < (key == "samples" ? 1 : 0) || (key == "samples" && i->get() > 10'000'000))
-          fail(origin, fmt::format("sweep.random.{} must be {}", key,
-                                   key == "samples" ? "an integer from 1 to 10000000" : "a non-negative integer"));
+        if (i == nullptr || i->get() < (key == "samples" ? 1 : 0) ||
+            (key == "samples" && i->get() > 10'000'000))
+          fail(origin,
+               fmt::format("sweep.random.{} must be {}", key,
+                           key == "samples" ? "an integer from 1 to 10000000" : "a non-negative integer"));
         if (key == "samples") {
           spec.samples = static_cast<long>(i->get());
           have_samples = true;
@@ -305,10 +317,13 @@ void read_sweep_table(const toml::table& sweep, const std::string& source, Sweep
       }
       const toml::table* d = node->as_table();
       if (d == nullptr || !is_distribution(*d))
-        fail(origin, fmt::format("sweep.random.{}: expected {{ normal = [mean, sd] }} or {{ uniform = [lo, hi] }}",
-                                 key));
-      RandomParameter p{key, d->contains("normal") ? Distribution::normal : Distribution::uniform, 0.0, 0.0, origin};
-      const toml::array* ab = d->get(p.distribution == Distribution::normal ? "normal" : "uniform")->as_array();
+        fail(origin,
+             fmt::format("sweep.random.{}: expected {{ normal = [mean, sd] }} or {{ uniform = [lo, hi] }}",
+                         key));
+      RandomParameter p{key, d->contains("normal") ? Distribution::normal : Distribution::uniform, 0.0, 0.0,
+                        origin};
+      const toml::array* ab =
+          d->get(p.distribution == Distribution::normal ? "normal" : "uniform")->as_array();
       const auto number = [&](std::size_t i) -> std::optional<double> {
         if (ab == nullptr || ab->size() != 2) return std::nullopt;
         const auto v = (*ab)[i].value<double>();
@@ -350,7 +365,8 @@ SweepAxis axis_from_option(const std::string& option) {
 }
 
 /// A key is unknown when the deck parser, given the key's first value, rejects one of its names.
-void check_key(const Sweep::Impl& impl, const std::string& key, const SweepValue& first, const std::string& origin) {
+void check_key(const Sweep::Impl& impl, const std::string& key, const SweepValue& first,
+               const std::string& origin) {
   toml::table t = impl.base;
   set_value(t, key, first, origin);
   try {
@@ -360,7 +376,8 @@ void check_key(const Sweep::Impl& impl, const std::string& key, const SweepValue
     for (const auto& name : key_path(key, origin))
       if (what.find(fmt::format("unknown key '{}'", name)) != std::string::npos) {
         const std::size_t p = what.find("error: ");
-        fail(origin, fmt::format("sweep key '{}': {}", key, p == std::string::npos ? what : what.substr(p + 7)));
+        fail(origin,
+             fmt::format("sweep key '{}': {}", key, p == std::string::npos ? what : what.substr(p + 7)));
       }
     // any other complaint is about this combination of values: the case records it when it runs
   }
@@ -370,8 +387,9 @@ void check_key(const Sweep::Impl& impl, const std::string& key, const SweepValue
 
 Sweep::Sweep(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
-Sweep Sweep::from_text(std::string_view text, const std::string& source, const std::vector<std::string>& set_options,
-                       std::optional<SweepMode> mode, std::optional<AnalysisKind> analysis) {
+Sweep Sweep::from_text(std::string_view text, const std::string& source,
+                       const std::vector<std::string>& set_options, std::optional<SweepMode> mode,
+                       std::optional<AnalysisKind> analysis) {
   auto impl = std::make_shared<Impl>();
   impl->source = source;
   impl->base_text = std::string(text);
@@ -387,7 +405,8 @@ Sweep Sweep::from_text(std::string_view text, const std::string& source, const s
   impl->base = std::move(root);
   for (const std::string& option : set_options) {
     SweepAxis axis = axis_from_option(option);
-    const auto same = std::find_if(spec.axes.begin(), spec.axes.end(), [&](const auto& a) { return a.key == axis.key; });
+    const auto same =
+        std::find_if(spec.axes.begin(), spec.axes.end(), [&](const auto& a) { return a.key == axis.key; });
     if (same != spec.axes.end())
       *same = std::move(axis);
     else
@@ -413,9 +432,10 @@ Sweep Sweep::from_text(std::string_view text, const std::string& source, const s
   if (spec.mode == SweepMode::zip)
     for (const auto& a : spec.axes)
       if (a.values.size() != spec.axes.front().values.size())
-        fail(a.origin, fmt::format("zip sweep: {} has {} values but {} has {}; zipped lists must have equal "
-                                   "lengths",
-                                   a.key, a.values.size(), spec.axes.front().key, spec.axes.front().values.size()));
+        fail(a.origin,
+             fmt::format("zip sweep: {} has {} values but {} has {}; zipped lists must have equal "
+                         "lengths",
+                         a.key, a.values.size(), spec.axes.front().key, spec.axes.front().values.size()));
   for (const auto& a : spec.axes) {
     check_key(*impl, a.key, a.values.front(), a.origin);
     impl->axis_sizes.push_back(a.values.size());
@@ -445,7 +465,8 @@ Sweep Sweep::from_text(std::string_view text, const std::string& source, const s
     id += "\n";
   }
   for (const auto& r : spec.random)
-    id += fmt::format("{}~{}({},{})\n", r.key, r.distribution == Distribution::normal ? "normal" : "uniform", r.a, r.b);
+    id += fmt::format("{}~{}({},{})\n", r.key, r.distribution == Distribution::normal ? "normal" : "uniform",
+                      r.a, r.b);
   id += fmt::format("samples={} seed={}\n", spec.samples, spec.seed);
   impl->fingerprint = fmt::format("{:016x}", fnv1a(id));
   return Sweep(std::move(impl));

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Sweep throughput (bench/README.md, "Sweeps"): cases per second for the thesis §4.2 plate
+# (15 x 11, [45/90/-45/0]3s, dt = 1 us) swept over 12 impact velocities, at --jobs 1, --jobs 2,
+# with 2 MPI ranks, and at --jobs 1 without sharing the factorization of K-bar between cases.
+# Usage: bench/sweep-bench.sh [REPEATS]   (needs a configured and built build/release)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+exe=build/release/plyimpact
+repeats=${1:-3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+deck=examples/thesis-4.2-velocity-2.92.toml
+sets=(--set impactor.velocity=0.5:3.25:12)
+
+run() { # label, command...
+  local label=$1
+  shift
+  for r in $(seq 1 "$repeats"); do
+    rm -rf "$work/out"
+    local load
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    local line
+    line=$("$@" "$deck" -o "$work/out" "${sets[@]}" | grep 'cases run in')
+    echo "$label rep $r (load $load): $line"
+    cp "$work/out/sweep.csv" "$work/$label.csv"
+  done
+}
+
+run jobs1 "$exe" sweep --jobs 1
+run jobs2 "$exe" sweep --jobs 2
+run mpi2 mpirun --allow-run-as-root --oversubscribe -n 2 "$exe" sweep --jobs 1
+run jobs1-no-sharing "$exe" sweep --jobs 1 --no-sharing
+for t in jobs2 mpi2 jobs1-no-sharing; do
+  cmp -s "$work/jobs1.csv" "$work/$t.csv" && echo "$t: sweep.csv identical to jobs1" || echo "$t: sweep.csv DIFFERS"
+done
