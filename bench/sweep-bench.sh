@@ -19,9 +19,11 @@ run() { # label, command...
     rm -rf "$work/out"
     local load
     load=$(cut -d' ' -f1 /proc/loadavg)
-    local line
-    line=$("$@" "$deck" -o "$work/out" "${sets[@]}" | grep 'cases run in')
-    echo "$label rep $r (load $load): $line"
+    local line cpu
+    local TIMEFORMAT='%R s wall, %U s user + %S s sys'
+    { cpu=$( { time "$@" "$deck" -o "$work/out" "${sets[@]}" > "$work/stdout"; } 2>&1 ); }
+    line=$(grep 'cases run in' "$work/stdout")
+    echo "$label rep $r (load $load): $line [$cpu]"
     cp "$work/out/sweep.csv" "$work/$label.csv"
   done
 }

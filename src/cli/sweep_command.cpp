@@ -76,7 +76,17 @@ public:
 
   [[nodiscard]] int rank() const override { return rank_; }
   [[nodiscard]] int size() const override { return size_; }
-  void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
+  /// A barrier that sleeps while it waits: a rank done early must not spin on a core its
+  /// neighbours still compute on (MPI_Barrier busy-polls in Open MPI).
+  void barrier() override {
+    MPI_Request request = MPI_REQUEST_NULL;
+    MPI_Ibarrier(MPI_COMM_WORLD, &request);
+    for (int done = 0;;) {
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+      if (done != 0) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
   [[nodiscard]] long sum(long local) override {
     long total = 0;
     MPI_Allreduce(&local, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -126,8 +136,8 @@ private:
       int flag = 0;
       MPI_Status status;
       MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
-      if (flag == 0) { // idle: poll gently, a case takes milliseconds at least
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      if (flag == 0) { // idle: poll gently; a case takes a tenth of a second or more
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
         continue;
       }
       int payload = 0;
@@ -204,8 +214,8 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
     fmt::print(stderr, "plyimpact: error: rank {}: {}\n", ranks.rank(), e.what());
     ranks.abort(1);
   }
+  ranks.barrier(); // sleeps while the slowest rank finishes its last case
   const long factorizations = ranks.sum(local_factorizations);
-  ranks.barrier();
   if (!root) return interrupted.load() ? 130 : 0;
   const SweepFolder::TableStatus status = folder.write_table();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
