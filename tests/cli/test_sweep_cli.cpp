@@ -2,7 +2,9 @@
 // killed part-way and resumed ends with the uninterrupted table; bad specs stop before any case runs;
 // a failing case is recorded and the others run.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <csignal>
@@ -239,6 +241,66 @@ TEST(SweepCli, AFailingCaseIsRecordedAndTheOthersRun) {
     }
   }
   EXPECT_EQ(failed, 2); // v = -1 with each of the two layups
+}
+
+/// The field of `column` in data row `row` (1-based) of a CSV without quoted commas.
+std::string field(const std::string& table, std::size_t row, const std::string& column) {
+  const auto rows = lines(table);
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> f;
+    std::istringstream in(line);
+    for (std::string x; std::getline(in, x, ',');)
+      f.push_back(x);
+    if (!line.empty() && line.back() == ',') f.emplace_back();
+    return f;
+  };
+  const auto header = split(rows.at(0));
+  const auto values = split(rows.at(row));
+  const auto at = std::find(header.begin(), header.end(), column);
+  return at == header.end() ? "(no column " + column + ")"
+                            : values.at(static_cast<std::size_t>(at - header.begin()));
+}
+
+TEST(SweepCli, ThresholdSweepGivesTheThresholdCommandsVelocityBitForBit) {
+  const fs::path dir = scratch("threshold");
+  const std::string examples = std::string(PLYIMPACT_SOURCE_DIR) + "/examples/";
+  const CommandResult alone = shell("timeout 300 " + std::string(PLYIMPACT_EXE) + " threshold " + examples +
+                                    "thesis-4.3-threshold-0_3-90_4-0_3.toml -o " + (dir / "alone").string());
+  ASSERT_EQ(alone.status, 0) << alone.out;
+  const CommandResult s = sweep(examples + "sweep-4.3-threshold.toml -o " + (dir / "sweep").string() +
+                                " --set laminate.layup=[0_2/90_2/0_2],[0_3/90_4/0_3]");
+  ASSERT_EQ(s.status, 0) << s.out;
+  const double v_alone =
+      nlohmann::json::parse(read(dir / "alone" / "summary.json"))["threshold_velocity"].get<double>();
+  const std::string table = read(dir / "sweep" / "sweep.csv");
+  EXPECT_EQ(std::stod(field(table, 2, "threshold_velocity_m_per_s")), v_alone);
+  EXPECT_EQ(field(table, 2, "first_failure_ply"), "10"); // docs/validation.md §13, Table 4.4
+  EXPECT_EQ(field(table, 1, "first_failure_ply"), "6");
+  std::printf("  [0_3/90_4/0_3]: threshold %s m/s (threshold command %.17g); [0_2/90_2/0_2]: %s m/s\n",
+              field(table, 2, "threshold_velocity_m_per_s").c_str(), v_alone,
+              field(table, 1, "threshold_velocity_m_per_s").c_str());
+  EXPECT_NEAR(v_alone, 6.628, 0.0005); // docs/validation.md §13, "ours, deck"
+}
+
+TEST(SweepCli, CaseFoldersHoldEachCasesOwnResults) {
+  const fs::path dir = scratch("folders");
+  const fs::path deck = twelve_case_deck(dir);
+  const CommandResult r = sweep(deck.string() + " -o " + (dir / "out").string() +
+                                " --set impactor.mass=0.3 --case-folders --jobs 2");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string table = read(dir / "out" / "sweep.csv");
+  for (std::size_t c = 0; c < 4; ++c) {
+    const fs::path folder = dir / "out" / "cases" / ("00000" + std::to_string(c));
+    ASSERT_TRUE(fs::exists(folder / "summary.json")) << folder;
+    EXPECT_TRUE(fs::exists(folder / "history.csv"));
+    // The case's deck.toml is a runnable deck: running it alone gives the table's peak force.
+    const CommandResult alone =
+        shell("timeout 300 " + std::string(PLYIMPACT_EXE) + " impact " + (folder / "deck.toml").string() +
+              " -o " + (dir / ("alone" + std::to_string(c))).string());
+    ASSERT_EQ(alone.status, 0) << alone.out;
+    const auto summary = nlohmann::json::parse(read(dir / ("alone" + std::to_string(c)) / "summary.json"));
+    EXPECT_EQ(summary["peak_force"].get<double>(), std::stod(field(table, c + 1, "peak_force_N"))) << c;
+  }
 }
 
 } // namespace
