@@ -303,4 +303,39 @@ TEST(SweepCli, CaseFoldersHoldEachCasesOwnResults) {
   }
 }
 
+TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsAndResumes) {
+  const fs::path dir = scratch("sigint");
+  const fs::path deck = twelve_case_deck(dir, "nx = 12\nny = 8\n");
+  const CommandResult whole = sweep(deck.string() + " -o " + (dir / "whole").string() + " --jobs 2");
+  ASSERT_EQ(whole.status, 0) << whole.out;
+  const fs::path out = dir / "interrupted";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    (void)std::freopen("/dev/null", "w", stdout);
+    (void)std::freopen("/dev/null", "w", stderr);
+    ::execl(PLYIMPACT_EXE, "plyimpact", "sweep", deck.c_str(), "-o", out.c_str(), "--jobs", "2",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  for (int i = 0; i < 60000 && records_in(out) < 2; ++i) // at most 60 s
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const std::size_t kept = records_in(out);
+  std::printf("  interrupted with %zu of 12 records\n", kept);
+  ASSERT_LT(kept, 12U);
+  for (const auto& e : fs::directory_iterator(out / "cases")) { // the cases cut short left no record
+    if (e.path().extension() == ".json") {
+      EXPECT_EQ(nlohmann::json::parse(read(e.path()))["status"], "ok") << e.path();
+    }
+  }
+  const CommandResult resumed = sweep(deck.string() + " -o " + out.string() + " --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.out;
+  EXPECT_EQ(read(out / "sweep.csv"), read(dir / "whole" / "sweep.csv"));
+}
+
 } // namespace
