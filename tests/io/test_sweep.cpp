@@ -227,6 +227,11 @@ TEST(SweepSpec, BadSpecsAreRejectedWithTheirLocation) {
       deck_error("[sweep]\nmodes = \"zip\"\n").find("deck.toml:31:1: error: unknown key 'modes' in [sweep]"),
       std::string::npos);
   EXPECT_NE(deck_error("").find("nothing to sweep"), std::string::npos);
+  EXPECT_NE(error_of([] {
+              (void)Sweep::from_text("analysis = \"modal\"\n" + plate_deck(""), "deck.toml",
+                                     {"plate.a=0.1,0.2"});
+            }).find("deck.toml: error: a sweep runs the impact or the threshold analysis, not modal"),
+            std::string::npos);
   EXPECT_NE(
       deck_error("", {"impactor.velocty=1,2"})
           .find("--set 'impactor.velocty=1,2': error: sweep key 'impactor.velocty': unknown key 'velocty'"),

@@ -339,7 +339,8 @@ void read_sweep_table(const toml::table& sweep, const std::string& source, Sweep
         fail(origin, fmt::format("sweep.random.{}: uniform = [lo, hi] needs lo <= hi", key));
       spec.random.push_back(std::move(p));
     }
-    if (spec.random.empty()) fail(at(*r), "[sweep.random] samples no key: add KEY = { normal = [mean, sd] }");
+    if (spec.random.empty())
+      fail(at(*r), "[sweep.random] has no key to sample: add KEY = { normal = [mean, sd] }");
     if (!have_samples) fail(at(*r), "[sweep.random] needs samples = N (the number of Monte Carlo samples)");
   }
 }
@@ -396,7 +397,7 @@ Sweep Sweep::from_text(std::string_view text, const std::string& source,
   const Deck base = parse_deck(text, source); // the base deck must be valid by itself
   toml::table root = toml::parse(text, source);
   SweepSpec& spec = impl->spec;
-  spec.analysis = base.analysis == AnalysisKind::threshold ? AnalysisKind::threshold : AnalysisKind::impact;
+  spec.analysis = base.analysis;
   if (const toml::node* s = root.get("sweep")) {
     if (s->as_table() == nullptr) fail(located(source, s->source()), "sweep must be a table: [sweep]");
     read_sweep_table(*s->as_table(), source, spec);
@@ -413,11 +414,11 @@ Sweep Sweep::from_text(std::string_view text, const std::string& source,
       spec.axes.push_back(std::move(axis));
   }
   if (mode) spec.mode = *mode;
-  if (analysis) {
-    if (*analysis != AnalysisKind::impact && *analysis != AnalysisKind::threshold)
-      throw DeckError(fmt::format("{}: error: a sweep runs the impact or the threshold analysis", source));
-    spec.analysis = *analysis;
-  }
+  if (analysis) spec.analysis = *analysis;
+  if (spec.analysis != AnalysisKind::impact && spec.analysis != AnalysisKind::threshold)
+    throw DeckError(fmt::format("{}: error: a sweep runs the impact or the threshold analysis, not {}: set "
+                                "[sweep] analysis or --analysis",
+                                source, to_string(spec.analysis)));
   if (spec.axes.empty() && spec.random.empty())
     throw DeckError(fmt::format("{}: error: nothing to sweep: add [sweep.values], [sweep.random] or "
                                 "--set KEY=V1,V2,…",
