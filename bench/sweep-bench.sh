@@ -8,26 +8,23 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 exe=build/release/plyimpact
-repeats=${1:-3}
+repeats=${1:-3} # rounds
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 deck=examples/thesis-4.2-velocity-2.92.toml
 sets=(--set impactor.velocity=0.5:3.25:12)
 
-run() { # label, command...
+run() { # label, command...: one timed sweep, its sweep.csv kept as $work/<label>.csv
   local label=$1
   shift
-  for r in 1; do
-    rm -rf "$work/out"
-    local load
-    load=$(cut -d' ' -f1 /proc/loadavg)
-    local line cpu
-    local TIMEFORMAT='%R s wall, %U s user + %S s sys'
-    { cpu=$( { time "$@" "$deck" -o "$work/out" "${sets[@]}" > "$work/stdout"; } 2>&1 ); }
-    line=$(grep 'cases run in' "$work/stdout")
-    echo "$label (load $load): $line [$cpu]"
-    cp "$work/out/sweep.csv" "$work/$label.csv"
-  done
+  rm -rf "$work/out"
+  local load line cpu
+  load=$(cut -d' ' -f1 /proc/loadavg)
+  local TIMEFORMAT='%R s wall, %U s user + %S s sys'
+  cpu=$( { time "$@" "$deck" -o "$work/out" "${sets[@]}" > "$work/stdout"; } 2>&1 )
+  line=$(grep 'cases run in' "$work/stdout")
+  echo "$label (load $load): $line [$cpu]"
+  cp "$work/out/sweep.csv" "$work/$label.csv"
 }
 
 # Interleaved, so that a change in the machine's other load hits every variant alike.
