@@ -25,6 +25,7 @@
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/results.hpp"
 #include "plyimpact/io/vtk_output.hpp"
+#include "sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -378,7 +379,7 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 std::vector<std::string> with_default_command(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   static const std::vector<std::string> commands{"laminate", "static",    "modal", "buckling",
-                                                 "impact",   "threshold", "plot"};
+                                                 "impact",   "threshold", "plot",  "sweep"};
   if (args.empty() || args[0].empty() || args[0][0] == '-' ||
       std::find(commands.begin(), commands.end(), args[0]) != commands.end())
     return args;
@@ -420,6 +421,8 @@ int run(int argc, char** argv) {
       app.add_subcommand("plot", "PNG and SVG plots of impact results (several folders: overlaid curves)");
   plot->add_option("results", plot_dirs, "impact results folder(s) written with -o")->required();
   plot->add_option("-o,--output", o.output_dir, "folder for the pictures (default: RESULTS/plots)");
+  SweepCommandOptions sweep_options;
+  CLI::App* sweep = add_sweep_command(app, sweep_options);
 
   try {
     std::vector<std::string> args = with_default_command(argc, argv);
@@ -436,6 +439,11 @@ int run(int argc, char** argv) {
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);
     if (*plot) return run_plot(plot_dirs, o.output_dir);
+    if (*sweep) {
+      std::signal(SIGINT, on_signal);
+      std::signal(SIGTERM, on_signal);
+      return run_sweep_command(sweep_options, interrupted);
+    }
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return 2;

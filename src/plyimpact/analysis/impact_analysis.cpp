@@ -171,6 +171,10 @@ ImpactResult ImpactSolver::run(const ImpactObserver& observer) const {
 }
 
 ImpactResult ImpactSolver::run(const Impactor& imp, const ImpactObserver& observer) const {
+  return run(imp, settings_.k, observer);
+}
+
+ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserver& observer) const {
   const auto wall0 = std::chrono::steady_clock::now();
   const ImpactSettings& s = settings_;
   const NewmarkCoefficients nc(s.dt, s.newmark_beta, s.newmark_gamma);
@@ -190,7 +194,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, const ImpactObserver& observ
   }
   double load_radius = 0.0;
 
-  HertzContact law(s.k, s.contact);
+  HertzContact law(k, s.contact);
   NewmarkStepper impactor(nc, imp.mass, 0.0, imp.velocity);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(n), v = Eigen::VectorXd::Zero(n), a = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd rhs(n), u_hat(n), u_new(n), a_new(n);

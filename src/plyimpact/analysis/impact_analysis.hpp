@@ -92,6 +92,10 @@ public:
   /// Runs the event with the settings' impactor; `impactor` overrides it (same factorization).
   [[nodiscard]] ImpactResult run(const ImpactObserver& observer = {}) const;
   [[nodiscard]] ImpactResult run(const Impactor& impactor, const ImpactObserver& observer = {}) const;
+  /// The same with contact stiffness `k` [N/m^1.5] instead of the settings' (an impactor of another
+  /// radius or material on the same plate: parameter sweeps share one factorization).
+  [[nodiscard]] ImpactResult run(const Impactor& impactor, double k,
+                                 const ImpactObserver& observer = {}) const;
 
   [[nodiscard]] const ImpactSettings& settings() const { return settings_; }
   [[nodiscard]] int equations() const;

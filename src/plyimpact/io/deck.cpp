@@ -1,4 +1,5 @@
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/deck_table.hpp"
 
 #include "plyimpact/laminate/failure_criteria.hpp"
 #include "plyimpact/laminate/layup.hpp"
@@ -594,13 +595,17 @@ Deck parse_deck(std::string_view text, const std::string& source) {
   } catch (const toml::parse_error& e) {
     fail(source, e.source(), fmt::format("invalid TOML: {}", e.description()));
   }
+  return parse_deck_table(root, text, source);
+}
+
+Deck parse_deck_table(const toml::table& root, std::string_view text, const std::string& source) {
   Deck d;
   d.source = source;
   d.text = std::string(text);
   const TableReader top(root, "", source);
-  top.only({"analysis", "title", "materials", "laminate", "plate", "mesh", "boundary", "impactor", "contact",
-            "time", "load", "modal", "buckling", "damage", "threshold", "output", "nonlinear",
-            "strain_measure", "load_steps"});
+  top.only({"analysis",  "title",   "materials", "laminate",       "plate",      "mesh",     "boundary",
+            "impactor",  "contact", "time",      "load",           "modal",      "buckling", "damage",
+            "threshold", "output",  "nonlinear", "strain_measure", "load_steps", "sweep"});
   d.title = top.optional_string("title").value_or("");
   parse_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {

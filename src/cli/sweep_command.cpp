@@ -1,0 +1,266 @@
+#include "sweep_command.hpp"
+
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/sweep_runner.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#ifdef PLYIMPACT_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace plyimpact {
+
+namespace {
+
+/// Started by mpirun or srun: Open MPI, PMI and PMIx launchers set one of these.
+bool launched_by_mpi() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
+/// The process's place in a run: one process without MPI, or an MPI rank.
+class Ranks {
+public:
+  virtual ~Ranks() = default;
+  [[nodiscard]] virtual int rank() const { return 0; }
+  [[nodiscard]] virtual int size() const { return 1; }
+  virtual void barrier() {}
+  [[nodiscard]] virtual long sum(long local) { return local; }
+  /// Positions [0, count) handed out dynamically to every worker thread of every rank.
+  [[nodiscard]] virtual NextCase dispenser(std::size_t count) {
+    return [this, count]() -> std::optional<std::size_t> {
+      const std::size_t p = next_++;
+      if (p < count) return p;
+      return std::nullopt;
+    };
+  }
+  /// After this rank's workers are done: rank 0 waits until every other rank has left.
+  virtual void finish_dispensing() {}
+  [[noreturn]] virtual void abort(int code) { std::exit(code); }
+
+protected:
+  std::atomic<std::size_t> next_{0};
+};
+
+#ifdef PLYIMPACT_HAVE_MPI
+/// MPI ranks. Rank 0 owns the case counter: its workers take positions directly, a service thread
+/// answers the other ranks' requests; the other ranks' workers ask rank 0 one at a time
+/// (MPI_THREAD_SERIALIZED is enough). Each rank writes its own case records.
+class MpiRanks final : public Ranks {
+public:
+  MpiRanks() {
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+    if (provided < MPI_THREAD_SERIALIZED) {
+      MPI_Finalize();
+      throw std::runtime_error("sweep: the MPI library does not support MPI_THREAD_SERIALIZED");
+    }
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  ~MpiRanks() override {
+    if (service_.joinable()) service_.join();
+    MPI_Finalize();
+  }
+  MpiRanks(const MpiRanks&) = delete;
+  MpiRanks& operator=(const MpiRanks&) = delete;
+
+  [[nodiscard]] int rank() const override { return rank_; }
+  [[nodiscard]] int size() const override { return size_; }
+  /// A barrier that sleeps while it waits: a rank done early must not spin on a core its
+  /// neighbours still compute on (MPI_Barrier busy-polls in Open MPI).
+  void barrier() override {
+    MPI_Request request = MPI_REQUEST_NULL;
+    MPI_Ibarrier(MPI_COMM_WORLD, &request);
+    for (int done = 0;;) {
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+      if (done != 0) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+  [[nodiscard]] long sum(long local) override {
+    long total = 0;
+    MPI_Allreduce(&local, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+    return total;
+  }
+  [[noreturn]] void abort(int code) override {
+    MPI_Abort(MPI_COMM_WORLD, code);
+    std::exit(code);
+  }
+
+  [[nodiscard]] NextCase dispenser(std::size_t count) override {
+    if (rank_ == 0) {
+      if (size_ > 1) service_ = std::thread([this, count] { serve(count); });
+      return Ranks::dispenser(count);
+    }
+    return [this]() -> std::optional<std::size_t> {
+      const std::lock_guard lock(mutex_);
+      if (exhausted_) return std::nullopt;
+      int request = 0;
+      long position = -1;
+      MPI_Send(&request, 1, MPI_INT, 0, tag_request, MPI_COMM_WORLD);
+      MPI_Recv(&position, 1, MPI_LONG, 0, tag_reply, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (position < 0) {
+        exhausted_ = true;
+        return std::nullopt;
+      }
+      return static_cast<std::size_t>(position);
+    };
+  }
+
+  void finish_dispensing() override {
+    if (rank_ == 0) {
+      if (service_.joinable()) service_.join();
+      return;
+    }
+    int leave = 0;
+    MPI_Send(&leave, 1, MPI_INT, 0, tag_leave, MPI_COMM_WORLD);
+  }
+
+private:
+  static constexpr int tag_request = 71, tag_reply = 72, tag_leave = 73;
+
+  /// Rank 0's service thread: next position (or −1) for each request, until every rank has left.
+  void serve(std::size_t count) {
+    int left = 0;
+    while (left < size_ - 1) {
+      int flag = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+      if (flag == 0) { // idle: poll gently; a case takes a tenth of a second or more
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        continue;
+      }
+      int payload = 0;
+      MPI_Recv(&payload, 1, MPI_INT, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (status.MPI_TAG == tag_leave) {
+        ++left;
+        continue;
+      }
+      const std::size_t p = next_++;
+      const long position = p < count ? static_cast<long>(p) : -1L;
+      MPI_Send(&position, 1, MPI_LONG, status.MPI_SOURCE, tag_reply, MPI_COMM_WORLD);
+    }
+  }
+
+  int rank_ = 0, size_ = 1;
+  std::thread service_;
+  std::mutex mutex_;
+  bool exhausted_ = false;
+};
+#endif
+
+std::unique_ptr<Ranks> make_ranks() {
+  if (!launched_by_mpi()) return std::make_unique<Ranks>();
+#ifdef PLYIMPACT_HAVE_MPI
+  return std::make_unique<MpiRanks>();
+#else
+  throw std::runtime_error("sweep: started by an MPI launcher, but this plyimpact was built without MPI "
+                           "(install libopenmpi-dev and rebuild)");
+#endif
+}
+
+std::optional<SweepMode> mode_option(const std::string& mode) {
+  if (mode.empty()) return std::nullopt;
+  return mode == "zip" ? SweepMode::zip : SweepMode::product;
+}
+
+std::optional<AnalysisKind> analysis_option(const std::string& analysis) {
+  if (analysis.empty()) return std::nullopt;
+  return parse_analysis_kind(analysis);
+}
+
+/// Everything after MPI start-up; collective steps in the same order on every rank.
+int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool>& interrupted) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool root = ranks.rank() == 0;
+  // Every rank reads the same deck and folder, so a bad spec stops every rank alike.
+  const Sweep sweep = Sweep::load(o.deck_path, o.set, mode_option(o.mode), analysis_option(o.analysis));
+  const SweepFolder folder(o.output_dir, sweep);
+  folder.check(o.resume);
+  ranks.barrier();
+  if (root) folder.write_manifest();
+  ranks.barrier();
+  const std::vector<std::size_t> pending = folder.pending();
+  ranks.barrier(); // every rank has the same list before any record is written
+  const int jobs =
+      o.jobs > 0
+          ? o.jobs
+          : (ranks.size() > 1 ? 1 : static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
+  if (root)
+    fmt::print("sweep: {} cases ({} to run) on {} rank{} x {} thread{}, {} analysis\n", sweep.size(),
+               pending.size(), ranks.size(), ranks.size() > 1 ? "s" : "", jobs, jobs > 1 ? "s" : "",
+               to_string(sweep.spec().analysis));
+  std::fflush(stdout);
+  SweepOptions options;
+  options.case_folders = o.case_folders;
+  options.share_factorization = !o.no_sharing;
+  options.cancel = &interrupted;
+  int local_factorizations = 0;
+  try {
+    const NextCase next = ranks.dispenser(pending.size());
+    local_factorizations = run_sweep_cases(sweep, folder, pending, jobs, next, options);
+    ranks.finish_dispensing();
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "plyimpact: error: rank {}: {}\n", ranks.rank(), e.what());
+    ranks.abort(1);
+  }
+  ranks.barrier(); // sleeps while the slowest rank finishes its last case
+  const long factorizations = ranks.sum(local_factorizations);
+  if (!root) return interrupted.load() ? 130 : 0;
+  const SweepFolder::TableStatus status = folder.write_table();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  fmt::print("sweep: {} cases run in {:.3f} s ({:.3f} cases/s), {} factorization{} of K\n", pending.size(),
+             wall, static_cast<double>(pending.size()) / wall, factorizations,
+             factorizations == 1 ? "" : "s");
+  if (status.missing > 0) {
+    fmt::print(stderr, "plyimpact: {} of {} cases have no record: run again with --resume\n", status.missing,
+               sweep.size());
+    return interrupted.load() ? 130 : 3;
+  }
+  if (status.failed > 0)
+    fmt::print(stderr, "plyimpact: warning: {} of {} cases did not complete (status and error columns)\n",
+               status.failed, sweep.size());
+  fmt::print("sweep: table {}\n", (folder.path() / "sweep.csv").string());
+  return 0;
+}
+
+} // namespace
+
+CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
+  CLI::App* sub =
+      app.add_subcommand("sweep", "Parameter study: many decks from one ([sweep] table or --set), "
+                                  "on all cores and MPI ranks, resumable");
+  sub->add_option("deck", o.deck_path, "base TOML deck, with an optional [sweep] table")->required();
+  sub->add_option("-o,--output", o.output_dir, "results folder: sweep.csv, sweep.json, cases/")->required();
+  sub->add_option("--set", o.set,
+                  "KEY=V1,V2,... or KEY=start:stop:count (repeatable), e.g. impactor.velocity=1,2")
+      ->allow_extra_args(false);
+  sub->add_option("--mode", o.mode, "product (every combination, default) or zip (lists in step)")
+      ->check(CLI::IsMember({"product", "zip"}));
+  sub->add_option("--analysis", o.analysis,
+                  "impact or threshold (default: [sweep] analysis, else the deck's)")
+      ->check(CLI::IsMember({"impact", "threshold"}));
+  sub->add_option("-j,--jobs", o.jobs, "threads per process (default: all cores; 1 per MPI rank)")
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--resume", o.resume, "run only the cases without a record in DIR/cases");
+  sub->add_flag("--case-folders", o.case_folders, "also write DIR/cases/NNNNNN/ with each case's results");
+  sub->add_flag("--no-sharing", o.no_sharing, "factor K for every case (to measure what sharing saves)");
+  return sub;
+}
+
+int run_sweep_command(const SweepCommandOptions& o, const std::atomic<bool>& interrupted) {
+  const std::unique_ptr<Ranks> ranks = make_ranks();
+  return run_sweep(*ranks, o, interrupted);
+}
+
+} // namespace plyimpact

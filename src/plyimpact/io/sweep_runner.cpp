@@ -1,0 +1,359 @@
+#include "plyimpact/io/sweep_runner.hpp"
+
+#include "plyimpact/analysis/damage_tracker.hpp"
+#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/threshold_search.hpp"
+#include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/damage_report.hpp"
+#include "plyimpact/io/impact_report.hpp"
+#include "plyimpact/io/plate_from_deck.hpp"
+#include "plyimpact/io/results.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace plyimpact {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int record_format = 1;
+
+/// Columns of sweep.csv after the swept keys: (header, record key in "results").
+struct Column {
+  const char* header;
+  const char* key;
+};
+constexpr std::array<Column, 14> result_columns{{
+    {"peak_force_N", "peak_force"},
+    {"time_of_peak_force_s", "time_of_peak_force"},
+    {"contact_duration_s", "contact_duration"},
+    {"peak_contact_deflection_m", "peak_contact_deflection"},
+    {"max_indentation_m", "max_indentation"},
+    {"absorbed_energy_J", "absorbed_energy"},
+    {"rebound_velocity_m_per_s", "rebound_velocity"},
+    {"contacts", "contacts"},
+    {"first_failure_time_s", "first_failure_time"},
+    {"first_failure_criterion", "first_failure_criterion"},
+    {"first_failure_mode", "first_failure_mode"},
+    {"first_failure_ply", "first_failure_ply"},
+    {"first_failure_interface", "first_failure_interface"},
+    {"threshold_velocity_m_per_s", "threshold_velocity"},
+}};
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string q(1, '"');
+  for (const char c : s) {
+    if (c == '"') q += '"';
+    q += c;
+  }
+  q += '"';
+  return q;
+}
+
+/// A JSON scalar as table text: doubles by their shortest round-trip text, null as an empty field.
+std::string cell(const nlohmann::json& j) {
+  if (j.is_null()) return "";
+  if (j.is_number_float()) return fmt::format("{}", j.get<double>());
+  if (j.is_number_integer()) return fmt::format("{}", j.get<long>());
+  if (j.is_boolean()) return j.get<bool>() ? "true" : "false";
+  if (j.is_string()) return csv_field(j.get<std::string>());
+  return csv_field(j.dump());
+}
+
+std::vector<std::string> value_texts(const SweepCase& c) {
+  std::vector<std::string> v;
+  v.reserve(c.values.size());
+  for (const auto& x : c.values)
+    v.push_back(to_text(x));
+  return v;
+}
+
+DamageOptions damage_options(const Deck& deck) {
+  DamageOptions d;
+  d.every = deck.damage.every;
+  d.criterion_options.delamination_ply_n =
+      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
+  return d;
+}
+
+void put_first_failure(nlohmann::json& results, const std::optional<DamageOnset>& f) {
+  results["first_failure_time"] = f ? nlohmann::json(f->time) : nlohmann::json(nullptr);
+  results["first_failure_criterion"] =
+      f ? nlohmann::json(std::string(to_string(f->criterion))) : nlohmann::json(nullptr);
+  results["first_failure_mode"] =
+      f ? nlohmann::json(std::string(to_string(f->mode))) : nlohmann::json(nullptr);
+  results["first_failure_ply"] = f && f->ply > 0 ? nlohmann::json(f->ply) : nlohmann::json(nullptr);
+  results["first_failure_interface"] =
+      f && f->interface > 0 ? nlohmann::json(f->interface) : nlohmann::json(nullptr);
+}
+
+PlateModel impact_model(const Deck& deck, bool rigid_target) {
+  if (rigid_target)
+    return {*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{})};
+  return plate_from_deck(deck);
+}
+
+} // namespace
+
+// --- folder -----------------------------------------------------------------------------------
+
+SweepFolder::SweepFolder(fs::path dir, const Sweep& sweep) : dir_(std::move(dir)), sweep_(sweep) {}
+
+fs::path SweepFolder::record_path(std::size_t index) const {
+  return dir_ / "cases" / fmt::format("{:06}.json", index);
+}
+
+void SweepFolder::check(bool resume) const {
+  const fs::path manifest = dir_ / "sweep.json";
+  if (fs::exists(manifest)) {
+    std::ifstream in(manifest);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    const std::string theirs = j.is_object() ? j.value("fingerprint", std::string()) : std::string();
+    if (theirs != sweep_.fingerprint())
+      throw std::runtime_error(fmt::format(
+          "{} holds another sweep (fingerprint {}, this deck and options give {}): the deck or the sweep "
+          "changed; use another output folder",
+          dir_.string(), theirs.empty() ? "unreadable" : theirs, sweep_.fingerprint()));
+  }
+  if (resume) return;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir_ / "cases", ec))
+    if (e.path().extension() == ".json")
+      throw std::runtime_error(fmt::format("{} already holds case records: add --resume to run only the "
+                                           "missing cases, or use another output folder",
+                                           dir_.string()));
+}
+
+void SweepFolder::write_manifest() const {
+  const SweepSpec& s = sweep_.spec();
+  nlohmann::json j;
+  j["program"] = "plyimpact";
+  j["version"] = PLYIMPACT_VERSION;
+  j["deck"] = sweep_.source();
+  j["fingerprint"] = sweep_.fingerprint();
+  j["analysis"] = std::string(to_string(s.analysis));
+  j["mode"] = s.mode == SweepMode::zip ? "zip" : "product";
+  j["keys"] = sweep_.keys();
+  j["cases"] = sweep_.size();
+  j["samples"] = s.samples;
+  j["seed"] = s.seed;
+  write_file_atomically(dir_ / "sweep.json", j.dump(2) + "\n");
+}
+
+std::optional<nlohmann::json> SweepFolder::read_record(std::size_t index) const {
+  std::ifstream in(record_path(index));
+  if (!in) return std::nullopt;
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || j.value("fingerprint", std::string()) != sweep_.fingerprint() ||
+      j.value("case", std::numeric_limits<std::size_t>::max()) != index ||
+      j.value("values", std::vector<std::string>{}) != value_texts(sweep_.case_at(index)))
+    return std::nullopt;
+  return j;
+}
+
+std::vector<std::size_t> SweepFolder::pending() const {
+  std::vector<std::size_t> p;
+  for (std::size_t i = 0; i < sweep_.size(); ++i)
+    if (!read_record(i)) p.push_back(i);
+  return p;
+}
+
+SweepFolder::TableStatus SweepFolder::write_table() const {
+  TableStatus status;
+  std::vector<nlohmann::json> records;
+  records.reserve(sweep_.size());
+  for (std::size_t i = 0; i < sweep_.size(); ++i) {
+    auto r = read_record(i);
+    if (!r) {
+      ++status.missing;
+      continue;
+    }
+    if (r->value("status", std::string()) != "ok") ++status.failed;
+    records.push_back(std::move(*r));
+  }
+  if (status.missing == 0) write_file_atomically(dir_ / "sweep.csv", sweep_table_csv(sweep_, records));
+  return status;
+}
+
+std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json>& records) {
+  std::string csv = "case";
+  const auto add = [&csv](const std::string& field) {
+    csv += ',';
+    csv += field;
+  };
+  for (const auto& k : sweep.keys())
+    add(csv_field(k));
+  add("status");
+  for (const Column& c : result_columns)
+    add(c.header);
+  add("error");
+  csv += '\n';
+  for (const nlohmann::json& r : records) {
+    csv += fmt::format("{}", r.at("case").get<std::size_t>());
+    for (const auto& v : r.at("values"))
+      add(csv_field(v.get<std::string>()));
+    add(cell(r.at("status")));
+    const nlohmann::json& results = r.at("results");
+    for (const Column& c : result_columns)
+      add(cell(results.contains(c.key) ? results.at(c.key) : nlohmann::json(nullptr)));
+    add(cell(r.value("error", nlohmann::json(nullptr))));
+    csv += '\n';
+  }
+  return csv;
+}
+
+// --- one case ---------------------------------------------------------------------------------
+
+struct SweepWorker::Cache {
+  std::string key;
+  std::unique_ptr<PlateModel> model;
+  std::unique_ptr<ImpactSolver> solver;
+};
+
+SweepWorker::SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options)
+    : sweep_(sweep), folder_(folder), options_(options) {}
+
+SweepWorker::~SweepWorker() = default;
+
+std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
+  const SweepCase c = sweep_.case_at(index);
+  nlohmann::json record;
+  record["format"] = record_format;
+  record["case"] = index;
+  record["fingerprint"] = sweep_.fingerprint();
+  record["values"] = value_texts(c);
+  record["results"] = nlohmann::json::object();
+  nlohmann::json& results = record["results"];
+  try {
+    const Deck deck = sweep_.deck_for(c);
+    require_sections(deck, sweep_.spec().analysis);
+    ImpactSettings settings = impact_settings_from_deck(deck);
+    settings.cancel = options_.cancel;
+    if (!options_.case_folders) settings.history_every = 1 << 30; // the table needs no history
+    const fs::path case_dir = folder_.path() / "cases" / fmt::format("{:06}", index);
+
+    if (sweep_.spec().analysis == AnalysisKind::threshold) {
+      std::string name = deck.threshold.criterion;
+      if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
+      if (name.empty())
+        throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
+      const PlateModel model = plate_from_deck(deck);
+      ThresholdOptions to;
+      to.tolerance = deck.threshold.tolerance;
+      to.max_velocity = deck.threshold.max_velocity;
+      to.damage = damage_options(deck);
+      const ThresholdResult r = find_threshold_velocity(model, settings, *parse_criterion(name), to);
+      ++factorizations_; // a finished search is recorded even after an interrupt: its result is whole
+      results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
+      results["threshold_criterion"] = name;
+      put_first_failure(results, r.first_failure);
+      record["status"] = r.found ? "ok" : "incomplete";
+      if (!r.found)
+        record["error"] = fmt::format("no failure below threshold.max_velocity = {} m/s", to.max_velocity);
+      if (options_.case_folders) {
+        const ResultsFolder out(case_dir, deck);
+        nlohmann::json j = summary_header(deck, "threshold");
+        j["criterion"] = name;
+        j["threshold_velocity"] = results["threshold_velocity"];
+        j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
+        out.write_json("summary.json", j);
+      }
+      return record;
+    }
+
+    // Impact: reuse this worker's plate and factor when only the impactor (and auto k) differ.
+    const std::string key = sweep_.plate_key(c) + fmt::format("\ndt = {}\n", settings.dt);
+    if (!options_.share_factorization || !cache_ || cache_->key != key) {
+      cache_.reset();
+      auto model = std::make_unique<PlateModel>(impact_model(deck, settings.rigid_target));
+      auto solver = std::make_unique<ImpactSolver>(*model, settings);
+      cache_ = std::make_unique<Cache>(Cache{key, std::move(model), std::move(solver)});
+      ++factorizations_;
+    }
+    const PlateModel& model = *cache_->model;
+    std::optional<DamageTracker> damage;
+    if (!deck.damage.criteria.empty() && !settings.rigid_target)
+      damage.emplace(model, parse_criteria(deck.damage.criteria), damage_options(deck));
+    ImpactObserver observer;
+    if (damage)
+      observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
+        damage->observe(step, t, force, u);
+      };
+    const ImpactResult r = cache_->solver->run(settings.impactor, settings.k, observer);
+    if (options_.cancel != nullptr && options_.cancel->load() && !r.complete) return std::nullopt;
+    results["peak_force"] = r.peak_force;
+    results["time_of_peak_force"] = r.time_of_peak_force;
+    results["contact_duration"] = r.contact_duration;
+    results["peak_contact_deflection"] = r.peak_contact_deflection;
+    results["max_indentation"] = r.max_indentation;
+    results["absorbed_energy"] = r.absorbed_energy;
+    results["rebound_velocity"] = r.rebound_velocity;
+    results["contacts"] = r.episodes.size();
+    results["steps"] = r.steps;
+    results["dt"] = settings.dt;
+    std::optional<DamageOnset> first;
+    if (damage && !damage->first_onsets().empty()) first = damage->first_onsets().front();
+    if (damage) put_first_failure(results, first);
+    record["status"] = r.complete ? "ok" : "incomplete";
+    if (!r.complete) record["error"] = r.stop_reason;
+    if (options_.case_folders) {
+      const ResultsFolder out(case_dir, deck);
+      write_impact_results(out, deck, &model, settings, r, [&](nlohmann::json& j) {
+        if (!damage) return;
+        j["first_failures"] = nlohmann::json::array();
+        for (const auto& f : damage->first_onsets())
+          j["first_failures"].push_back(onset_json(f));
+      });
+    }
+  } catch (const std::exception& e) { // a bad combination of values fails this case only
+    record["status"] = "failed";
+    record["error"] = e.what();
+    record["results"] = nlohmann::json::object();
+  }
+  return record;
+}
+
+int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::vector<std::size_t>& pending,
+                    int jobs, const NextCase& next, const SweepOptions& options) {
+  std::atomic<int> factorizations{0};
+  std::mutex error_mutex;
+  std::string first_error;
+  const auto work = [&] {
+    try {
+      SweepWorker worker(sweep, folder, options);
+      while (options.cancel == nullptr || !options.cancel->load()) {
+        const auto position = next();
+        if (!position || *position >= pending.size()) break;
+        const std::size_t index = pending[*position];
+        const auto record = worker.run(index);
+        if (!record) break; // cancelled part-way: not recorded, runs again on --resume
+        write_file_atomically(folder.record_path(index), record->dump(1) + "\n");
+      }
+      factorizations += worker.factorizations();
+    } catch (const std::exception& e) { // cannot write a record: stop this worker, report it
+      const std::lock_guard lock(error_mutex);
+      if (first_error.empty()) first_error = e.what();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j)
+    threads.emplace_back(work);
+  work();
+  for (auto& t : threads)
+    t.join();
+  if (!first_error.empty()) throw std::runtime_error(first_error);
+  return factorizations.load();
+}
+
+} // namespace plyimpact

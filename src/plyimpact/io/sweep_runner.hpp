@@ -1,0 +1,91 @@
+#pragma once
+// Running a sweep (docs/sweep.md): cases on worker threads, each finished case recorded atomically in
+// DIR/cases/NNNNNN.json, and DIR/sweep.csv rebuilt from the records, one row per case in case order.
+// Each case is computed from its own deck alone, so the table does not depend on how many threads or
+// MPI ranks ran it, nor in which order; the numbers are written with the shortest text that reads back
+// to the same double, so equal runs give byte-identical tables.
+#include "plyimpact/io/sweep_spec.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+struct SweepOptions {
+  bool case_folders = false;                 ///< also write DIR/cases/NNNNNN/ (summary.json, history.csv…)
+  bool share_factorization = true;           ///< reuse a worker's plate and K̄ factor across cases
+  const std::atomic<bool>* cancel = nullptr; ///< stop taking cases; a case cut short is not recorded
+};
+
+/// Thread-safe source of positions in the list of pending cases; nullopt when none is left.
+using NextCase = std::function<std::optional<std::size_t>()>;
+
+/// The output folder of a sweep: sweep.json (fingerprint, keys, size), cases/, sweep.csv.
+class SweepFolder {
+public:
+  SweepFolder(std::filesystem::path dir, const Sweep& sweep);
+
+  /// Throws std::runtime_error when DIR holds another sweep (different fingerprint), or holds records
+  /// and `resume` is false.
+  void check(bool resume) const;
+  /// Writes sweep.json (atomically).
+  void write_manifest() const;
+  /// Case indices without a valid record, ascending.
+  [[nodiscard]] std::vector<std::size_t> pending() const;
+  [[nodiscard]] std::filesystem::path record_path(std::size_t index) const;
+  /// The record of case `index` when it exists and belongs to this sweep.
+  [[nodiscard]] std::optional<nlohmann::json> read_record(std::size_t index) const;
+
+  struct TableStatus {
+    std::size_t missing = 0; ///< cases without a record (the table is not written)
+    std::size_t failed = 0;  ///< cases recorded with an error
+  };
+  /// Writes sweep.csv (atomically) when every case has a record.
+  TableStatus write_table() const;
+
+  [[nodiscard]] const std::filesystem::path& path() const { return dir_; }
+
+private:
+  std::filesystem::path dir_;
+  const Sweep& sweep_;
+};
+
+/// Computes one case: its record (status "ok", "incomplete" or "failed" with the error message), or
+/// nullopt when the run was cancelled part-way. Keeps the last plate and factorization for the next
+/// case of the same plate and time step (Sweep::plate_key).
+class SweepWorker {
+public:
+  SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options);
+  ~SweepWorker();
+  SweepWorker(const SweepWorker&) = delete;
+  SweepWorker& operator=(const SweepWorker&) = delete;
+
+  [[nodiscard]] std::optional<nlohmann::json> run(std::size_t index);
+  /// How many times this worker factored K̄ (for tests and benchmarks).
+  [[nodiscard]] int factorizations() const { return factorizations_; }
+
+private:
+  struct Cache;
+  const Sweep& sweep_;
+  const SweepFolder& folder_;
+  SweepOptions options_;
+  std::unique_ptr<Cache> cache_;
+  int factorizations_ = 0;
+};
+
+/// Runs `pending` cases on `jobs` threads; each thread takes the next position from `next` and writes
+/// the case's record as soon as it is done. Returns the number of factorizations of K̄.
+int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::vector<std::size_t>& pending,
+                    int jobs, const NextCase& next, const SweepOptions& options);
+
+/// sweep.csv from the records of every case, in case order.
+[[nodiscard]] std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json>& records);
+
+} // namespace plyimpact

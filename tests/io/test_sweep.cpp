@@ -1,0 +1,336 @@
+// Parameter sweeps (docs/sweep.md): the [sweep] table and --set options, case numbering, the
+// documented random sequence, errors before any case runs, and cases computed in-process against
+// the Hertz closed form and against a stand-alone run of the same deck.
+#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/io/impact_report.hpp"
+#include "plyimpact/io/plate_from_deck.hpp"
+#include "plyimpact/io/sweep_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A rigid target (closed-form Hertz impact) with a [sweep] table appended.
+std::string rigid_deck(const std::string& sweep) {
+  return R"(analysis = "impact"
+[materials.m]
+E1 = 129.0e9
+E2 = 7.5e9
+G12 = 3.5e9
+nu12 = 0.33
+rho = 1540.0
+[laminate]
+material = "m"
+layup = "[0]"
+ply_thickness = 1e-3
+[plate]
+a = 0.1
+b = 0.1
+rigid = true
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+[contact]
+k = 0.6e9
+unloading = "elastic"
+[time]
+dt = 0.05e-6
+)" + sweep;
+}
+
+/// A small elastic plate (6 x 4 elements) struck at its centre.
+std::string plate_deck(const std::string& sweep) {
+  return R"([materials.T300_976]
+E1 = 144.8e9
+E2 = 9.65e9
+G12 = 7.10e9
+G23 = 5.92e9
+nu12 = 0.30
+rho = 1389.2
+[laminate]
+material = "T300_976"
+layup = "[0_2/90_4/0_2]"
+ply_thickness = 0.465e-3
+[plate]
+a = 0.127
+b = 0.0762
+[mesh]
+nx = 6
+ny = 4
+[boundary]
+x0 = "ss"
+xa = "ss"
+y0 = "ss"
+yb = "ss"
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+[time]
+dt = 2e-6
+)" + sweep;
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const DeckError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SweepSpec, ProductCountsWithTheLastKeyFastestAndBuildsEachDeck) {
+  const Sweep s = Sweep::from_text(plate_deck(R"(
+[sweep.values]
+"impactor.velocity" = [1.0, 2.0, 3.0]
+laminate.layup = ["[0/90]s", "[0_2/90_4/0_2]"]
+)"),
+                                   "deck.toml");
+  ASSERT_EQ(s.size(), 6U);
+  EXPECT_EQ(s.keys(), (std::vector<std::string>{"impactor.velocity", "laminate.layup"}));
+  const SweepCase c3 = s.case_at(3); // velocity index 1, layup index 1
+  EXPECT_EQ(to_text(c3.values[0]), "2");
+  EXPECT_EQ(to_text(c3.values[1]), "[0_2/90_4/0_2]");
+  const Deck d3 = s.deck_for(c3);
+  EXPECT_EQ(d3.impactor->velocity, 2.0);
+  EXPECT_EQ(d3.laminate->ply_count(), 8U);
+  const Deck d4 = s.deck_for(s.case_at(4)); // velocity 3.0, [0/90]s
+  EXPECT_EQ(d4.impactor->velocity, 3.0);
+  EXPECT_EQ(d4.laminate->ply_count(), 4U);
+  EXPECT_EQ(d4.impactor->mass, 0.314); // untouched keys keep the base deck's values
+}
+
+TEST(SweepSpec, ZipTakesListsInStepAndSetOptionsReplaceDeckAxes) {
+  const Sweep s = Sweep::from_text(plate_deck(R"(
+[sweep]
+mode = "zip"
+[sweep.values]
+"impactor.velocity" = [1.0, 2.0]
+"impactor.mass" = [0.5, 1.5]
+)"),
+                                   "deck.toml", {"impactor.mass=0.25,0.75"});
+  ASSERT_EQ(s.size(), 2U);
+  EXPECT_EQ(s.deck_for(s.case_at(1)).impactor->mass, 0.75);
+  EXPECT_EQ(s.deck_for(s.case_at(1)).impactor->velocity, 2.0);
+  const std::string e = error_of([] {
+    (void)Sweep::from_text(
+        plate_deck("[sweep]\nmode = \"zip\"\n[sweep.values]\n\"impactor.velocity\" = [1.0, "
+                   "2.0]\n\"impactor.mass\" = [0.5]\n"),
+        "deck.toml");
+  });
+  EXPECT_NE(
+      e.find("deck.toml:34:1: error: zip sweep: impactor.mass has 1 values but impactor.velocity has 2"),
+      std::string::npos)
+      << e;
+}
+
+TEST(SweepSpec, RangesGiveEquallySpacedValuesWithExactEnds) {
+  const auto v = parse_range("0.5:3.0:11", "x");
+  ASSERT_EQ(v.size(), 11U);
+  EXPECT_EQ(std::get<double>(v[0]), 0.5);
+  EXPECT_EQ(std::get<double>(v[1]), 0.75); // 0.5 + 2.5/10, exact in binary
+  EXPECT_EQ(std::get<double>(v[10]), 3.0);
+  const auto n = parse_range("6:18:4", "x"); // integers stay integers (mesh.nx)
+  ASSERT_EQ(n.size(), 4U);
+  EXPECT_EQ(std::get<long>(n[1]), 10);
+  EXPECT_EQ(std::get<long>(n[3]), 18);
+  for (const char* bad : {"0.5:3.0", "a:3.0:11", "0.5:3.0:1", "0.5:3.0:x", "0.5:3.0:11:2", "0.5::11"}) {
+    const std::string e = error_of([&] { (void)parse_range(bad, "--set 'k'"); });
+    EXPECT_NE(e.find("--set 'k': error: malformed range"), std::string::npos) << bad << ": " << e;
+  }
+}
+
+TEST(SweepSpec, RandomDrawsFollowTheDocumentedSequence) {
+  // std::mt19937_64 with seed 5489 (its default) first returns 14514284786278117030 (C++ standard);
+  // the uniform draw is that >> 11 times 2^-53.
+  const std::vector<RandomParameter> u{{"k", Distribution::uniform, 10.0, 12.0, ""}};
+  const auto d = random_draws(u, 1, 5489);
+  EXPECT_EQ(d[0], 10.0 + 2.0 * 0.7868209548678019);
+  // Box–Muller by hand from the first two numbers of seed 7.
+  std::mt19937_64 e(7);
+  const double u1 = 1.0 - static_cast<double>(e() >> 11U) * 0x1p-53,
+               u2 = static_cast<double>(e() >> 11U) * 0x1p-53;
+  const std::vector<RandomParameter> n{{"k", Distribution::normal, 100.0, 5.0, ""}};
+  EXPECT_EQ(random_draws(n, 1, 7)[0],
+            100.0 + 5.0 * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2));
+  // Moments of 40000 normal draws: mean within 4 standard errors, standard deviation within 2 %.
+  const auto many = random_draws(n, 40000, 11);
+  double mean = 0.0, var = 0.0;
+  for (const double x : many)
+    mean += x / 40000.0;
+  for (const double x : many)
+    var += (x - mean) * (x - mean) / 39999.0;
+  EXPECT_NEAR(mean, 100.0, 4.0 * 5.0 / 200.0);
+  EXPECT_NEAR(std::sqrt(var), 5.0, 0.1);
+}
+
+TEST(SweepSpec, MonteCarloCasesAreReproducibleAndShareDrawsAcrossGridPoints) {
+  const std::string text = plate_deck(R"(
+[sweep.values]
+"impactor.velocity" = [1.0, 2.0]
+[sweep.random]
+samples = 3
+seed = 42
+"materials.T300_976.E2" = { normal = [9.65e9, 0.3e9] }
+)");
+  const Sweep a = Sweep::from_text(text, "deck.toml");
+  const Sweep b = Sweep::from_text(text, "deck.toml");
+  ASSERT_EQ(a.size(), 6U);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_EQ(to_text(a.case_at(i).values[1]), to_text(b.case_at(i).values[1]));
+  EXPECT_EQ(to_text(a.case_at(1).values[1]), to_text(a.case_at(4).values[1])); // same sample, other velocity
+  const double e2 = std::get<double>(a.case_at(2).values[1]);
+  EXPECT_EQ(e2, random_draws(a.spec().random, 3, 42)[2]);
+  EXPECT_EQ(a.deck_for(a.case_at(5)).materials.front().E2, e2);
+  EXPECT_EQ(a.fingerprint(), b.fingerprint());
+  std::string other = text;
+  other.replace(other.find("seed = 42"), 9, "seed = 43");
+  EXPECT_NE(Sweep::from_text(other, "deck.toml").fingerprint(), a.fingerprint());
+  std::string commented = "# a comment changes nothing\n" + text;
+  EXPECT_EQ(Sweep::from_text(commented, "deck.toml").fingerprint(), a.fingerprint());
+}
+
+TEST(SweepSpec, BadSpecsAreRejectedWithTheirLocation) {
+  const auto deck_error = [](const std::string& sweep, const std::vector<std::string>& set = {}) {
+    return error_of([&] { (void)Sweep::from_text(plate_deck(sweep), "deck.toml", set); });
+  };
+  // plate_deck has 29 lines; the [sweep...] header is line 30, its first key line 31.
+  EXPECT_NE(
+      deck_error("[sweep.values]\n\"impactor.velocty\" = [1.0, 2.0]\n")
+          .find(
+              "deck.toml:31:1: error: sweep key 'impactor.velocty': unknown key 'velocty' in [impactor] (did "
+              "you mean 'velocity'?)"),
+      std::string::npos);
+  EXPECT_NE(deck_error("[sweep.values]\n\"impactor.velocity\" = []\n")
+                .find("deck.toml:31:1: error: sweep.values.impactor.velocity: empty list of values"),
+            std::string::npos);
+  EXPECT_NE(deck_error("[sweep.values]\n\"impactor.velocity\" = \"0.5:3.0\"\n")
+                .find("deck.toml:31:1: error: malformed range \"0.5:3.0\""),
+            std::string::npos);
+  EXPECT_NE(deck_error("[sweep.values]\n\"materials.T300.E2\" = [1e9]\n")
+                .find("the base deck has no table [materials.T300]"),
+            std::string::npos);
+  EXPECT_NE(
+      deck_error("[sweep]\nmodes = \"zip\"\n").find("deck.toml:31:1: error: unknown key 'modes' in [sweep]"),
+      std::string::npos);
+  EXPECT_NE(deck_error("").find("nothing to sweep"), std::string::npos);
+  EXPECT_NE(error_of([] {
+              (void)Sweep::from_text("analysis = \"modal\"\n" + plate_deck(""), "deck.toml",
+                                     {"plate.a=0.1,0.2"});
+            }).find("deck.toml: error: a sweep runs the impact or the threshold analysis, not modal"),
+            std::string::npos);
+  EXPECT_NE(
+      deck_error("", {"impactor.velocty=1,2"})
+          .find("--set 'impactor.velocty=1,2': error: sweep key 'impactor.velocty': unknown key 'velocty'"),
+      std::string::npos);
+  EXPECT_NE(deck_error("", {"impactor.velocity="}).find("--set 'impactor.velocity=': error: empty list"),
+            std::string::npos);
+  EXPECT_NE(deck_error("", {"impactor.velocity=1,,2"}).find("empty value"), std::string::npos);
+  EXPECT_NE(deck_error("", {"impactor.velocity=0.5:x:3"}).find("malformed range"), std::string::npos);
+  EXPECT_NE(deck_error("", {"velocity=1,2"}).find("is not a deck value"), std::string::npos);
+  EXPECT_NE(
+      deck_error("[sweep.random]\nsamples = 10\n\"plate.a\" = { normal = [0.1, -0.01] }\n")
+          .find("deck.toml:32:1: error: sweep.random.plate.a: the standard deviation must not be negative"),
+      std::string::npos);
+}
+
+TEST(SweepSpec, ABadCombinationFailsOnlyItsOwnCase) {
+  const Sweep s = Sweep::from_text(plate_deck(""), "deck.toml", {"impactor.velocity=1.0,-1.0"});
+  EXPECT_NO_THROW((void)s.deck_for(s.case_at(0)));
+  EXPECT_NE(error_of([&] { (void)s.deck_for(s.case_at(1)); }).find("impactor.velocity must be positive"),
+            std::string::npos);
+}
+
+TEST(SweepSpec, ImpactorOnlyCasesShareThePlateKey) {
+  const Sweep s = Sweep::from_text(
+      plate_deck(""), "deck.toml",
+      {"laminate.layup=[0/90]s,[0_2/90_4/0_2]", "impactor.velocity=1,2", "impactor.radius=0.005,0.01"});
+  EXPECT_EQ(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(3)));
+  EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(4)));
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("plyimpact-sweep-" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::vector<nlohmann::json> run_in_process(const Sweep& s, const fs::path& dir, int jobs, bool share,
+                                           int* factorizations) {
+  const SweepFolder folder(dir, s);
+  folder.check(false);
+  folder.write_manifest();
+  const auto pending = folder.pending();
+  std::atomic<std::size_t> next{0};
+  SweepOptions o;
+  o.share_factorization = share;
+  *factorizations = run_sweep_cases(
+      s, folder, pending, jobs,
+      [&]() -> std::optional<std::size_t> {
+        const std::size_t p = next++;
+        return p < pending.size() ? std::optional<std::size_t>(p) : std::nullopt;
+      },
+      o);
+  std::vector<nlohmann::json> records;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    records.push_back(folder.read_record(i).value());
+  EXPECT_EQ(folder.write_table().missing, 0U);
+  return records;
+}
+
+TEST(SweepRun, RigidTargetCasesMatchTheHertzClosedForm) {
+  // F_max = k^(2/5) (5 m v0²/4)^(3/5) for each (mass, velocity) of the sweep (Δt = 0.05 µs).
+  const Sweep s =
+      Sweep::from_text(rigid_deck(""), "deck.toml", {"impactor.mass=0.314,1.2", "impactor.velocity=1,2.92"});
+  int factorizations = 0;
+  const auto records = run_in_process(s, scratch("rigid"), 2, true, &factorizations);
+  ASSERT_EQ(records.size(), 4U);
+  for (const auto& r : records) {
+    const double m = std::stod(r["values"][0].get<std::string>()),
+                 v0 = std::stod(r["values"][1].get<std::string>());
+    const double F_max = std::pow(0.6e9, 0.4) * std::pow(1.25 * m * v0 * v0, 0.6);
+    EXPECT_EQ(r["status"], "ok");
+    std::printf("  m = %.3f kg, v0 = %.2f m/s: F_max %.4f N, closed form %.4f N\n", m, v0,
+                r["results"]["peak_force"].get<double>(), F_max);
+    EXPECT_NEAR(r["results"]["peak_force"].get<double>() / F_max, 1.0, 1e-6) << r.dump(); // measured 3e-8
+    EXPECT_NEAR(r["results"]["rebound_velocity"].get<double>() / v0, 1.0, 1e-3);
+  }
+}
+
+TEST(SweepRun, SharedFactorizationGivesTheStandAloneNumbersBitForBit) {
+  const Sweep s = Sweep::from_text(plate_deck(""), "deck.toml",
+                                   {"impactor.velocity=1,2,3", "impactor.radius=0.005,0.0127"});
+  int shared = 0, unshared = 0;
+  const auto a = run_in_process(s, scratch("shared"), 1, true, &shared);
+  const auto b = run_in_process(s, scratch("unshared"), 1, false, &unshared);
+  EXPECT_EQ(shared, 1);   // six impactors, one plate and time step: K̄ factored once
+  EXPECT_EQ(unshared, 6); // k "auto" differs with the radius: run(impactor, k) on the shared factor
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_EQ(a[i]["results"], b[i]["results"]) << i;
+  // Case 5 (v = 3, R = 12.7 mm) run alone as an ordinary deck.
+  const Deck deck = s.deck_for(s.case_at(5));
+  const ImpactSettings settings = impact_settings_from_deck(deck);
+  const PlateModel model = plate_from_deck(deck);
+  const ImpactResult alone = ImpactSolver(model, settings).run();
+  EXPECT_EQ(a[5]["results"]["peak_force"].get<double>(), alone.peak_force);
+  EXPECT_EQ(a[5]["results"]["absorbed_energy"].get<double>(), alone.absorbed_energy);
+  EXPECT_GT(alone.peak_force, 0.0);
+  std::printf("  case 5 alone: F_max %.17g N; in the sweep %.17g N\n", alone.peak_force,
+              a[5]["results"]["peak_force"].get<double>());
+}
+
+} // namespace
+} // namespace plyimpact
