@@ -292,6 +292,8 @@ int run_impact(const Options& o) {
   const ImpactResult r = nonlinear ? nonlinear->impact : ImpactSolver(model, settings).run(watch);
   bar.reset();
   fmt::print("{}", impact_summary_text(settings, r));
+  for (const std::string& w : r.warnings) // also in summary.json "warnings" (docs/robustness.md)
+    fmt::print(stderr, "plyimpact: warning: {}\n", w);
   const std::vector<DamageOnset> first = damage ? damage->first_onsets() : std::vector<DamageOnset>{};
   if (damage)
     fmt::print("first failures (per criterion, mode and ply/interface):\n{}", first_failures_text(first));

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -140,6 +141,51 @@ TEST(Cli, UnrestrainedStaticPlateIsAClearErrorNotNaN) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("insufficient restraint"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("nan"), std::string::npos);
+}
+
+TEST(Cli, GuardsWarnInTheSummaryAndRefuseWhatCannotBeComputed) {
+  // docs/robustness.md. The centre of the 6 x 4 mesh is an element corner, and Δt = 20 µs gives 25
+  // steps over the Hertz contact time (0.50 ms): two warnings, on stderr and in summary.json.
+  const fs::path dir = scratch("guards");
+  const std::string impact = R"([impactor]
+mass = 0.314
+radius = 6.35e-3
+E = 207e9
+velocity = 2.92
+[contact]
+k = 0.6e9
+[time]
+dt = 2e-5
+end = 1e-4
+)";
+  const fs::path deck = write(dir, small_deck("impact", impact));
+  const CommandResult ok = run("impact " + deck.string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  EXPECT_NE(ok.out.find("plyimpact: warning: time.dt = 2e-05 s gives only 25."), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("plyimpact: warning: the impact point (0.0635, 0.0381) m lies on an element corner"),
+            std::string::npos)
+      << ok.out;
+  const auto warnings = read_json(dir / "out" / "summary.json")["warnings"];
+  ASSERT_EQ(warnings.size(), 2U);
+  EXPECT_NE(warnings[0].get<std::string>().find("(t_c/50)"), std::string::npos);
+
+  // The memory limit (overridden by the environment) refuses the factorization with the estimate.
+  const std::string limited = "PLYIMPACT_MEMORY_LIMIT_BYTES=1000 " + std::string(PLYIMPACT_EXE) + " impact " +
+                              deck.string() + " > " + (dir / "mem.txt").string() + " 2>&1";
+  const int status = std::system(limited.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  std::ifstream mem_txt(dir / "mem.txt");
+  const std::string mem_out((std::istreambuf_iterator<char>(mem_txt)), std::istreambuf_iterator<char>());
+  EXPECT_NE(mem_out.find("MB but only 0.001 MB are available"), std::string::npos) << mem_out;
+
+  // An impact velocity of 1e300 m/s overflows the contact force in the first step: stopped, named.
+  std::string absurd = impact;
+  absurd.replace(absurd.find("velocity = 2.92"), 15, "velocity = 1e300");
+  const CommandResult nan = run("impact " + write(dir, small_deck("impact", absurd)).string());
+  EXPECT_EQ(nan.status, 1);
+  EXPECT_NE(nan.out.find("non-finite contact force Fc [N] at step 1 (t = 2e-05 s)"), std::string::npos)
+      << nan.out;
 }
 
 } // namespace

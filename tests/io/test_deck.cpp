@@ -167,6 +167,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadDeck{"AutoMisspelt", "end = \"auto\"", "end = \"atuo\"",
                 "time.end must be a positive number in s or \"auto\""},
         BadDeck{"AbsurdStepCount", "end = \"auto\"", "end = 1e6", "more than the limit of 100000000 steps"},
+        // Absurd sizes are refused up front (docs/robustness.md): 4e6 elements, 1e12 steps, 1e10 plies.
+        BadDeck{"AbsurdElementCount", "nx = 15\nny = 11", "nx = 2000\nny = 2000",
+                "deck.toml:16:1: error: mesh of 2000 x 2000 elements exceeds the limit of 1000000 elements"},
+        BadDeck{"AbsurdMaxSteps", "end = \"auto\"", "max_steps = 1000000000000",
+                "deck.toml:34:13: error: time.max_steps must lie between 1 and 100000000, got 1000000000000"},
+        BadDeck{"AbsurdPlyCount", "layup = \"[0_2/90_4/0_2]\"", "layup = \"[0_99999/90]_99999\"",
+                "column 14: expected a repeat count giving at most 100000 plies (100000 plies x 99999)"},
         BadDeck{"BadNewmarkGamma", "end = \"auto\"", "newmark_gamma = 0.4",
                 "time.newmark_gamma must be at least 0.5"},
         BadDeck{"BadAnalysis", "analysis = \"impact\"", "analysis = \"explode\"",

@@ -1,5 +1,6 @@
 #include "plyimpact/analysis/impact_analysis.hpp"
 
+#include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/newmark.hpp"
 #include "plyimpact/fem/quadrature.hpp"
@@ -22,6 +23,9 @@ double fundamental_period(const PlateModel& model) {
 }
 
 namespace {
+
+/// The whole plate state is checked for NaN/Inf every this many steps (the contact scalars every step).
+constexpr long full_state_check_every = 100;
 
 /// Rows/columns `keep` of a square sparse matrix.
 SparseMatrix restrict_to(const SparseMatrix& A, const std::vector<int>& keep,
@@ -140,6 +144,8 @@ ImpactSolver::ImpactSolver(const PlateModel& model, ImpactSettings settings)
   if (diagonal) p.m_diag = p.M.diagonal();
   const NewmarkCoefficients c(settings_.dt, settings_.newmark_beta, settings_.newmark_gamma);
   const SparseMatrix Kbar = p.K + c.c0 * p.M; // effective stiffness, factored once per run
+  if (settings_.memory_limit_bytes)
+    check_factor_memory(estimate_factor_memory(Kbar), *settings_.memory_limit_bytes);
   p.factor = SpdSolver(settings_.solver);
   p.factor.factorize(Kbar);
   if (!settings_.end) p.period = fundamental_period(model); // for the end-of-event rule
@@ -200,6 +206,9 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
   Eigen::VectorXd rhs(n), u_hat(n), u_new(n), a_new(n);
 
   ImpactResult r;
+  if (auto w = time_step_warning(imp.mass, imp.velocity, s.k, s.dt)) r.warnings.push_back(std::move(*w));
+  if (!rigid)
+    if (auto w = impact_point_warning(model_.mesh(), imp.x, imp.y)) r.warnings.push_back(std::move(*w));
   r.dofs = static_cast<int>(n);
   r.inplane_eliminated = !rigid && n < model_.size();
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
@@ -270,11 +279,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
     const double force_old = force, alpha_old = alpha;
     force = cs.force;
     alpha = cs.alpha;
-    if (!std::isfinite(force) || !std::isfinite(alpha))
-      throw std::runtime_error(
-          fmt::format("impact: non-finite contact force at step {} (t = {:.6g} s): Fc = {}, "
-                      "alpha = {}",
-                      step, t, force, alpha));
+    check_finite_step(step, t, {{"contact force Fc [N]", force}, {"indentation alpha [m]", alpha}});
     law.commit(alpha);
     contact_work += 0.5 * (force + force_old) * (alpha - alpha_old);
     impactor.advance(force);
@@ -287,6 +292,15 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
       u.swap(u_new);
       a.swap(a_new);
       ws = sw.dot(u);
+    }
+    check_finite_step(step, t,
+                      {{"impactor displacement [m]", impactor.displacement()},
+                       {"impactor velocity [m/s]", impactor.velocity()},
+                       {"contact-point deflection ws [m]", ws}});
+    if (!rigid && step % full_state_check_every == 0) {
+      check_finite_vector(step, t, "plate displacement u", u);
+      check_finite_vector(step, t, "plate velocity", v);
+      check_finite_vector(step, t, "plate acceleration", a);
     }
 
     // 4. Bookkeeping: episodes, peaks, snapshots, end of event.

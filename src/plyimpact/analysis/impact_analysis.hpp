@@ -30,6 +30,7 @@ struct ImpactSettings {
   SparseSolverKind solver = SparseSolverKind::simplicial_ldlt; ///< factorization of K̄ (bench/README.md)
   std::vector<double> field_times;                             ///< displacement snapshots at these times [s]
   int history_every = 1; ///< keep every k-th step in the history (always the first and last)
+  std::optional<double> memory_limit_bytes;          ///< refuse a factor of K̄ estimated above this
   const std::atomic<bool>* cancel = nullptr;         ///< stop after the current step when set
   std::function<void(double t, long step)> progress; ///< called about every 1000 steps
 };
@@ -75,8 +76,9 @@ struct ImpactResult {
   int newton_iterations_max = 0;
   bool complete = false;
   std::string stop_reason;
-  double wall_time = 0.0; ///< [s]
-  int dofs = 0;           ///< equations in the time loop
+  std::vector<std::string> warnings; ///< coarse Δt, impact point on an element boundary (guards.hpp)
+  double wall_time = 0.0;            ///< [s]
+  int dofs = 0;                      ///< equations in the time loop
   bool inplane_eliminated = false;
 };
 

@@ -1,6 +1,7 @@
 #include "plyimpact/io/impact_report.hpp"
 
 #include "plyimpact/io/laminate_report.hpp"
+#include "plyimpact/io/system_memory.hpp"
 
 #include <fmt/format.h>
 
@@ -28,6 +29,7 @@ ImpactSettings impact_settings_from_deck(const Deck& deck) {
   s.rigid_target = deck.plate && deck.plate->rigid;
   s.field_times = deck.field_times;
   s.history_every = deck.history_every;
+  s.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
   return s;
 }
 
@@ -52,6 +54,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["end_time"] = r.history.empty() ? 0.0 : r.history.back().t;
   j["complete"] = r.complete;
   if (!r.stop_reason.empty()) j["stop_reason"] = r.stop_reason;
+  j["warnings"] = r.warnings; // guards: coarse Δt, impact point on an element boundary
   j["wall_time"] = r.wall_time;
   j["contact_stiffness"] = s.k;
   j["impactor_mass"] = s.impactor.mass;

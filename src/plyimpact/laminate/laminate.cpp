@@ -1,19 +1,50 @@
 #include "plyimpact/laminate/laminate.hpp"
 
 #include <Eigen/LU>
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace plyimpact {
+
+namespace {
+
+/// The ply's compliance must be positive definite (thesis (1.3)): positive moduli and
+/// 1 − ν12 ν21 > 0, i.e. ν12² < E1/E2. Otherwise Q and hence A, D, K are indefinite.
+void check_positive_definite(const Material& m, std::size_t ply) {
+  for (const auto& [name, value] : {std::pair{"E1", m.E1}, std::pair{"E2", m.E2}, std::pair{"G12", m.G12},
+                                    std::pair{"G13", m.G13}, std::pair{"G23", m.G23}})
+    if (!(value > 0.0 && std::isfinite(value)))
+      throw std::invalid_argument(fmt::format("material '{}' of ply {}: {} = {} Pa; the moduli must be "
+                                              "positive and finite for a positive-definite ply stiffness",
+                                              m.name, ply + 1, name, value));
+  const double nu21 = m.nu21();
+  if (!(1.0 - m.nu12 * nu21 > 0.0))
+    throw std::invalid_argument(fmt::format(
+        "material '{}' of ply {} is not positive definite: 1 - nu12*nu21 = {:.4g} <= 0 (nu12 = {}, nu21 = "
+        "nu12*E2/E1 = {:.4g}); nu12 must satisfy |nu12| < sqrt(E1/E2) = {:.4g}: lower nu12 or check E1 and "
+        "E2",
+        m.name, ply + 1, 1.0 - m.nu12 * nu21, m.nu12, nu21, std::sqrt(m.E1 / m.E2)));
+}
+
+} // namespace
 
 Laminate::Laminate(std::vector<Material> materials, std::vector<Ply> plies, double shear_correction,
                    ReducedStiffnessModel model)
     : materials_(std::move(materials)), plies_(std::move(plies)), shear_correction_(shear_correction),
       model_(model) {
   if (plies_.empty()) throw std::invalid_argument("a laminate needs at least one ply");
-  for (const Ply& p : plies_) {
+  for (std::size_t k = 0; k < plies_.size(); ++k) {
+    const Ply& p = plies_[k];
     if (p.material >= materials_.size()) throw std::invalid_argument("ply refers to an unknown material");
-    if (!(p.thickness > 0.0)) throw std::invalid_argument("ply thickness must be positive");
+    if (!(p.thickness > 0.0 && std::isfinite(p.thickness)))
+      throw std::invalid_argument(fmt::format("ply {} has thickness {} m: a zero or negative thickness makes "
+                                              "the stiffness singular; give every ply a positive thickness "
+                                              "(laminate.ply_thickness, [[laminate.override]] thickness)",
+                                              k + 1, p.thickness));
+    check_positive_definite(materials_[p.material], k);
     thickness_ += p.thickness;
   }
   z_.reserve(plies_.size() + 1);

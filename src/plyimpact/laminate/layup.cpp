@@ -13,6 +13,7 @@ LayupError::LayupError(const std::string& message, std::size_t column)
 namespace {
 
 constexpr std::size_t max_plies = 100000; // a laminate with more plies than this is a typo
+constexpr int max_group_depth = 16;       // nested '(' groups; deeper is a typo, and bounds the recursion
 
 /// Recursive-descent parser over UTF-8 bytes that reports positions in characters.
 class LayupParser {
@@ -27,6 +28,7 @@ public:
     skip_space();
     accept('_');
     int count = 1;
+    const std::size_t count_byte = pos_;
     if (peek_digit()) count = parse_count();
     bool symmetric = false;
     skip_space();
@@ -36,6 +38,7 @@ public:
 
     if (seq.middle_marked && !symmetric)
       fail_at(seq.middle_column, "'*' marks the unrepeated middle ply of a symmetric layup ('...]s') only");
+    check_repeat(seq.angles.size(), count, count_byte);
     std::vector<double> plies;
     for (int i = 0; i < count; ++i)
       plies.insert(plies.end(), seq.angles.begin(), seq.angles.end());
@@ -64,7 +67,10 @@ private:
       skip_space();
       std::vector<double> item;
       if (accept('(')) {
+        if (++depth_ > max_group_depth)
+          fail_at(column_of(pos_ - 1), "at most " + std::to_string(max_group_depth) + " nested '(' groups");
         Sequence inner = parse_sequence();
+        --depth_;
         if (inner.middle_marked)
           fail_at(inner.middle_column, "'*' only on the last ply of the outer sequence");
         expect(')', "'/' or ')' closing the group");
@@ -76,7 +82,9 @@ private:
       if (accept('_')) {
         skip_space();
         if (!peek_digit()) fail("a repeat count after '_'");
+        const std::size_t count_byte = pos_;
         const int n = parse_count();
+        check_repeat(item.size(), n, count_byte);
         std::vector<double> repeated;
         for (int i = 0; i < n; ++i)
           repeated.insert(repeated.end(), item.begin(), item.end());
@@ -149,6 +157,13 @@ private:
 
   void check_size(std::size_t n) const {
     if (n > max_plies) fail("a laminate of at most 100000 plies");
+  }
+
+  /// Refuses `plies` × `count` above max_plies before anything is allocated (count at `count_byte`).
+  void check_repeat(std::size_t plies, int count, std::size_t count_byte) const {
+    if (plies > max_plies / static_cast<std::size_t>(count))
+      fail_at(column_of(count_byte), "a repeat count giving at most 100000 plies (" + std::to_string(plies) +
+                                         " plies x " + std::to_string(count) + ")");
   }
 
   bool peek_digit() const {
@@ -225,6 +240,7 @@ private:
 
   std::string_view text_;
   std::size_t pos_ = 0;
+  int depth_ = 0; ///< current '(' nesting
 };
 
 } // namespace

@@ -1,0 +1,70 @@
+#pragma once
+// Numerical guards of an impact run (docs/robustness.md): non-finite states stop the run with the
+// step, time and quantity named; a time step too coarse for the contact and an impact point on an
+// element boundary give warnings; the factor of K̄ is estimated before it is computed and refused
+// when it would not fit in the available memory.
+#include "plyimpact/fem/mesh.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace plyimpact {
+
+/// A NaN or infinity appeared in a time step. what() names the step, the time and the quantity.
+class NonFiniteState : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The factorization would need more memory than is available. what() gives the estimate.
+class InsufficientMemory : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// One scalar of the step state, named with its symbol and unit for the message.
+struct StepQuantity {
+  std::string_view name;
+  double value;
+};
+
+/// Throws NonFiniteState naming the first non-finite quantity (in the order given).
+void check_finite_step(long step, double t, std::initializer_list<StepQuantity> quantities);
+/// Throws NonFiniteState naming `name` and the first non-finite entry (equation index) of `v`.
+void check_finite_vector(long step, double t, std::string_view name, const Eigen::VectorXd& v);
+
+/// Hertz contact time of a sphere of mass m striking a rigid half-space at v0 with F = k α^1.5:
+/// t_c = 2 (α_m/v0) ∫₀¹ dx/√(1 − x^{5/2}) = 0.8 B(2/5, 1/2) α_m/v0, α_m = (5 m v0²/(4k))^{2/5}
+/// (SPEC §4 loading law; the plate's compliance only lengthens the contact) [s].
+[[nodiscard]] double hertz_contact_time(double mass, double velocity, double k);
+
+/// Fewest time steps over the Hertz contact time that resolve the force pulse.
+constexpr double min_steps_per_contact = 50.0;
+
+/// A warning with the suggested Δt when Δt > t_c / 50 (t_c = hertz_contact_time).
+[[nodiscard]] std::optional<std::string> time_step_warning(double mass, double velocity, double k, double dt);
+
+/// A warning when the impact point lies on an element edge or node (|ξ| or |η| = 1): the contact
+/// force and ws then sit on an element boundary, where the mesh cannot place the point inside an
+/// element's interior.
+[[nodiscard]] std::optional<std::string> impact_point_warning(const PlateMesh& mesh, double x, double y);
+
+/// Memory of a sparse LDLᵀ factorization of A, from its symbolic analysis (AMD ordering).
+struct FactorMemoryEstimate {
+  long equations = 0;
+  long matrix_nonzeros = 0; ///< of A (both triangles)
+  long factor_nonzeros = 0; ///< of L (strictly lower), from the elimination tree
+  double bytes = 0.0;       ///< 12 bytes (value + row index) per non-zero of L, D, A and K, M copies
+};
+
+[[nodiscard]] FactorMemoryEstimate estimate_factor_memory(const SparseMatrix& A);
+
+/// Throws InsufficientMemory with the estimate when estimate.bytes > available_bytes.
+void check_factor_memory(const FactorMemoryEstimate& estimate, double available_bytes);
+
+} // namespace plyimpact

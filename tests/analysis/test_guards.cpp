@@ -1,0 +1,245 @@
+// Numerical guards (docs/robustness.md): every guard provoked once, in one table, with the message it
+// must give; plus independent checks of the numbers the guards rely on.
+#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/static_analysis.hpp"
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/system_memory.hpp"
+#include "support/decks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+/// The thesis §3.6 plate (Table 3.1), 127 x 76.2 mm, simply supported, on an nx x ny mesh.
+PlateModel thesis_plate(int nx, int ny, const BoundaryConditions& bc = test::all_edges("ss")) {
+  return {test::laminate_of(test::thesis_3_6(), "[45/90/-45/0]3s", 0.19375e-3), PlateGeometry{0.127, 0.0762},
+          MeshSpec{nx, ny}, bc};
+}
+
+ImpactSettings steel_sphere(double velocity) {
+  ImpactSettings s;
+  s.impactor.mass = 6.14;
+  s.impactor.radius = 12.7e-3;
+  s.impactor.velocity = velocity;
+  s.impactor.x = 0.127 / 2;
+  s.impactor.y = 0.0762 / 2;
+  s.k = 0.6e9;
+  s.dt = 1e-6;
+  s.end = 20e-6;
+  return s;
+}
+
+/// What a guard says: the message of the exception thrown, else the warnings given, else nothing.
+using Provoke = std::function<std::vector<std::string>()>;
+
+std::vector<std::string> thrown_by(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return {e.what()};
+  }
+  return {};
+}
+
+std::vector<std::string> warning_of(const std::optional<std::string>& w) {
+  return w ? std::vector<std::string>{*w} : std::vector<std::string>{};
+}
+
+Laminate two_plies(const Material& m, double t2) {
+  return Laminate({m}, {{0.0, 0.125e-3, 0}, {90.0, t2, 0}});
+}
+
+struct GuardCase {
+  const char* name;
+  Provoke provoke;
+  std::vector<std::string> expected; ///< parts of the one message; empty: the guard must stay silent
+};
+
+// The Hertz contact time of the 6.14 kg, 2.68 m/s, k = 0.6e9 case, by hand: α_m = (5 m v²/4k)^0.4 =
+// 1.5321e-3 m, t_c = 2.9433 α_m / v = 1.6826e-3 s; t_c/50 = 33.65 µs. The constant
+// 2∫₀¹ dx/√(1 − x^2.5) = 2.94328 by midpoint quadrature (x = 1 − u², 2e6 points).
+const std::vector<GuardCase>& guard_cases() {
+  static const std::vector<GuardCase> cases{
+      {"insufficient restraint: free plate in a static solve",
+       [] {
+         BoundaryConditions free;
+         const PlateModel m = thesis_plate(3, 3, free);
+         StaticLoad load;
+         load.pressure = 1e3;
+         return thrown_by([&] { (void)solve_static(m, load); });
+       },
+       {"insufficient restraint", "rigid body", "Restrain it"}},
+      {"zero ply thickness",
+       [] { return thrown_by([] { (void)two_plies(test::t300_976(), 0.0); }); },
+       {"ply 2 has thickness 0 m", "give every ply a positive thickness"}},
+      {"negative ply thickness",
+       [] { return thrown_by([] { (void)two_plies(test::t300_976(), -1e-4); }); },
+       {"ply 2 has thickness -0.0001 m"}},
+      {"non-positive-definite ply: nu12^2 > E1/E2",
+       [] {
+         Material m = test::isotropic(70e9, 0.3, 2700);
+         m.E1 = 4 * m.E2; // sqrt(E1/E2) = 2
+         m.nu12 = 2.5;    // 1 - nu12^2 E2/E1 = 1 - 6.25/4 = -0.5625
+         return thrown_by([&] { (void)two_plies(m, 0.125e-3); });
+       },
+       {"not positive definite", "1 - nu12*nu21 = -0.5625", "sqrt(E1/E2) = 2", "lower nu12"}},
+      {"non-positive-definite ply in a deck: located",
+       [] {
+         return thrown_by([] {
+           (void)parse_deck("[materials.m]\nE1 = 40e9\nE2 = 10e9\nG12 = 5e9\nnu12 = 2.5\nrho = 1500\n",
+                            "deck.toml");
+         });
+       },
+       {"deck.toml:5:8: error: material 'm' is not physical", "1 - nu12*nu21 = -0.5625"}},
+      {"zero shear modulus",
+       [] {
+         Material m = test::t300_976();
+         m.G23 = 0.0;
+         return thrown_by([&] { (void)two_plies(m, 0.125e-3); });
+       },
+       {"material 'T300_976' of ply 1: G23 = 0 Pa"}},
+      {"non-finite contact force in an impact step",
+       [] {
+         const PlateModel m = thesis_plate(5, 5);
+         // 1e300 m/s: the first predicted indentation is 1e294 m and k α^1.5 overflows.
+         return thrown_by([&] { (void)ImpactSolver(m, steel_sphere(1e300)).run(); });
+       },
+       {"non-finite contact force Fc [N] at step 1 (t = 1e-06 s): contact force Fc [N] = inf"}},
+      {"non-finite impactor velocity named with step and time",
+       [] {
+         return thrown_by([] {
+           check_finite_step(
+               42, 4.2e-5,
+               {{"contact force Fc [N]", 1.0}, {"impactor velocity [m/s]", nan}, {"ws [m]", inf}});
+         });
+       },
+       {"non-finite impactor velocity [m/s] at step 42 (t = 4.2e-05 s)"}},
+      {"NaN in the full plate state vector",
+       [] {
+         Eigen::VectorXd u = Eigen::VectorXd::Ones(10);
+         u(7) = nan;
+         return thrown_by([&] { check_finite_vector(300, 3e-4, "plate displacement u", u); });
+       },
+       {"non-finite plate displacement u at step 300 (t = 0.0003 s): entry 7 of 10 is nan"}},
+      {"coarse time step: t_c/10",
+       [] { return warning_of(time_step_warning(6.14, 2.68, 0.6e9, 1.6826e-3 / 10)); },
+       {"gives only 10.0 steps", "t_c = 0.001683 s", "use time.dt <= 3.365e-05 s (t_c/50)"}},
+      {"time step just fine: t_c/51",
+       [] { return warning_of(time_step_warning(6.14, 2.68, 0.6e9, 1.6826e-3 / 51)); },
+       {}},
+      {"impact point on an element corner: centre of an even 4 x 4 mesh",
+       [] {
+         return warning_of(impact_point_warning(PlateMesh({0.1, 0.1}, 4, 4), 0.05, 0.05));
+       },
+       {"(0.05, 0.05) m lies on an element corner of the 4 x 4 mesh", "Change mesh.nx/mesh.ny"}},
+      {"impact point on an element edge",
+       [] {
+         return warning_of(impact_point_warning(PlateMesh({0.1, 0.1}, 4, 4), 0.05, 0.03));
+       },
+       {"lies on an element edge of the 4 x 4 mesh"}},
+      {"impact point inside an element: centre of an odd 5 x 5 mesh",
+       [] {
+         return warning_of(impact_point_warning(PlateMesh({0.1, 0.1}, 5, 5), 0.05, 0.05));
+       },
+       {}},
+      {"impact warnings reach the result",
+       [] {
+         const PlateModel m = thesis_plate(4, 4);
+         ImpactSettings s = steel_sphere(2.68);
+         s.dt = 1e-4; // 16.8 steps over t_c
+         s.end = 2e-4;
+         return ImpactSolver(m, s).run().warnings;
+       },
+       {"time.dt = 0.0001 s gives only 16.8 steps", "lies on an element corner of the 4 x 4 mesh"}},
+      {"factorization larger than the available memory",
+       [] {
+         const PlateModel m = thesis_plate(15, 11);
+         ImpactSettings s = steel_sphere(2.68);
+         s.memory_limit_bytes = 1e5;
+         return thrown_by([&] { const ImpactSolver solver(m, s); });
+       },
+       {"the factorization of K̄ (1927 equations", "MB but only 0.1 MB are available", "coarser mesh"}},
+      {"factorization within the available memory",
+       [] {
+         const PlateModel m = thesis_plate(15, 11);
+         ImpactSettings s = steel_sphere(2.68);
+         s.memory_limit_bytes = 1e9;
+         return thrown_by([&] { const ImpactSolver solver(m, s); });
+       },
+       {}},
+  };
+  return cases;
+}
+
+TEST(Guards, EveryGuardGivesItsMessageAndOnlyWhenDue) {
+  for (const GuardCase& c : guard_cases()) {
+    SCOPED_TRACE(c.name);
+    const std::vector<std::string> said = c.provoke();
+    if (c.expected.empty()) {
+      EXPECT_TRUE(said.empty()) << said.front();
+      continue;
+    }
+    std::string all;
+    for (const auto& s : said)
+      all += s + "\n";
+    for (const std::string& part : c.expected)
+      EXPECT_NE(all.find(part), std::string::npos) << "missing \"" << part << "\" in:\n" << all;
+  }
+}
+
+TEST(Guards, HertzContactTimeMatchesTheRigidTargetIntegration) {
+  // t_c of the guard (closed form, SPEC §4 loading law) against the contact duration the Newmark
+  // integration of the impactor on a rigid target finds with Δt = t_c/20000 and an elastic law.
+  const double t_c = hertz_contact_time(6.14, 2.68, 0.6e9);
+  EXPECT_NEAR(t_c, 1.6826e-3, 0.0001e-3); // by hand, see guard_cases()
+  const PlateModel m = thesis_plate(1, 1);
+  ImpactSettings s = steel_sphere(2.68);
+  s.rigid_target = true;
+  s.contact.unloading = UnloadingLaw::elastic;
+  s.dt = t_c / 20000;
+  s.end = 1.2 * t_c;
+  const ImpactResult r = ImpactSolver(m, s).run();
+  std::printf("  Hertz contact time %.6e s, rigid-target integration %.6e s\n", t_c, r.contact_duration);
+  EXPECT_NEAR(r.contact_duration, t_c, 2 * s.dt);
+}
+
+TEST(Guards, FactorMemoryEstimateLiesBetweenTheMatrixAndTheDenseTriangle) {
+  // L has at least the pattern of A's strict lower triangle and at most n(n-1)/2 entries.
+  const PlateModel m = thesis_plate(8, 6);
+  const SparseMatrix K = m.stiffness();
+  const FactorMemoryEstimate e = estimate_factor_memory(K);
+  const long n = K.rows();
+  const long lower = (K.nonZeros() - n) / 2;
+  std::printf("  %ld equations, nnz(A) = %ld, nnz(L) = %ld (fill %.2f), %.3g MB\n", n, e.matrix_nonzeros,
+              e.factor_nonzeros, static_cast<double>(e.factor_nonzeros) / static_cast<double>(lower),
+              e.bytes / 1e6);
+  EXPECT_EQ(e.equations, n);
+  EXPECT_GE(e.factor_nonzeros, lower);
+  EXPECT_LE(e.factor_nonzeros, n * (n - 1) / 2);
+  // Equal to the factor that is actually computed.
+  SpdSolver solver;
+  solver.factorize(K);
+  EXPECT_EQ(e.factor_nonzeros, solver.factor_nonzeros());
+  EXPECT_DOUBLE_EQ(e.bytes, 12.0 * static_cast<double>(e.factor_nonzeros + n + 3 * e.matrix_nonzeros));
+}
+
+TEST(Guards, MemAvailableIsReadInBytes) {
+  EXPECT_EQ(mem_available_from_meminfo("MemTotal:  16000 kB\nMemFree:  100 kB\nMemAvailable:    2048 kB\n"),
+            2048.0 * 1024.0);
+  EXPECT_FALSE(mem_available_from_meminfo("MemTotal: 16000 kB\n").has_value());
+}
+
+} // namespace
+} // namespace plyimpact
