@@ -1,36 +1,17 @@
 // The command line for large deflections (SPEC §8): `static --nonlinear` and the deck key
 // `nonlinear = true` write `load_deflection`; bad values of the new keys point at the deck line.
+#include "support/cli.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
-namespace fs = std::filesystem;
-
-struct CommandResult {
-  int status = -1;
-  std::string out;
-};
-
-CommandResult run(const std::string& args) {
-  const std::string cmd = std::string(PLYIMPACT_EXE) + " " + args + " 2>&1";
-  CommandResult r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe) != nullptr)
-    r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using namespace plyimpact::test;
 
 fs::path write_deck(const std::string& name, const std::string& top) {
   const fs::path dir = fs::temp_directory_path() / ("plyimpact-cli-nl-" + name);
@@ -65,11 +46,6 @@ pressure = 2.0e5
   return dir;
 }
 
-nlohmann::json summary(const fs::path& dir) {
-  std::ifstream in(dir / "out" / "summary.json");
-  return nlohmann::json::parse(in);
-}
-
 TEST(CliNonlinear, StaticFlagWritesTheLoadDeflectionCurve) {
   const fs::path dir = write_deck("flag", "load_steps = 4");
   const CommandResult lin = run("static " + (dir / "deck.toml").string() + " -o " + (dir / "lin").string());
@@ -77,9 +53,8 @@ TEST(CliNonlinear, StaticFlagWritesTheLoadDeflectionCurve) {
   const CommandResult nl =
       run("static --nonlinear " + (dir / "deck.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(nl.status, 0) << nl.out;
-  const nlohmann::json j = summary(dir);
-  std::ifstream lin_in(dir / "lin" / "summary.json");
-  const nlohmann::json jl = nlohmann::json::parse(lin_in);
+  const nlohmann::json j = read_json(dir / "out" / "summary.json");
+  const nlohmann::json jl = read_json(dir / "lin" / "summary.json");
   ASSERT_TRUE(j.contains("load_deflection"));
   const auto& curve = j["load_deflection"];
   ASSERT_EQ(curve.size(), 5U); // [0, 0] and four load steps
@@ -96,7 +71,7 @@ TEST(CliNonlinear, DeckKeySwitchesTheAnalysis) {
   const fs::path dir = write_deck("key", "nonlinear = true\nstrain_measure = \"green-lagrange\"");
   const CommandResult r = run((dir / "deck.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 0) << r.out;
-  const nlohmann::json j = summary(dir);
+  const nlohmann::json j = read_json(dir / "out" / "summary.json");
   EXPECT_EQ(j["strain_measure"], "green-lagrange");
   EXPECT_EQ(j["load_deflection"].size(), 11U); // default 10 load steps
 }

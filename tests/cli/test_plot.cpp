@@ -77,13 +77,6 @@ bool svg_parses(const fs::path& file) {
   return parser->Parse() == 1 && std::string(parser->GetRootElement()->GetName()) == "svg";
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 TEST(CliPlot, EveryPlotIsANonBlankPngOfTheStatedSizeAndAParsableSvg) {
   const fs::path dir = scratch("plot");
   const CommandResult r =

@@ -1,6 +1,8 @@
 // `plyimpact sweep`: the same table, byte for byte, with 1 or 2 threads and with 2 MPI ranks; a sweep
 // killed part-way and resumed ends with the uninterrupted table; bad specs stop before any case runs;
 // a failing case is recorded and the others run.
+#include "support/cli.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -20,41 +22,10 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-
-struct CommandResult {
-  int status = -1;
-  std::string out;
-};
-
-CommandResult shell(const std::string& cmd) {
-  CommandResult r;
-  FILE* pipe = ::popen((cmd + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe) != nullptr)
-    r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using namespace plyimpact::test;
 
 CommandResult sweep(const std::string& args) {
   return shell("timeout 300 " + std::string(PLYIMPACT_EXE) + " sweep " + args);
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("plyimpact-sweep-cli-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 /// A 6 x 4 simply supported [0_2/90_4/0_2] plate, 12 cases: 2 layups x 2 velocities x 3 masses.
@@ -104,7 +75,7 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 TEST(SweepCli, OneThreadTwoThreadsAndTwoMpiRanksGiveTheSameTableByteForByte) {
-  const fs::path dir = scratch("same");
+  const fs::path dir = scratch("sweep-same");
   const fs::path deck = twelve_case_deck(dir);
   const CommandResult one = sweep(deck.string() + " -o " + (dir / "j1").string() + " --jobs 1");
   ASSERT_EQ(one.status, 0) << one.out;
@@ -118,7 +89,7 @@ TEST(SweepCli, OneThreadTwoThreadsAndTwoMpiRanksGiveTheSameTableByteForByte) {
   ASSERT_EQ(mpi.status, 0) << mpi.out;
   EXPECT_NE(mpi.out.find("on 2 ranks x 1 thread"), std::string::npos) << mpi.out;
 
-  const std::string table = read(dir / "j1" / "sweep.csv");
+  const std::string table = read_text(dir / "j1" / "sweep.csv");
   const auto rows = lines(table);
   ASSERT_EQ(rows.size(), 13U) << table;
   EXPECT_TRUE(rows[0].starts_with("case,laminate.layup,impactor.velocity,impactor.mass,status,peak_force_N,"
@@ -126,8 +97,8 @@ TEST(SweepCli, OneThreadTwoThreadsAndTwoMpiRanksGiveTheSameTableByteForByte) {
       << rows[0];
   EXPECT_TRUE(rows[2].starts_with("1,[0_2/90_4/0_2],1.5,0.4,ok,")) << rows[2]; // the last key fastest
   EXPECT_TRUE(rows[12].starts_with("11,[0/90]2s,2.92,0.6,ok,")) << rows[12];
-  EXPECT_EQ(read(dir / "j2" / "sweep.csv"), table);
-  EXPECT_EQ(read(dir / "mpi" / "sweep.csv"), table);
+  EXPECT_EQ(read_text(dir / "j2" / "sweep.csv"), table);
+  EXPECT_EQ(read_text(dir / "mpi" / "sweep.csv"), table);
   for (const auto* r : {&one, &two, &mpi})
     for (const auto& l : lines(r->out))
       if (l.find("cases run in") != std::string::npos) std::printf("  %s\n", l.c_str());
@@ -142,7 +113,7 @@ std::size_t records_in(const fs::path& dir) {
 }
 
 TEST(SweepCli, KilledPartWayAndResumedEndsWithTheUninterruptedTable) {
-  const fs::path dir = scratch("resume");
+  const fs::path dir = scratch("sweep-resume");
   const fs::path deck = twelve_case_deck(dir, "nx = 12\nny = 8\n");
   const CommandResult whole = sweep(deck.string() + " -o " + (dir / "whole").string() + " --jobs 1");
   ASSERT_EQ(whole.status, 0) << whole.out;
@@ -179,8 +150,8 @@ TEST(SweepCli, KilledPartWayAndResumedEndsWithTheUninterruptedTable) {
   EXPECT_NE(resumed.out.find("sweep: 12 cases (" + std::to_string(12 - survived) + " to run)"),
             std::string::npos)
       << resumed.out;
-  const std::string table = read(out / "sweep.csv");
-  EXPECT_EQ(table, read(dir / "whole" / "sweep.csv"));
+  const std::string table = read_text(out / "sweep.csv");
+  EXPECT_EQ(table, read_text(dir / "whole" / "sweep.csv"));
   std::set<std::string> ids;
   for (const auto& row : lines(table))
     ids.insert(row.substr(0, row.find(',')));
@@ -189,7 +160,7 @@ TEST(SweepCli, KilledPartWayAndResumedEndsWithTheUninterruptedTable) {
 }
 
 TEST(SweepCli, ResumeIsRefusedWhenTheSweepChanged) {
-  const fs::path dir = scratch("changed");
+  const fs::path dir = scratch("sweep-changed");
   const fs::path deck = twelve_case_deck(dir);
   ASSERT_EQ(sweep(deck.string() + " -o " + (dir / "out").string() + " --set impactor.mass=0.3").status, 0);
   const CommandResult r =
@@ -199,7 +170,7 @@ TEST(SweepCli, ResumeIsRefusedWhenTheSweepChanged) {
 }
 
 TEST(SweepCli, BadSpecsStopBeforeAnyCaseRuns) {
-  const fs::path dir = scratch("bad");
+  const fs::path dir = scratch("sweep-bad");
   const fs::path deck = twelve_case_deck(dir);
   struct Bad {
     std::string option, message;
@@ -224,13 +195,13 @@ TEST(SweepCli, BadSpecsStopBeforeAnyCaseRuns) {
 }
 
 TEST(SweepCli, AFailingCaseIsRecordedAndTheOthersRun) {
-  const fs::path dir = scratch("failing");
+  const fs::path dir = scratch("sweep-failing");
   const fs::path deck = twelve_case_deck(dir);
   const CommandResult r = sweep(deck.string() + " -o " + (dir / "out").string() +
                                 " --set impactor.velocity=1.5,-1.0,2.92 --set impactor.mass=0.3");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("2 of 6 cases did not complete"), std::string::npos) << r.out;
-  const auto rows = lines(read(dir / "out" / "sweep.csv"));
+  const auto rows = lines(read_text(dir / "out" / "sweep.csv"));
   ASSERT_EQ(rows.size(), 7U);
   int failed = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
@@ -264,7 +235,7 @@ std::string field(const std::string& table, std::size_t row, const std::string& 
 }
 
 TEST(SweepCli, ThresholdSweepGivesTheThresholdCommandsVelocityBitForBit) {
-  const fs::path dir = scratch("threshold");
+  const fs::path dir = scratch("sweep-threshold");
   const std::string examples = std::string(PLYIMPACT_SOURCE_DIR) + "/examples/";
   const CommandResult alone = shell("timeout 300 " + std::string(PLYIMPACT_EXE) + " threshold " + examples +
                                     "thesis-4.3-threshold-0_3-90_4-0_3.toml -o " + (dir / "alone").string());
@@ -273,8 +244,8 @@ TEST(SweepCli, ThresholdSweepGivesTheThresholdCommandsVelocityBitForBit) {
                                 " --set laminate.layup=[0_2/90_2/0_2],[0_3/90_4/0_3]");
   ASSERT_EQ(s.status, 0) << s.out;
   const double v_alone =
-      nlohmann::json::parse(read(dir / "alone" / "summary.json"))["threshold_velocity"].get<double>();
-  const std::string table = read(dir / "sweep" / "sweep.csv");
+      nlohmann::json::parse(read_text(dir / "alone" / "summary.json"))["threshold_velocity"].get<double>();
+  const std::string table = read_text(dir / "sweep" / "sweep.csv");
   EXPECT_EQ(std::stod(field(table, 2, "threshold_velocity_m_per_s")), v_alone);
   EXPECT_EQ(field(table, 2, "first_failure_ply"), "10"); // docs/validation.md §13, Table 4.4
   EXPECT_EQ(field(table, 1, "first_failure_ply"), "6");
@@ -285,12 +256,12 @@ TEST(SweepCli, ThresholdSweepGivesTheThresholdCommandsVelocityBitForBit) {
 }
 
 TEST(SweepCli, CaseFoldersHoldEachCasesOwnResults) {
-  const fs::path dir = scratch("folders");
+  const fs::path dir = scratch("sweep-folders");
   const fs::path deck = twelve_case_deck(dir);
   const CommandResult r = sweep(deck.string() + " -o " + (dir / "out").string() +
                                 " --set impactor.mass=0.3 --case-folders --jobs 2");
   ASSERT_EQ(r.status, 0) << r.out;
-  const std::string table = read(dir / "out" / "sweep.csv");
+  const std::string table = read_text(dir / "out" / "sweep.csv");
   for (std::size_t c = 0; c < 4; ++c) {
     const fs::path folder = dir / "out" / "cases" / ("00000" + std::to_string(c));
     ASSERT_TRUE(fs::exists(folder / "summary.json")) << folder;
@@ -300,13 +271,14 @@ TEST(SweepCli, CaseFoldersHoldEachCasesOwnResults) {
         shell("timeout 300 " + std::string(PLYIMPACT_EXE) + " impact " + (folder / "deck.toml").string() +
               " -o " + (dir / ("alone" + std::to_string(c))).string());
     ASSERT_EQ(alone.status, 0) << alone.out;
-    const auto summary = nlohmann::json::parse(read(dir / ("alone" + std::to_string(c)) / "summary.json"));
+    const auto summary =
+        nlohmann::json::parse(read_text(dir / ("alone" + std::to_string(c)) / "summary.json"));
     EXPECT_EQ(summary["peak_force"].get<double>(), std::stod(field(table, c + 1, "peak_force_N"))) << c;
   }
 }
 
 TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsAndResumes) {
-  const fs::path dir = scratch("sigint");
+  const fs::path dir = scratch("sweep-sigint");
   const fs::path deck = twelve_case_deck(dir, "nx = 12\nny = 8\n");
   const CommandResult whole = sweep(deck.string() + " -o " + (dir / "whole").string() + " --jobs 2");
   ASSERT_EQ(whole.status, 0) << whole.out;
@@ -332,12 +304,12 @@ TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsAndResumes) {
   ASSERT_LT(kept, 12U);
   for (const auto& e : fs::directory_iterator(out / "cases")) { // the cases cut short left no record
     if (e.path().extension() == ".json") {
-      EXPECT_EQ(nlohmann::json::parse(read(e.path()))["status"], "ok") << e.path();
+      EXPECT_EQ(nlohmann::json::parse(read_text(e.path()))["status"], "ok") << e.path();
     }
   }
   const CommandResult resumed = sweep(deck.string() + " -o " + out.string() + " --resume");
   ASSERT_EQ(resumed.status, 0) << resumed.out;
-  EXPECT_EQ(read(out / "sweep.csv"), read(dir / "whole" / "sweep.csv"));
+  EXPECT_EQ(read_text(out / "sweep.csv"), read_text(dir / "whole" / "sweep.csv"));
 }
 
 } // namespace

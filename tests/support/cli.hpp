@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -18,11 +19,10 @@ struct CommandResult {
   std::string out;
 };
 
-/// Runs `plyimpact ARGS` (stdout and stderr together).
-inline CommandResult run(const std::string& args) {
-  const std::string cmd = std::string(PLYIMPACT_EXE) + " " + args + " 2>&1";
+/// Runs a shell command (stdout and stderr together) and returns its exit status and output.
+inline CommandResult shell(const std::string& command) {
   CommandResult r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
   if (pipe == nullptr) return r;
   std::array<char, 4096> buf{};
   while (std::fgets(buf.data(), buf.size(), pipe) != nullptr)
@@ -30,6 +30,11 @@ inline CommandResult run(const std::string& args) {
   const int status = ::pclose(pipe);
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+/// Runs `plyimpact ARGS`.
+inline CommandResult run(const std::string& args) {
+  return shell(std::string(PLYIMPACT_EXE) + " " + args);
 }
 
 /// An empty folder under the system temporary folder.
@@ -73,6 +78,14 @@ inline fs::path write(const fs::path& dir, const std::string& text) {
   const fs::path p = dir / "deck.toml";
   std::ofstream(p) << text;
   return p;
+}
+
+/// The whole file as text (bytes as they are).
+inline std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline nlohmann::json read_json(const fs::path& p) {
