@@ -189,20 +189,6 @@ private:
   std::chrono::steady_clock::time_point start_;
 };
 
-PlateModel impact_model(const Deck& deck, const ImpactSettings& settings) {
-  if (settings.rigid_target)
-    return {*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{})};
-  return plate_from_deck(deck);
-}
-
-DamageOptions damage_options(const Deck& deck) {
-  DamageOptions d;
-  d.every = deck.damage.every;
-  d.criterion_options.delamination_ply_n =
-      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
-  return d;
-}
-
 /// ParaView frames every `every` steps and at the requested times (docs/deck.md, [output] vtk*).
 class VtkFrames {
 public:
@@ -258,13 +244,14 @@ int run_impact(const Options& o) {
   std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
   ImpactSettings settings = impact_settings_from_deck(deck);
-  const PlateModel model = impact_model(deck, settings);
+  const PlateModel model = impact_model_from_deck(deck, settings.rigid_target);
   settings.cancel = &interrupted;
   auto bar = std::make_shared<ProgressBar>();
   settings.progress = [bar](double t, long step) { (*bar)(t, step); };
   const std::vector<Criterion> criteria = parse_criteria(deck.damage.criteria);
   std::optional<DamageTracker> damage;
-  if (!criteria.empty() && !settings.rigid_target) damage.emplace(model, criteria, damage_options(deck));
+  if (!criteria.empty() && !settings.rigid_target)
+    damage.emplace(model, criteria, damage_options_from_deck(deck));
   std::optional<StressProbes> probes;
   if (!deck.probes.empty() && !settings.rigid_target) probes.emplace(model, deck.probes);
   // The folder exists before the run: ParaView frames are written while it runs.
@@ -273,7 +260,7 @@ int run_impact(const Options& o) {
   if (out && deck.vtk.enabled && !settings.rigid_target)
     vtk.emplace(deck.vtk, out->path(), model,
                 VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
-                           damage_options(deck).criterion_options});
+                           damage_options_from_deck(deck).criterion_options});
   std::optional<NodalSnapshot> report_state;
   const std::vector<DamageOnset> no_onsets;
   const ImpactObserver observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
@@ -349,7 +336,7 @@ int run_threshold(const Options& o) {
   ThresholdOptions options;
   options.tolerance = o.tolerance > 0.0 ? o.tolerance : deck.threshold.tolerance;
   options.max_velocity = deck.threshold.max_velocity;
-  options.damage = damage_options(deck);
+  options.damage = damage_options_from_deck(deck);
   const auto t0 = std::chrono::steady_clock::now();
   const ThresholdResult r = find_threshold_velocity(model, settings, *criterion, options);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -55,9 +55,7 @@ nu = 0.3
 ImpactResult run_deck(const std::string& text) {
   const Deck deck = parse_deck(text, "test.toml");
   const ImpactSettings s = impact_settings_from_deck(deck);
-  const PlateModel model = s.rigid_target
-                               ? PlateModel(*deck.laminate, *deck.plate, MeshSpec{1, 1}, BoundaryConditions{})
-                               : plate_from_deck(deck);
+  const PlateModel model = impact_model_from_deck(deck, s.rigid_target);
   return ImpactSolver(model, s).run();
 }
 

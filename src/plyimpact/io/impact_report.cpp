@@ -1,5 +1,7 @@
 #include "plyimpact/io/impact_report.hpp"
 
+#include "plyimpact/io/plate_from_deck.hpp"
+
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/system_memory.hpp"
 
@@ -64,6 +66,20 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["inplane_dofs_eliminated"] = r.inplane_eliminated;
   j["newton_iterations_max"] = r.newton_iterations_max;
   return j;
+}
+
+PlateModel impact_model_from_deck(const Deck& deck, bool rigid_target) {
+  if (rigid_target)
+    return {*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{})};
+  return plate_from_deck(deck);
+}
+
+DamageOptions damage_options_from_deck(const Deck& deck) {
+  DamageOptions d;
+  d.every = deck.damage.every;
+  d.criterion_options.delamination_ply_n =
+      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
+  return d;
 }
 
 std::string impact_history_csv(const ImpactResult& r) {

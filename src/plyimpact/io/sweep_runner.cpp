@@ -79,14 +79,6 @@ std::vector<std::string> value_texts(const SweepCase& c) {
   return v;
 }
 
-DamageOptions damage_options(const Deck& deck) {
-  DamageOptions d;
-  d.every = deck.damage.every;
-  d.criterion_options.delamination_ply_n =
-      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
-  return d;
-}
-
 void put_first_failure(nlohmann::json& results, const std::optional<DamageOnset>& f) {
   results["first_failure_time"] = f ? nlohmann::json(f->time) : nlohmann::json(nullptr);
   results["first_failure_criterion"] =
@@ -96,12 +88,6 @@ void put_first_failure(nlohmann::json& results, const std::optional<DamageOnset>
   results["first_failure_ply"] = f && f->ply > 0 ? nlohmann::json(f->ply) : nlohmann::json(nullptr);
   results["first_failure_interface"] =
       f && f->interface > 0 ? nlohmann::json(f->interface) : nlohmann::json(nullptr);
-}
-
-PlateModel impact_model(const Deck& deck, bool rigid_target) {
-  if (rigid_target)
-    return {*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{})};
-  return plate_from_deck(deck);
 }
 
 } // namespace
@@ -252,7 +238,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
       ThresholdOptions to;
       to.tolerance = deck.threshold.tolerance;
       to.max_velocity = deck.threshold.max_velocity;
-      to.damage = damage_options(deck);
+      to.damage = damage_options_from_deck(deck);
       const ThresholdResult r = find_threshold_velocity(model, settings, *parse_criterion(name), to);
       ++factorizations_; // a finished search is recorded even after an interrupt: its result is whole
       results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
@@ -276,7 +262,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
     const std::string key = sweep_.plate_key(c) + fmt::format("\ndt = {}\n", settings.dt);
     if (!options_.share_factorization || !cache_ || cache_->key != key) {
       cache_.reset();
-      auto model = std::make_unique<PlateModel>(impact_model(deck, settings.rigid_target));
+      auto model = std::make_unique<PlateModel>(impact_model_from_deck(deck, settings.rigid_target));
       auto solver = std::make_unique<ImpactSolver>(*model, settings);
       cache_ = std::make_unique<Cache>(Cache{key, std::move(model), std::move(solver)});
       ++factorizations_;
@@ -284,7 +270,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
     const PlateModel& model = *cache_->model;
     std::optional<DamageTracker> damage;
     if (!deck.damage.criteria.empty() && !settings.rigid_target)
-      damage.emplace(model, parse_criteria(deck.damage.criteria), damage_options(deck));
+      damage.emplace(model, parse_criteria(deck.damage.criteria), damage_options_from_deck(deck));
     ImpactObserver observer;
     if (damage)
       observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
