@@ -11,23 +11,6 @@ namespace plyimpact {
 
 namespace {
 
-StaticResult summarize(const PlateModel& model, const StaticLoad& load, Eigen::VectorXd u) {
-  StaticResult r;
-  r.u = std::move(u);
-  const PlateGeometry& p = model.mesh().plate();
-  r.center_deflection = model.sampler(p.a / 2, p.b / 2).value(r.u);
-  if (load.point)
-    r.load_point_deflection = model.sampler(load.point->x, load.point->y).value(r.u);
-  else if (load.patch)
-    r.load_point_deflection = model.sampler(load.patch->x, load.patch->y).value(r.u);
-  else
-    r.load_point_deflection = r.center_deflection;
-  for (int n = 0; n < model.mesh().node_count(); ++n)
-    if (const int eq = model.dofs().equation(n, 2); eq >= 0)
-      r.max_abs_deflection = std::max(r.max_abs_deflection, std::abs(r.u(eq)));
-  return r;
-}
-
 struct NewtonOutcome {
   bool converged = false;
   int iterations = 0;
@@ -87,7 +70,7 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
   Eigen::VectorXd u = Eigen::VectorXd::Zero(model.size());
   if (f.norm() == 0.0) {
     r.load_deflection.push_back({1.0, 0.0});
-    r.state = summarize(model, load, u);
+    r.state = static_result(model, load, u);
     return r;
   }
   const double nominal = 1.0 / s.load_steps;
@@ -116,7 +99,7 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
     cuts_in_a_row = 0;
     increment = std::min(nominal, 2.0 * increment); // recover after a cut
   }
-  r.state = summarize(model, load, std::move(u));
+  r.state = static_result(model, load, std::move(u));
   return r;
 }
 

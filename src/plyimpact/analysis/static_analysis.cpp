@@ -52,13 +52,9 @@ Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& lo
   return f;
 }
 
-StaticResult solve_static(const PlateModel& model, const StaticLoad& load) {
-  const SparseMatrix K = model.stiffness();
-  const SpdSolver solver = factor_stiffness(model, K);
+StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eigen::VectorXd u) {
   StaticResult r;
-  r.u = solver.solve(static_load_vector(model, load));
-  if (!r.u.allFinite())
-    throw InsufficientRestraint("the static solution is not finite: " + restraint_advice(model));
+  r.u = std::move(u);
   const PlateGeometry& p = model.mesh().plate();
   r.center_deflection = model.sampler(p.a / 2, p.b / 2).value(r.u);
   if (load.point)
@@ -71,6 +67,15 @@ StaticResult solve_static(const PlateModel& model, const StaticLoad& load) {
     if (const int eq = model.dofs().equation(n, 2); eq >= 0)
       r.max_abs_deflection = std::max(r.max_abs_deflection, std::abs(r.u(eq)));
   return r;
+}
+
+StaticResult solve_static(const PlateModel& model, const StaticLoad& load) {
+  const SparseMatrix K = model.stiffness();
+  const SpdSolver solver = factor_stiffness(model, K);
+  Eigen::VectorXd u = solver.solve(static_load_vector(model, load));
+  if (!u.allFinite())
+    throw InsufficientRestraint("the static solution is not finite: " + restraint_advice(model));
+  return static_result(model, load, std::move(u));
 }
 
 } // namespace plyimpact

@@ -29,4 +29,8 @@ struct StaticResult {
 [[nodiscard]] Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load);
 [[nodiscard]] StaticResult solve_static(const PlateModel& model, const StaticLoad& load);
 
+/// The result quantities of a plate state u (free DOFs) under `load`: centre, load-point and largest
+/// deflections (shared by the linear and the non-linear static analyses).
+[[nodiscard]] StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eigen::VectorXd u);
+
 } // namespace plyimpact
