@@ -1,6 +1,7 @@
 #include "plyimpact/analysis/impact_analysis.hpp"
 
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/impact_event.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/newmark.hpp"
 #include "plyimpact/fem/quadrature.hpp"
@@ -213,8 +214,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
   r.inplane_eliminated = !rigid && n < model_.size();
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
   double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0;
-  bool in_contact = false;
-  double last_separation = -1.0;
+  ImpactEvent event(r, s, p.period);
   std::size_t next_field = 0;
   std::vector<double> field_times = s.field_times;
   std::sort(field_times.begin(), field_times.end());
@@ -241,17 +241,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
   long step = 0;
   double t = 0.0;
   for (;;) {
-    if (step >= s.max_steps) {
-      r.stop_reason =
-          fmt::format("stopped at the step limit ({} steps, t = {:.6g} s) before the end of the event; "
-                      "raise time.max_steps or set time.end",
-                      s.max_steps, t);
-      break;
-    }
-    if (s.cancel != nullptr && s.cancel->load()) {
-      r.stop_reason = fmt::format("interrupted at step {} (t = {:.6g} s)", step, t);
-      break;
-    }
+    if (event.must_stop(step, t)) break;
     ++step;
     t = static_cast<double>(step) * s.dt;
 
@@ -304,20 +294,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
     }
 
     // 4. Bookkeeping: episodes, peaks, snapshots, end of event.
-    if (force > 0.0) {
-      if (!in_contact) r.episodes.push_back({t - s.dt, t, 0.0});
-      in_contact = true;
-      auto& ep = r.episodes.back();
-      ep.end = t;
-      ep.peak_force = std::max(ep.peak_force, force);
-      if (force > r.peak_force) r.peak_force = force, r.time_of_peak_force = t;
-    } else if (in_contact) {
-      in_contact = false;
-      last_separation = t;
-      if (r.episodes.size() == 1) r.contact_duration = r.episodes.front().end - r.episodes.front().start;
-    }
-    r.peak_contact_deflection = std::max(r.peak_contact_deflection, ws);
-    r.max_indentation = std::max(r.max_indentation, alpha);
+    event.record(t, force, alpha, ws);
     if (observer) observer(step, t, force, rigid ? Eigen::VectorXd() : p.expand(u, model_.size()));
     while (next_field < field_times.size() && t >= field_times[next_field] - 1e-12 * s.dt) {
       r.fields.push_back({t, rigid ? Eigen::VectorXd() : p.expand(u, model_.size())});
@@ -325,14 +302,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
     }
     if (s.progress && step % 1000 == 0) s.progress(t, step);
 
-    bool done = false;
-    if (s.end) {
-      done = t >= *s.end - 1e-9 * s.dt;
-    } else if (!in_contact && last_separation >= 0.0) {
-      r.fundamental_period = p.period;
-      // SPEC §4: out of contact for the longer of the first contact and two fundamental periods.
-      done = t - last_separation >= std::max(r.contact_duration, 2.0 * r.fundamental_period);
-    }
+    const bool done = event.over(t);
     record(step, t, done);
     if (done) {
       r.complete = true;
@@ -340,14 +310,7 @@ ImpactResult ImpactSolver::run(const Impactor& imp, double k, const ImpactObserv
     }
   }
   if (!r.complete && r.history.back().t != t) record(step, t, true);
-  if (in_contact && r.episodes.size() == 1)
-    r.contact_duration = r.episodes.front().end - r.episodes.front().start;
-  r.steps = step;
-  r.permanent_indentation = law.permanent_indentation();
-  r.rebound_velocity = -impactor.velocity();
-  r.absorbed_energy = e0 - impactor.kinetic_energy();
-  r.contact_dissipation = contact_work;
-  r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  event.finish(step, law, impactor, e0, contact_work, wall0);
   return r;
 }
 
