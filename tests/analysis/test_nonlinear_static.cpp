@@ -1,5 +1,6 @@
-// Geometrically non-linear static analysis (SPEC §8): the linear limit, and the large-deflection curve
-// of a uniformly loaded simply supported square plate against Levy's von Kármán series solution.
+// Geometrically non-linear static analysis (SPEC §8): the linear limit, and the large-deflection curves
+// of uniformly loaded simply supported and clamped square plates against Levy's von Kármán series
+// solutions (NACA Reports 737 and 740).
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "support/decks.hpp"
 
@@ -7,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace plyimpact {
 namespace {
@@ -80,6 +82,59 @@ TEST(NonlinearStatic, LevySimplySupportedSquarePlateLargeDeflectionCurve) {
     std::printf("q a^4/(E h^4) = %6.1f: w/h = %.4f, Levy %.3f (%+.2f %%)\n", P[i], w / h, w_over_h[i],
                 100.0 * (w / h / w_over_h[i] - 1.0));
   }
+}
+
+TEST(NonlinearStatic, LevyClampedSquarePlateLargeDeflectionCurve) {
+  // Reference: S. Levy, "Square plate with clamped edges under normal pressure producing large
+  // deflections", NACA Report 740 (1942, also TN 847), Table 5: von Kármán plate, square, ν = 0.316,
+  // edges clamped against rotation and held against normal in-plane motion, free to slide along the
+  // edge. Centre deflection w0/h against q a⁴/(E h⁴); Levy chose w0 and computed the pressure, hence the
+  // uneven loads. His series is estimated accurate to a few tenths of a percent; the table ends at
+  // w0/h = 1.902.
+  constexpr double P[] = {17.79, 38.3, 63.4, 95.0, 134.9, 184.0, 245.0, 318.0, 402.0};
+  constexpr double w_over_h[] = {0.237, 0.471, 0.695, 0.912, 1.121, 1.323, 1.521, 1.714, 1.902};
+  const double a = 0.2, h = 2e-3, E = 70e9; // a/h = 100, as for the simply supported case
+  const Laminate lam = laminate_of(isotropic(E, 0.316, 2700.0), "[0]", h);
+  // Clamped, normal displacement held, tangential displacement free: uvwθxθy = 10111 on x = 0, a and
+  // 01111 on y = 0, b.
+  const PlateModel model(lam, {a, a}, {12, 12, MassMatrix::lumped, ElementFormulation::q9},
+                         edges("10111", "01111"));
+  // One run through Levy's loads: λ_i = P_i / P_max, the curve read at each.
+  const double P_max = P[std::size(P) - 1];
+  StaticLoad load;
+  load.pressure = P_max * E * std::pow(h, 4) / std::pow(a, 4);
+  NonlinearSettings s;
+  for (const double p : P) s.load_factors.push_back(p / P_max);
+  const NonlinearStaticResult r = solve_static_nonlinear(model, load, s);
+  ASSERT_EQ(r.step_cuts, 0);
+  ASSERT_EQ(r.load_deflection.size(), std::size(P) + 1);
+  for (std::size_t i = 0; i < std::size(P); ++i) {
+    const auto& [lambda, w] = r.load_deflection[i + 1];
+    EXPECT_NEAR(lambda * P_max, P[i], 1e-9);
+    EXPECT_NEAR(w / h, w_over_h[i], 0.02 * w_over_h[i]) << "q a^4/(E h^4) = " << P[i];
+    std::printf("q a^4/(E h^4) = %6.2f: w/h = %.4f, Levy %.3f (%+.2f %%)\n", P[i], w / h, w_over_h[i],
+                100.0 * (w / h / w_over_h[i] - 1.0));
+  }
+}
+
+TEST(NonlinearStatic, LoadFactorsMustIncreaseToOne) {
+  // An explicit load path is a list of increasing load factors ending at the full load.
+  const Laminate lam = laminate_of(isotropic(70e9, 0.3, 2700.0), "[0]", 1e-3);
+  const PlateModel model(lam, {0.1, 0.1}, {2, 2, MassMatrix::lumped, ElementFormulation::q9},
+                         test::all_edges("clamped"));
+  StaticLoad load;
+  load.pressure = 1.0;
+  for (const std::vector<double>& bad : {std::vector<double>{0.5, 0.4, 1.0}, {0.5}, {0.0, 1.0}, {0.5, 1.5}}) {
+    NonlinearSettings s;
+    s.load_factors = bad;
+    EXPECT_THROW((void)solve_static_nonlinear(model, load, s), std::invalid_argument);
+  }
+  NonlinearSettings s;
+  s.load_factors = {0.25, 1.0};
+  const NonlinearStaticResult r = solve_static_nonlinear(model, load, s);
+  ASSERT_EQ(r.load_deflection.size(), 3U);
+  EXPECT_EQ(r.load_deflection[1][0], 0.25);
+  EXPECT_NEAR(r.load_deflection[1][1], 0.25 * r.load_deflection[2][1], 1e-6 * std::abs(r.load_deflection[2][1]));
 }
 
 TEST(NonlinearStatic, NewtonFailureIsAClearMessageNotANaN) {
