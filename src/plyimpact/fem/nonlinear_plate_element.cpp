@@ -79,15 +79,6 @@ GradientOperator gradient_operator(const IntegrationPoint& p) {
   return G;
 }
 
-/// f += Gᵀ r (r a generalized stress conjugate to g), as outer products over the nodes.
-void add_gradient_transpose(const IntegrationPoint& p, const Gradients& r, ElementVector& f) {
-  Eigen::Map<NodalMatrix> F(f.data());
-  const Eigen::Matrix<double, 5, 1> rx(r(ux), r(vx), r(wx), r(tx_x), r(ty_x));
-  const Eigen::Matrix<double, 5, 1> ry(r(uy), r(vy), r(wy), r(tx_y), r(ty_y));
-  const Eigen::Matrix<double, 5, 1> rn(0.0, 0.0, 0.0, r(tx), r(ty));
-  F.noalias() += rx * p.dN_dx.transpose() + ry * p.dN_dy.transpose() + rn * p.N.transpose();
-}
-
 /// e(g) and E = ∂e/∂g: linear part L (2.49)–(2.51) plus the quadratic terms.
 struct StrainState {
   Strains e;
@@ -180,30 +171,66 @@ ElementGeometry NonlinearMindlinQ9::geometry(const ElementCoordinates& xy) const
           integration_point(xy, gauss2.points[i], gauss2.points[j], gauss2.weights[i] * gauss2.weights[j]);
   geo.shear_stiffness = formulation_ == ElementFormulation::mitc9 ? linear_.shear_stiffness(xy)
                                                                   : ElementMatrix(ElementMatrix::Zero());
+  for (int q = 0; q < 9; ++q) {
+    geo.mb_dN_dx.col(q) = geo.membrane_bending[static_cast<std::size_t>(q)].dN_dx;
+    geo.mb_dN_dy.col(q) = geo.membrane_bending[static_cast<std::size_t>(q)].dN_dy;
+  }
+  for (int q = 0; q < 4; ++q) {
+    geo.s_dN_dx.col(q) = geo.shear[static_cast<std::size_t>(q)].dN_dx;
+    geo.s_dN_dy.col(q) = geo.shear[static_cast<std::size_t>(q)].dN_dy;
+    geo.s_N.col(q) = geo.shear[static_cast<std::size_t>(q)].N;
+  }
   return geo;
 }
 
 ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, const ElementVector& ue) const {
+  // f = Σ_points w Gᵀ Eᵀ S, with G uₑ and Gᵀ r taken for all points of a rule at once. At a
+  // membrane–bending point the rotations themselves (θx, θy) enter no strain row integrated there (they
+  // appear in γyz, γxz only), and at a transverse-shear point the rotation gradients enter no shear
+  // row: the first needs the x and y derivatives of the five fields, the second the derivatives of u,
+  // v, w and the values of θx, θy. The entries not computed are zero, and so are their conjugates.
   const auto terms = terms_of(measure_);
+  const Eigen::Map<const NodalMatrix> U(ue.data());
   ElementVector f = ElementVector::Zero();
-  for (const IntegrationPoint& p : geo.membrane_bending) {
-    const Gradients g = gradients(p, ue);
-    const Strains e = strains_of(g, terms);
-    Strains S = Strains::Zero();
-    S.head<6>() = C_mb_ * e.head<6>(); // (N, M) (1.24)
-    add_gradient_transpose(p, p.weight * conjugate_stress(g, S, terms), f);
+  Eigen::Map<NodalMatrix> F(f.data());
+  {
+    const NodalMatrix dx = U.lazyProduct(geo.mb_dN_dx), dy = U.lazyProduct(geo.mb_dN_dy); // column q: point q
+    NodalMatrix rx, ry;
+    for (int q = 0; q < 9; ++q) {
+      Gradients g;
+      g << dx(0, q), dy(0, q), dx(1, q), dy(1, q), dx(2, q), dy(2, q), dx(3, q), dy(3, q), dx(4, q), dy(4, q),
+          0.0, 0.0;
+      const Strains e = strains_of(g, terms);
+      Strains S = Strains::Zero();
+      S.head<6>() = C_mb_ * e.head<6>(); // (N, M) (1.24)
+      const Gradients r = geo.membrane_bending[static_cast<std::size_t>(q)].weight * conjugate_stress(g, S, terms);
+      rx.col(q) << r(ux), r(vx), r(wx), r(tx_x), r(ty_x);
+      ry.col(q) << r(uy), r(vy), r(wy), r(tx_y), r(ty_y);
+    }
+    F.noalias() += rx.lazyProduct(geo.mb_dN_dx.transpose()) + ry.lazyProduct(geo.mb_dN_dy.transpose());
   }
   if (formulation_ == ElementFormulation::mitc9) {
     f.noalias() += geo.shear_stiffness * ue; // linear shear (von Kármán only)
     return f;
   }
-  for (const IntegrationPoint& p : geo.shear) {
-    const Gradients g = gradients(p, ue);
+  const Eigen::Matrix<double, 3, 4> dx = U.topRows<3>().lazyProduct(geo.s_dN_dx),
+                                    dy = U.topRows<3>().lazyProduct(geo.s_dN_dy);
+  const Eigen::Matrix<double, 2, 4> at = U.bottomRows<2>().lazyProduct(geo.s_N);
+  Eigen::Matrix<double, 3, 4> rx, ry;
+  Eigen::Matrix<double, 2, 4> rn;
+  for (int q = 0; q < 4; ++q) {
+    Gradients g;
+    g << dx(0, q), dy(0, q), dx(1, q), dy(1, q), dx(2, q), dy(2, q), 0.0, 0.0, 0.0, 0.0, at(0, q), at(1, q);
     const Strains e = strains_of(g, terms);
     Strains S = Strains::Zero();
     S.tail<2>() = F_ * e.tail<2>(); // (Qy, Qx)
-    add_gradient_transpose(p, p.weight * conjugate_stress(g, S, terms), f);
+    const Gradients r = geo.shear[static_cast<std::size_t>(q)].weight * conjugate_stress(g, S, terms);
+    rx.col(q) << r(ux), r(vx), r(wx);
+    ry.col(q) << r(uy), r(vy), r(wy);
+    rn.col(q) << r(tx), r(ty);
   }
+  F.topRows<3>().noalias() += rx.lazyProduct(geo.s_dN_dx.transpose()) + ry.lazyProduct(geo.s_dN_dy.transpose());
+  F.bottomRows<2>().noalias() += rn.lazyProduct(geo.s_N.transpose());
   return f;
 }
 
