@@ -104,7 +104,8 @@ TEST(NonlinearStatic, LevyClampedSquarePlateLargeDeflectionCurve) {
   StaticLoad load;
   load.pressure = P_max * E * std::pow(h, 4) / std::pow(a, 4);
   NonlinearSettings s;
-  for (const double p : P) s.load_factors.push_back(p / P_max);
+  for (const double p : P)
+    s.load_factors.push_back(p / P_max);
   const NonlinearStaticResult r = solve_static_nonlinear(model, load, s);
   ASSERT_EQ(r.step_cuts, 0);
   ASSERT_EQ(r.load_deflection.size(), std::size(P) + 1);
@@ -134,7 +135,8 @@ TEST(NonlinearStatic, LoadFactorsMustIncreaseToOne) {
   const NonlinearStaticResult r = solve_static_nonlinear(model, load, s);
   ASSERT_EQ(r.load_deflection.size(), 3U);
   EXPECT_EQ(r.load_deflection[1][0], 0.25);
-  EXPECT_NEAR(r.load_deflection[1][1], 0.25 * r.load_deflection[2][1], 1e-6 * std::abs(r.load_deflection[2][1]));
+  EXPECT_NEAR(r.load_deflection[1][1], 0.25 * r.load_deflection[2][1],
+              1e-6 * std::abs(r.load_deflection[2][1]));
 }
 
 TEST(NonlinearStatic, NewtonFailureIsAClearMessageNotANaN) {

@@ -59,7 +59,8 @@ std::vector<double> load_milestones(const NonlinearSettings& s) {
   if (s.load_factors.empty()) {
     if (s.load_steps < 1) throw std::invalid_argument("non-linear static: load_steps must be at least 1");
     std::vector<double> m(static_cast<std::size_t>(s.load_steps));
-    for (int k = 1; k <= s.load_steps; ++k) m[static_cast<std::size_t>(k - 1)] = double(k) / s.load_steps;
+    for (int k = 1; k <= s.load_steps; ++k)
+      m[static_cast<std::size_t>(k - 1)] = double(k) / s.load_steps;
     return m;
   }
   double previous = 0.0;
@@ -97,7 +98,8 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
     double increment = nominal;
     int cuts_in_a_row = 0;
     while (lambda < milestone) {
-      const double target = (lambda + increment >= milestone * (1.0 - 1e-12)) ? milestone : lambda + increment;
+      const double target =
+          (lambda + increment >= milestone * (1.0 - 1e-12)) ? milestone : lambda + increment;
       Eigen::VectorXd trial = u;
       const NewtonOutcome o = newton(plate, f, target, trial, s);
       r.newton_iterations += o.iterations;

@@ -13,7 +13,7 @@ namespace plyimpact {
 
 struct NonlinearSettings {
   StrainMeasure measure = StrainMeasure::von_karman;
-  int load_steps = 10;                  ///< equal increments of the load factor λ (static)
+  int load_steps = 10; ///< equal increments of the load factor λ (static)
   /// Load factors to converge at, increasing in (0, 1] and ending at 1; when given they replace the
   /// equal `load_steps` increments (a load–deflection curve at chosen loads in one run).
   std::vector<double> load_factors;

@@ -203,7 +203,8 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
       const Strains e = strains_of(g, terms);
       Strains S = Strains::Zero();
       S.head<6>() = C_mb_ * e.head<6>(); // (N, M) (1.24)
-      const Gradients r = geo.membrane_bending[static_cast<std::size_t>(q)].weight * conjugate_stress(g, S, terms);
+      const Gradients r =
+          geo.membrane_bending[static_cast<std::size_t>(q)].weight * conjugate_stress(g, S, terms);
       rx.col(q) << r(ux), r(vx), r(wx), r(tx_x), r(ty_x);
       ry.col(q) << r(uy), r(vy), r(wy), r(tx_y), r(ty_y);
     }
@@ -229,7 +230,8 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
     ry.col(q) << r(uy), r(vy), r(wy);
     rn.col(q) << r(tx), r(ty);
   }
-  F.topRows<3>().noalias() += rx.lazyProduct(geo.s_dN_dx.transpose()) + ry.lazyProduct(geo.s_dN_dy.transpose());
+  F.topRows<3>().noalias() +=
+      rx.lazyProduct(geo.s_dN_dx.transpose()) + ry.lazyProduct(geo.s_dN_dy.transpose());
   F.bottomRows<2>().noalias() += rn.lazyProduct(geo.s_N.transpose());
   return f;
 }

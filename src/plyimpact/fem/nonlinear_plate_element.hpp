@@ -39,7 +39,7 @@ struct ElementGeometry {
   ElementMatrix shear_stiffness;                    ///< K_s of the linear element (MITC9 path)
   // The same shape-function data with one column per point, so the force path takes the gradients of
   // all points of a rule in one small matrix product (U dN) and scatters back in one (R dNᵀ).
-  Eigen::Matrix<double, 9, 9> mb_dN_dx, mb_dN_dy; ///< membrane–bending points
+  Eigen::Matrix<double, 9, 9> mb_dN_dx, mb_dN_dy;    ///< membrane–bending points
   Eigen::Matrix<double, 9, 4> s_dN_dx, s_dN_dy, s_N; ///< transverse-shear points
 };
 
