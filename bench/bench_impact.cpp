@@ -48,6 +48,7 @@ void BM_Impact_Section36_15x11_FullEvent(benchmark::State& state) {
   run_impact(state, section36(15, 11, std::nullopt), static_cast<SparseSolverKind>(state.range(0)));
 }
 BENCHMARK(BM_Impact_Section36_15x11_FullEvent)
+    ->Arg(static_cast<int>(SparseSolverKind::cholmod_simplicial))
     ->Arg(static_cast<int>(SparseSolverKind::simplicial_ldlt))
     ->Arg(static_cast<int>(SparseSolverKind::cholmod))
     ->Unit(benchmark::kMillisecond)
@@ -68,7 +69,7 @@ BENCHMARK(BM_Impact_Section36_15x11_Setup)->Unit(benchmark::kMillisecond);
 /// Per-step cost on the finer meshes: the first 500 µs (500 steps) of the same event.
 void BM_Impact_Section36_500Steps(benchmark::State& state) {
   run_impact(state, section36(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 500e-6),
-             SparseSolverKind::simplicial_ldlt);
+             ImpactSettings{}.solver);
 }
 BENCHMARK(BM_Impact_Section36_500Steps)
     ->Args({15, 11})

@@ -27,9 +27,9 @@ struct ImpactSettings {
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
   bool rigid_target = false; ///< rigid, immovable target (closed-form checks)
-  SparseSolverKind solver = SparseSolverKind::simplicial_ldlt; ///< factorization of K̄ (bench/README.md)
-  std::vector<double> field_times;                             ///< displacement snapshots at these times [s]
-  int history_every = 1; ///< keep every k-th step in the history (always the first and last)
+  SparseSolverKind solver = SparseSolverKind::cholmod_simplicial; ///< factorization of K̄ (bench/README.md)
+  std::vector<double> field_times; ///< displacement snapshots at these times [s]
+  int history_every = 1;           ///< keep every k-th step in the history (always the first and last)
   std::optional<double> memory_limit_bytes;          ///< refuse a factor of K̄ estimated above this
   const std::atomic<bool>* cancel = nullptr;         ///< stop after the current step when set
   std::function<void(double t, long step)> progress; ///< called about every 1000 steps

@@ -5,9 +5,50 @@
 
 namespace plyimpact {
 
+namespace {
+
+/// CHOLMOD's simplicial LDLᵀ, with access to the pivots D (the first entry of each column of the
+/// simplicial factor) for the same positive-definiteness checks as Eigen's LDLᵀ.
+class CholmodLdlt : public Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> {
+public:
+  CholmodLdlt() {
+    cholmod().nmethods = 1; // AMD only, as SimplicialLDLT (and the memory estimate) use
+    cholmod().method[0].ordering = CHOLMOD_AMD;
+    cholmod().postorder = 1;
+  }
+  [[nodiscard]] Eigen::VectorXd pivots() const {
+    const cholmod_factor* L = m_cholmodFactor;
+    Eigen::VectorXd d(static_cast<Eigen::Index>(L->n));
+    const auto* p = static_cast<const int*>(L->p);
+    const auto* x = static_cast<const double*>(L->x);
+    for (std::size_t j = 0; j < L->n; ++j)
+      d(static_cast<Eigen::Index>(j)) = x[p[j]];
+    return d;
+  }
+  [[nodiscard]] long factor_nonzeros() const { // strictly lower, as SimplicialLDLT reports it
+    const auto* nz = static_cast<const int*>(m_cholmodFactor->nz);
+    long total = 0;
+    for (std::size_t j = 0; j < m_cholmodFactor->n; ++j)
+      total += nz[j] - 1;
+    return total;
+  }
+};
+
+/// The checks on the pivots of an LDLᵀ factor: positive, and not many orders below the largest.
+void check_pivots(const Eigen::VectorXd& d) {
+  if (!(d.minCoeff() > 0.0))
+    throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
+  // A pivot many orders below the largest is a near-mechanism: round-off, not stiffness.
+  if (d.minCoeff() < 1e-13 * d.maxCoeff())
+    throw NotPositiveDefinite("the matrix is singular to working precision (pivot ratio below 1e-13)");
+}
+
+} // namespace
+
 struct SpdSolver::Impl {
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> cholmod;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  CholmodLdlt cholmod_ldlt;
 };
 
 SpdSolver::SpdSolver(SparseSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {}
@@ -23,27 +64,34 @@ void SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
       throw NotPositiveDefinite("the matrix is not positive definite (CHOLMOD found a non-positive pivot)");
     return;
   }
+  if (kind_ == SparseSolverKind::cholmod_simplicial) {
+    impl_->cholmod_ldlt.compute(A);
+    if (impl_->cholmod_ldlt.info() != Eigen::Success)
+      throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
+    check_pivots(impl_->cholmod_ldlt.pivots());
+    return;
+  }
   impl_->ldlt.compute(A);
-  if (impl_->ldlt.info() != Eigen::Success || !(impl_->ldlt.vectorD().minCoeff() > 0.0))
+  if (impl_->ldlt.info() != Eigen::Success)
     throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
-  // A pivot many orders below the largest is a near-mechanism: round-off, not stiffness.
-  const double dmax = impl_->ldlt.vectorD().maxCoeff();
-  if (impl_->ldlt.vectorD().minCoeff() < 1e-13 * dmax)
-    throw NotPositiveDefinite("the matrix is singular to working precision (pivot ratio below 1e-13)");
+  check_pivots(impl_->ldlt.vectorD());
 }
 
 Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const {
   if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.solve(b);
+  if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.solve(b);
   return impl_->ldlt.solve(b);
 }
 
 Eigen::MatrixXd SpdSolver::solve(const Eigen::MatrixXd& B) const {
   if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.solve(B);
+  if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.solve(B);
   return impl_->ldlt.solve(B);
 }
 
 long SpdSolver::factor_nonzeros() const {
   if (kind_ == SparseSolverKind::cholmod) return -1;
+  if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.factor_nonzeros();
   return static_cast<long>(impl_->ldlt.matrixL().nestedExpression().nonZeros());
 }
 
