@@ -4,6 +4,7 @@
 
 #include <span>
 #include <stdexcept>
+#include <utility>
 
 namespace plyimpact {
 
@@ -100,27 +101,41 @@ StrainState strain_state(const Gradients& g, std::span<const QuadraticTerm> term
   return s;
 }
 
-/// e(g) only (the force path): L g plus the quadratic terms.
-Strains strains_of(const Gradients& g, std::span<const QuadraticTerm> terms) {
+// The force path runs once per element and Gauss point in every Newton iteration, so its quadratic
+// terms are expanded at compile time (a fold over the constant term table: no loop, constant
+// indices) and restricted to the strain rows [First, Last) integrated at the point.
+
+/// e(g) (the force path): L g plus the quadratic terms of rows [First, Last).
+template <const auto& Terms, int First, int Last>
+Strains strains_of(const Gradients& g) {
   Strains e;
   e << g(ux), g(vy), g(uy) + g(vx), g(tx_x), g(ty_y), g(tx_y) + g(ty_x), g(ty) + g(wy), g(tx) + g(wx);
-  for (const QuadraticTerm& t : terms)
-    e(t.strain) += t.c * g(t.a) * g(t.b);
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    ((Terms[I].strain >= First && Terms[I].strain < Last
+          ? void(e(Terms[I].strain) += Terms[I].c * g(Terms[I].a) * g(Terms[I].b))
+          : void()),
+     ...);
+  }
+  (std::make_index_sequence<Terms.size()>{});
   return e;
 }
 
-/// r = Eᵀ S without forming E (S holds the resultants of the strain rows [first, first + count), zero
-/// elsewhere): the linear map Lᵀ S plus, per quadratic term, S_i ∂e_i/∂g.
-Gradients conjugate_stress(const Gradients& g, const Strains& S, std::span<const QuadraticTerm> terms) {
+/// r = Eᵀ S without forming E (S holds the resultants of the strain rows [First, Last), zero
+/// elsewhere): the linear map Lᵀ S plus, per quadratic term of those rows, S_i ∂e_i/∂g.
+template <const auto& Terms, int First, int Last>
+Gradients conjugate_stress(const Gradients& g, const Strains& S) {
   Gradients r;
   r(ux) = S(ex), r(vy) = S(ey), r(uy) = S(gxy), r(vx) = S(gxy);
   r(tx_x) = S(kx), r(ty_y) = S(ky), r(tx_y) = S(kxy), r(ty_x) = S(kxy);
   r(ty) = S(gyz), r(wy) = S(gyz), r(tx) = S(gxz), r(wx) = S(gxz);
-  for (const QuadraticTerm& t : terms) {
-    const double cs = t.c * S(t.strain);
-    r(t.a) += cs * g(t.b);
-    r(t.b) += cs * g(t.a);
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    ((Terms[I].strain >= First && Terms[I].strain < Last
+          ? void((r(Terms[I].a) += Terms[I].c * S(Terms[I].strain) * g(Terms[I].b),
+                  r(Terms[I].b) += Terms[I].c * S(Terms[I].strain) * g(Terms[I].a)))
+          : void()),
+     ...);
   }
+  (std::make_index_sequence<Terms.size()>{});
   return r;
 }
 
@@ -183,13 +198,18 @@ ElementGeometry NonlinearMindlinQ9::geometry(const ElementCoordinates& xy) const
   return geo;
 }
 
-ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, const ElementVector& ue) const {
+namespace {
+
+/// f = ∫ Gᵀ Eᵀ S dA for one strain measure's terms (see NonlinearMindlinQ9::internal_force).
+template <const auto& Terms>
+ElementVector internal_force_with(const ElementGeometry& geo, const ElementVector& ue,
+                                  const Eigen::Matrix<double, 6, 6>& C_mb, const Eigen::Matrix2d& F_s,
+                                  bool mitc9) {
   // f = Σ_points w Gᵀ Eᵀ S, with G uₑ and Gᵀ r taken for all points of a rule at once. At a
   // membrane–bending point the rotations themselves (θx, θy) enter no strain row integrated there (they
   // appear in γyz, γxz only), and at a transverse-shear point the rotation gradients enter no shear
   // row: the first needs the x and y derivatives of the five fields, the second the derivatives of u,
   // v, w and the values of θx, θy. The entries not computed are zero, and so are their conjugates.
-  const auto terms = terms_of(measure_);
   const Eigen::Map<const NodalMatrix> U(ue.data());
   ElementVector f = ElementVector::Zero();
   Eigen::Map<NodalMatrix> F(f.data());
@@ -200,17 +220,17 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
       Gradients g;
       g << dx(0, q), dy(0, q), dx(1, q), dy(1, q), dx(2, q), dy(2, q), dx(3, q), dy(3, q), dx(4, q), dy(4, q),
           0.0, 0.0;
-      const Strains e = strains_of(g, terms);
+      const Strains e = strains_of<Terms, ex, gyz>(g);
       Strains S = Strains::Zero();
-      S.head<6>() = C_mb_ * e.head<6>(); // (N, M) (1.24)
+      S.head<6>() = C_mb * e.head<6>(); // (N, M) (1.24)
       const Gradients r =
-          geo.membrane_bending[static_cast<std::size_t>(q)].weight * conjugate_stress(g, S, terms);
+          geo.membrane_bending[static_cast<std::size_t>(q)].weight * conjugate_stress<Terms, ex, gyz>(g, S);
       rx.col(q) << r(ux), r(vx), r(wx), r(tx_x), r(ty_x);
       ry.col(q) << r(uy), r(vy), r(wy), r(tx_y), r(ty_y);
     }
     F.noalias() += rx.lazyProduct(geo.mb_dN_dx.transpose()) + ry.lazyProduct(geo.mb_dN_dy.transpose());
   }
-  if (formulation_ == ElementFormulation::mitc9) {
+  if (mitc9) {
     f.noalias() += geo.shear_stiffness * ue; // linear shear (von Kármán only)
     return f;
   }
@@ -222,10 +242,11 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
   for (int q = 0; q < 4; ++q) {
     Gradients g;
     g << dx(0, q), dy(0, q), dx(1, q), dy(1, q), dx(2, q), dy(2, q), 0.0, 0.0, 0.0, 0.0, at(0, q), at(1, q);
-    const Strains e = strains_of(g, terms);
+    const Strains e = strains_of<Terms, gyz, n_strains>(g);
     Strains S = Strains::Zero();
-    S.tail<2>() = F_ * e.tail<2>(); // (Qy, Qx)
-    const Gradients r = geo.shear[static_cast<std::size_t>(q)].weight * conjugate_stress(g, S, terms);
+    S.tail<2>() = F_s * e.tail<2>(); // (Qy, Qx)
+    const Gradients r =
+        geo.shear[static_cast<std::size_t>(q)].weight * conjugate_stress<Terms, gyz, n_strains>(g, S);
     rx.col(q) << r(ux), r(vx), r(wx);
     ry.col(q) << r(uy), r(vy), r(wy);
     rn.col(q) << r(tx), r(ty);
@@ -234,6 +255,15 @@ ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, con
       rx.lazyProduct(geo.s_dN_dx.transpose()) + ry.lazyProduct(geo.s_dN_dy.transpose());
   F.bottomRows<2>().noalias() += rn.lazyProduct(geo.s_N.transpose());
   return f;
+}
+
+} // namespace
+
+ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, const ElementVector& ue) const {
+  const bool mitc9 = formulation_ == ElementFormulation::mitc9;
+  if (measure_ == StrainMeasure::von_karman)
+    return internal_force_with<von_karman_terms>(geo, ue, C_mb_, F_, mitc9);
+  return internal_force_with<green_lagrange_terms>(geo, ue, C_mb_, F_, mitc9);
 }
 
 ElementMatrix NonlinearMindlinQ9::tangent_stiffness(const ElementGeometry& geo,
