@@ -25,6 +25,21 @@ BoundaryConditions edges(const std::string& x_edges, const std::string& y_edges)
   return bc;
 }
 
+/// One point of a published w0/h–load curve: the load factor reached the table's load, the deflection
+/// is within 2 % of the table's, and the comparison is printed.
+void expect_on_levy_curve(double P, double lambda_P, double w_over_h, double levy_w_over_h) {
+  EXPECT_NEAR(lambda_P, P, 1e-9);
+  EXPECT_NEAR(w_over_h, levy_w_over_h, 0.02 * levy_w_over_h) << "q a^4/(E h^4) = " << P;
+  std::printf("q a^4/(E h^4) = %6.2f: w/h = %.4f, Levy %.3f (%+.2f %%)\n", P, w_over_h, levy_w_over_h,
+              100.0 * (w_over_h / levy_w_over_h - 1.0));
+}
+
+/// Thin clamped square plate, 0.1 m, 1 mm, E = 70 GPa, ν = 0.3, n × n q9 elements.
+PlateModel thin_clamped_plate(int n) {
+  const Laminate lam = laminate_of(isotropic(70e9, 0.3, 2700.0), "[0]", 1e-3);
+  return {lam, {0.1, 0.1}, {n, n, MassMatrix::lumped, ElementFormulation::q9}, test::all_edges("clamped")};
+}
+
 TEST(NonlinearStatic, SmallLoadsReproduceTheLinearSolution) {
   const Laminate lam = laminate_of(test::thesis_3_6(), "[45/90/-45/0]s", 0.5e-3);
   const PlateModel model(lam, {0.127, 0.0762}, {8, 6, MassMatrix::lumped, ElementFormulation::q9},
@@ -77,10 +92,7 @@ TEST(NonlinearStatic, LevySimplySupportedSquarePlateLargeDeflectionCurve) {
   for (std::size_t i = 0; i < std::size(P); ++i) {
     const auto step = static_cast<std::size_t>(std::lround(P[i] / P_max * 20.0));
     const auto& [lambda, w] = r.load_deflection[step];
-    EXPECT_NEAR(lambda * P_max, P[i], 1e-9);
-    EXPECT_NEAR(w / h, w_over_h[i], 0.02 * w_over_h[i]) << "q a^4/(E h^4) = " << P[i];
-    std::printf("q a^4/(E h^4) = %6.1f: w/h = %.4f, Levy %.3f (%+.2f %%)\n", P[i], w / h, w_over_h[i],
-                100.0 * (w / h / w_over_h[i] - 1.0));
+    expect_on_levy_curve(P[i], lambda * P_max, w / h, w_over_h[i]);
   }
 }
 
@@ -89,8 +101,8 @@ TEST(NonlinearStatic, LevyClampedSquarePlateLargeDeflectionCurve) {
   // deflections", NACA Report 740 (1942, also TN 847), Table 5: von Kármán plate, square, ν = 0.316,
   // edges clamped against rotation and held against normal in-plane motion, free to slide along the
   // edge. Centre deflection w0/h against q a⁴/(E h⁴); Levy chose w0 and computed the pressure, hence the
-  // uneven loads. His series is estimated accurate to a few tenths of a percent; the table ends at
-  // w0/h = 1.902.
+  // uneven loads. The table ends at w0/h = 1.902. Our converged answer falls below it by a share growing
+  // with the load, to 1.95 % at the last entry; mesh, thickness and edge variants in docs/validation.md §17.
   constexpr double P[] = {17.79, 38.3, 63.4, 95.0, 134.9, 184.0, 245.0, 318.0, 402.0};
   constexpr double w_over_h[] = {0.237, 0.471, 0.695, 0.912, 1.121, 1.323, 1.521, 1.714, 1.902};
   const double a = 0.2, h = 2e-3, E = 70e9; // a/h = 100, as for the simply supported case
@@ -111,18 +123,13 @@ TEST(NonlinearStatic, LevyClampedSquarePlateLargeDeflectionCurve) {
   ASSERT_EQ(r.load_deflection.size(), std::size(P) + 1);
   for (std::size_t i = 0; i < std::size(P); ++i) {
     const auto& [lambda, w] = r.load_deflection[i + 1];
-    EXPECT_NEAR(lambda * P_max, P[i], 1e-9);
-    EXPECT_NEAR(w / h, w_over_h[i], 0.02 * w_over_h[i]) << "q a^4/(E h^4) = " << P[i];
-    std::printf("q a^4/(E h^4) = %6.2f: w/h = %.4f, Levy %.3f (%+.2f %%)\n", P[i], w / h, w_over_h[i],
-                100.0 * (w / h / w_over_h[i] - 1.0));
+    expect_on_levy_curve(P[i], lambda * P_max, w / h, w_over_h[i]);
   }
 }
 
 TEST(NonlinearStatic, LoadFactorsMustIncreaseToOne) {
   // An explicit load path is a list of increasing load factors ending at the full load.
-  const Laminate lam = laminate_of(isotropic(70e9, 0.3, 2700.0), "[0]", 1e-3);
-  const PlateModel model(lam, {0.1, 0.1}, {2, 2, MassMatrix::lumped, ElementFormulation::q9},
-                         test::all_edges("clamped"));
+  const PlateModel model = thin_clamped_plate(2);
   StaticLoad load;
   load.pressure = 1.0;
   for (const std::vector<double>& bad : {std::vector<double>{0.5, 0.4, 1.0}, {0.5}, {0.0, 1.0}, {0.5, 1.5}}) {
@@ -142,9 +149,7 @@ TEST(NonlinearStatic, LoadFactorsMustIncreaseToOne) {
 TEST(NonlinearStatic, NewtonFailureIsAClearMessageNotANaN) {
   // A clamped plate under a pressure giving w ≈ 20 h in linear theory, in one load step with one
   // Newton iteration allowed: it cannot converge, and two step cuts do not help.
-  const Laminate lam = laminate_of(isotropic(70e9, 0.3, 2700.0), "[0]", 1e-3);
-  const PlateModel model(lam, {0.1, 0.1}, {4, 4, MassMatrix::lumped, ElementFormulation::q9},
-                         test::all_edges("clamped"));
+  const PlateModel model = thin_clamped_plate(4);
   StaticLoad load;
   load.pressure = 1e7;
   NonlinearSettings s;

@@ -34,8 +34,13 @@ public:
   }
 };
 
-/// The checks on the pivots of an LDLᵀ factor: positive, and not many orders below the largest.
-void check_pivots(const Eigen::VectorXd& d) {
+/// The checks on an LDLᵀ factorization: it completed, its pivots are positive and none is many orders
+/// below the largest. `pivots` is called only when the factorization completed.
+template <class Pivots>
+void check_ldlt(Eigen::ComputationInfo info, const Pivots& pivots) {
+  if (info != Eigen::Success)
+    throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
+  const Eigen::VectorXd d = pivots();
   if (!(d.minCoeff() > 0.0))
     throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
   // A pivot many orders below the largest is a near-mechanism: round-off, not stiffness.
@@ -66,15 +71,11 @@ void SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   }
   if (kind_ == SparseSolverKind::cholmod_simplicial) {
     impl_->cholmod_ldlt.compute(A);
-    if (impl_->cholmod_ldlt.info() != Eigen::Success)
-      throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
-    check_pivots(impl_->cholmod_ldlt.pivots());
+    check_ldlt(impl_->cholmod_ldlt.info(), [&] { return impl_->cholmod_ldlt.pivots(); });
     return;
   }
   impl_->ldlt.compute(A);
-  if (impl_->ldlt.info() != Eigen::Success)
-    throw NotPositiveDefinite("the matrix is not positive definite (a pivot of LDLᵀ is zero or negative)");
-  check_pivots(impl_->ldlt.vectorD());
+  check_ldlt(impl_->ldlt.info(), [&] { return Eigen::VectorXd(impl_->ldlt.vectorD()); });
 }
 
 Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const {
