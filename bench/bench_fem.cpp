@@ -15,6 +15,7 @@
 // flops_L = CHOLMOD's floating-point operation count of the numeric factorization (Common->fl).
 // The label of the CHOLMOD runs names the fill-reducing ordering CHOLMOD chose.
 #include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/loads.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/laminate/laminate.hpp"
@@ -52,10 +53,7 @@ Laminate thesis_3_6_laminate() {
 }
 
 BoundaryConditions all_edges_ss() {
-  BoundaryConditions bc;
-  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
-    bc.edges[static_cast<std::size_t>(e)] = *parse_restraint("ss", e);
-  return bc;
+  return BoundaryConditions::on_edges("ss", "ss", "ss", "ss");
 }
 
 /// One mesh: the model and its matrices, built once and shared by every benchmark of that mesh.
@@ -68,7 +66,7 @@ struct Case {
       : model(thesis_3_6_laminate(), {plate_a, plate_b}, {nx, ny, MassMatrix::lumped, ElementFormulation::q9},
               all_edges_ss()),
         K(model.stiffness()), M(model.mass()), Keff(K + M / (newmark_beta * time_step * time_step)),
-        f(model.point_load(plate_a / 2, plate_b / 2, 1.0)) {}
+        f(point_load(model, plate_a / 2, plate_b / 2, 1.0)) {}
 };
 
 Case& get_case(int nx, int ny) {

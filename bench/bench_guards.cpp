@@ -33,9 +33,7 @@ PlateModel thesis_plate(int nx, int ny) {
   std::vector<Ply> plies;
   for (const double angle : parse_layup("[45/90/-45/0]3s"))
     plies.push_back({angle, 0.19375e-3, 0});
-  BoundaryConditions bc;
-  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
-    bc.edges[static_cast<std::size_t>(e)] = *parse_restraint("ss", e);
+  const BoundaryConditions bc = BoundaryConditions::on_edges("ss", "ss", "ss", "ss");
   return {Laminate({m}, plies), {0.127, 0.0762}, {nx, ny, MassMatrix::lumped, ElementFormulation::q9}, bc};
 }
 

@@ -2,10 +2,9 @@
 //   ./build/release/bench/bench_impact --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // Counters: steps, us_per_step, solve_us (one triangular solve pair with the same factor, measured
 // in the same process) and overhead = us_per_step / solve_us − 1.
-#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
-#include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/plate_from_deck.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -24,19 +23,18 @@ Deck section36(int nx, int ny, std::optional<double> end) {
 }
 
 void run_impact(benchmark::State& state, const Deck& deck, SparseSolverKind kind) {
-  const PlateModel model = plate_from_deck(deck);
-  ImpactSettings settings = impact_settings_from_deck(deck);
-  settings.solver = kind;
-  const ImpactSolver solver(model, settings);
+  ImpactCaseDescription description = impact_case_description(deck);
+  description.solver = kind;
+  const ImpactCase impact(description);
   ImpactResult r;
   for (auto _ : state) {
-    r = solver.run();
+    r = impact.run();
     benchmark::DoNotOptimize(r.peak_force);
   }
-  const double solve = solver.time_one_solve(101);
+  const double solve = impact.time_one_solve(101);
   const double per_step = r.wall_time / static_cast<double>(r.steps);
   state.counters["steps"] = static_cast<double>(r.steps);
-  state.counters["equations"] = solver.equations();
+  state.counters["equations"] = impact.equations();
   state.counters["us_per_step"] = per_step * 1e6;
   state.counters["solve_us"] = solve * 1e6;
   state.counters["overhead"] = per_step / solve - 1.0;
@@ -56,12 +54,10 @@ BENCHMARK(BM_Impact_Section36_15x11_FullEvent)
 
 /// Setup cost: assembly, factorization of K̄ and the fundamental period for the end rule.
 void BM_Impact_Section36_15x11_Setup(benchmark::State& state) {
-  const Deck deck = section36(15, 11, std::nullopt);
-  const PlateModel model = plate_from_deck(deck);
-  const ImpactSettings settings = impact_settings_from_deck(deck);
+  const ImpactCaseDescription description = impact_case_description(section36(15, 11, std::nullopt));
   for (auto _ : state) {
-    const ImpactSolver solver(model, settings);
-    benchmark::DoNotOptimize(solver.equations());
+    const ImpactCase impact(description);
+    benchmark::DoNotOptimize(impact.equations());
   }
 }
 BENCHMARK(BM_Impact_Section36_15x11_Setup)->Unit(benchmark::kMillisecond);
@@ -69,7 +65,7 @@ BENCHMARK(BM_Impact_Section36_15x11_Setup)->Unit(benchmark::kMillisecond);
 /// Per-step cost on the finer meshes: the first 500 µs (500 steps) of the same event.
 void BM_Impact_Section36_500Steps(benchmark::State& state) {
   run_impact(state, section36(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 500e-6),
-             ImpactSettings{}.solver);
+             ImpactCaseDescription{}.solver);
 }
 BENCHMARK(BM_Impact_Section36_500Steps)
     ->Args({15, 11})

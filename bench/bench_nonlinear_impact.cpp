@@ -3,10 +3,9 @@
 //   ./build/release/bench/bench_nonlinear_impact --benchmark_repetitions=3
 //   --benchmark_report_aggregates_only=true
 // Counters: steps, us_per_step, newton_per_step (iterations per time step), factorizations of K̄.
-#include "plyimpact/analysis/nonlinear_impact.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
-#include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/plate_from_deck.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -22,12 +21,10 @@ Deck section36() {
 
 /// §3.6 case, 15×11, 6.14 kg at 2.68 m/s, Δt = 1 µs, full event (end = auto): linear solver.
 void BM_Section36_Linear(benchmark::State& state) {
-  const Deck deck = section36();
-  const PlateModel model = plate_from_deck(deck);
-  const ImpactSolver solver(model, impact_settings_from_deck(deck));
+  const ImpactCase impact(impact_case_description(section36()));
   ImpactResult r;
   for (auto _ : state) {
-    r = solver.run();
+    r = impact.run();
     benchmark::DoNotOptimize(r.peak_force);
   }
   state.counters["steps"] = static_cast<double>(r.steps);
@@ -38,23 +35,21 @@ BENCHMARK(BM_Section36_Linear)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 /// The same case, geometrically non-linear (von Kármán or Green–Lagrange).
 void BM_Section36_Nonlinear(benchmark::State& state) {
-  const Deck deck = section36();
-  const PlateModel model = plate_from_deck(deck);
-  NonlinearImpactSettings ns;
-  ns.measure = static_cast<StrainMeasure>(state.range(0));
-  const NonlinearImpactSolver solver(model, impact_settings_from_deck(deck), ns);
-  NonlinearImpactResult r;
+  ImpactCaseDescription description = impact_case_description(section36());
+  description.nonlinear = NonlinearImpactSettings{.measure = static_cast<StrainMeasure>(state.range(0))};
+  const ImpactCase impact(description);
+  ImpactResult r;
   for (auto _ : state) {
-    r = solver.run();
-    benchmark::DoNotOptimize(r.impact.peak_force);
+    r = impact.run();
+    benchmark::DoNotOptimize(r.peak_force);
   }
-  const auto steps = static_cast<double>(r.impact.steps);
+  const auto steps = static_cast<double>(r.steps);
   state.counters["steps"] = steps;
-  state.counters["us_per_step"] = r.impact.wall_time / steps * 1e6;
-  state.counters["newton_per_step"] = static_cast<double>(r.newton_iterations) / steps;
-  state.counters["max_newton"] = r.max_iterations_per_step;
-  state.counters["factorizations"] = r.factorizations;
-  state.counters["peak_deflection_mm"] = r.impact.peak_contact_deflection * 1e3;
+  state.counters["us_per_step"] = r.wall_time / steps * 1e6;
+  state.counters["newton_per_step"] = static_cast<double>(r.newton->iterations) / steps;
+  state.counters["max_newton"] = r.newton->max_iterations_per_step;
+  state.counters["factorizations"] = r.newton->factorizations;
+  state.counters["peak_deflection_mm"] = r.peak_contact_deflection * 1e3;
 }
 BENCHMARK(BM_Section36_Nonlinear)
     ->Arg(static_cast<int>(StrainMeasure::von_karman))

@@ -8,23 +8,19 @@
 //   plyimpact buckling examples/buckling-isotropic.toml -o results/buckling
 #include "plyimpact/analysis/buckling_analysis.hpp"
 #include "plyimpact/analysis/damage_tracker.hpp"
-#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
-#include "plyimpact/analysis/nonlinear_impact.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/static_analysis.hpp"
-#include "plyimpact/analysis/stress_probe.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
-#include "plyimpact/io/damage_maps.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/impact_text_report.hpp"
+#include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/laminate_report.hpp"
-#include "plyimpact/io/plate_from_deck.hpp"
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/results.hpp"
-#include "plyimpact/io/vtk_output.hpp"
 #include "sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -76,7 +72,7 @@ int run_static_nonlinear(const Options& o, const Deck& deck);
 int run_static(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::static_);
   if (o.nonlinear || deck.nonlinear) return run_static_nonlinear(o, deck);
-  const PlateModel model = plate_from_deck(deck);
+  const PlateModel model = plate_model(deck);
   const StaticResult r = solve_static(model, *deck.load);
   fmt::print("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
   fmt::print("  center_deflection     = {:.6e} m\n", r.center_deflection);
@@ -96,7 +92,7 @@ int run_static(const Options& o) {
 
 /// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.
 int run_static_nonlinear(const Options& o, const Deck& deck) {
-  const PlateModel model = plate_from_deck(deck);
+  const PlateModel model = plate_model(deck);
   const NonlinearStaticResult r = solve_static_nonlinear(model, *deck.load, deck.nonlinear_settings);
   fmt::print(
       "static, non-linear ({}): {} elements, {} free DOFs, {} load steps, {} Newton iterations, {} step "
@@ -125,7 +121,7 @@ int run_static_nonlinear(const Options& o, const Deck& deck) {
 
 int run_modal(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::modal);
-  const PlateModel model = plate_from_deck(deck);
+  const PlateModel model = plate_model(deck);
   const ModalResult r = solve_modal(model, deck.modal.count);
   fmt::print("modal: {} elements, {} free DOFs, {} zero-energy modes (rigid-body or spurious)\n",
              model.mesh().element_count(), model.size(), r.zero_energy_modes);
@@ -143,7 +139,7 @@ int run_modal(const Options& o) {
 
 int run_buckling(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::buckling);
-  const PlateModel model = plate_from_deck(deck);
+  const PlateModel model = plate_model(deck);
   const BucklingResult r = solve_buckling(model, *deck.buckling);
   const auto& b = *deck.buckling;
   fmt::print("buckling: reference load Nx = {} N/m, Ny = {} N/m, Nxy = {} N/m\n", b.Nx, b.Ny, b.Nxy);
@@ -167,17 +163,17 @@ extern "C" void on_signal(int /*signal*/) {
 }
 
 /// Progress on a terminal only, and only once a run has taken more than a second.
-class ProgressBar {
+class ProgressBar final : public ImpactObserver {
 public:
   ProgressBar() : enabled_(::isatty(STDOUT_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
-  void operator()(double t, long step) {
-    if (!enabled_) return;
+  void on_step(const StepView& v) override {
+    if (!enabled_ || v.step % 1000 != 0) return;
     if (std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
     shown_ = true;
-    fmt::print(stderr, "\r  t = {:10.1f} us, step {:>9}", t * 1e6, step);
+    fmt::print(stderr, "\r  t = {:10.1f} us, step {:>9}", v.t * 1e6, v.step);
     std::fflush(stderr);
   }
-  ~ProgressBar() {
+  ~ProgressBar() override {
     if (shown_) fmt::print(stderr, "\r{:40}\r", "");
   }
   ProgressBar(const ProgressBar&) = delete;
@@ -189,119 +185,36 @@ private:
   std::chrono::steady_clock::time_point start_;
 };
 
-/// ParaView frames every `every` steps and at the requested times (docs/deck.md, [output] vtk*).
-class VtkFrames {
-public:
-  VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const PlateModel& model,
-            VtkOptions options)
-      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)) {
-    std::sort(at_.begin(), at_.end());
-  }
-  void observe(long step, double t, double dt, const Eigen::VectorXd& u,
-               const std::vector<DamageOnset>& onsets) {
-    bool due = every_ > 0 && step % every_ == 0;
-    while (next_ < at_.size() && t >= at_[next_] - 1e-9 * dt) {
-      due = true;
-      ++next_;
-    }
-    if (due) series_.write(step, t, u, onsets);
-  }
-  [[nodiscard]] std::size_t frames() const { return series_.frames(); }
-
-private:
-  int every_;
-  std::vector<double> at_;
-  std::size_t next_ = 0;
-  VtkSeries series_;
-};
-
-/// Large-deflection impact (SPEC §8): the same results plus Newton statistics.
-NonlinearImpactResult run_nonlinear_impact(const Deck& deck, const PlateModel& model,
-                                           const ImpactSettings& settings, const ImpactObserver& observer) {
-  NonlinearImpactSettings ns;
-  ns.measure = deck.nonlinear_settings.measure;
-  const NonlinearImpactSolver solver(model, settings, ns);
-  NonlinearImpactResult r = solver.run(observer);
-  fmt::print("non-linear ({}): {} Newton iterations in {} steps ({:.2f} per step, at most {}), {} "
-             "factorizations of K_T + c0 M\n",
-             to_string(ns.measure), r.newton_iterations, r.impact.steps,
-             static_cast<double>(r.newton_iterations) / static_cast<double>(std::max(1L, r.impact.steps)),
-             r.max_iterations_per_step, r.factorizations);
-  return r;
-}
-
-void add_nonlinear_impact_summary(nlohmann::json& j, const Deck& deck, const NonlinearImpactResult& r) {
-  j["nonlinear"] = true;
-  j["strain_measure"] = to_string(deck.nonlinear_settings.measure);
-  j["newton_iterations"] = r.newton_iterations;
-  j["max_newton_iterations_per_step"] = r.max_iterations_per_step;
-  j["factorizations"] = r.factorizations;
-}
-
 int run_impact(const Options& o) {
   // First thing: an interrupt during set-up still ends in consistent, incomplete results.
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
-  ImpactSettings settings = impact_settings_from_deck(deck);
-  const PlateModel model = impact_model_from_deck(deck, settings.rigid_target);
-  settings.cancel = &interrupted;
-  auto bar = std::make_shared<ProgressBar>();
-  settings.progress = [bar](double t, long step) { (*bar)(t, step); };
-  const std::vector<Criterion> criteria = parse_criteria(deck.damage.criteria);
-  std::optional<DamageTracker> damage;
-  if (!criteria.empty() && !settings.rigid_target)
-    damage.emplace(model, criteria, damage_options_from_deck(deck));
-  std::optional<StressProbes> probes;
-  if (!deck.probes.empty() && !settings.rigid_target) probes.emplace(model, deck.probes);
-  // The folder exists before the run: ParaView frames are written while it runs.
-  const auto out = results_folder(o, deck);
-  std::optional<VtkFrames> vtk;
-  if (out && deck.vtk.enabled && !settings.rigid_target)
-    vtk.emplace(deck.vtk, out->path(), model,
-                VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
-                           damage_options_from_deck(deck).criterion_options});
-  std::optional<NodalSnapshot> report_state;
-  const std::vector<DamageOnset> no_onsets;
-  const ImpactObserver observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
-    if (damage) damage->observe(step, t, force, u);
-    if (probes) probes->observe(step, t, force, u);
-    if (vtk) vtk->observe(step, t, settings.dt, u, damage ? damage->onsets() : no_onsets);
-    if (deck.report_displacements_at && !report_state &&
-        t >= *deck.report_displacements_at - 1e-9 * settings.dt)
-      report_state = NodalSnapshot{t, u};
-  };
-  // No observer when nothing watches the plate: the solver then skips expanding u every step.
-  const bool watched = damage || probes || vtk || deck.report_displacements_at;
-  const ImpactObserver watch = watched && !settings.rigid_target ? observer : ImpactObserver{};
-  std::optional<NonlinearImpactResult> nonlinear;
-  if (o.nonlinear || deck.nonlinear) nonlinear = run_nonlinear_impact(deck, model, settings, watch);
-  const ImpactResult r = nonlinear ? nonlinear->impact : ImpactSolver(model, settings).run(watch);
-  bar.reset();
-  fmt::print("{}", impact_summary_text(settings, r));
+  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  ImpactRunOptions options;
+  if (!o.output_dir.empty()) options.output_dir = o.output_dir;
+  options.cancel = &interrupted;
+  ImpactRunOutcome run;
+  {
+    ProgressBar bar;
+    options.observers = {&bar};
+    run = run_impact(deck, impact, options);
+  }
+  const ImpactResult& r = run.result;
+  if (r.newton)
+    fmt::print("non-linear ({}): {} Newton iterations in {} steps ({:.2f} per step, at most {}), {} "
+               "factorizations of K_T + c0 M\n",
+               to_string(impact.settings().nonlinear->measure), r.newton->iterations, r.steps,
+               static_cast<double>(r.newton->iterations) / static_cast<double>(std::max(1L, r.steps)),
+               r.newton->max_iterations_per_step, r.newton->factorizations);
+  fmt::print("{}", impact_summary_text(run.settings, r));
   for (const std::string& w : r.warnings) // also in summary.json "warnings" (docs/robustness.md)
     fmt::print(stderr, "plyimpact: warning: {}\n", w);
-  const std::vector<DamageOnset> first = damage ? damage->first_onsets() : std::vector<DamageOnset>{};
-  if (damage)
-    fmt::print("first failures (per criterion, mode and ply/interface):\n{}", first_failures_text(first));
-  if (out) {
-    if (damage) {
-      out->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
-      out->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
-      const DamageMapFiles maps = write_damage_maps(out->path(), model.mesh(), damage->onsets());
-      if (!maps.warning.empty()) fmt::print(stderr, "plyimpact: warning: {}\n", maps.warning);
-    }
-    if (probes) out->write_text("probes.csv", probes_csv(*probes));
-    out->write_text("report.txt", impact_report_text(deck, model, settings, r, first, report_state));
-    write_impact_results(*out, deck, &model, settings, r, [&](nlohmann::json& j) {
-      if (vtk) j["vtk_frames"] = vtk->frames();
-      if (nonlinear) add_nonlinear_impact_summary(j, deck, *nonlinear);
-      if (!damage) return;
-      j["first_failures"] = nlohmann::json::array();
-      for (const auto& f : first)
-        j["first_failures"].push_back(onset_json(f));
-    });
-  }
+  for (const std::string& n : run.notes)
+    fmt::print(stderr, "plyimpact: warning: {}\n", n);
+  if (run.damage_tracked)
+    fmt::print("first failures (per criterion, mode and ply/interface):\n{}",
+               first_failures_text(run.first_failures));
   if (interrupted.load()) return 130;
   return r.complete ? 0 : 3;
 }
@@ -325,20 +238,20 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
 
 int run_threshold(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::threshold);
-  const ImpactSettings settings = impact_settings_from_deck(deck);
   std::string name = !o.criterion.empty() ? o.criterion : deck.threshold.criterion;
   if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
   if (name.empty())
     throw DeckError(fmt::format("{}: error: give --criterion NAME or [threshold] criterion", deck.source));
   const auto criterion = parse_criterion(name);
   if (!criterion) throw DeckError(fmt::format("{}: error: unknown criterion '{}'", deck.source, name));
-  const PlateModel model = plate_from_deck(deck);
+  const PlateModel model = plate_model(deck);
   ThresholdOptions options;
   options.tolerance = o.tolerance > 0.0 ? o.tolerance : deck.threshold.tolerance;
   options.max_velocity = deck.threshold.max_velocity;
   options.damage = damage_options_from_deck(deck);
   const auto t0 = std::chrono::steady_clock::now();
-  const ThresholdResult r = find_threshold_velocity(model, settings, *criterion, options);
+  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  const ThresholdResult r = find_threshold_velocity(impact, *criterion, options);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fmt::print("{}", threshold_text(name, r));
   if (const auto out = results_folder(o, deck)) {
@@ -400,7 +313,7 @@ int run(int argc, char** argv) {
                         "criterion name (default: [threshold] or the first [damage] one)");
   threshold->add_option("--tolerance", o.tolerance, "bracket width in m/s (default 0.01)");
   CLI::App* stat = add_analysis(app, "static", "Static analysis (point, patch, pressure loads)", o);
-  for (CLI::App* sub : {impact, stat})
+  for (CLI::App* sub : {impact, stat, threshold})
     sub->add_flag("--nonlinear", o.nonlinear,
                   "large deflections: geometrically non-linear plate (or nonlinear = true in the deck)");
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);

@@ -1,11 +1,11 @@
 // Damage tracking and the threshold velocity (SPEC §6–7): irreversibility, consistency of the fast
 // path with direct stress recovery, threshold monotonicity, tolerance and determinism.
 #include "plyimpact/analysis/damage_tracker.hpp"
-#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/plate_from_deck.hpp"
 
 #include <gtest/gtest.h>
 
@@ -73,12 +73,11 @@ struct DamageRun {
 };
 
 DamageRun run_with_damage(const Deck& deck) {
-  const PlateModel model = plate_from_deck(deck);
-  const ImpactSettings settings = impact_settings_from_deck(deck);
-  DamageTracker tracker(model, parse_criteria(deck.damage.criteria));
-  (void)ImpactSolver(model, settings).run([&](long step, double t, double f, const Eigen::VectorXd& u) {
-    tracker.observe(step, t, f, u);
-  });
+  const ImpactCase impact(impact_case_description(deck));
+  DamageTracker tracker(impact.model(), parse_criteria(deck.damage.criteria));
+  RunRequest run;
+  run.observers = {&tracker};
+  (void)impact.run(run);
   return {tracker.onsets(), tracker.area_history()};
 }
 
@@ -141,11 +140,10 @@ TEST(Damage, FastChoiChangPathEqualsTheGeneralPath) {
 
 TEST(Threshold, MonotoneWithinToleranceAndDeterministic) {
   const Deck deck = table42_deck(5.0);
-  const PlateModel model = plate_from_deck(deck);
-  const ImpactSettings settings = impact_settings_from_deck(deck);
+  const ImpactCase impact(impact_case_description(deck));
   ThresholdOptions options;
   options.tolerance = 0.02;
-  const ThresholdResult r = find_threshold_velocity(model, settings, Criterion::choi_chang_matrix, options);
+  const ThresholdResult r = find_threshold_velocity(impact, Criterion::choi_chang_matrix, options);
   ASSERT_TRUE(r.found);
   EXPECT_LE(r.velocity - r.lower, options.tolerance);
   ASSERT_TRUE(r.first_failure.has_value());
@@ -156,12 +154,12 @@ TEST(Threshold, MonotoneWithinToleranceAndDeterministic) {
     EXPECT_EQ(t.failed, t.velocity >= r.velocity) << t.velocity;
   // Independent check of both ends of the bracket.
   const auto fails = [&](double v) {
-    DamageTracker tracker(model, {Criterion::choi_chang_matrix});
-    Impactor imp = settings.impactor;
-    imp.velocity = v;
-    (void)ImpactSolver(model, settings).run(imp, [&](long s, double t, double f, const Eigen::VectorXd& u) {
-      tracker.observe(s, t, f, u);
-    });
+    DamageTracker tracker(impact.model(), {Criterion::choi_chang_matrix});
+    RunRequest run;
+    run.impactor = impact.settings().impactor;
+    run.impactor->velocity = v;
+    run.observers = {&tracker};
+    (void)impact.run(run);
     return tracker.any_failure();
   };
   EXPECT_TRUE(fails(r.velocity));
@@ -169,8 +167,7 @@ TEST(Threshold, MonotoneWithinToleranceAndDeterministic) {
   EXPECT_FALSE(fails(r.lower));
   EXPECT_FALSE(fails(r.lower - 0.5));
   // Deterministic: the same search gives the same velocity, bit for bit.
-  EXPECT_EQ(find_threshold_velocity(model, settings, Criterion::choi_chang_matrix, options).velocity,
-            r.velocity);
+  EXPECT_EQ(find_threshold_velocity(impact, Criterion::choi_chang_matrix, options).velocity, r.velocity);
 }
 
 } // namespace

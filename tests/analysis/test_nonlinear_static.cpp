@@ -17,12 +17,7 @@ using test::isotropic;
 using test::laminate_of;
 
 BoundaryConditions edges(const std::string& x_edges, const std::string& y_edges) {
-  BoundaryConditions bc;
-  bc.edges[static_cast<int>(Edge::x0)] = *parse_restraint(x_edges, Edge::x0);
-  bc.edges[static_cast<int>(Edge::xa)] = *parse_restraint(x_edges, Edge::xa);
-  bc.edges[static_cast<int>(Edge::y0)] = *parse_restraint(y_edges, Edge::y0);
-  bc.edges[static_cast<int>(Edge::yb)] = *parse_restraint(y_edges, Edge::yb);
-  return bc;
+  return BoundaryConditions::on_edges(x_edges, x_edges, y_edges, y_edges);
 }
 
 /// One point of a published w0/h–load curve: the load factor reached the table's load, the deflection

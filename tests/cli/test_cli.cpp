@@ -154,6 +154,7 @@ E = 207e9
 velocity = 2.92
 [contact]
 k = 0.6e9
+load = "point"
 [time]
 dt = 2e-5
 end = 1e-4
@@ -166,8 +167,9 @@ end = 1e-4
             std::string::npos)
       << ok.out;
   const auto warnings = read_json(dir / "out" / "summary.json")["warnings"];
-  ASSERT_EQ(warnings.size(), 2U);
+  ASSERT_EQ(warnings.size(), 3U);
   EXPECT_NE(warnings[0].get<std::string>().find("(t_c/50)"), std::string::npos);
+  EXPECT_NE(warnings[2].get<std::string>().find("the contact is not resolved"), std::string::npos);
 
   // The memory limit (overridden by the environment) refuses the factorization with the estimate.
   const std::string limited = "PLYIMPACT_MEMORY_LIMIT_BYTES=1000 " + std::string(PLYIMPACT_EXE) + " impact " +

@@ -35,6 +35,7 @@ b = 0.1
 [mesh]
 nx = 4
 ny = 4
+element = "q9"
 [boundary]
 x0 = "clamped"
 xa = "clamped"

@@ -39,6 +39,28 @@ ElementVector random_state(std::mt19937& rng, double h, double L) {
   return u;
 }
 
+/// The non-linear element of one formulation and strain measure on one laminate, with its linear twin.
+struct ElementUnderTest {
+  ElementUnderTest(const Laminate& lam, ElementFormulation formulation, StrainMeasure measure)
+      : linear(make_plate_element(formulation)), section(section_stiffness(lam)),
+        nonlinear(*linear, measure) {}
+  [[nodiscard]] ElementGeometry geometry(const ElementCoordinates& xy) const {
+    return nonlinear.geometry(xy, section);
+  }
+  [[nodiscard]] ElementVector internal_force(const ElementGeometry& geo, const ElementVector& u) const {
+    return nonlinear.internal_force(geo, section, u);
+  }
+  [[nodiscard]] ElementMatrix tangent_stiffness(const ElementGeometry& geo, const ElementVector& u) const {
+    return nonlinear.tangent_stiffness(geo, section, u);
+  }
+  [[nodiscard]] ElementMatrix linear_stiffness(const ElementCoordinates& xy) const {
+    return linear->stiffness(xy, ElementSection(section));
+  }
+  std::unique_ptr<PlateElement> linear;
+  SectionStiffness section;
+  NonlinearMindlinQ9 nonlinear;
+};
+
 struct TangentCheck {
   double full = 0.0;      ///< ‖K_T − K_FD‖ / ‖K_T‖
   double nonlinear = 0.0; ///< ‖(K_T − K_L) − (K_FD − K_L)‖ / ‖K_T − K_L‖
@@ -46,7 +68,7 @@ struct TangentCheck {
 
 /// Central differences column by column, step 1e-5 of each DOF's scale (the force is a cubic
 /// polynomial of u, so the truncation error is ~1e-10 relative).
-TangentCheck check_tangent(const NonlinearMindlinQ9& el, const ElementGeometry& geo, const ElementVector& u,
+TangentCheck check_tangent(const ElementUnderTest& el, const ElementGeometry& geo, const ElementVector& u,
                            const ElementMatrix& K_linear, double h, double L) {
   const double scale[5] = {h * h / L, h * h / L, h, h / L, h / L};
   const ElementMatrix K = el.tangent_stiffness(geo, u);
@@ -71,11 +93,10 @@ class NonlinearTangent : public ::testing::TestWithParam<Case> {};
 TEST_P(NonlinearTangent, EqualsFiniteDifferenceOfInternalForceAtRandomStates) {
   // Unsymmetric layup: B ≠ 0 couples membrane and bending, so every block of C is exercised.
   const Laminate lam = laminate_of(thesis_3_6(), "[0/45/90/-30]", 0.4e-3);
-  const NonlinearMindlinQ9 el(lam, GetParam().formulation, GetParam().measure);
-  const MindlinQ9 linear(lam, GetParam().formulation);
+  const ElementUnderTest el(lam, GetParam().formulation, GetParam().measure);
   const ElementCoordinates xy = distorted_element();
   const ElementGeometry geo = el.geometry(xy);
-  const ElementMatrix K_linear = linear.stiffness(xy);
+  const ElementMatrix K_linear = el.linear_stiffness(xy);
   std::mt19937 rng(20261122);
   double worst_full = 0.0, worst_nonlinear = 0.0;
   for (int trial = 0; trial < 5; ++trial) {
@@ -95,11 +116,10 @@ TEST_P(NonlinearTangent, EqualsFiniteDifferenceOfInternalForceAtRandomStates) {
 
 TEST_P(NonlinearTangent, ReducesToTheLinearElementAtSmallDisplacements) {
   const Laminate lam = laminate_of(thesis_3_6(), "[0/45/90/-30]", 0.4e-3);
-  const NonlinearMindlinQ9 el(lam, GetParam().formulation, GetParam().measure);
-  const MindlinQ9 linear(lam, GetParam().formulation);
+  const ElementUnderTest el(lam, GetParam().formulation, GetParam().measure);
   const ElementCoordinates xy = distorted_element();
   const ElementGeometry geo = el.geometry(xy);
-  const ElementMatrix K_linear = linear.stiffness(xy);
+  const ElementMatrix K_linear = el.linear_stiffness(xy);
   EXPECT_LT((el.tangent_stiffness(geo, ElementVector::Zero()) - K_linear).norm(), 1e-13 * K_linear.norm());
   // f(εu) = ε K_L u + O(ε²): the relative departure scales with ε.
   std::mt19937 rng(7);
@@ -126,7 +146,7 @@ INSTANTIATE_TEST_SUITE_P(StrainMeasures, NonlinearTangent,
 TEST(NonlinearElement, GreenLagrangeWithMitc9IsRefusedWithAClearMessage) {
   const Laminate lam = laminate_of(thesis_3_6(), "[0/90]s", 0.4e-3);
   try {
-    const NonlinearMindlinQ9 el(lam, ElementFormulation::mitc9, StrainMeasure::green_lagrange);
+    const ElementUnderTest el(lam, ElementFormulation::mitc9, StrainMeasure::green_lagrange);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("q9"), std::string::npos);

@@ -4,12 +4,14 @@
 #include "plyimpact/analysis/static_analysis.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/quadrature.hpp"
+#include "plyimpact/fem/structured_mesh.hpp"
 #include "support/decks.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 
 namespace plyimpact {
@@ -34,13 +36,14 @@ TEST(ShapeFunctions, PartitionOfUnityAndKroneckerProperty) {
 /// and centre nodes follow the bilinear map of each element's corners (straight-sided elements).
 PlateModel distorted_patch(const Laminate& lam, ElementFormulation formulation) {
   PlateModel model(lam, {1.0, 1.0}, {3, 3, MassMatrix::consistent, formulation}, all_edges("free"));
-  PlateMesh& mesh = model.mutable_mesh();
+  Mesh& mesh = model.mutable_mesh();
+  const auto node_id = [](int i, int j) { return 7 * j + i; }; // structured 3×3 mesh: 7 nodes a row
   const double shift[4][2] = {{0.05, 0.03}, {-0.04, 0.06}, {0.07, -0.05}, {-0.03, -0.04}};
   int k = 0;
   for (int j = 2; j <= 4; j += 2)
     for (int i = 2; i <= 4; i += 2, ++k) {
-      const Eigen::Vector2d p = mesh.node(mesh.node_id(i, j));
-      mesh.move_node(mesh.node_id(i, j), p + Eigen::Vector2d(shift[k][0], shift[k][1]));
+      const Eigen::Vector2d p = mesh.node(node_id(i, j));
+      mesh.move_node(node_id(i, j), p + Eigen::Vector2d(shift[k][0], shift[k][1]));
     }
   for (int e = 0; e < mesh.element_count(); ++e) {
     const auto& n = mesh.element_nodes(e);
@@ -49,7 +52,7 @@ PlateModel distorted_patch(const Laminate& lam, ElementFormulation formulation) 
       mesh.move_node(n[static_cast<std::size_t>(a)], 0.5 * (corner(a - 4) + corner((a - 3) % 4)));
     mesh.move_node(n[8], 0.25 * (corner(0) + corner(1) + corner(2) + corner(3)));
   }
-  EXPECT_FALSE(mesh.is_regular());
+  EXPECT_GT(mesh.shape_class_count(), 1);
   return model;
 }
 
@@ -58,14 +61,17 @@ using Field = std::function<Eigen::Matrix<double, 5, 1>(double x, double y)>;
 /// Prescribes the exact field on the boundary nodes, solves K_II u_I = −K_IB u_B and returns the
 /// largest nodal error at the interior nodes, relative to the largest nodal value.
 double patch_error(const PlateModel& model, const Field& exact) {
-  const PlateMesh& mesh = model.mesh();
+  const Mesh& mesh = model.mesh();
   const SparseMatrix K = model.stiffness(); // all DOFs free: equation = 5 n + d
   const int n = static_cast<int>(K.rows());
   std::vector<bool> boundary(static_cast<std::size_t>(n));
   Eigen::VectorXd u_exact(n);
   for (int node = 0; node < mesh.node_count(); ++node) {
-    const bool on = mesh.on_edge(node, Edge::x0) || mesh.on_edge(node, Edge::xa) ||
-                    mesh.on_edge(node, Edge::y0) || mesh.on_edge(node, Edge::yb);
+    bool on = false;
+    for (const char* edge : {"x0", "xa", "y0", "yb"}) {
+      const auto& set = mesh.node_set(edge);
+      on = on || std::binary_search(set.begin(), set.end(), node);
+    }
     u_exact.segment<5>(5 * node) = exact(mesh.node(node).x(), mesh.node(node).y());
     for (int d = 0; d < 5; ++d)
       boundary[static_cast<std::size_t>(5 * node + d)] = on;
@@ -197,7 +203,7 @@ TEST_P(ZeroEnergyModes, CountMatchesRigidBodyMotionsPlusKnownMechanisms) {
   const ZeroEnergyCase& c = GetParam();
   BoundaryConditions bc;
   for (int e = 0; e < 4; ++e)
-    bc.edges[static_cast<std::size_t>(e)] = *parse_restraint(c.edges[e], static_cast<Edge>(e));
+    bc.set(to_string(static_cast<Edge>(e)), c.edges[e]);
   const Laminate lam = test::laminate_of(test::thesis_3_6(), "[45/90/-45/0]3s", 0.19375e-3);
   const PlateModel model(lam, {0.127, 0.0762}, {c.nx, c.ny, MassMatrix::lumped, c.formulation}, bc);
   const ModalResult r = solve_modal(model, 12);
@@ -257,7 +263,7 @@ TEST(StaticAnalysis, UnrestrainedPlateIsAClearErrorNamingTheFreeMotions) {
 }
 
 TEST(Mesh, ThesisElement83IsTheCentreOfThe15x11Mesh) {
-  const PlateMesh mesh({0.127, 0.0762}, 15, 11);
+  const Mesh mesh = structured_rectangle({0.127, 0.0762}, 15, 11);
   EXPECT_EQ(mesh.node_count(), 713);
   const auto loc = mesh.locate(0.0635, 0.0381);
   ASSERT_TRUE(loc);
@@ -270,11 +276,11 @@ TEST(Mesh, ThesisElement83IsTheCentreOfThe15x11Mesh) {
 TEST(Mesh, PointLoadIsDistributedByShapeFunctionsAndSumsToTheForce) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
   const PlateModel model(lam, {0.127, 0.0762}, {15, 11}, all_edges("free"));
-  const Eigen::VectorXd f = model.point_load(0.031, 0.052, 1000.0);
+  const Eigen::VectorXd f = point_load(model, 0.031, 0.052, 1000.0);
   EXPECT_NEAR(f.sum(), 1000.0, 1e-9);
-  EXPECT_NEAR(model.pressure_load(2.0).sum(), 2.0 * 0.127 * 0.0762, 1e-15);
+  EXPECT_NEAR(pressure_load(model, 2.0).sum(), 2.0 * 0.127 * 0.0762, 1e-15);
   PatchLoad patch{0.05, 0.04, 0.02, 0.01, 300.0};
-  EXPECT_NEAR(model.patch_load(patch).sum(), 300.0, 1e-9);
+  EXPECT_NEAR(patch_load(model, patch).sum(), 300.0, 1e-9);
 }
 
 } // namespace
@@ -285,19 +291,22 @@ namespace {
 
 using test::all_edges;
 
-TEST(ElementChoice, AutomaticUsesTheThesisElementOnlyWhereAnEdgeHoldsW) {
+// `auto` is MITC9 on every plate (issue 16): q9's spurious mode makes a point force on an element-corner
+// node 3-5 % more compliant than MITC9 even where the edges hold it (docs/notes/contact-reference.md).
+TEST(ElementChoice, AutomaticIsMitc9Everywhere) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
   const PlateModel free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
-  EXPECT_EQ(free_plate.element().formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(free_plate.formulation(), ElementFormulation::mitc9);
   EXPECT_EQ(solve_modal(free_plate, 8).zero_energy_modes, 6); // rigid-body modes only
   BoundaryConditions cantilever = all_edges("free");
-  cantilever.edges[0] = *parse_restraint("clamped", Edge::x0);
-  EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, cantilever).element().formulation(), ElementFormulation::q9);
+  cantilever.set("x0", "clamped");
+  EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, cantilever).formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, all_edges("ss")).formulation(), ElementFormulation::mitc9);
   // Four corner point supports leave q9's mode alive (it vanishes at every element-corner node).
   BoundaryConditions corners = all_edges("free");
   corners.corners = *parse_restraint("00100", Edge::x0);
   const PlateModel on_points(lam, {0.1, 0.1}, {4, 4}, corners);
-  EXPECT_EQ(on_points.element().formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(on_points.formulation(), ElementFormulation::mitc9);
   EXPECT_EQ(solve_modal(on_points, 6).zero_energy_modes, 3); // u, v and rotation about z only
   const PlateModel q9_on_points(lam, {0.1, 0.1}, {4, 4, MassMatrix::lumped, ElementFormulation::q9}, corners);
   EXPECT_EQ(solve_modal(q9_on_points, 6).zero_energy_modes, 4);

@@ -1,5 +1,6 @@
 // Damage maps are drawn by gnuplot from generated scripts: the images exist, are not blank, and the
 // SVG is an SVG document.
+#include "plyimpact/fem/structured_mesh.hpp"
 #include "plyimpact/io/damage_maps.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +13,7 @@ namespace plyimpact {
 namespace {
 
 TEST(DamageMaps, OneMapPerCriterionAndLayerWithTheFailedPoints) {
-  const PlateMesh mesh({0.127, 0.0762}, 15, 11);
+  const Mesh mesh = structured_rectangle({0.127, 0.0762}, 15, 11);
   std::vector<DamageOnset> onsets(3);
   onsets[0].ply = 3, onsets[0].x = 0.06, onsets[0].y = 0.038, onsets[0].time = 12.69e-6;
   onsets[1].ply = 3, onsets[1].x = 0.066, onsets[1].y = 0.038, onsets[1].time = 12.96e-6;

@@ -1,6 +1,7 @@
 // Input decks: the SPEC §10 vocabulary is read as written, bad input names file, line, column and
 // the expected form.
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/table_reader.hpp"
 
 #include <gtest/gtest.h>
 
@@ -64,9 +65,10 @@ TEST(Deck, ReadsTheSpecVocabulary) {
   EXPECT_NEAR(d.laminate->thickness(), 3.72e-3, 1e-15);
   EXPECT_EQ(d.mesh->nx, 15);
   EXPECT_EQ(d.mesh->mass, MassMatrix::lumped);
-  EXPECT_EQ(d.boundary->edge(Edge::x0).code(), "01101");
-  EXPECT_EQ(d.boundary->edge(Edge::y0).code(), "11111");
-  EXPECT_EQ(d.boundary->edge(Edge::yb).code(), "10101");
+  const auto code = [&](Edge e) { return parse_restraint(d.boundary->find(to_string(e))->type, e)->code(); };
+  EXPECT_EQ(code(Edge::x0), "01101");
+  EXPECT_EQ(code(Edge::y0), "11111");
+  EXPECT_EQ(code(Edge::yb), "10101");
   EXPECT_EQ(d.impactor->mass, 6.14);
   EXPECT_NEAR(d.impactor->x, 0.0635, 1e-15); // default impact point: plate centre
   EXPECT_NEAR(d.impactor->y, 0.0381, 1e-15);
@@ -196,8 +198,43 @@ INSTANTIATE_TEST_SUITE_P(
         BadDeck{"VtkAtNegative", "", "[output]\nvtk_at = [1e-6, -2e-6]\n",
                 "deck.toml:36:17: error: output.vtk_at: expected a time in s (a number >= 0)"},
         BadDeck{"VtkScaleZero", "", "[output]\nvtk_thickness_scale = 0\n",
-                "output.vtk_thickness_scale must be positive"}),
+                "output.vtk_thickness_scale must be positive"},
+        BadDeck{
+            "RegionUnknownLaminate", "", "[[region]]\nlaminate = \"pad\"\nx = [0.0, 0.05]\ny = [0.0, 0.03]\n",
+            "deck.toml:36:12: error: region.laminate = \"pad\": no [laminates.pad] table (defined: none)"},
+        BadDeck{"RegionOutsidePlate", "",
+                "[laminates.pad]\nmaterial = \"T300_976\"\nlayup = \"[0/90]s\"\nply_thickness = 0.465e-3\n"
+                "[[region]]\nlaminate = \"pad\"\nx = [0.0, 0.2]\ny = [0.0, 0.03]\n",
+                "deck.toml:41:5: error: region.x = [0, 0.2] m reaches outside the plate (0 to 0.127 m)"},
+        BadDeck{"RegionBoundsReversed", "",
+                "[laminates.pad]\nmaterial = \"T300_976\"\nlayup = \"[0/90]s\"\nply_thickness = 0.465e-3\n"
+                "[[region]]\nlaminate = \"pad\"\nx = [0.05, 0.0]\ny = [0.0, 0.03]\n",
+                "region.x must be [x0, x1] in m with x0 < x1"},
+        BadDeck{"NamedLaminateBadLayup", "",
+                "[laminates.pad]\nmaterial = \"T300_976\"\nlayup = \"[0/9x]s\"\nply_thickness = 0.465e-3\n",
+                "deck.toml:37:"}),
     [](const ::testing::TestParamInfo<BadDeck>& p) { return p.param.name; });
+
+TEST(Deck, NamedLaminatesAndRegionsAreRead) {
+  const Deck d = parse_deck(base_deck + R"([laminates.pad]
+material = "T300_976"
+layup = "[0_2/90_4/0_2]2"
+ply_thickness = 0.465e-3
+[[region]]
+laminate = "pad"
+x = [0.05, 0.08]
+y = [0.02, 0.05]
+)",
+                            "deck.toml");
+  ASSERT_EQ(d.laminates.size(), 1U);
+  EXPECT_EQ(d.laminates[0].name, "pad");
+  EXPECT_EQ(d.laminates[0].laminate.ply_count(), 16U);
+  ASSERT_EQ(d.regions.size(), 1U);
+  EXPECT_EQ(d.regions[0].laminate, 1); // all_laminates(): [laminate] first, then [laminates.NAME]
+  EXPECT_EQ(d.regions[0].x_min, 0.05);
+  EXPECT_EQ(d.regions[0].y_max, 0.05);
+  EXPECT_EQ(all_laminates(d).size(), 2U);
+}
 
 TEST(Deck, ThresholdProbesAndDamageKeysAreRead) {
   std::string text = base_deck;

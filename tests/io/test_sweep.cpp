@@ -1,9 +1,9 @@
 // Parameter sweeps (docs/sweep.md): the [sweep] table and --set options, case numbering, the
 // documented random sequence, errors before any case runs, and cases computed in-process against
 // the Hertz closed form and against a stand-alone run of the same deck.
-#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/plate_from_deck.hpp"
 #include "plyimpact/io/sweep_runner.hpp"
 
 #include <gtest/gtest.h>
@@ -322,9 +322,7 @@ TEST(SweepRun, SharedFactorizationGivesTheStandAloneNumbersBitForBit) {
     EXPECT_EQ(a[i]["results"], b[i]["results"]) << i;
   // Case 5 (v = 3, R = 12.7 mm) run alone as an ordinary deck.
   const Deck deck = s.deck_for(s.case_at(5));
-  const ImpactSettings settings = impact_settings_from_deck(deck);
-  const PlateModel model = plate_from_deck(deck);
-  const ImpactResult alone = ImpactSolver(model, settings).run();
+  const ImpactResult alone = ImpactCase(impact_case_description(deck)).run();
   EXPECT_EQ(a[5]["results"]["peak_force"].get<double>(), alone.peak_force);
   EXPECT_EQ(a[5]["results"]["absorbed_energy"].get<double>(), alone.absorbed_energy);
   EXPECT_GT(alone.peak_force, 0.0);

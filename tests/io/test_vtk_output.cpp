@@ -60,7 +60,7 @@ TEST(VtkOutput, PlateFileReadBackByVtkHasTheMeshQ9CellsAndTheSolverDisplacements
   const fs::path file = scratch("plate") / "plate.vtu";
   write_plate_vtu(file, p.model, p.u, {}, 1.5e-5, VtkOptions{});
   const auto grid = read_vtu(file);
-  const PlateMesh& mesh = p.model.mesh();
+  const Mesh& mesh = p.model.mesh();
   ASSERT_EQ(grid->GetNumberOfPoints(), mesh.node_count()); // 9 × 7 = 63 nodes
   ASSERT_EQ(grid->GetNumberOfCells(), mesh.element_count());
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
@@ -102,7 +102,7 @@ TEST(VtkOutput, PlyStressCellDataEqualsTheHandCalculationFromNodalRotations) {
   ASSERT_TRUE(s1 && s4 && tx && ty);
   const double d = 1.0 - m.nu12 * m.nu21(), Q11 = m.E1 / d, Q12 = m.nu12 * m.E2 / d;
   const double z1 = -1.5 * t, dx = p.a / 4, dy = p.b / 3;
-  const PlateMesh& mesh = p.model.mesh();
+  const Mesh& mesh = p.model.mesh();
   double peak = 0.0;
   for (int e = 0; e < mesh.element_count(); ++e) {
     const auto& n = mesh.element_nodes(e);
@@ -130,7 +130,7 @@ TEST(VtkOutput, InterfaceShearAtTheMidPlaneOfAHomogeneousPlateIsOneAndAHalfTimes
   vtkDataArray* tx = grid->GetPointData()->GetArray("theta_x_rad");
   ASSERT_TRUE(txz && w && tx);
   const double G = E / (2 * (1 + nu)), K = 5.0 / 6.0, dx = p.a / 4;
-  const PlateMesh& mesh = p.model.mesh();
+  const Mesh& mesh = p.model.mesh();
   int checked = 0;
   for (int e = 0; e < mesh.element_count(); ++e) {
     const auto& n = mesh.element_nodes(e);
@@ -151,7 +151,7 @@ TEST(VtkOutput, LayeredViewStacksOneHexahedronLayerPerPlyWithThroughThicknessDis
   options.thickness_scale = scale;
   write_layers_vtu(file, p.model, p.u, {}, 0.0, options);
   const auto grid = read_vtu(file);
-  const PlateMesh& mesh = p.model.mesh();
+  const Mesh& mesh = p.model.mesh();
   const vtkIdType nodes = mesh.node_count();
   ASSERT_EQ(grid->GetNumberOfPoints(), 5 * nodes);                   // 4 plies → 5 surfaces
   ASSERT_EQ(grid->GetNumberOfCells(), 4 * 4 * mesh.element_count()); // 2×2 node cells per Q9, 4 plies
@@ -235,7 +235,7 @@ TEST(VtkOutput, SeriesKeepsAValidPvdListingEveryFrameWithItsTime) {
   // The second frame holds the second state: w doubled.
   const auto second = read_vtu(dir / "paraview" / "plate_0000020.vtu");
   const Eigen::VectorXd nodal = p.model.to_nodal(p.u);
-  const int centre = p.model.mesh().node_id(4, 3);
+  const int centre = 3 * 9 + 4; // grid node (4, 3) of the 4 × 3 structured mesh: 9 nodes a row
   EXPECT_EQ(second->GetPointData()->GetArray("w_m")->GetTuple1(centre), 2.0 * nodal(5 * centre + 2));
 }
 

@@ -50,10 +50,7 @@ inline Laminate laminate_of(const Material& m, const std::string& layup, double 
 }
 
 inline BoundaryConditions all_edges(const std::string& type) {
-  BoundaryConditions bc;
-  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
-    bc.edges[static_cast<int>(e)] = *parse_restraint(type, e);
-  return bc;
+  return BoundaryConditions::on_edges(type, type, type, type);
 }
 
 } // namespace plyimpact::test

@@ -2,12 +2,22 @@
 
 #include "plyimpact/fem/quadrature.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <tuple>
 
 namespace plyimpact {
+
+namespace {
+
+/// Stress points per element: the 3×3 Gauss points of PlateElement::stress_points().
+constexpr Eigen::Index stress_points = 9;
+static_assert(gauss3x3.size() == stress_points);
+
+} // namespace
 
 std::vector<Criterion> parse_criteria(const std::vector<std::string>& names) {
   std::vector<Criterion> out;
@@ -19,51 +29,15 @@ std::vector<Criterion> parse_criteria(const std::vector<std::string>& names) {
   return out;
 }
 
-DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options)
-    : model_(model), criteria_(std::move(criteria)), options_(options),
-      layers_(model.laminate().ply_count()) {
-  if (options_.every < 1) throw std::invalid_argument("damage: evaluation interval must be at least 1 step");
-  track_cracks_for_delamination_ =
-      std::find(criteria_.begin(), criteria_.end(), Criterion::choi_chang_delamination) != criteria_.end();
-  const PlateMesh& mesh = model.mesh();
-  regular_ = mesh.is_regular();
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    const ElementCoordinates xy = mesh.element_coordinates(e);
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) {
-        const double xi = gauss3.points[static_cast<std::size_t>(i)],
-                     eta = gauss3.points[static_cast<std::size_t>(j)];
-        const PointKinematics k = point_kinematics(xy, xi, eta);
-        const Eigen::Vector2d p = xy.transpose() * k.shape.N;
-        const double w =
-            gauss3.weights[static_cast<std::size_t>(i)] * gauss3.weights[static_cast<std::size_t>(j)];
-        points_.push_back({e, i, j, p.x(), p.y(), w * k.detJ});
-        // The strain–displacement matrices of a regular mesh repeat from element to element.
-        if (!regular_ || e == 0) {
-          StrainOperator B;
-          B.topRows<6>() = membrane_bending_B(k);
-          if (model.element().formulation() == ElementFormulation::mitc9) {
-            // Assumed shear strains: recover them as the element defines them, via unit vectors.
-            for (int d = 0; d < q9_dofs; ++d) {
-              ElementVector unit = ElementVector::Zero();
-              unit(d) = 1.0;
-              B.block<2, 1>(6, d) = model.element().strains(xy, unit, xi, eta).shear;
-            }
-          } else {
-            B.bottomRows<2>() = shear_B(k);
-          }
-          B_.push_back(B);
-        }
-      }
-    element_equations_.push_back(model.dofs().element_equations(mesh, e));
-  }
-  // Material-axis ply stresses are linear in (ε0, κ, γ): fold Q̄, the height z and the rotation into
-  // one 5×8 matrix per ply and position, once.
-  const Laminate& lam = model.laminate();
-  A_average_.resize(5 * static_cast<Eigen::Index>(layers_), 8);
-  A_top_.resize(A_average_.rows(), 8);
-  A_bottom_.resize(A_average_.rows(), 8);
-  for (std::size_t k = 0; k < layers_; ++k) {
+DamageTracker::SectionOperators DamageTracker::section_operators(const Laminate& lam) {
+  using StressOperator = Eigen::Matrix<double, 5, 8>; // (σ11, σ22, τ12, τ13, τ23) from (ε0, κ, γ)
+  SectionOperators o;
+  o.laminate = &lam;
+  o.plies = lam.ply_count();
+  o.A_average.resize(5 * static_cast<Eigen::Index>(o.plies), 8);
+  o.A_top.resize(o.A_average.rows(), 8);
+  o.A_bottom.resize(o.A_average.rows(), 8);
+  for (std::size_t k = 0; k < o.plies; ++k) {
     const auto op = [&](double z) {
       StressOperator A;
       for (int c = 0; c < 8; ++c) {
@@ -77,65 +51,103 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
       return A;
     };
     const auto row = 5 * static_cast<Eigen::Index>(k);
-    A_average_.middleRows<5>(row) = op(0.5 * (lam.z_top(k) + lam.z_bottom(k)));
-    A_top_.middleRows<5>(row) = op(lam.z_top(k));
-    A_bottom_.middleRows<5>(row) = op(lam.z_bottom(k));
+    o.A_average.middleRows<5>(row) = op(0.5 * (lam.z_top(k) + lam.z_bottom(k)));
+    o.A_top.middleRows<5>(row) = op(lam.z_top(k));
+    o.A_bottom.middleRows<5>(row) = op(lam.z_bottom(k));
+  }
+  for (std::size_t k = 0; k < o.plies; ++k) {
+    const auto row = 5 * static_cast<Eigen::Index>(k);
+    o.average_bending.emplace_back(o.A_average.block<5, 5>(row, 3));
+    Eigen::Matrix<double, 3, 5> transverse;
+    transverse << o.A_average.block<1, 5>(row + 1, 3), o.A_average.block<1, 5>(row + 3, 3),
+        o.A_average.block<1, 5>(row + 4, 3);
+    o.transverse_bending.push_back(transverse);
+    o.top_bending.emplace_back(o.A_top.block<5, 5>(row, 3));
+    o.bottom_bending.emplace_back(o.A_bottom.block<5, 5>(row, 3));
+  }
+  return o;
+}
+
+DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options)
+    : model_(model), criteria_(std::move(criteria)), options_(options) {
+  if (options_.every < 1) throw std::invalid_argument("damage: evaluation interval must be at least 1 step");
+  track_cracks_for_delamination_ =
+      std::find(criteria_.begin(), criteria_.end(), Criterion::choi_chang_delamination) != criteria_.end();
+  for (const Laminate& lam : model.laminates()) {
+    sections_.push_back(section_operators(lam));
+    layers_ = std::max(layers_, lam.ply_count());
+  }
+  const Mesh& mesh = model.mesh();
+  uniform_ = mesh.shape_class_count() == 1 && model.single_section();
+  const auto rule = PlateElement::stress_points();
+  // The strain–displacement operators of elements of one shape are equal: one set per shape class.
+  for (int c = 0; c < mesh.shape_class_count(); ++c) {
+    const ElementCoordinates xy = mesh.element_coordinates(mesh.representative(c));
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const QuadraturePoint& q = rule[gauss3x3_index(i, j)];
+        B_.push_back(model.element().strain_operator(xy, q.xi, q.eta));
+      }
+  }
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const ElementCoordinates xy = mesh.element_coordinates(e);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const QuadraturePoint& q = rule[gauss3x3_index(i, j)];
+        const PointKinematics k = point_kinematics(xy, q.xi, q.eta);
+        const Eigen::Vector2d p = xy.transpose() * k.shape.N;
+        points_.push_back({e, i, j, p.x(), p.y(), q.weight * k.detJ});
+      }
   }
   needs_faces_ = std::any_of(criteria_.begin(), criteria_.end(), [](Criterion c) {
     return c != Criterion::choi_chang_matrix && c != Criterion::choi_chang_delamination;
   });
   const auto n_points = static_cast<Eigen::Index>(points_.size());
-  U_.resize(q9_dofs, static_cast<Eigen::Index>(element_equations_.size()));
-  local_strains_.resize(8, static_cast<Eigen::Index>(element_equations_.size()));
+  const auto n_elements = static_cast<Eigen::Index>(mesh.element_count());
+  U_.resize(q9_dofs, n_elements);
+  local_strains_.resize(8, n_elements);
   E_.resize(8, n_points);
-  for (std::size_t k = 0; k < layers_; ++k) {
-    const auto row = 5 * static_cast<Eigen::Index>(k);
-    average_bending_.emplace_back(A_average_.block<5, 5>(row, 3));
-    Eigen::Matrix<double, 3, 5> transverse;
-    transverse << A_average_.block<1, 5>(row + 1, 3), A_average_.block<1, 5>(row + 3, 3),
-        A_average_.block<1, 5>(row + 4, 3);
-    transverse_bending_.push_back(transverse);
-    top_bending_.emplace_back(A_top_.block<5, 5>(row, 3));
-    bottom_bending_.emplace_back(A_bottom_.block<5, 5>(row, 3));
+  for (const StrainOperator& B : B_) {
+    Eigen::Matrix<double, 5, 27> Bb;
+    for (int a = 0; a < 9; ++a)
+      Bb.middleCols<3>(3 * a) = B.block<5, 3>(3, 5 * a + 2);
+    B_bending_.push_back(Bb);
   }
-  if (regular_)
-    for (const StrainOperator& B : B_) {
-      Eigen::Matrix<double, 5, 27> Bb;
-      for (int a = 0; a < 9; ++a)
-        Bb.middleCols<3>(3 * a) = B.block<5, 3>(3, 5 * a + 2);
-      B_bending_.push_back(Bb);
-    }
   for (int n = 0; n < mesh.node_count(); ++n)
     for (int d = 0; d < 2; ++d)
       if (const int eq = model.dofs().equation(n, d); eq >= 0) inplane_equations_.push_back(eq);
-  S_average_.setZero(A_average_.rows(), n_points);
+  S_average_.setZero(5 * static_cast<Eigen::Index>(layers_), n_points);
   // ‖T e‖ ≤ Σ_j ‖T(:, j)‖ |e_j| with T_k the (σ̄22, τ̄13, τ̄23) rows of ply k and e = (κ, γ), so
   // e_M ≤ Σ_j max_k [max(1/Yt, 1/Yc, 1/S23)_k ‖T_k(:, j)‖] |e_j|, and likewise for e_D with
   // √Da and the two plies of an interface. A point whose bound stays below both 1 and the peak index
-  // so far can neither fail nor raise the peak, and is skipped (Choi–Chang-only runs).
+  // so far can neither fail nor raise the peak, and is skipped (Choi–Chang-only runs). The bound
+  // takes the largest over every laminate of the plate.
   for (const Criterion c : criteria_) {
     Eigen::Matrix<double, 5, 1> bound = Eigen::Matrix<double, 5, 1>::Zero();
     const auto inv = [](const std::optional<double>& v) { return v ? 1.0 / *v : 0.0; };
-    for (std::size_t k = 0; k < layers_; ++k) {
-      const Strengths& st = lam.material_of(k).strength;
-      const double ik = std::max({inv(st.Yt), inv(st.Yc), inv(st.S23)});
-      for (int j = 0; j < 5; ++j) {
-        const double nk = transverse_bending_[k].col(j).norm();
-        if (c == Criterion::choi_chang_matrix) bound(j) = std::max(bound(j), ik * nk);
-        if (c == Criterion::choi_chang_delamination && k + 1 < layers_) {
-          const Strengths& s1 = lam.material_of(k + 1).strength;
-          const double i1 = std::max({inv(s1.Yt), inv(s1.Yc), inv(s1.S23)});
-          const double da = 0.5 * (st.Da.value_or(0.0) + s1.Da.value_or(0.0));
-          const double n1 = transverse_bending_[k + 1].col(j).norm();
-          bound(j) = std::max(bound(j), std::sqrt(da) * std::max(ik, i1) * std::sqrt(nk * nk + n1 * n1));
+    for (const SectionOperators& sec : sections_) {
+      const Laminate& lam = *sec.laminate;
+      for (std::size_t k = 0; k < sec.plies; ++k) {
+        const Strengths& st = lam.material_of(k).strength;
+        const double ik = std::max({inv(st.Yt), inv(st.Yc), inv(st.S23)});
+        for (int j = 0; j < 5; ++j) {
+          const double nk = sec.transverse_bending[k].col(j).norm();
+          if (c == Criterion::choi_chang_matrix) bound(j) = std::max(bound(j), ik * nk);
+          if (c == Criterion::choi_chang_delamination && k + 1 < sec.plies) {
+            const Strengths& s1 = lam.material_of(k + 1).strength;
+            const double i1 = std::max({inv(s1.Yt), inv(s1.Yc), inv(s1.S23)});
+            const double da = 0.5 * (st.Da.value_or(0.0) + s1.Da.value_or(0.0));
+            const double n1 = sec.transverse_bending[k + 1].col(j).norm();
+            bound(j) = std::max(bound(j), std::sqrt(da) * std::max(ik, i1) * std::sqrt(nk * nk + n1 * n1));
+          }
         }
       }
     }
     choi_chang_bound_.push_back(bound);
   }
   if (needs_faces_) {
-    S_top_.resize(A_top_.rows(), n_points);
-    S_bottom_.resize(A_bottom_.rows(), n_points);
+    S_top_.setZero(S_average_.rows(), n_points);
+    S_bottom_.setZero(S_average_.rows(), n_points);
   }
   averaged_.resize(layers_);
   matrix_.resize(layers_);
@@ -147,73 +159,89 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
   area_.assign(criteria_.size() * layers_, 0.0);
   peak_.assign(criteria_.size(), 0.0);
   for (const Criterion c : criteria_)
-    for (std::size_t k = 0; k < layers_; ++k)
-      for (const StrengthId s : required_strengths(c))
-        if (!strength_value(model.laminate().material_of(k).strength, s))
-          throw std::invalid_argument("criterion " + std::string(to_string(c)) + " needs " +
-                                      std::string(to_string(s)) + " for material '" +
-                                      model.laminate().material_of(k).name + "'");
+    for (const Laminate& lam : model.laminates())
+      for (std::size_t k = 0; k < lam.ply_count(); ++k)
+        for (const StrengthId s : required_strengths(c))
+          if (!strength_value(lam.material_of(k).strength, s))
+            throw std::invalid_argument("criterion " + std::string(to_string(c)) + " needs " +
+                                        std::string(to_string(s)) + " for material '" +
+                                        lam.material_of(k).name + "'");
 }
 
 void DamageTracker::observe(long step, double t, double force, const Eigen::VectorXd& u) {
   if (step % options_.every != 0) return;
   // Batched: element DOFs U (45 × elements) → generalized strains E (8 × points) → ply stresses
   // S = A E (5·plies × points), as dense matrix products; then the criteria point by point.
-  for (std::size_t e = 0; e < element_equations_.size(); ++e) {
-    const auto& eq = element_equations_[e];
-    for (int i = 0; i < q9_dofs; ++i)
-      U_(i, static_cast<Eigen::Index>(e)) =
-          eq[static_cast<std::size_t>(i)] >= 0 ? u(eq[static_cast<std::size_t>(i)]) : 0.0;
-  }
-  const auto ne = static_cast<Eigen::Index>(element_equations_.size());
+  for (int e = 0; e < model_.mesh().element_count(); ++e)
+    U_.col(e) = gather(u, model_.element_equations(e));
   // Under a transverse load a laminate with B = 0 and I1 = 0 never moves in-plane: then only the
   // bending DOFs (w, θx, θy) and strains (κ, γ) enter, 27 of 45 columns and 5 of 8 rows.
-  bool bending_only = regular_;
+  bool bending_only = true;
   for (std::size_t i = 0; i < inplane_equations_.size() && bending_only; ++i)
     bending_only = u(inplane_equations_[i]) == 0.0;
-  if (bending_only) {
-    // Fixed-size products, point by point: 5×27 for the strains, 5×5 per ply for the stresses.
-    Eigen::Matrix<double, 27, 1> ub;
-    const auto plies = static_cast<Eigen::Index>(layers_);
-    for (Eigen::Index e = 0; e < ne; ++e) {
-      for (Eigen::Index a = 0; a < 9; ++a)
-        ub.segment<3>(3 * a) = U_.block<3, 1>(5 * a + 2, e);
-      for (Eigen::Index l = 0; l < 9; ++l) {
-        const Eigen::Matrix<double, 5, 1> eb = B_bending_[static_cast<std::size_t>(l)] * ub;
-        const Eigen::Index g = e * 9 + l;
-        if (!needs_faces_ && cannot_change(eb)) continue; // proven: no new failure, no new peak
-        for (Eigen::Index k = 0; k < plies; ++k) {
-          const auto kk = static_cast<std::size_t>(k);
-          if (!needs_faces_) { // Choi–Chang only: σ̄22, τ̄13, τ̄23 are all they read
-            const Eigen::Matrix<double, 3, 1> v = transverse_bending_[kk] * eb;
-            S_average_(5 * k + 1, g) = v(0);
-            S_average_(5 * k + 3, g) = v(1);
-            S_average_(5 * k + 4, g) = v(2);
-            continue;
-          }
-          S_average_.block<5, 1>(5 * k, g).noalias() = average_bending_[kk] * eb;
-          S_top_.block<5, 1>(5 * k, g).noalias() = top_bending_[kk] * eb;
-          S_bottom_.block<5, 1>(5 * k, g).noalias() = bottom_bending_[kk] * eb;
+  if (bending_only)
+    observe_bending(t, force);
+  else
+    observe_general(t, force);
+}
+
+void DamageTracker::observe_bending(double t, double force) {
+  // Fixed-size products, point by point: 5×27 for the strains, 5×5 per ply for the stresses.
+  Eigen::Matrix<double, 27, 1> ub;
+  const Mesh& mesh = model_.mesh();
+  for (Eigen::Index e = 0; e < U_.cols(); ++e) {
+    for (Eigen::Index a = 0; a < 9; ++a)
+      ub.segment<3>(3 * a) = U_.block<3, 1>(5 * a + 2, e);
+    const auto& sec = sections_[static_cast<std::size_t>(model_.section_index(static_cast<int>(e)))];
+    const auto shape = static_cast<std::size_t>(mesh.shape_class(static_cast<int>(e)));
+    for (Eigen::Index l = 0; l < stress_points; ++l) {
+      const Eigen::Matrix<double, 5, 1> eb =
+          B_bending_[static_cast<std::size_t>(stress_points) * shape + static_cast<std::size_t>(l)] * ub;
+      const Eigen::Index g = e * stress_points + l;
+      if (!needs_faces_ && cannot_change(eb)) continue; // proven: no new failure, no new peak
+      for (std::size_t k = 0; k < sec.plies; ++k) {
+        const auto row = 5 * static_cast<Eigen::Index>(k);
+        if (!needs_faces_) { // Choi–Chang only: σ̄22, τ̄13, τ̄23 are all they read
+          const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb;
+          S_average_(row + 1, g) = v(0);
+          S_average_(row + 3, g) = v(1);
+          S_average_(row + 4, g) = v(2);
+          continue;
         }
-        evaluate_point(static_cast<std::size_t>(g), t, force);
+        S_average_.block<5, 1>(row, g).noalias() = sec.average_bending[k] * eb;
+        S_top_.block<5, 1>(row, g).noalias() = sec.top_bending[k] * eb;
+        S_bottom_.block<5, 1>(row, g).noalias() = sec.bottom_bending[k] * eb;
       }
+      evaluate_point(static_cast<std::size_t>(g), t, force);
     }
-    return;
   }
-  if (regular_) {
-    for (Eigen::Index l = 0; l < 9; ++l) {
+}
+
+void DamageTracker::observe_general(double t, double force) {
+  if (uniform_) {
+    for (Eigen::Index l = 0; l < stress_points; ++l) {
       local_strains_.noalias() = B_[static_cast<std::size_t>(l)].lazyProduct(U_);
-      for (Eigen::Index e = 0; e < ne; ++e)
-        E_.col(e * 9 + l) = local_strains_.col(e);
+      for (Eigen::Index e = 0; e < U_.cols(); ++e)
+        E_.col(e * stress_points + l) = local_strains_.col(e);
+    }
+    const SectionOperators& sec = sections_.front();
+    S_average_.noalias() = sec.A_average.lazyProduct(E_);
+    if (needs_faces_) {
+      S_top_.noalias() = sec.A_top.lazyProduct(E_);
+      S_bottom_.noalias() = sec.A_bottom.lazyProduct(E_);
     }
   } else {
-    for (Eigen::Index g = 0; g < E_.cols(); ++g)
-      E_.col(g).noalias() = B_[static_cast<std::size_t>(g)] * U_.col(g / 9);
-  }
-  S_average_.noalias() = A_average_.lazyProduct(E_);
-  if (needs_faces_) {
-    S_top_.noalias() = A_top_.lazyProduct(E_);
-    S_bottom_.noalias() = A_bottom_.lazyProduct(E_);
+    for (Eigen::Index g = 0; g < E_.cols(); ++g) {
+      const auto e = static_cast<int>(g / stress_points);
+      E_.col(g).noalias() = strain_operator(e, static_cast<int>(g % stress_points)) * U_.col(e);
+      const SectionOperators& sec = section_at(static_cast<std::size_t>(g));
+      const Eigen::Index rows = sec.A_average.rows();
+      S_average_.col(g).head(rows).noalias() = sec.A_average * E_.col(g);
+      if (needs_faces_) {
+        S_top_.col(g).head(rows).noalias() = sec.A_top * E_.col(g);
+        S_bottom_.col(g).head(rows).noalias() = sec.A_bottom * E_.col(g);
+      }
+    }
   }
   for (std::size_t g = 0; g < points_.size(); ++g)
     evaluate_point(g, t, force);
@@ -243,14 +271,16 @@ PlyStress as_ply_stress(const Eigen::Matrix<double, 5, 1>& v) {
 } // namespace
 
 void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
-  const Laminate& lam = model_.laminate();
+  const SectionOperators& sec = section_at(g);
+  const Laminate& lam = *sec.laminate;
+  const std::size_t plies = sec.plies;
   const GaussPoint& p = points_[g];
   // Ply-averaged stresses in material axes (what Choi–Chang use), and the faces of each ply for the
   // point-wise criteria (their indices are convex along the linear through-ply distribution, so the
   // largest value over the ply is at a face).
   std::vector<PlyStress>& avg = averaged_; // reused buffer: no allocation per point
   const auto col = static_cast<Eigen::Index>(g);
-  for (std::size_t k = 0; k < layers_; ++k)
+  for (std::size_t k = 0; k < plies; ++k)
     avg[k] = as_ply_stress(S_average_.block<5, 1>(5 * static_cast<Eigen::Index>(k), col));
   const auto record = [&](std::size_t c, std::size_t layer, const FailureResult& r, bool interface) {
     peak_[c] = std::max(peak_[c], r.index);
@@ -280,14 +310,14 @@ void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
   // Choi–Chang matrix cracking, once per ply: a criterion of its own and the gate of (2.43).
   std::vector<FailureResult>& matrix = matrix_;
   if (needs_matrix_)
-    for (std::size_t k = 0; k < layers_; ++k) {
+    for (std::size_t k = 0; k < plies; ++k) {
       matrix[k] = choi_chang_matrix_cracking(avg[k], lam.material_of(k).strength);
       if (track_cracks_for_delamination_ && matrix[k].failed()) cracked_[k * points_.size() + g] = 1;
     }
   for (std::size_t c = 0; c < criteria_.size(); ++c) {
     const Criterion crit = criteria_[c];
     if (crit == Criterion::choi_chang_delamination) {
-      for (std::size_t k = 0; k + 1 < layers_; ++k) {
+      for (std::size_t k = 0; k + 1 < plies; ++k) {
         // (2.43) is checked where an adjacent ply has a matrix crack.
         if (cracked_[k * points_.size() + g] == 0 && cracked_[(k + 1) * points_.size() + g] == 0) continue;
         record(c, k,
@@ -298,7 +328,7 @@ void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
       }
       continue;
     }
-    for (std::size_t k = 0; k < layers_; ++k) {
+    for (std::size_t k = 0; k < plies; ++k) {
       if (crit == Criterion::choi_chang_matrix) {
         record(c, k, matrix[k], false);
         continue;

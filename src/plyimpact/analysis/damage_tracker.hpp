@@ -1,7 +1,10 @@
 #pragma once
 // Damage initiation during an impact (SPEC §6–7; thesis 3.5.3, 4.3–4.6): every evaluated step, the
-// selected criteria at the 3×3 Gauss points of every element, for every ply (and interface for
-// delamination). A point that has failed in a criterion stays failed.
+// selected criteria at the stress points of every element (the 3×3 Gauss points of
+// PlateElement::stress_points), for every ply (and interface for delamination) of the element's
+// laminate. A point that has failed in a criterion stays failed. Plies are numbered from the impacted
+// face in every region.
+#include "plyimpact/analysis/impact_observer.hpp"
 #include "plyimpact/analysis/stress_recovery.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
@@ -37,12 +40,15 @@ struct DamageOptions {
   CriterionOptions criterion_options;
 };
 
-class DamageTracker {
+class DamageTracker final : public ImpactObserver {
 public:
   DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options = {});
 
-  /// ImpactObserver: evaluates the criteria for the plate state u (free DOFs) at time t.
+  /// Evaluates the criteria for the plate state u (free DOFs) at time t.
   void observe(long step, double t, double force, const Eigen::VectorXd& u);
+  void on_step(const StepView& v) override {
+    if (v.step % options_.every == 0) observe(v.step, v.t, v.force, v.plate_displacement());
+  }
 
   /// Every failed Gauss point in order of onset.
   [[nodiscard]] const std::vector<DamageOnset>& onsets() const { return onsets_; }
@@ -59,35 +65,46 @@ private:
     int element, i, j;
     double x, y, area;
   };
+  /// Per laminate: Q̄, the height z and the rotation folded into (σ11, σ22, τ12, τ13, τ23) from
+  /// (ε0, κ, γ), per ply (rows 5k..5k+4), at the ply mid-plane (= ply average) and at its faces.
+  struct SectionOperators {
+    const Laminate* laminate = nullptr;
+    std::size_t plies = 0;
+    Eigen::MatrixXd A_average, A_top, A_bottom;
+    std::vector<Eigen::Matrix<double, 5, 5>> average_bending, top_bending, bottom_bending; ///< (κ, γ) columns
+    std::vector<Eigen::Matrix<double, 3, 5>> transverse_bending; ///< rows σ22, τ13, τ23 of average_bending
+  };
+  [[nodiscard]] static SectionOperators section_operators(const Laminate& lam);
   void evaluate_point(std::size_t g, double t, double force);
   [[nodiscard]] bool cannot_change(const Eigen::Matrix<double, 5, 1>& strains) const;
   [[nodiscard]] std::size_t slot(std::size_t c, std::size_t layer, std::size_t g) const {
     return (c * layers_ + layer) * points_.size() + g;
   }
+  [[nodiscard]] const SectionOperators& section_at(std::size_t g) const {
+    return sections_[static_cast<std::size_t>(model_.section_index(points_[g].element))];
+  }
+  [[nodiscard]] const StrainOperator& strain_operator(int e, int l) const {
+    return B_[gauss3x3.size() * static_cast<std::size_t>(model_.mesh().shape_class(e)) +
+              static_cast<std::size_t>(l)];
+  }
+  void observe_bending(double t, double force);
+  void observe_general(double t, double force);
 
   const PlateModel& model_;
   std::vector<Criterion> criteria_;
   DamageOptions options_;
   bool track_cracks_for_delamination_ = false; ///< matrix cracking gates delamination (2.43)
-  std::size_t layers_ = 0;                     ///< plies (interfaces use indices 0..N−2)
+  std::size_t layers_ = 0;                     ///< most plies of any laminate (interfaces use 0..N−2)
   std::vector<GaussPoint> points_;
-  using StrainOperator = Eigen::Matrix<double, 8, q9_dofs>; ///< (ε0, κ, γ) from element DOFs
-  using StressOperator = Eigen::Matrix<double, 5, 8>; ///< (σ11, σ22, τ12, τ13, τ23) from (ε0, κ, γ)
-  std::vector<StrainOperator> B_;                     ///< per point (or per local point on a regular mesh)
-  /// Per ply (rows 5k..5k+4): Q̄, the height z and the rotation folded into (σ11, σ22, τ12, τ13, τ23)
-  /// from (ε0, κ, γ), at the ply mid-plane (= ply average) and at its faces.
-  Eigen::MatrixXd A_average_, A_top_, A_bottom_;
+  std::vector<SectionOperators> sections_; ///< per laminate of the model
+  std::vector<StrainOperator> B_;          ///< (ε0, κ, γ) from element DOFs per (shape class, local point)
+  bool uniform_ = false;                   ///< one element shape and one laminate: batched products
   bool needs_faces_ = false;
   Eigen::MatrixXd U_, local_strains_, E_, S_average_, S_top_, S_bottom_; ///< work arrays, sized once
   std::vector<Eigen::Matrix<double, 5, 27>> B_bending_; ///< (κ, γ) rows, (w, θx, θy) columns of B_
   std::vector<int> inplane_equations_;
-  std::vector<Eigen::Matrix<double, 5, 5>> average_bending_, top_bending_,
-      bottom_bending_;                                          ///< (κ, γ) columns of A
-  std::vector<Eigen::Matrix<double, 3, 5>> transverse_bending_; ///< rows σ22, τ13, τ23 of average_bending_
   std::vector<Eigen::Matrix<double, 5, 1>> choi_chang_bound_; ///< per criterion: index ≤ bound · |(κ, γ)|
-  std::vector<std::array<int, q9_dofs>> element_equations_;
-  bool regular_ = false;
-  std::vector<char> failed_;          ///< per (criterion, layer, point)
+  std::vector<char> failed_;                                  ///< per (criterion, layer, point)
   std::vector<char> cracked_;         ///< Choi–Chang matrix crack per (ply, point), for gating
   std::vector<double> area_;          ///< per (criterion, layer)
   std::vector<double> peak_;          ///< per criterion

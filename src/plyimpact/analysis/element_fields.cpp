@@ -1,7 +1,10 @@
 #include "plyimpact/analysis/element_fields.hpp"
 
 #include "plyimpact/analysis/stress_recovery.hpp"
+#include "plyimpact/fem/quadrature.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <set>
 #include <tuple>
 
@@ -33,41 +36,47 @@ double interface_index(Criterion c, const PlyStress& upper, const Material& mu, 
 ElementCentreFields element_centre_fields(const PlateModel& model, const Eigen::VectorXd& u,
                                           const std::vector<Criterion>& criteria,
                                           const CriterionOptions& options) {
-  const Laminate& lam = model.laminate();
-  const PlateMesh& mesh = model.mesh();
+  const Mesh& mesh = model.mesh();
   ElementCentreFields f;
   f.elements = mesh.element_count();
-  f.plies = static_cast<int>(lam.ply_count());
+  for (const Laminate& l : model.laminates())
+    f.plies = std::max(f.plies, static_cast<int>(l.ply_count()));
   f.criteria = criteria;
   const auto E = std::size_t(f.elements), N = std::size_t(f.plies);
-  f.ply_stress.resize(N * E);
-  f.interface_shear.resize((N - 1) * E);
-  f.index.assign(criteria.size() * N * E, 0.0);
-  const std::vector<double> z_interfaces = interface_heights(lam);
+  // A ply or interface that an element's laminate does not have (regions with fewer plies) is NaN.
+  constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  f.ply_stress.assign(N * E, PlyStress{none, none, none, none, none});
+  f.interface_shear.assign((N - 1) * E, Eigen::Vector2d(none, none));
+  f.index.assign(criteria.size() * N * E, none);
   for (int e = 0; e < f.elements; ++e) {
+    const Laminate& lam = model.laminate_of(e);
+    const std::size_t plies = lam.ply_count();
+    const std::vector<double> z_interfaces = interface_heights(lam);
     const ElementCoordinates xy = mesh.element_coordinates(e);
     const ElementVector ue = model.element_dofs(u, e);
     const GeneralizedStrains strains = model.element().strains(xy, ue, 0.0, 0.0);
-    for (std::size_t k = 0; k < N; ++k)
+    for (std::size_t k = 0; k < plies; ++k)
       f.ply_stress[k * E + std::size_t(e)] =
           to_material_axes(ply_average_stress(lam, k, strains), lam.plies()[k].angle_deg);
-    if (N > 1) {
+    if (plies > 1) {
       // Equilibrium shear scaled to the constitutive resultants Q = F γ (SPEC §5).
       const Eigen::Vector2d Q = lam.F() * strains.shear;
       const std::vector<Eigen::Vector2d> tau =
           equilibrium_transverse_shear(lam, strain_gradients(xy, ue, 0.0, 0.0), Q, z_interfaces);
-      for (std::size_t i = 0; i + 1 < N; ++i)
+      for (std::size_t i = 0; i + 1 < plies; ++i)
         f.interface_shear[i * E + std::size_t(e)] = tau[i];
     }
     for (std::size_t c = 0; c < criteria.size(); ++c)
-      for (std::size_t k = 0; k < N; ++k) {
+      for (std::size_t k = 0; k < plies; ++k) {
         double& index = f.index[(c * N + k) * E + std::size_t(e)];
         if (!is_interface_criterion(criteria[c]))
           index = ply_index(criteria[c], f.ply_stress[k * E + std::size_t(e)], lam.material_of(k), options);
-        else if (k + 1 < N)
-          index =
-              interface_index(criteria[c], f.ply_stress[k * E + std::size_t(e)], lam.material_of(k),
-                              f.ply_stress[(k + 1) * E + std::size_t(e)], lam.material_of(k + 1), options);
+        else
+          index = k + 1 < plies
+                      ? interface_index(criteria[c], f.ply_stress[k * E + std::size_t(e)], lam.material_of(k),
+                                        f.ply_stress[(k + 1) * E + std::size_t(e)], lam.material_of(k + 1),
+                                        options)
+                      : 0.0;
       }
   }
   return f;
@@ -87,7 +96,7 @@ DamageFractions damage_fractions(const std::vector<DamageOnset>& onsets, int ele
     const int layer = (ply ? o.ply : o.interface) - 1;
     if (!seen.insert({ply ? 0 : 1, layer, o.element, o.ipgs, o.jpgs}).second) continue;
     auto& v = ply ? d.ply : d.interface;
-    v[std::size_t(layer) * E + std::size_t(o.element - 1)] += 1.0 / 9.0;
+    v[std::size_t(layer) * E + std::size_t(o.element - 1)] += 1.0 / static_cast<double>(gauss3x3.size());
   }
   return d;
 }

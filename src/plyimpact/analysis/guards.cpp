@@ -26,12 +26,6 @@ void check_finite_vector(long step, double t, std::string_view name, const Eigen
                       name, step, t, i, v.size(), v(i)));
 }
 
-double hertz_contact_time(double mass, double velocity, double k) {
-  const double alpha_max = std::pow(5.0 * mass * velocity * velocity / (4.0 * k), 0.4); // energy balance
-  const double beta_2_5_1_2 = std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9);   // B(2/5, 1/2)
-  return 0.8 * beta_2_5_1_2 * alpha_max / velocity;                                     // 2.9432 α_m/v0
-}
-
 std::optional<std::string> time_step_warning(double mass, double velocity, double k, double dt) {
   const double t_c = hertz_contact_time(mass, velocity, k);
   const double steps = t_c / dt;
@@ -42,18 +36,36 @@ std::optional<std::string> time_step_warning(double mass, double velocity, doubl
                      dt, steps, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
 }
 
-std::optional<std::string> impact_point_warning(const PlateMesh& mesh, double x, double y) {
+std::optional<std::string> impact_point_warning(const Mesh& mesh, double x, double y) {
   const auto loc = mesh.locate(x, y);
   if (!loc) return std::nullopt; // outside: refused by the deck reader
   constexpr double edge = 1.0 - 1e-9;
   const bool on_xi = std::abs(loc->xi) >= edge, on_eta = std::abs(loc->eta) >= edge;
   if (!on_xi && !on_eta) return std::nullopt;
-  return fmt::format(
-      "the impact point ({:.6g}, {:.6g}) m lies on an element {} of the {} x {} mesh, not inside "
-      "an element: the contact force and deflection sit on an element boundary. Change "
-      "mesh.nx/mesh.ny so that the point falls inside an element (an odd count for a "
-      "central impact)",
-      x, y, on_xi && on_eta ? "corner" : "edge", mesh.nx(), mesh.ny());
+  const std::string grid = mesh.grid() ? fmt::format("the {} x {} mesh", mesh.grid()->nx, mesh.grid()->ny)
+                                       : std::string("the mesh");
+  return fmt::format("the impact point ({:.6g}, {:.6g}) m lies on an element {} of {}, not inside "
+                     "an element: the contact force and deflection sit on an element boundary. Change "
+                     "mesh.nx/mesh.ny so that the point falls inside an element (an odd count for a "
+                     "central impact)",
+                     x, y, on_xi && on_eta ? "corner" : "edge", grid);
+}
+
+std::optional<std::string> contact_mesh_warning(const Mesh& mesh, double x, double y, double contact_radius,
+                                                ContactLoad load) {
+  const auto loc = mesh.locate(x, y);
+  if (!loc || !(contact_radius > 0.0)) return std::nullopt;
+  const double size = std::sqrt(mesh.element_area(loc->element));
+  const double ratio = size / contact_radius;
+  if (ratio <= max_element_per_contact_radius) return std::nullopt;
+  return fmt::format("the element under the impactor is {:.3g} mm, {:.1f} times the largest contact radius "
+                     "expected ({:.3g} mm): the contact is not resolved{}; refine the mesh there (leave out "
+                     "mesh.nx and mesh.ny for a mesh graded toward the impact point, docs/deck.md)",
+                     size * 1e3, ratio, contact_radius * 1e3,
+                     load == ContactLoad::point
+                         ? " and the point load's peak force depends on the mesh and on where the impactor "
+                           "lands (contact.load = \"hertz-pressure\" converges)"
+                         : ", the pressure acts like a point force");
 }
 
 namespace {

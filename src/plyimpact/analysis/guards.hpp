@@ -3,6 +3,8 @@
 // step, time and quantity named; a time step too coarse for the contact and an impact point on an
 // element boundary give warnings; the factor of K̄ is estimated before it is computed and refused
 // when it would not fit in the available memory.
+#include "plyimpact/analysis/contact_rules.hpp"
+#include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/mesh.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 
@@ -38,11 +40,6 @@ void check_finite_step(long step, double t, std::initializer_list<StepQuantity> 
 /// Throws NonFiniteState naming `name` and the first non-finite entry (equation index) of `v`.
 void check_finite_vector(long step, double t, std::string_view name, const Eigen::VectorXd& v);
 
-/// Hertz contact time of a sphere of mass m striking a rigid half-space at v0 with F = k α^1.5:
-/// t_c = 2 (α_m/v0) ∫₀¹ dx/√(1 − x^{5/2}) = 0.8 B(2/5, 1/2) α_m/v0, α_m = (5 m v0²/(4k))^{2/5}
-/// (SPEC §4 loading law; the plate's compliance only lengthens the contact) [s].
-[[nodiscard]] double hertz_contact_time(double mass, double velocity, double k);
-
 /// Fewest time steps over the Hertz contact time that resolve the force pulse.
 constexpr double min_steps_per_contact = 50.0;
 
@@ -52,7 +49,17 @@ constexpr double min_steps_per_contact = 50.0;
 /// A warning when the impact point lies on an element edge or node (|ξ| or |η| = 1): the contact
 /// force and ws then sit on an element boundary, where the mesh cannot place the point inside an
 /// element's interior.
-[[nodiscard]] std::optional<std::string> impact_point_warning(const PlateMesh& mesh, double x, double y);
+[[nodiscard]] std::optional<std::string> impact_point_warning(const Mesh& mesh, double x, double y);
+
+/// Elements larger than this many expected contact radii at the impact point: the contact is no longer
+/// resolved (a Hertz pressure acts like a point force, whose result depends on where it lands).
+constexpr double max_element_per_contact_radius = 4.0;
+
+/// A warning when the element holding the impact point is larger than max_element_per_contact_radius
+/// times the expected contact radius, or when the load is a point force on an element larger than it
+/// (a point load on a Mindlin plate has no mesh-converged answer).
+[[nodiscard]] std::optional<std::string> contact_mesh_warning(const Mesh& mesh, double x, double y,
+                                                              double contact_radius, ContactLoad load);
 
 /// Memory of a sparse LDLᵀ factorization of A, from its symbolic analysis (AMD ordering).
 struct FactorMemoryEstimate {

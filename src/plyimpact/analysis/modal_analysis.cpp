@@ -41,7 +41,14 @@ private:
 } // namespace
 
 ModalResult solve_modal(const PlateModel& model, int count) {
-  return solve_modal(model, count, model.spec().mass);
+  return solve_modal(model, count, model.mass_kind());
+}
+
+double fundamental_period(const PlateModel& model) {
+  const ModalResult r = solve_modal(model, 7); // room for up to 6 rigid-body modes of a free plate
+  for (const double f : r.frequencies_hz)
+    if (f > 0.0) return 1.0 / f;
+  throw std::runtime_error("impact: the plate has no elastic mode among its lowest 7");
 }
 
 ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {

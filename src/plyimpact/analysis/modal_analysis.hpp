@@ -16,4 +16,7 @@ struct ModalResult {
 [[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count);
 [[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass);
 
+/// Period of the lowest elastic (non-zero) mode [s].
+[[nodiscard]] double fundamental_period(const PlateModel& model);
+
 } // namespace plyimpact

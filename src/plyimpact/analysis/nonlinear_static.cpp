@@ -81,8 +81,8 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
   (void)factor_stiffness(model, model.stiffness()); // restraint check with advice (InsufficientRestraint)
   const NonlinearPlateModel plate(model, s.measure);
   const Eigen::VectorXd f = static_load_vector(model, load);
-  const PlateGeometry& geo = model.mesh().plate();
-  const PointSampler centre = model.sampler(geo.a / 2, geo.b / 2);
+  const Eigen::Vector2d middle = model.mesh().bounds().centre();
+  const PointSampler centre = model.sampler(middle.x(), middle.y());
 
   NonlinearStaticResult r;
   r.load_deflection.push_back({0.0, 0.0});

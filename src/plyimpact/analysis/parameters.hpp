@@ -2,6 +2,7 @@
 // Plain parameter sets of the analyses (SPEC §4, §7, §8, §10). SI units throughout.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace plyimpact {
@@ -22,14 +23,19 @@ struct Impactor {
 enum class UnloadingLaw { tan_sun, elastic };
 enum class ContactLoad { point, hertz_pressure };
 
+/// The deck spelling ("point", "hertz-pressure").
+[[nodiscard]] constexpr std::string_view to_string(ContactLoad load) {
+  return load == ContactLoad::point ? "point" : "hertz-pressure";
+}
+
 /// Contact law (2.5)–(2.7): loading k α^1.5, Tan–Sun unloading, Yang–Sun reloading.
 struct ContactLawParameters {
   std::optional<double> k; ///< [N/m^1.5]; empty = "auto" (modified Hertz constant)
   UnloadingLaw unloading = UnloadingLaw::tan_sun;
-  double q = 2.5;           ///< unloading exponent
-  double beta = 0.094;      ///< permanent-indentation factor
-  double alpha_cr = 1.7e-4; ///< critical indentation [m]
-  ContactLoad load = ContactLoad::point;
+  double q = 2.5;                                 ///< unloading exponent
+  double beta = 0.094;                            ///< permanent-indentation factor
+  double alpha_cr = 1.7e-4;                       ///< critical indentation [m]
+  ContactLoad load = ContactLoad::hertz_pressure; ///< point: the thesis's point force
 };
 
 /// Newmark time stepping (2.11)–(2.16).
@@ -39,18 +45,6 @@ struct TimeStepping {
   double newmark_beta = 0.25;
   double newmark_gamma = 0.5;
   long max_steps = 2'000'000;
-};
-
-struct PointLoad {
-  double x = 0.0, y = 0.0, force = 0.0; ///< [m], [m], [N] (positive along +z, the impact direction)
-};
-struct PatchLoad {
-  double x = 0.0, y = 0.0, dx = 0.0, dy = 0.0, force = 0.0; ///< centre, size [m], total force [N]
-};
-struct StaticLoad {
-  double pressure = 0.0; ///< uniform pressure on the top face, positive along +z [Pa]
-  std::optional<PointLoad> point;
-  std::optional<PatchLoad> patch;
 };
 
 struct ModalSettings {

@@ -23,10 +23,10 @@ std::string restraint_advice(const PlateModel& model) {
         "\"mitc9\" or restrain w on more edges";
   }
   std::string codes;
-  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
+  for (const SetRestraint& r : model.boundary().sets)
     codes +=
-        fmt::format("{}{} = {}", codes.empty() ? "" : ", ", to_string(e), model.boundary().edge(e).code());
-  return s + fmt::format(" (current edge codes uvwθxθy: {})", codes);
+        fmt::format("{}{} = {}", codes.empty() ? "" : ", ", r.set, resolve_restraint(model.mesh(), r).code());
+  return s + fmt::format(" (current edge codes uvwθxθy: {})", codes.empty() ? "none" : codes);
 }
 
 } // namespace
@@ -44,19 +44,11 @@ SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K, Spars
   return solver;
 }
 
-Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
-  if (load.pressure != 0.0) f += model.pressure_load(load.pressure);
-  if (load.point) f += model.point_load(load.point->x, load.point->y, load.point->force);
-  if (load.patch) f += model.patch_load(*load.patch);
-  return f;
-}
-
 StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eigen::VectorXd u) {
   StaticResult r;
   r.u = std::move(u);
-  const PlateGeometry& p = model.mesh().plate();
-  r.center_deflection = model.sampler(p.a / 2, p.b / 2).value(r.u);
+  const Eigen::Vector2d centre = model.mesh().bounds().centre();
+  r.center_deflection = model.sampler(centre.x(), centre.y()).value(r.u);
   if (load.point)
     r.load_point_deflection = model.sampler(load.point->x, load.point->y).value(r.u);
   else if (load.patch)

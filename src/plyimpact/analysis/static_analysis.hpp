@@ -1,6 +1,6 @@
 #pragma once
 // Linear static analysis: K u = f for point, patch and pressure loads (SPEC §8).
-#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/fem/loads.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 
@@ -17,7 +17,7 @@ public:
 
 struct StaticResult {
   Eigen::VectorXd u;                  ///< free DOFs
-  double center_deflection = 0.0;     ///< w at (a/2, b/2) [m]
+  double center_deflection = 0.0;     ///< w at the centre of the plate (a/2, b/2) [m]
   double load_point_deflection = 0.0; ///< w under the point (or patch centre) load [m]; centre if none
   double max_abs_deflection = 0.0;    ///< max |w| over the nodes [m]
 };
@@ -26,7 +26,6 @@ struct StaticResult {
 [[nodiscard]] SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K,
                                          SparseSolverKind kind = SparseSolverKind::simplicial_ldlt);
 
-[[nodiscard]] Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load);
 [[nodiscard]] StaticResult solve_static(const PlateModel& model, const StaticLoad& load);
 
 /// The result quantities of a plate state u (free DOFs) under `load`: centre, load-point and largest

@@ -9,6 +9,10 @@ StressProbes::StressProbes(const PlateModel& model, std::vector<StressProbeSpec>
   for (const auto& s : specs_) {
     const auto loc = model.mesh().locate(s.x, s.y);
     if (!loc) throw std::invalid_argument("stress probe '" + s.name + "' lies outside the plate");
+    const auto plies = static_cast<int>(model.laminate_of(loc->element).ply_count());
+    if (s.ply > plies || s.interface > plies - 1)
+      throw std::invalid_argument("stress probe '" + s.name + "': the laminate at its point has " +
+                                  std::to_string(plies) + " plies");
     where_.push_back(*loc);
   }
 }
@@ -26,13 +30,13 @@ std::vector<std::string> StressProbes::columns() const {
 }
 
 void StressProbes::observe(long /*step*/, double t, double /*force*/, const Eigen::VectorXd& u) {
-  const Laminate& lam = model_.laminate();
   std::vector<double> row{t};
   const auto push = [&row](const PlyStress& s) {
     row.insert(row.end(), {s.s11, s.s22, s.t12, s.t13, s.t23});
   };
   for (std::size_t p = 0; p < specs_.size(); ++p) {
     const PointLocation& loc = where_[p];
+    const Laminate& lam = model_.laminate_of(loc.element);
     const GeneralizedStrains e = model_.element().strains(
         model_.mesh().element_coordinates(loc.element), model_.element_dofs(u, loc.element), loc.xi, loc.eta);
     const StressProbeSpec& s = specs_[p];

@@ -7,27 +7,37 @@
 
 namespace plyimpact {
 
-ThresholdResult find_threshold_velocity(const PlateModel& model, const ImpactSettings& settings,
-                                        Criterion criterion, const ThresholdOptions& options) {
-  if (!(options.tolerance > 0.0)) throw std::invalid_argument("threshold: tolerance must be positive");
-  std::atomic<bool> stop{false};
-  ImpactSettings s = settings;
-  s.cancel = &stop; // a run ends as soon as the criterion fires
-  s.field_times.clear();
-  s.history_every = 1 << 30; // no history needed
-  const ImpactSolver solver(model, s);
+namespace {
 
+/// Tracks one criterion and ends the run at its first failure.
+class FirstFailure final : public ImpactObserver {
+public:
+  FirstFailure(const PlateModel& model, Criterion criterion, const DamageOptions& options)
+      : tracker(model, {criterion}, options) {}
+  void on_step(const StepView& v) override { tracker.on_step(v); }
+  [[nodiscard]] bool wants_stop() const override { return tracker.any_failure(); }
+  DamageTracker tracker;
+};
+
+} // namespace
+
+ThresholdResult find_threshold_velocity(const ImpactCase& impact, Criterion criterion,
+                                        const ThresholdOptions& options, const std::atomic<bool>* cancel) {
+  if (!(options.tolerance > 0.0)) throw std::invalid_argument("threshold: tolerance must be positive");
+  const ImpactSettings& s = impact.settings();
   ThresholdResult result;
   std::optional<DamageOnset> onset_at_upper;
   const auto trial = [&](double v) {
-    DamageTracker tracker(model, {criterion}, options.damage);
-    stop.store(false);
-    Impactor imp = s.impactor;
-    imp.velocity = v;
-    (void)solver.run(imp, [&](long step, double t, double force, const Eigen::VectorXd& u) {
-      tracker.observe(step, t, force, u);
-      if (tracker.any_failure()) stop.store(true);
-    });
+    FirstFailure watch(impact.model(), criterion, options.damage);
+    RunRequest run;
+    run.impactor = s.impactor;
+    run.impactor->velocity = v;
+    run.observers = {&watch};
+    run.history_every = 0; // the search needs no history
+    run.cancel = cancel;
+    (void)impact.run(run);
+    if (cancel != nullptr && cancel->load()) throw std::runtime_error("threshold: interrupted");
+    const DamageTracker& tracker = watch.tracker;
     const bool failed = tracker.any_failure();
     result.trials.push_back({v, failed, tracker.peak_index(criterion)});
     if (failed) onset_at_upper = tracker.first_onsets().front();

@@ -1,9 +1,10 @@
 #pragma once
 // Threshold velocity (SPEC §7; thesis Table 4.3): the smallest impact velocity at which a criterion
-// first reaches 1 anywhere in the plate during the event, by bracketing and bisection. All runs
-// share one factorization of K̄ (the time step is fixed).
+// first reaches 1 anywhere in the plate during the event, by bracketing and bisection. Every trial is
+// a run of the same ImpactCase with another velocity: the linear or non-linear model the case was
+// built with, one plate, one time step (linear: one factorization of K̄ for all trials).
 #include "plyimpact/analysis/damage_tracker.hpp"
-#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
 
 #include <optional>
 #include <vector>
@@ -30,9 +31,9 @@ struct ThresholdResult {
   std::vector<ThresholdTrial> trials;       ///< in the order run
 };
 
-/// Runs the search starting from settings.impactor.velocity as the first trial.
-[[nodiscard]] ThresholdResult find_threshold_velocity(const PlateModel& model, const ImpactSettings& settings,
-                                                      Criterion criterion,
-                                                      const ThresholdOptions& options = {});
+/// Runs the search starting from the case's impact velocity as the first trial.
+[[nodiscard]] ThresholdResult find_threshold_velocity(const ImpactCase& impact, Criterion criterion,
+                                                      const ThresholdOptions& options = {},
+                                                      const std::atomic<bool>* cancel = nullptr);
 
 } // namespace plyimpact

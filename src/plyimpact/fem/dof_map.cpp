@@ -2,33 +2,19 @@
 
 namespace plyimpact {
 
-Restraint node_restraint(const PlateMesh& mesh, const BoundaryConditions& bc, int n) {
-  Restraint r;
-  int edges = 0;
-  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb}) {
-    if (!mesh.on_edge(n, e)) continue;
-    ++edges;
-    for (std::size_t d = 0; d < 5; ++d)
-      r.fixed[d] = r.fixed[d] || bc.edge(e).fixed[d];
-  }
-  if (edges == 2 && bc.corners) return *bc.corners;
-  return r;
-}
-
-DofMap::DofMap(const PlateMesh& mesh, const BoundaryConditions& bc)
+DofMap::DofMap(const Mesh& mesh, const BoundaryConditions& bc)
     : equation_(static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(mesh.node_count()), -1) {
-  for (int n = 0; n < mesh.node_count(); ++n) {
-    const Restraint r = node_restraint(mesh, bc, n);
+  const std::vector<Restraint> restraints = node_restraints(mesh, bc);
+  for (int n = 0; n < mesh.node_count(); ++n)
     for (int d = 0; d < dofs_per_node; ++d)
-      if (!r.fixed[static_cast<std::size_t>(d)])
+      if (!restraints[static_cast<std::size_t>(n)].fixed[static_cast<std::size_t>(d)])
         equation_[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(n) +
                   static_cast<std::size_t>(d)] = free_count_++;
-  }
 }
 
-std::array<int, q9_dofs> DofMap::element_equations(const PlateMesh& mesh, int e) const {
-  std::array<int, q9_dofs> eq{};
-  const auto& conn = mesh.element_nodes(e);
+ElementEquations DofMap::element_equations(const Mesh& mesh, int e) const {
+  ElementEquations eq{};
+  const ElementNodes& conn = mesh.element_nodes(e);
   for (int a = 0; a < 9; ++a)
     for (int d = 0; d < dofs_per_node; ++d)
       eq[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(a) +

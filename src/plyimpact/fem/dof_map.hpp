@@ -1,17 +1,27 @@
 #pragma once
-// Equation numbering: free DOFs numbered node by node; restrained DOFs get no equation (−1).
+// Equation numbering: free DOFs numbered node by node; restrained DOFs get no equation (−1). And the
+// two moves between element and global vectors that every assembly and every recovery makes: gather an
+// element's DOFs from a global vector, scatter-add an element vector into one.
 #include "plyimpact/fem/boundary.hpp"
 #include "plyimpact/fem/mesh.hpp"
-#include "plyimpact/fem/plate_element.hpp"
 
+#include <Eigen/Core>
 #include <array>
 #include <vector>
 
 namespace plyimpact {
 
+inline constexpr int dofs_per_node = 5;
+inline constexpr int q9_dofs = 45;
+
+using ElementMatrix = Eigen::Matrix<double, q9_dofs, q9_dofs>;
+using ElementVector = Eigen::Matrix<double, q9_dofs, 1>;
+/// Global equation of each element DOF 5a + d (−1 when restrained).
+using ElementEquations = std::array<int, q9_dofs>;
+
 class DofMap {
 public:
-  DofMap(const PlateMesh& mesh, const BoundaryConditions& bc);
+  DofMap(const Mesh& mesh, const BoundaryConditions& bc);
 
   [[nodiscard]] int free_count() const { return free_count_; }
   [[nodiscard]] int total_count() const { return static_cast<int>(equation_.size()); }
@@ -20,8 +30,8 @@ public:
     return equation_[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(node) +
                      static_cast<std::size_t>(dof)];
   }
-  [[nodiscard]] std::array<int, q9_dofs> element_equations(const PlateMesh& mesh, int e) const;
-  /// Restraint actually applied at a node (edge codes, corners).
+  [[nodiscard]] ElementEquations element_equations(const Mesh& mesh, int e) const;
+  /// Restraint actually applied at a node.
   [[nodiscard]] Restraint restraint_of(int node) const;
 
 private:
@@ -29,8 +39,18 @@ private:
   int free_count_ = 0;
 };
 
-/// Restraint of node n: the union of the codes of the edges it lies on; `bc.corners` replaces it at
-/// the four corners when given.
-[[nodiscard]] Restraint node_restraint(const PlateMesh& mesh, const BoundaryConditions& bc, int n);
+/// uₑ from the global vector of free DOFs (zero where restrained).
+[[nodiscard]] inline ElementVector gather(const Eigen::VectorXd& u, const ElementEquations& eq) {
+  ElementVector ue;
+  for (int i = 0; i < q9_dofs; ++i)
+    ue(i) = eq[static_cast<std::size_t>(i)] >= 0 ? u(eq[static_cast<std::size_t>(i)]) : 0.0;
+  return ue;
+}
+
+/// f += fₑ on the free DOFs.
+inline void scatter_add(Eigen::VectorXd& f, const ElementEquations& eq, const ElementVector& fe) {
+  for (int i = 0; i < q9_dofs; ++i)
+    if (eq[static_cast<std::size_t>(i)] >= 0) f(eq[static_cast<std::size_t>(i)]) += fe(i);
+}
 
 } // namespace plyimpact

@@ -159,33 +159,24 @@ IntegrationPoint integration_point(const ElementCoordinates& xy, double xi, doub
 
 } // namespace
 
-NonlinearMindlinQ9::NonlinearMindlinQ9(const Laminate& laminate, ElementFormulation formulation,
-                                       StrainMeasure measure)
-    : linear_(laminate, formulation), F_(laminate.F()), formulation_(linear_.formulation()),
-      measure_(measure) {
-  if (measure_ == StrainMeasure::green_lagrange && formulation_ == ElementFormulation::mitc9)
+NonlinearMindlinQ9::NonlinearMindlinQ9(const PlateElement& linear, StrainMeasure measure)
+    : linear_(linear), measure_(measure) {
+  if (measure_ == StrainMeasure::green_lagrange && formulation() == ElementFormulation::mitc9)
     throw std::invalid_argument(
         "the Green-Lagrange strain measure is available with the q9 element only (its transverse-shear terms "
         "(2.55) have no MITC9 interpolation): set [mesh] element = \"q9\" or use strain_measure = "
         "\"von-karman\"");
-  C_mb_.topLeftCorner<3, 3>() = laminate.A();
-  C_mb_.topRightCorner<3, 3>() = laminate.B();
-  C_mb_.bottomLeftCorner<3, 3>() = laminate.B();
-  C_mb_.bottomRightCorner<3, 3>() = laminate.D();
 }
 
-ElementGeometry NonlinearMindlinQ9::geometry(const ElementCoordinates& xy) const {
+ElementGeometry NonlinearMindlinQ9::geometry(const ElementCoordinates& xy,
+                                             const SectionStiffness& section) const {
   ElementGeometry geo;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j)
-      geo.membrane_bending[3 * i + j] =
-          integration_point(xy, gauss3.points[i], gauss3.points[j], gauss3.weights[i] * gauss3.weights[j]);
-  for (std::size_t i = 0; i < 2; ++i)
-    for (std::size_t j = 0; j < 2; ++j)
-      geo.shear[2 * i + j] =
-          integration_point(xy, gauss2.points[i], gauss2.points[j], gauss2.weights[i] * gauss2.weights[j]);
-  geo.shear_stiffness = formulation_ == ElementFormulation::mitc9 ? linear_.shear_stiffness(xy)
-                                                                  : ElementMatrix(ElementMatrix::Zero());
+  for (std::size_t p = 0; p < gauss3x3.size(); ++p)
+    geo.membrane_bending[p] = integration_point(xy, gauss3x3[p].xi, gauss3x3[p].eta, gauss3x3[p].weight);
+  for (std::size_t p = 0; p < gauss2x2.size(); ++p)
+    geo.shear[p] = integration_point(xy, gauss2x2[p].xi, gauss2x2[p].eta, gauss2x2[p].weight);
+  geo.shear_stiffness = formulation() == ElementFormulation::mitc9 ? linear_.shear_stiffness(xy, section.F)
+                                                                   : ElementMatrix(ElementMatrix::Zero());
   for (int q = 0; q < 9; ++q) {
     geo.mb_dN_dx.col(q) = geo.membrane_bending[static_cast<std::size_t>(q)].dN_dx;
     geo.mb_dN_dy.col(q) = geo.membrane_bending[static_cast<std::size_t>(q)].dN_dy;
@@ -259,37 +250,41 @@ ElementVector internal_force_with(const ElementGeometry& geo, const ElementVecto
 
 } // namespace
 
-ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, const ElementVector& ue) const {
-  const bool mitc9 = formulation_ == ElementFormulation::mitc9;
+ElementVector NonlinearMindlinQ9::internal_force(const ElementGeometry& geo, const SectionStiffness& section,
+                                                 const ElementVector& ue) const {
+  const bool mitc9 = formulation() == ElementFormulation::mitc9;
   if (measure_ == StrainMeasure::von_karman)
-    return internal_force_with<von_karman_terms>(geo, ue, C_mb_, F_, mitc9);
-  return internal_force_with<green_lagrange_terms>(geo, ue, C_mb_, F_, mitc9);
+    return internal_force_with<von_karman_terms>(geo, ue, section.C_mb, section.F, mitc9);
+  return internal_force_with<green_lagrange_terms>(geo, ue, section.C_mb, section.F, mitc9);
 }
 
 ElementMatrix NonlinearMindlinQ9::tangent_stiffness(const ElementGeometry& geo,
+                                                    const SectionStiffness& section,
                                                     const ElementVector& ue) const {
+  const Eigen::Matrix<double, 6, 6>& C_mb = section.C_mb;
+  const Eigen::Matrix2d& F = section.F;
   const auto terms = terms_of(measure_);
   ElementMatrix K = ElementMatrix::Zero();
   for (const IntegrationPoint& p : geo.membrane_bending) {
     const StrainState s = strain_state(gradients(p, ue), terms);
     const Eigen::Matrix<double, 6, n_gradients> E = s.E.topRows<6>();
-    const Eigen::VectorXd S = C_mb_ * s.e.head<6>();
+    const Eigen::VectorXd S = C_mb * s.e.head<6>();
     // K_L + K_NL from Eᵀ C E, K_σ from the resultants times the strain curvature (2.100)–(2.103).
     const Eigen::Matrix<double, n_gradients, n_gradients> Kg =
-        E.transpose() * C_mb_ * E + stress_hessian(terms, ex, 6, S);
+        E.transpose() * C_mb * E + stress_hessian(terms, ex, 6, S);
     const GradientOperator G = gradient_operator(p);
     K.noalias() += p.weight * (G.transpose() * (Kg * G));
   }
-  if (formulation_ == ElementFormulation::mitc9) {
+  if (formulation() == ElementFormulation::mitc9) {
     K += geo.shear_stiffness;
     return K;
   }
   for (const IntegrationPoint& p : geo.shear) {
     const StrainState s = strain_state(gradients(p, ue), terms);
     const Eigen::Matrix<double, 2, n_gradients> E = s.E.bottomRows<2>();
-    const Eigen::VectorXd Q = F_ * s.e.tail<2>();
+    const Eigen::VectorXd Q = F * s.e.tail<2>();
     const Eigen::Matrix<double, n_gradients, n_gradients> Kg =
-        E.transpose() * F_ * E + stress_hessian(terms, gyz, 2, Q);
+        E.transpose() * F * E + stress_hessian(terms, gyz, 2, Q);
     const GradientOperator G = gradient_operator(p);
     K.noalias() += p.weight * (G.transpose() * (Kg * G));
   }

@@ -45,24 +45,25 @@ struct ElementGeometry {
 
 class NonlinearMindlinQ9 {
 public:
-  /// Throws std::invalid_argument for Green–Lagrange with MITC9 (the θ·∇(u, v) shear terms of (2.55)
-  /// have no assumed-strain interpolation here).
-  NonlinearMindlinQ9(const Laminate& laminate, ElementFormulation formulation, StrainMeasure measure);
+  /// `linear` is the element whose shear interpolation the non-linear one keeps (q9 or mitc9). Throws
+  /// std::invalid_argument for Green–Lagrange with MITC9 (the θ·∇(u, v) shear terms of (2.55) have no
+  /// assumed-strain interpolation here).
+  NonlinearMindlinQ9(const PlateElement& linear, StrainMeasure measure);
 
-  [[nodiscard]] ElementGeometry geometry(const ElementCoordinates& xy) const;
+  /// The integration points of an element and, for MITC9, its linear shear stiffness with `section`.
+  [[nodiscard]] ElementGeometry geometry(const ElementCoordinates& xy, const SectionStiffness& section) const;
   /// f = ∫ Gᵀ Eᵀ S dA (+ K_s uₑ for MITC9).
-  [[nodiscard]] ElementVector internal_force(const ElementGeometry& geo, const ElementVector& ue) const;
+  [[nodiscard]] ElementVector internal_force(const ElementGeometry& geo, const SectionStiffness& section,
+                                             const ElementVector& ue) const;
   /// K_T = ∂f/∂uₑ (consistent: material + initial-displacement + geometric (initial-stress) parts).
-  [[nodiscard]] ElementMatrix tangent_stiffness(const ElementGeometry& geo, const ElementVector& ue) const;
+  [[nodiscard]] ElementMatrix tangent_stiffness(const ElementGeometry& geo, const SectionStiffness& section,
+                                                const ElementVector& ue) const;
 
   [[nodiscard]] StrainMeasure measure() const { return measure_; }
-  [[nodiscard]] ElementFormulation formulation() const { return formulation_; }
+  [[nodiscard]] ElementFormulation formulation() const { return linear_.formulation(); }
 
 private:
-  MindlinQ9 linear_;
-  Eigen::Matrix<double, 6, 6> C_mb_; ///< [[A, B], [B, D]]
-  Eigen::Matrix2d F_;                ///< (yz, xz)
-  ElementFormulation formulation_;
+  const PlateElement& linear_;
   StrainMeasure measure_;
 };
 

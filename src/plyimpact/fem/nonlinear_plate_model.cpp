@@ -1,25 +1,26 @@
 #include "plyimpact/fem/nonlinear_plate_model.hpp"
 
 #include <algorithm>
+#include <map>
 
 namespace plyimpact {
 
 NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure measure)
-    : model_(model), element_(model.laminate(), model.element().formulation(), measure),
-      pattern_(model.stiffness()) {
-  const PlateMesh& mesh = model.mesh();
-  if (mesh.is_regular()) {
-    geometry_.push_back(element_.geometry(mesh.element_coordinates(0))); // congruent elements
-  } else {
-    for (int e = 0; e < mesh.element_count(); ++e)
-      geometry_.push_back(element_.geometry(mesh.element_coordinates(e)));
+    : model_(model), element_(model.element(), measure), pattern_(model.pattern()) {
+  const Mesh& mesh = model.mesh();
+  std::map<std::pair<int, int>, int> known; // (section, shape class) → geometry
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const std::pair<int, int> key{model.section_index(e), mesh.shape_class(e)};
+    auto [it, added] = known.emplace(key, static_cast<int>(geometry_.size()));
+    if (added)
+      geometry_.push_back(element_.geometry(mesh.element_coordinates(mesh.representative(key.second)),
+                                            model.section(key.first).stiffness));
+    geometry_index_.push_back(it->second);
   }
-  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
   const int* outer = pattern_.outerIndexPtr();
   const int* inner = pattern_.innerIndexPtr();
   for (int e = 0; e < mesh.element_count(); ++e) {
-    equations_.push_back(model.dofs().element_equations(mesh, e));
-    const auto& eq = equations_.back();
+    const ElementEquations& eq = model.element_equations(e);
     std::array<int, q9_dofs * q9_dofs> slot{};
     for (int j = 0; j < q9_dofs; ++j)
       for (int i = 0; i < q9_dofs; ++i) {
@@ -33,20 +34,11 @@ NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure 
   }
 }
 
-const ElementGeometry& NonlinearPlateModel::geometry_of(int e) const {
-  return geometry_.size() == 1 ? geometry_.front() : geometry_[static_cast<std::size_t>(e)];
-}
-
 Eigen::VectorXd NonlinearPlateModel::internal_force(const Eigen::VectorXd& u) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.size());
-  ElementVector ue;
-  for (std::size_t e = 0; e < equations_.size(); ++e) {
-    const auto& eq = equations_[e];
-    for (int i = 0; i < q9_dofs; ++i)
-      ue(i) = eq[static_cast<std::size_t>(i)] >= 0 ? u(eq[static_cast<std::size_t>(i)]) : 0.0;
-    const ElementVector fe = element_.internal_force(geometry_of(static_cast<int>(e)), ue);
-    for (int i = 0; i < q9_dofs; ++i)
-      if (eq[static_cast<std::size_t>(i)] >= 0) f(eq[static_cast<std::size_t>(i)]) += fe(i);
+  for (int e = 0; e < model_.mesh().element_count(); ++e) {
+    const ElementEquations& eq = model_.element_equations(e);
+    scatter_add(f, eq, element_.internal_force(geometry_of(e), section_of(e), gather(u, eq)));
   }
   return f;
 }
@@ -54,13 +46,10 @@ Eigen::VectorXd NonlinearPlateModel::internal_force(const Eigen::VectorXd& u) co
 SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) const {
   SparseMatrix K = pattern_;
   double* values = K.valuePtr();
-  ElementVector ue;
-  for (std::size_t e = 0; e < equations_.size(); ++e) {
-    const auto& eq = equations_[e];
-    for (int i = 0; i < q9_dofs; ++i)
-      ue(i) = eq[static_cast<std::size_t>(i)] >= 0 ? u(eq[static_cast<std::size_t>(i)]) : 0.0;
-    const ElementMatrix Ke = element_.tangent_stiffness(geometry_of(static_cast<int>(e)), ue);
-    const auto& slot = slot_[e];
+  for (int e = 0; e < model_.mesh().element_count(); ++e) {
+    const ElementMatrix Ke =
+        element_.tangent_stiffness(geometry_of(e), section_of(e), gather(u, model_.element_equations(e)));
+    const auto& slot = slot_[static_cast<std::size_t>(e)];
     for (int j = 0; j < q9_dofs; ++j)
       for (int i = 0; i < q9_dofs; ++i)
         if (const int s = slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)]; s >= 0)

@@ -23,12 +23,17 @@ public:
   [[nodiscard]] SparseMatrix tangent_stiffness(const Eigen::VectorXd& u) const;
 
 private:
-  [[nodiscard]] const ElementGeometry& geometry_of(int e) const;
+  [[nodiscard]] const ElementGeometry& geometry_of(int e) const {
+    return geometry_[static_cast<std::size_t>(geometry_index_[static_cast<std::size_t>(e)])];
+  }
+  [[nodiscard]] const SectionStiffness& section_of(int e) const {
+    return model_.section(model_.section_index(e)).stiffness;
+  }
 
   const PlateModel& model_;
   NonlinearMindlinQ9 element_;
-  std::vector<ElementGeometry> geometry_;                ///< one per element, or one shared (regular mesh)
-  std::vector<std::array<int, q9_dofs>> equations_;      ///< element DOF → free equation (−1 restrained)
+  std::vector<ElementGeometry> geometry_;                ///< one per (element shape, section)
+  std::vector<int> geometry_index_;                      ///< per element
   SparseMatrix pattern_;                                 ///< structure of K_T, values zero
   std::vector<std::array<int, q9_dofs * q9_dofs>> slot_; ///< (i, j) of Kₑ → index in pattern_ values
 };

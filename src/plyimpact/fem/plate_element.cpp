@@ -1,7 +1,5 @@
 #include "plyimpact/fem/plate_element.hpp"
 
-#include "plyimpact/fem/quadrature.hpp"
-
 #include <Eigen/LU>
 #include <cmath>
 #include <stdexcept>
@@ -51,14 +49,131 @@ ShearB shear_B(const PointKinematics& k) {
   return B;
 }
 
-MindlinQ9::MindlinQ9(const Laminate& laminate, ElementFormulation formulation)
-    : F_(laminate.F()), inertia_(laminate.inertia()),
-      formulation_(formulation == ElementFormulation::automatic ? ElementFormulation::q9 : formulation) {
-  C_mb_.topLeftCorner<3, 3>() = laminate.A();
-  C_mb_.topRightCorner<3, 3>() = laminate.B();
-  C_mb_.bottomLeftCorner<3, 3>() = laminate.B();
-  C_mb_.bottomRightCorner<3, 3>() = laminate.D();
+// --- common to the formulations -------------------------------------------------------------------
+
+StrainOperator PlateElement::strain_operator(const ElementCoordinates& xy, double xi, double eta) const {
+  StrainOperator S;
+  S.topRows<6>() = membrane_bending_B(point_kinematics(xy, xi, eta));
+  S.bottomRows<2>() = shear_operator(xy, xi, eta);
+  return S;
 }
+
+GeneralizedStrains PlateElement::strains(const ElementCoordinates& xy, const ElementVector& ue, double xi,
+                                         double eta) const {
+  const PointKinematics k = point_kinematics(xy, xi, eta);
+  const Eigen::Matrix<double, 6, 1> mb = membrane_bending_B(k) * ue;
+  const Eigen::Vector2d g = shear_operator(xy, xi, eta) * ue;
+  return {mb.head<3>(), mb.tail<3>(), g};
+}
+
+namespace {
+
+/// m̄ of (2.108) on (u, v, w, θx, θy).
+Eigen::Matrix<double, 5, 5> inertia_matrix(const std::array<double, 3>& I) {
+  Eigen::Matrix<double, 5, 5> m = Eigen::Matrix<double, 5, 5>::Zero();
+  m(0, 0) = m(1, 1) = m(2, 2) = I[0];
+  m(0, 3) = m(3, 0) = m(1, 4) = m(4, 1) = I[1];
+  m(3, 3) = m(4, 4) = I[2];
+  return m;
+}
+
+/// K += ∫ B_mbᵀ C B_mb dA (membrane, coupling, bending; 3×3 Gauss), point p's section C.
+void add_membrane_bending(ElementMatrix& K, const PointKinematics& k, double w,
+                          const Eigen::Matrix<double, 6, 6>& C) {
+  const MembraneBendingB B = membrane_bending_B(k);
+  K.noalias() += w * B.transpose() * C * B; // (2.98)
+}
+
+} // namespace
+
+ElementMatrix PlateElement::mass(const ElementCoordinates& xy, const std::array<double, 3>& inertia,
+                                 MassMatrix kind) {
+  const Eigen::Matrix<double, 5, 5> mbar = inertia_matrix(inertia);
+  ElementMatrix M = ElementMatrix::Zero();
+  if (kind == MassMatrix::lumped) {
+    // 3-point Lobatto in each direction: the quadrature points are the nodes, so Nᵀ m̄ N only
+    // touches the node's own 5×5 block (diagonal when I1 = 0) (3.7)/(3.8).
+    for (int a = 0; a < 9; ++a) {
+      const auto& c = q9_node_coordinates[static_cast<std::size_t>(a)];
+      const auto wi = lobatto3.weights[static_cast<std::size_t>(c[0] + 1.0)];
+      const auto wj = lobatto3.weights[static_cast<std::size_t>(c[1] + 1.0)];
+      const PointKinematics k = point_kinematics(xy, c[0], c[1]);
+      M.block<5, 5>(5 * a, 5 * a) = wi * wj * k.detJ * mbar;
+    }
+    return M;
+  }
+  for (const QuadraturePoint& p : gauss3x3) {
+    const PointKinematics k = point_kinematics(xy, p.xi, p.eta);
+    const double w = p.weight * k.detJ;
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b < 9; ++b)
+        M.block<5, 5>(5 * a, 5 * b) += (w * k.shape.N(a) * k.shape.N(b)) * mbar;
+  }
+  return M;
+}
+
+ElementMatrix PlateElement::geometric_stiffness(const ElementCoordinates& xy, const Eigen::Matrix2d& N) {
+  ElementMatrix Kg = ElementMatrix::Zero();
+  for (const QuadraturePoint& p : gauss3x3) {
+    const PointKinematics k = point_kinematics(xy, p.xi, p.eta);
+    const double w = p.weight * k.detJ;
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b < 9; ++b) {
+        const Eigen::Vector2d ga(k.dN_dx(a), k.dN_dy(a));
+        const Eigen::Vector2d gb(k.dN_dx(b), k.dN_dy(b));
+        Kg(5 * a + 2, 5 * b + 2) += w * ga.dot(N * gb);
+      }
+  }
+  return Kg;
+}
+
+ElementVector PlateElement::pressure_load(const ElementCoordinates& xy, double q) {
+  ElementVector f = ElementVector::Zero();
+  for (const QuadraturePoint& p : gauss3x3) {
+    const PointKinematics k = point_kinematics(xy, p.xi, p.eta);
+    const double w = p.weight * k.detJ;
+    for (int a = 0; a < 9; ++a)
+      f(5 * a + 2) += w * q * k.shape.N(a);
+  }
+  return f;
+}
+
+// --- q9: selective integration ----------------------------------------------------------------------
+
+namespace {
+
+/// K += ∫ B_sᵀ F B_s dA with the Lagrange shear strains, reduced 2×2 Gauss integration (thesis).
+void add_reduced_shear(ElementMatrix& K, const ElementCoordinates& xy, const Eigen::Matrix2d& F) {
+  for (const QuadraturePoint& p : gauss2x2) {
+    const PointKinematics k = point_kinematics(xy, p.xi, p.eta);
+    const ShearB Bs = shear_B(k);
+    K.noalias() += (p.weight * k.detJ) * Bs.transpose() * F * Bs;
+  }
+}
+
+} // namespace
+
+ElementMatrix SelectiveQ9::stiffness(const ElementCoordinates& xy, const ElementSection& s) const {
+  ElementMatrix K = ElementMatrix::Zero();
+  for (std::size_t p = 0; p < gauss3x3.size(); ++p) {
+    const PointKinematics k = point_kinematics(xy, gauss3x3[p].xi, gauss3x3[p].eta);
+    add_membrane_bending(K, k, gauss3x3[p].weight * k.detJ, s.at(p).C_mb);
+  }
+  add_reduced_shear(K, xy, s.shear_for_other_rules());
+  return K;
+}
+
+ElementMatrix SelectiveQ9::shear_stiffness(const ElementCoordinates& xy, const Eigen::Matrix2d& F) const {
+  ElementMatrix K = ElementMatrix::Zero();
+  add_reduced_shear(K, xy, F);
+  return K;
+}
+
+ShearB SelectiveQ9::shear_operator(const ElementCoordinates& xy, double xi, double eta) const {
+  return shear_B(point_kinematics(xy, xi, eta));
+}
+
+// --- MITC9 --------------------------------------------------------------------------------------------
 
 namespace {
 
@@ -93,7 +208,7 @@ Eigen::Matrix2d jacobian(const ElementCoordinates& xy, const Q9Shape& s) {
 
 } // namespace
 
-ShearB MindlinQ9::assumed_shear_B(const ElementCoordinates& xy, double xi, double eta) const {
+ShearB Mitc9::shear_operator(const ElementCoordinates& xy, double xi, double eta) const {
   // Covariant shear strains e_ξ = x,ξ γxz + y,ξ γyz and e_η = x,η γxz + y,η γyz are sampled at the
   // tying points and interpolated; Cartesian strains follow from [γxz; γyz] = J⁻¹ [ẽ_ξ; ẽ_η].
   Eigen::Matrix<double, 1, q9_dofs> e_xi = Eigen::Matrix<double, 1, q9_dofs>::Zero();
@@ -123,125 +238,32 @@ ShearB MindlinQ9::assumed_shear_B(const ElementCoordinates& xy, double xi, doubl
   return B;
 }
 
-ElementMatrix MindlinQ9::stiffness(const ElementCoordinates& xy) const {
+ElementMatrix Mitc9::stiffness(const ElementCoordinates& xy, const ElementSection& s) const {
   ElementMatrix K = ElementMatrix::Zero();
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      const PointKinematics k = point_kinematics(xy, gauss3.points[i], gauss3.points[j]);
-      const double w = gauss3.weights[i] * gauss3.weights[j] * k.detJ;
-      const MembraneBendingB B = membrane_bending_B(k);
-      K.noalias() += w * B.transpose() * C_mb_ * B; // (2.98), membrane + coupling + bending
-      if (formulation_ == ElementFormulation::mitc9) {
-        const ShearB Bs = assumed_shear_B(xy, gauss3.points[i], gauss3.points[j]);
-        K.noalias() += w * Bs.transpose() * F_ * Bs;
-      }
-    }
-  if (formulation_ == ElementFormulation::q9)
-    for (std::size_t i = 0; i < 2; ++i)
-      for (std::size_t j = 0; j < 2; ++j) { // selective (reduced) 2×2 shear integration (thesis)
-        const PointKinematics k = point_kinematics(xy, gauss2.points[i], gauss2.points[j]);
-        const double w = gauss2.weights[i] * gauss2.weights[j] * k.detJ;
-        const ShearB Bs = shear_B(k);
-        K.noalias() += w * Bs.transpose() * F_ * Bs;
-      }
+  for (std::size_t p = 0; p < gauss3x3.size(); ++p) {
+    const QuadraturePoint& q = gauss3x3[p];
+    const PointKinematics k = point_kinematics(xy, q.xi, q.eta);
+    const double w = q.weight * k.detJ;
+    add_membrane_bending(K, k, w, s.at(p).C_mb);
+    const ShearB Bs = shear_operator(xy, q.xi, q.eta);
+    K.noalias() += w * Bs.transpose() * s.at(p).F * Bs;
+  }
   return K;
 }
 
-ElementMatrix MindlinQ9::shear_stiffness(const ElementCoordinates& xy) const {
+ElementMatrix Mitc9::shear_stiffness(const ElementCoordinates& xy, const Eigen::Matrix2d& F) const {
   ElementMatrix K = ElementMatrix::Zero();
-  if (formulation_ == ElementFormulation::mitc9) {
-    for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = 0; j < 3; ++j) {
-        const PointKinematics k = point_kinematics(xy, gauss3.points[i], gauss3.points[j]);
-        const ShearB Bs = assumed_shear_B(xy, gauss3.points[i], gauss3.points[j]);
-        K.noalias() += (gauss3.weights[i] * gauss3.weights[j] * k.detJ) * Bs.transpose() * F_ * Bs;
-      }
-    return K;
+  for (const QuadraturePoint& q : gauss3x3) {
+    const PointKinematics k = point_kinematics(xy, q.xi, q.eta);
+    const ShearB Bs = shear_operator(xy, q.xi, q.eta);
+    K.noalias() += (q.weight * k.detJ) * Bs.transpose() * F * Bs;
   }
-  for (std::size_t i = 0; i < 2; ++i)
-    for (std::size_t j = 0; j < 2; ++j) {
-      const PointKinematics k = point_kinematics(xy, gauss2.points[i], gauss2.points[j]);
-      const ShearB Bs = shear_B(k);
-      K.noalias() += (gauss2.weights[i] * gauss2.weights[j] * k.detJ) * Bs.transpose() * F_ * Bs;
-    }
   return K;
 }
 
-namespace {
-
-/// m̄ of (2.108) on (u, v, w, θx, θy).
-Eigen::Matrix<double, 5, 5> inertia_matrix(const std::array<double, 3>& I) {
-  Eigen::Matrix<double, 5, 5> m = Eigen::Matrix<double, 5, 5>::Zero();
-  m(0, 0) = m(1, 1) = m(2, 2) = I[0];
-  m(0, 3) = m(3, 0) = m(1, 4) = m(4, 1) = I[1];
-  m(3, 3) = m(4, 4) = I[2];
-  return m;
-}
-
-} // namespace
-
-ElementMatrix MindlinQ9::mass(const ElementCoordinates& xy, MassMatrix kind) const {
-  const Eigen::Matrix<double, 5, 5> mbar = inertia_matrix(inertia_);
-  ElementMatrix M = ElementMatrix::Zero();
-  if (kind == MassMatrix::lumped) {
-    // 3-point Lobatto in each direction: the quadrature points are the nodes, so Nᵀ m̄ N only
-    // touches the node's own 5×5 block (diagonal when I1 = 0) (3.7)/(3.8).
-    for (int a = 0; a < 9; ++a) {
-      const auto& c = q9_node_coordinates[static_cast<std::size_t>(a)];
-      const auto wi = lobatto3.weights[static_cast<std::size_t>(c[0] + 1.0)];
-      const auto wj = lobatto3.weights[static_cast<std::size_t>(c[1] + 1.0)];
-      const PointKinematics k = point_kinematics(xy, c[0], c[1]);
-      M.block<5, 5>(5 * a, 5 * a) = wi * wj * k.detJ * mbar;
-    }
-    return M;
-  }
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      const PointKinematics k = point_kinematics(xy, gauss3.points[i], gauss3.points[j]);
-      const double w = gauss3.weights[i] * gauss3.weights[j] * k.detJ;
-      for (int a = 0; a < 9; ++a)
-        for (int b = 0; b < 9; ++b)
-          M.block<5, 5>(5 * a, 5 * b) += (w * k.shape.N(a) * k.shape.N(b)) * mbar;
-    }
-  return M;
-}
-
-ElementMatrix MindlinQ9::geometric_stiffness(const ElementCoordinates& xy, const Eigen::Matrix2d& N) const {
-  ElementMatrix Kg = ElementMatrix::Zero();
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      const PointKinematics k = point_kinematics(xy, gauss3.points[i], gauss3.points[j]);
-      const double w = gauss3.weights[i] * gauss3.weights[j] * k.detJ;
-      for (int a = 0; a < 9; ++a)
-        for (int b = 0; b < 9; ++b) {
-          const Eigen::Vector2d ga(k.dN_dx(a), k.dN_dy(a));
-          const Eigen::Vector2d gb(k.dN_dx(b), k.dN_dy(b));
-          Kg(5 * a + 2, 5 * b + 2) += w * ga.dot(N * gb);
-        }
-    }
-  return Kg;
-}
-
-ElementVector MindlinQ9::pressure_load(const ElementCoordinates& xy, double q) const {
-  ElementVector f = ElementVector::Zero();
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      const PointKinematics k = point_kinematics(xy, gauss3.points[i], gauss3.points[j]);
-      const double w = gauss3.weights[i] * gauss3.weights[j] * k.detJ;
-      for (int a = 0; a < 9; ++a)
-        f(5 * a + 2) += w * q * k.shape.N(a);
-    }
-  return f;
-}
-
-GeneralizedStrains MindlinQ9::strains(const ElementCoordinates& xy, const ElementVector& ue, double xi,
-                                      double eta) const {
-  const PointKinematics k = point_kinematics(xy, xi, eta);
-  const Eigen::Matrix<double, 6, 1> mb = membrane_bending_B(k) * ue;
-  const Eigen::Vector2d g = formulation_ == ElementFormulation::mitc9
-                                ? Eigen::Vector2d(assumed_shear_B(xy, xi, eta) * ue)
-                                : Eigen::Vector2d(shear_B(k) * ue);
-  return {mb.head<3>(), mb.tail<3>(), g};
+std::unique_ptr<PlateElement> make_plate_element(ElementFormulation formulation) {
+  if (formulation == ElementFormulation::mitc9) return std::make_unique<Mitc9>();
+  return std::make_unique<SelectiveQ9>();
 }
 
 } // namespace plyimpact

@@ -1,5 +1,6 @@
 #pragma once
-// One-dimensional quadrature rules on [−1, 1]; 2-D rules are their tensor products.
+// The quadrature rules of the plate elements, in one place: one-dimensional rules on [−1, 1] and
+// their tensor products on the parent square [−1, 1]².
 #include <array>
 #include <cstddef>
 
@@ -21,5 +22,31 @@ inline constexpr QuadratureRule1D<3> gauss3{{-0.77459666924148337704, 0.0, 0.774
 
 /// 3-point Gauss–Lobatto (nodes −1, 0, 1; weights 1/3, 4/3, 1/3): diagonal mass (thesis (3.7)/(3.8)).
 inline constexpr QuadratureRule1D<3> lobatto3{{-1.0, 0.0, 1.0}, {1.0 / 3.0, 4.0 / 3.0, 1.0 / 3.0}};
+
+/// A point of a tensor-product rule: parent coordinates, weight w_i w_j, and its indices i along ξ and
+/// j along η (0-based; the thesis's IPGS = i + 1, JPGS = j + 1).
+struct QuadraturePoint {
+  double xi = 0.0, eta = 0.0, weight = 0.0;
+  int i = 0, j = 0;
+};
+
+/// The N × N tensor product of a 1-D rule, i (ξ) outer and j (η) inner.
+template <std::size_t N>
+constexpr std::array<QuadraturePoint, N * N> tensor_product(const QuadratureRule1D<N>& r) {
+  std::array<QuadraturePoint, N * N> rule{};
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j)
+      rule[N * i + j] = {r.points[i], r.points[j], r.weights[i] * r.weights[j], static_cast<int>(i),
+                         static_cast<int>(j)};
+  return rule;
+}
+
+inline constexpr auto gauss2x2 = tensor_product(gauss2);
+inline constexpr auto gauss3x3 = tensor_product(gauss3);
+
+/// Position of point (i, j) of the 3×3 Gauss rule in gauss3x3.
+constexpr std::size_t gauss3x3_index(int i, int j) {
+  return 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j);
+}
 
 } // namespace plyimpact

@@ -4,30 +4,51 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace plyimpact {
 
-std::string damage_map_script(const PlateMesh& mesh, const std::vector<DamageOnset>& points,
+namespace {
+
+/// The element sides (corner to corner, once each) as gnuplot arrows, in mm.
+std::string element_outlines(const Mesh& mesh) {
+  std::set<std::pair<int, int>> sides;
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const ElementNodes& n = mesh.element_nodes(e);
+    for (int c = 0; c < 4; ++c) {
+      const int a = n[static_cast<std::size_t>(c)], b = n[static_cast<std::size_t>((c + 1) % 4)];
+      sides.insert({std::min(a, b), std::max(a, b)});
+    }
+  }
+  std::string s;
+  for (const auto& [a, b] : sides)
+    s += fmt::format("set arrow from {:.6f},{:.6f} to {:.6f},{:.6f} nohead lc rgb '#a0a0a0' lw 0.6 back\n",
+                     mesh.node(a).x() * 1e3, mesh.node(a).y() * 1e3, mesh.node(b).x() * 1e3,
+                     mesh.node(b).y() * 1e3);
+  return s;
+}
+
+} // namespace
+
+std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& points,
                               const std::string& title, const std::string& svg_path,
                               const std::string& png_path) {
-  const double a = mesh.plate().a * 1e3, b = mesh.plate().b * 1e3; // mm
+  const BoundingBox& box = mesh.bounds();
+  const double x0 = box.x_min * 1e3, y0 = box.y_min * 1e3, x1 = box.x_max * 1e3, y1 = box.y_max * 1e3; // mm
+  const double a = x1 - x0, b = y1 - y0;
   std::string s = "# plyimpact damage map; run with: gnuplot <this file>\n$failed << EOD\n";
   for (const auto& p : points)
     s += fmt::format("{:.6f} {:.6f} {:.4f}\n", p.x * 1e3, p.y * 1e3, p.time * 1e6);
   s += "EOD\n";
   s += fmt::format("set title \"{}\" noenhanced\n", title);
   s += "set xlabel 'x [mm]'\nset ylabel 'y [mm]'\n";
-  s += fmt::format("set xrange [0:{:.6f}]\nset yrange [0:{:.6f}]\nset size ratio -1\n", a, b);
-  // Element boundaries as thin lines; tics in mm on the axes.
-  s += fmt::format(
-      "set for [i=0:{0}] arrow from i*{1:.6f},0 to i*{1:.6f},{2:.6f} nohead lc rgb '#a0a0a0' lw 0.6 back\n",
-      mesh.nx(), a / mesh.nx(), b);
-  s += fmt::format(
-      "set for [j=0:{0}] arrow from 0,j*{1:.6f} to {2:.6f},j*{1:.6f} nohead lc rgb '#a0a0a0' lw 0.6 back\n",
-      mesh.ny(), b / mesh.ny(), a);
+  s += fmt::format("set xrange [{:.6f}:{:.6f}]\nset yrange [{:.6f}:{:.6f}]\nset size ratio -1\n", x0, x1, y0,
+                   y1);
+  s += element_outlines(mesh); // thin lines; tics in mm on the axes
   s += "set xtics out nomirror\nset ytics out nomirror\n";
   s += "set cblabel 'onset time [us]'\n";
   s += "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\nset key off\n";
@@ -41,7 +62,7 @@ std::string damage_map_script(const PlateMesh& mesh, const std::vector<DamageOns
   return s;
 }
 
-DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const PlateMesh& mesh,
+DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& mesh,
                                  const std::vector<DamageOnset>& onsets) {
   namespace fs = std::filesystem;
   DamageMapFiles files;

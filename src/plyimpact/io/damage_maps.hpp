@@ -18,11 +18,11 @@ struct DamageMapFiles {
 };
 
 /// Writes damage_map_<criterion>_<ply|interface><n>.{gp,svg,png} into `dir` (atomically).
-[[nodiscard]] DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const PlateMesh& mesh,
+[[nodiscard]] DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& mesh,
                                                const std::vector<DamageOnset>& onsets);
 
 /// The gnuplot script of one map (exposed for tests).
-[[nodiscard]] std::string damage_map_script(const PlateMesh& mesh, const std::vector<DamageOnset>& points,
+[[nodiscard]] std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& points,
                                             const std::string& title, const std::string& svg_path,
                                             const std::string& png_path);
 

@@ -3,7 +3,10 @@
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/loads.hpp"
 #include "plyimpact/fem/mesh_spec.hpp"
+#include "plyimpact/fem/regions.hpp"
+#include "plyimpact/io/deck_error.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 
 #include <filesystem>
@@ -14,12 +17,6 @@
 #include <vector>
 
 namespace plyimpact {
-
-/// A deck that cannot be used. what() reads "FILE:LINE:COLUMN: error: ..." naming what was expected.
-class DeckError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Per-ply overrides of the layup's default material and thickness ([[laminate.override]]).
 struct PlyOverride {
@@ -36,6 +33,13 @@ struct LaminateSpec {
   double shear_correction = 5.0 / 6.0;
   ReducedStiffnessModel reduced_stiffness = ReducedStiffnessModel::exact;
   std::vector<PlyOverride> overrides;
+};
+
+/// A laminate of [laminates.NAME] (regions of the panel refer to it by name).
+struct NamedLaminate {
+  std::string name;
+  LaminateSpec spec;
+  Laminate laminate;
 };
 
 /// [output] ParaView files (docs/deck.md): a frame every `every` steps and/or at the times `at`.
@@ -55,7 +59,9 @@ struct Deck {
   AnalysisKind analysis = AnalysisKind::impact;
   std::vector<Material> materials;
   std::optional<LaminateSpec> laminate_spec;
-  std::optional<Laminate> laminate;
+  std::optional<Laminate> laminate;     ///< [laminate]: the plate's own
+  std::vector<NamedLaminate> laminates; ///< [laminates.NAME]
+  std::vector<Region> regions;          ///< [[region]]: Region::laminate indexes 1 + laminates
   std::optional<PlateGeometry> plate;
   std::optional<MeshSpec> mesh;
   std::optional<BoundaryConditions> boundary;
@@ -88,7 +94,7 @@ void require_sections(const Deck& deck, AnalysisKind kind);
 [[nodiscard]] std::string_view to_string(AnalysisKind kind);
 [[nodiscard]] std::optional<AnalysisKind> parse_analysis_kind(std::string_view name);
 
-/// Edit distance used for "did you mean" suggestions (case-insensitive).
-[[nodiscard]] std::size_t edit_distance(std::string_view a, std::string_view b);
+/// The plate's laminates in the order regions refer to them: [laminate] first, then [laminates.NAME].
+[[nodiscard]] std::vector<Laminate> all_laminates(const Deck& deck);
 
 } // namespace plyimpact

@@ -1,39 +1,10 @@
 #include "plyimpact/io/impact_report.hpp"
 
-#include "plyimpact/io/plate_from_deck.hpp"
-
-#include "plyimpact/io/laminate_report.hpp"
-#include "plyimpact/io/system_memory.hpp"
-
 #include <fmt/format.h>
 
 #include <cmath>
 
 namespace plyimpact {
-
-double automatic_time_step(double mass, double k, double velocity) {
-  const double contact_time = 3.21807 * std::pow(mass * mass / (k * k * velocity), 0.2);
-  const double dt = contact_time / 1000.0;
-  const double scale = std::pow(10.0, std::floor(std::log10(dt)) - 1.0);
-  return std::floor(dt / scale) * scale;
-}
-
-ImpactSettings impact_settings_from_deck(const Deck& deck) {
-  ImpactSettings s;
-  s.impactor = *deck.impactor;
-  s.k = contact_stiffness(deck);
-  s.contact = deck.contact;
-  s.dt = deck.time.dt ? *deck.time.dt : automatic_time_step(s.impactor.mass, s.k, s.impactor.velocity);
-  s.end = deck.time.end;
-  s.newmark_beta = deck.time.newmark_beta;
-  s.newmark_gamma = deck.time.newmark_gamma;
-  s.max_steps = deck.time.max_steps;
-  s.rigid_target = deck.plate && deck.plate->rigid;
-  s.field_times = deck.field_times;
-  s.history_every = deck.history_every;
-  s.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
-  return s;
-}
 
 nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, const ImpactResult& r) {
   nlohmann::json j = summary_header(deck, "impact");
@@ -53,7 +24,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["contacts"] = r.episodes.size();
   j["steps"] = r.steps;
   j["dt"] = s.dt;
-  j["end_time"] = r.history.empty() ? 0.0 : r.history.back().t;
+  j["end_time"] = r.end_time;
   j["complete"] = r.complete;
   if (!r.stop_reason.empty()) j["stop_reason"] = r.stop_reason;
   j["warnings"] = r.warnings; // guards: coarse Δt, impact point on an element boundary
@@ -63,23 +34,22 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["impact_velocity"] = s.impactor.velocity;
   j["fundamental_period"] = r.fundamental_period;
   j["equations"] = r.dofs;
+  j["mesh"] = {{"elements", s.mesh.elements},
+               {"element", to_string(s.mesh.element)},
+               {"graded", s.mesh.graded},
+               {"smallest_element_m", s.mesh.smallest_element},
+               {"largest_element_m", s.mesh.largest_element}};
+  j["contact_load"] = to_string(s.contact.load);
   j["inplane_dofs_eliminated"] = r.inplane_eliminated;
   j["newton_iterations_max"] = r.newton_iterations_max;
+  if (s.nonlinear && r.newton) { // large deflections (docs/nonlinear.md)
+    j["nonlinear"] = true;
+    j["strain_measure"] = to_string(s.nonlinear->measure);
+    j["newton_iterations"] = r.newton->iterations;
+    j["max_newton_iterations_per_step"] = r.newton->max_iterations_per_step;
+    j["factorizations"] = r.newton->factorizations;
+  }
   return j;
-}
-
-PlateModel impact_model_from_deck(const Deck& deck, bool rigid_target) {
-  if (rigid_target)
-    return {*deck.laminate, *deck.plate, MeshSpec{1, 1}, deck.boundary.value_or(BoundaryConditions{})};
-  return plate_from_deck(deck);
-}
-
-DamageOptions damage_options_from_deck(const Deck& deck) {
-  DamageOptions d;
-  d.every = deck.damage.every;
-  d.criterion_options.delamination_ply_n =
-      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
-  return d;
 }
 
 std::string impact_history_csv(const ImpactResult& r) {
@@ -98,6 +68,9 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
       "impact: m = {:.4g} kg, v0 = {:.4g} m/s, k = {:.4g} N/m^1.5, dt = {:.4g} us, {} equations{}\n",
       s.impactor.mass, s.impactor.velocity, s.k, s.dt * 1e6, r.dofs,
       r.inplane_eliminated ? " (in-plane DOFs decoupled, left out)" : "");
+  t += fmt::format("  mesh: {} {} elements{}, {:.3g} to {:.3g} mm; contact load {}\n", s.mesh.elements,
+                   to_string(s.mesh.element), s.mesh.graded ? " graded toward the impact point" : "",
+                   s.mesh.smallest_element * 1e3, s.mesh.largest_element * 1e3, to_string(s.contact.load));
   t += fmt::format("  peak force              {:12.2f} N at {:.2f} us\n", r.peak_force,
                    r.time_of_peak_force * 1e6);
   t += fmt::format("  contact duration        {:12.2f} us (first contact; {} contact(s))\n",
@@ -111,8 +84,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                    r.absorbed_energy, 0.5 * s.impactor.mass * s.impactor.velocity * s.impactor.velocity,
                    r.contact_dissipation);
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,
-                   r.history.empty() ? 0.0 : r.history.back().t * 1e6, r.wall_time,
-                   r.complete ? "" : "  INCOMPLETE");
+                   r.end_time * 1e6, r.wall_time, r.complete ? "" : "  INCOMPLETE");
   if (!r.stop_reason.empty()) t += "  " + r.stop_reason + "\n";
   return t;
 }

@@ -14,7 +14,7 @@ std::string heading(const std::string& title) {
 }
 
 std::string mesh_section(const PlateModel& model) {
-  const PlateMesh& mesh = model.mesh();
+  const Mesh& mesh = model.mesh();
   const DofMap& dofs = model.dofs();
   int restrained_nodes = 0;
   for (int n = 0; n < mesh.node_count(); ++n)
@@ -24,20 +24,24 @@ std::string mesh_section(const PlateModel& model) {
         break;
       }
   std::string s = heading("PLATE AND MESH");
-  s += fmt::format("  plate a x b                 {:.4f} x {:.4f} mm\n", mesh.plate().a * 1e3,
-                   mesh.plate().b * 1e3);
-  s += fmt::format("  elements                    {} x {} = {} ({}), 9 nodes each\n", mesh.nx(), mesh.ny(),
-                   mesh.element_count(),
-                   model.element().formulation() == ElementFormulation::mitc9 ? "MITC9" : "Q9");
+  const BoundingBox& box = mesh.bounds();
+  s += fmt::format("  plate a x b                 {:.4f} x {:.4f} mm\n", (box.x_max - box.x_min) * 1e3,
+                   (box.y_max - box.y_min) * 1e3);
+  const std::string grid =
+      mesh.grid() ? fmt::format("{} x {} = ", mesh.grid()->nx, mesh.grid()->ny) : std::string();
+  s += fmt::format("  elements                    {}{} ({}), 9 nodes each\n", grid, mesh.element_count(),
+                   model.formulation() == ElementFormulation::mitc9 ? "MITC9" : "Q9");
+  if (!model.single_section())
+    s += fmt::format("  laminates                   {} (regions of [[region]])\n", model.laminates().size());
   s += fmt::format("  nodal points                {}\n", mesh.node_count());
   s += fmt::format("  restrained nodes            {}\n", restrained_nodes);
   s += fmt::format("  equations                   {} (5 DOF per node: u v w thetax thetay)\n",
                    dofs.free_count());
   s += fmt::format("  mass matrix                 {}\n",
-                   model.spec().mass == MassMatrix::lumped ? "lumped (Lobatto)" : "consistent");
+                   model.mass_kind() == MassMatrix::lumped ? "lumped (Lobatto)" : "consistent");
   s += "  restraint codes (u v w thetax thetay; 1 = held)\n";
-  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb})
-    s += fmt::format("    edge {:<3}                  {}\n", to_string(e), model.boundary().edge(e).code());
+  for (const SetRestraint& r : model.boundary().sets)
+    s += fmt::format("    edge {:<3}                  {}\n", r.set, resolve_restraint(mesh, r).code());
   if (model.boundary().corners)
     s += fmt::format("    corners                   {}\n", model.boundary().corners->code());
   return s;

@@ -4,7 +4,7 @@
 // and contact data, time step, peak values, the first-failure table and, when asked
 // ([output] report_displacements_at), the nodal displacements at one time.
 #include "plyimpact/analysis/damage_tracker.hpp"
-#include "plyimpact/analysis/impact_analysis.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/io/deck.hpp"
 
 #include <Eigen/Core>

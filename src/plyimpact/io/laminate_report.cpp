@@ -1,5 +1,7 @@
 #include "plyimpact/io/laminate_report.hpp"
 
+#include "plyimpact/analysis/contact_rules.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -9,9 +11,7 @@ namespace plyimpact {
 
 double contact_stiffness(const Deck& d) {
   if (d.contact.k) return *d.contact.k;
-  // SPEC §4: modified Hertz constant with the E2 of the impacted (first) ply's material.
-  const Material& top = d.laminate->material_of(0);
-  return hertz_constant(d.impactor->radius, d.impactor->E, d.impactor->nu, top.E2);
+  return automatic_contact_stiffness(*d.impactor, *d.laminate); // SPEC §4, E2 of the impacted ply
 }
 
 namespace {

@@ -1,12 +1,12 @@
 #include "plyimpact/io/sweep_runner.hpp"
 
 #include "plyimpact/analysis/damage_tracker.hpp"
-#include "plyimpact/analysis/impact_analysis.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
 #include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/plate_from_deck.hpp"
+#include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/results.hpp"
 
 #include <fmt/format.h>
@@ -203,14 +203,64 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
 
 struct SweepWorker::Cache {
   std::string key;
-  std::unique_ptr<PlateModel> model;
-  std::unique_ptr<ImpactSolver> solver;
+  std::unique_ptr<ImpactCase> impact;
 };
 
 SweepWorker::SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options)
     : sweep_(sweep), folder_(folder), options_(options) {}
 
 SweepWorker::~SweepWorker() = default;
+
+namespace {
+
+/// The threshold search of one case (its own ImpactCase: the search shares it between its trials).
+void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::optional<fs::path>& case_dir) {
+  nlohmann::json& results = record["results"];
+  std::string name = deck.threshold.criterion;
+  if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
+  if (name.empty())
+    throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
+  const ImpactCase impact(impact_case_description(deck));
+  ThresholdOptions to;
+  to.tolerance = deck.threshold.tolerance;
+  to.max_velocity = deck.threshold.max_velocity;
+  to.damage = damage_options_from_deck(deck);
+  const ThresholdResult r = find_threshold_velocity(impact, *parse_criterion(name), to);
+  results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
+  results["threshold_criterion"] = name;
+  put_first_failure(results, r.first_failure);
+  record["status"] = r.found ? "ok" : "incomplete";
+  if (!r.found)
+    record["error"] = fmt::format("no failure below threshold.max_velocity = {} m/s", to.max_velocity);
+  if (case_dir) {
+    const ResultsFolder out(*case_dir, deck);
+    nlohmann::json j = summary_header(deck, "threshold");
+    j["criterion"] = name;
+    j["threshold_velocity"] = results["threshold_velocity"];
+    j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
+    out.write_json("summary.json", j);
+  }
+}
+
+void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
+  const ImpactResult& r = o.result;
+  results["peak_force"] = r.peak_force;
+  results["time_of_peak_force"] = r.time_of_peak_force;
+  results["contact_duration"] = r.contact_duration;
+  results["peak_contact_deflection"] = r.peak_contact_deflection;
+  results["max_indentation"] = r.max_indentation;
+  results["absorbed_energy"] = r.absorbed_energy;
+  results["rebound_velocity"] = r.rebound_velocity;
+  results["contacts"] = r.episodes.size();
+  results["steps"] = r.steps;
+  results["dt"] = o.settings.dt;
+  if (o.damage_tracked)
+    put_first_failure(results, o.first_failures.empty()
+                                   ? std::nullopt
+                                   : std::optional<DamageOnset>(o.first_failures.front()));
+}
+
+} // namespace
 
 std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
   const SweepCase c = sweep_.case_at(index);
@@ -220,88 +270,38 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
   record["fingerprint"] = sweep_.fingerprint();
   record["values"] = value_texts(c);
   record["results"] = nlohmann::json::object();
-  nlohmann::json& results = record["results"];
   try {
     const Deck deck = sweep_.deck_for(c);
     require_sections(deck, sweep_.spec().analysis);
-    ImpactSettings settings = impact_settings_from_deck(deck);
-    settings.cancel = options_.cancel;
-    if (!options_.case_folders) settings.history_every = 1 << 30; // the table needs no history
-    const fs::path case_dir = folder_.path() / "cases" / fmt::format("{:06}", index);
-
+    std::optional<fs::path> case_dir;
+    if (options_.case_folders) case_dir = folder_.path() / "cases" / fmt::format("{:06}", index);
     if (sweep_.spec().analysis == AnalysisKind::threshold) {
-      std::string name = deck.threshold.criterion;
-      if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
-      if (name.empty())
-        throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
-      const PlateModel model = plate_from_deck(deck);
-      ThresholdOptions to;
-      to.tolerance = deck.threshold.tolerance;
-      to.max_velocity = deck.threshold.max_velocity;
-      to.damage = damage_options_from_deck(deck);
-      const ThresholdResult r = find_threshold_velocity(model, settings, *parse_criterion(name), to);
+      run_threshold_case(deck, record, case_dir);
       ++factorizations_; // a finished search is recorded even after an interrupt: its result is whole
-      results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
-      results["threshold_criterion"] = name;
-      put_first_failure(results, r.first_failure);
-      record["status"] = r.found ? "ok" : "incomplete";
-      if (!r.found)
-        record["error"] = fmt::format("no failure below threshold.max_velocity = {} m/s", to.max_velocity);
-      if (options_.case_folders) {
-        const ResultsFolder out(case_dir, deck);
-        nlohmann::json j = summary_header(deck, "threshold");
-        j["criterion"] = name;
-        j["threshold_velocity"] = results["threshold_velocity"];
-        j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
-        out.write_json("summary.json", j);
-      }
       return record;
     }
-
-    // Impact: reuse this worker's plate and factor when only the impactor (and auto k) differ.
-    const std::string key = sweep_.plate_key(c) + fmt::format("\ndt = {}\n", settings.dt);
+    // Impact: reuse this worker's case (plate and factorization) when only the impactor (and auto k)
+    // differ: same plate key, resolved time step and graded mesh.
+    const ImpactCaseDescription description = impact_case_description(deck);
+    const std::string key =
+        sweep_.plate_key(c) + fmt::format("\ndt = {}\nsize at impact = {}\n",
+                                          resolved_settings(description).dt, size_at_impact(description));
     if (!options_.share_factorization || !cache_ || cache_->key != key) {
       cache_.reset();
-      auto model = std::make_unique<PlateModel>(impact_model_from_deck(deck, settings.rigid_target));
-      auto solver = std::make_unique<ImpactSolver>(*model, settings);
-      cache_ = std::make_unique<Cache>(Cache{key, std::move(model), std::move(solver)});
+      cache_ = std::make_unique<Cache>(Cache{key, std::make_unique<ImpactCase>(description)});
       ++factorizations_;
     }
-    const PlateModel& model = *cache_->model;
-    std::optional<DamageTracker> damage;
-    if (!deck.damage.criteria.empty() && !settings.rigid_target)
-      damage.emplace(model, parse_criteria(deck.damage.criteria), damage_options_from_deck(deck));
-    ImpactObserver observer;
-    if (damage)
-      observer = [&](long step, double t, double force, const Eigen::VectorXd& u) {
-        damage->observe(step, t, force, u);
-      };
-    const ImpactResult r = cache_->solver->run(settings.impactor, settings.k, observer);
-    if (options_.cancel != nullptr && options_.cancel->load() && !r.complete) return std::nullopt;
-    results["peak_force"] = r.peak_force;
-    results["time_of_peak_force"] = r.time_of_peak_force;
-    results["contact_duration"] = r.contact_duration;
-    results["peak_contact_deflection"] = r.peak_contact_deflection;
-    results["max_indentation"] = r.max_indentation;
-    results["absorbed_energy"] = r.absorbed_energy;
-    results["rebound_velocity"] = r.rebound_velocity;
-    results["contacts"] = r.episodes.size();
-    results["steps"] = r.steps;
-    results["dt"] = settings.dt;
-    std::optional<DamageOnset> first;
-    if (damage && !damage->first_onsets().empty()) first = damage->first_onsets().front();
-    if (damage) put_first_failure(results, first);
-    record["status"] = r.complete ? "ok" : "incomplete";
-    if (!r.complete) record["error"] = r.stop_reason;
-    if (options_.case_folders) {
-      const ResultsFolder out(case_dir, deck);
-      write_impact_results(out, deck, &model, settings, r, [&](nlohmann::json& j) {
-        if (!damage) return;
-        j["first_failures"] = nlohmann::json::array();
-        for (const auto& f : damage->first_onsets())
-          j["first_failures"].push_back(onset_json(f));
-      });
-    }
+    ImpactRunOptions run;
+    run.output_dir = case_dir;
+    run.history = options_.case_folders; // the table needs no history
+    run.pictures = false;
+    run.cancel = options_.cancel;
+    const ImpactRunOutcome outcome = run_impact(deck, *cache_->impact, run);
+    if (options_.cancel != nullptr && options_.cancel->load() && !outcome.result.complete)
+      return std::nullopt;
+    put_impact_results(record["results"], outcome);
+    record["status"] = outcome.result.complete ? "ok" : "incomplete";
+    if (!outcome.result.complete) record["error"] = outcome.result.stop_reason;
   } catch (const std::exception& e) { // a bad combination of values fails this case only
     record["status"] = "failed";
     record["error"] = e.what();

@@ -1,5 +1,7 @@
 #include "plyimpact/io/sweep_spec.hpp"
 
+#include "plyimpact/io/table_reader.hpp"
+
 #include "plyimpact/io/deck_table.hpp"
 
 #include <fmt/format.h>
@@ -239,25 +241,14 @@ namespace {
 
 void read_sweep_table(const toml::table& sweep, const std::string& source, SweepSpec& spec) {
   const auto at = [&](const toml::node& n) { return located(source, n.source()); };
-  for (auto&& [k, node] : sweep) {
-    const std::string_view key = k.str();
-    if (key != "mode" && key != "analysis" && key != "values" && key != "random")
-      fail(located(source, k.source()),
-           fmt::format("unknown key '{}' in [sweep] (expected one of: mode, analysis, values, random)", key));
-  }
-  if (const toml::node* m = sweep.get("mode")) {
-    const auto s = m->value<std::string>();
-    if (!s || (*s != "product" && *s != "zip"))
-      fail(at(*m), "sweep.mode must be \"product\" (every combination) or \"zip\" (lists taken in step)");
-    spec.mode = *s == "zip" ? SweepMode::zip : SweepMode::product;
-  }
-  if (const toml::node* a = sweep.get("analysis")) {
-    const auto s = a->value<std::string>();
-    const auto kind = s ? parse_analysis_kind(*s) : std::nullopt;
-    if (!kind || (*kind != AnalysisKind::impact && *kind != AnalysisKind::threshold))
-      fail(at(*a), "sweep.analysis must be \"impact\" or \"threshold\"");
+  const TableReader table(sweep, "sweep", source);
+  table.only({"mode", "analysis", "values", "random"});
+  if (const auto mode = table.optional_choice<SweepMode>(
+          "mode", {{"product", SweepMode::product}, {"zip", SweepMode::zip}}))
+    spec.mode = *mode;
+  if (const auto kind = table.optional_choice<AnalysisKind>(
+          "analysis", {{"impact", AnalysisKind::impact}, {"threshold", AnalysisKind::threshold}}))
     spec.analysis = *kind;
-  }
   if (const toml::node* v = sweep.get("values")) {
     const toml::table* t = v->as_table();
     if (t == nullptr)

@@ -97,7 +97,7 @@ constexpr std::array<const char*, 5> stress_names{"s11_Pa", "s22_Pa", "t12_Pa", 
 
 void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options) {
-  const PlateMesh& mesh = model.mesh();
+  const Mesh& mesh = model.mesh();
   const vtkIdType nodes = mesh.node_count(), elements = mesh.element_count();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -160,28 +160,42 @@ void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen:
   write_grid(file, *grid);
 }
 
+namespace {
+
+/// The four 2×2-node cells of a Q9, as local nodes counter-clockwise (node lattice of
+/// shape_functions.hpp: corners 0–3, mid-sides 4–7, centre 8).
+constexpr std::array<std::array<int, 4>, 4> q9_sub_quads{
+    {{0, 4, 8, 7}, {4, 1, 5, 8}, {8, 5, 2, 6}, {7, 8, 6, 3}}};
+
+} // namespace
+
 void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
                       const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options) {
-  const PlateMesh& mesh = model.mesh();
-  const Laminate& lam = model.laminate();
-  const int plies = static_cast<int>(lam.ply_count());
+  const Mesh& mesh = model.mesh();
   const vtkIdType nodes = mesh.node_count();
-  // Surfaces s = 0 (impacted face) … N (back face) at heights z_s; point p = s·nodes + n.
-  std::vector<double> z{lam.z_top(0)};
-  for (int k = 0; k < plies; ++k)
-    z.push_back(lam.z_bottom(std::size_t(k)));
+  // Surfaces s = 0 (impacted face) … N (back face) of each laminate at heights z_s; point
+  // p = ((laminate · surfaces) + s) · nodes + n, surfaces = the most plies + 1.
+  const std::vector<Laminate>& laminates = model.laminates();
+  std::size_t surfaces = 0;
+  for (const Laminate& lam : laminates)
+    surfaces = std::max(surfaces, lam.ply_count() + 1);
   const auto dofs = nodal_dofs(model, u);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(nodes * vtkIdType(z.size()));
+  points->SetNumberOfPoints(nodes * vtkIdType(surfaces * laminates.size()));
   auto displacement = double_array("displacement_m", points->GetNumberOfPoints(), 3);
-  for (std::size_t s = 0; s < z.size(); ++s)
-    for (vtkIdType n = 0; n < nodes; ++n) {
-      const vtkIdType p = vtkIdType(s) * nodes + n;
-      points->SetPoint(p, mesh.node(int(n)).x(), mesh.node(int(n)).y(), z[s] * options.thickness_scale);
-      // (1.1): u = u0 + z θx, v = v0 + z θy, w = w0 at the true height z.
-      displacement->SetTuple3(p, dofs(0, n) + z[s] * dofs(3, n), dofs(1, n) + z[s] * dofs(4, n), dofs(2, n));
+  for (std::size_t l = 0; l < laminates.size(); ++l) {
+    const Laminate& lam = laminates[l];
+    for (std::size_t s = 0; s < surfaces; ++s) {
+      const double z = s == 0 ? lam.z_top(0) : lam.z_bottom(std::min(s, lam.ply_count()) - 1);
+      for (vtkIdType n = 0; n < nodes; ++n) {
+        const vtkIdType p = vtkIdType(l * surfaces + s) * nodes + n;
+        points->SetPoint(p, mesh.node(int(n)).x(), mesh.node(int(n)).y(), z * options.thickness_scale);
+        // (1.1): u = u0 + z θx, v = v0 + z θy, w = w0 at the true height z.
+        displacement->SetTuple3(p, dofs(0, n) + z * dofs(3, n), dofs(1, n) + z * dofs(4, n), dofs(2, n));
+      }
     }
+  }
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
   grid->GetPointData()->SetVectors(displacement);
@@ -189,8 +203,9 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
 
   const ElementCentreFields f = element_centre_fields(model, u, options.criteria, options.criterion_options);
   const DamageFractions damage = damage_fractions(onsets, f.elements, f.plies, t);
-  const vtkIdType cells_per_ply = vtkIdType(4) * mesh.element_count();
-  const vtkIdType count = cells_per_ply * plies;
+  vtkIdType count = 0;
+  for (int e = 0; e < mesh.element_count(); ++e)
+    count += vtkIdType(4 * model.laminate_of(e).ply_count());
   grid->Allocate(count);
   vtkNew<vtkIntArray> ply_number;
   ply_number->SetName("ply");
@@ -206,21 +221,24 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
     if (!is_interface_criterion(f.criteria[c]))
       indices.emplace_back(c, double_array(fmt::format("{}_index", to_string(f.criteria[c])), count).Get());
 
+  // Ply by ply (cells of ply 1 first), then element by element.
   vtkIdType cell = 0;
-  for (int k = 0; k < plies; ++k)
-    for (int j = 0; j + 1 < mesh.grid_rows(); ++j)
-      for (int i = 0; i + 1 < mesh.grid_columns(); ++i, ++cell) {
-        // The 2×2 node cells of each Q9, extruded through ply k (VTK_HEXAHEDRON order: lower
-        // face counter-clockwise, then the upper face).
-        const std::array<int, 4> quad{mesh.node_id(i, j), mesh.node_id(i + 1, j), mesh.node_id(i + 1, j + 1),
-                                      mesh.node_id(i, j + 1)};
+  for (int k = 0; k + 1 < static_cast<int>(surfaces); ++k)
+    for (int e = 0; e < mesh.element_count(); ++e) {
+      const Laminate& lam = model.laminate_of(e);
+      const auto plies = static_cast<int>(lam.ply_count());
+      if (k >= plies) continue;
+      const vtkIdType base = vtkIdType(std::size_t(model.section_index(e)) * surfaces) * nodes;
+      for (const auto& quad : q9_sub_quads) {
+        // Each 2×2 node cell of the Q9, extruded through ply k (VTK_HEXAHEDRON order: lower face
+        // counter-clockwise, then the upper face).
         std::array<vtkIdType, 8> ids{};
         for (std::size_t a = 0; a < 4; ++a) {
-          ids[a] = vtkIdType(k) * nodes + quad[a];
-          ids[a + 4] = vtkIdType(k + 1) * nodes + quad[a];
+          const int n = mesh.element_nodes(e)[std::size_t(quad[a])];
+          ids[a] = base + vtkIdType(k) * nodes + n;
+          ids[a + 4] = base + vtkIdType(k + 1) * nodes + n;
         }
         grid->InsertNextCell(VTK_HEXAHEDRON, 8, ids.data());
-        const int e = i / 2 + (j / 2) * mesh.nx();
         ply_number->SetValue(cell, k + 1);
         angle->SetValue(cell, lam.plies()[std::size_t(k)].angle_deg);
         const auto s = components(f.ply(k, e));
@@ -229,8 +247,10 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
         for (const auto& [c, a] : indices)
           a->SetValue(cell, f.failure_index(c, k, e));
         damaged->SetValue(cell, damage.of_ply(k, e));
-        if (k + 1 < plies) delaminated->SetValue(cell, damage.of_interface(k, e));
+        delaminated->SetValue(cell, k + 1 < plies ? damage.of_interface(k, e) : 0.0);
+        ++cell;
       }
+    }
   vtkCellData& data = *grid->GetCellData();
   data.AddArray(ply_number);
   data.AddArray(angle);

@@ -18,6 +18,17 @@ struct Strengths {
   std::optional<double> Da;  ///< Choi–Chang delamination constant (2.43) [-]
 };
 
+/// Intralaminar fracture toughnesses of the ply, one per Hashin failure mode, for the progressive
+/// damage law (laminate/ply_damage.hpp): the energy dissipated per unit crack area when the mode
+/// runs to complete failure [J/m²]. Each is optional; the damage law reports which one is missing.
+/// Published values and their sources: docs/progressive_damage.md.
+struct FractureToughness {
+  std::optional<double> G_ft; ///< fibre tension (translaminar, tensile) [J/m²]
+  std::optional<double> G_fc; ///< fibre compression (kink band) [J/m²]
+  std::optional<double> G_mt; ///< matrix tension (intralaminar, transverse tension / in-plane shear) [J/m²]
+  std::optional<double> G_mc; ///< matrix compression (intralaminar, transverse compression) [J/m²]
+};
+
 /// Transversely isotropic / orthotropic ply material (SI).
 struct Material {
   std::string name;
@@ -29,6 +40,7 @@ struct Material {
   double nu12 = 0.0; ///< major Poisson ratio [-]
   double rho = 0.0;  ///< density [kg/m³]
   Strengths strength{};
+  FractureToughness toughness{};
 
   /// Minor Poisson ratio ν21 = ν12·E2/E1 (1.3).
   [[nodiscard]] double nu21() const { return nu12 * E2 / E1; }

@@ -1,0 +1,127 @@
+#include "plyimpact/analysis/contact_load.hpp"
+
+#include "plyimpact/fem/circle_load.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plyimpact {
+
+namespace {
+
+/// Radii of the table grow by this factor: linear interpolation between two then errs by about
+/// (0.08)²/8 of the curvature of s_load(a), 1e-5 of the compliance (docs/validation.md).
+constexpr double radius_ratio = 1.08;
+/// The table's first non-zero radius [m]: far below any contact radius that carries a force worth
+/// resolving (below it the load is interpolated toward the point load); 120 entries reach 10 mm.
+constexpr double smallest_radius = 1e-6;
+/// Quadrature of circle_load: 9e-12 of the force on a circle straddling an edge (tests/fem).
+constexpr CircleQuadrature quadrature{16, 8};
+
+} // namespace
+
+ContactLoading::ContactLoading(const PlateModel& model, const EquationSubset& equations,
+                               const Impactor& impactor, ContactLoad kind)
+    : model_(model), equations_(equations), impactor_(impactor), kind_(kind),
+      sw_(equations.restrict(model.sampler(impactor.x, impactor.y).as_vector(model.size()))) {
+  table_.push_back({0.0, sw_, {}, 0.0}); // radius 0: the point load
+}
+
+void ContactLoading::set_solver(Solve solve) {
+  solve_ = std::move(solve);
+  for (Entry& e : table_)
+    e.response.resize(0);
+}
+
+Eigen::VectorXd ContactLoading::pressure_load(double radius) const {
+  return equations_.restrict(hertz_pressure_weights(model_, impactor_.x, impactor_.y, radius));
+}
+
+const ContactLoading::Entry& ContactLoading::entry(std::size_t j) const {
+  while (table_.size() <= j) {
+    const double radius =
+        table_.size() == 1 ? smallest_radius : table_.back().radius * radius_ratio; // geometric from a_1
+    table_.push_back({radius, pressure_load(radius), {}, 0.0});
+  }
+  Entry& e = table_[j];
+  if (e.response.size() == 0 && solve_) {
+    e.response = solve_(e.load);
+    e.compliance = sw_.dot(e.response);
+  }
+  return e;
+}
+
+ContactLoading::Bracket ContactLoading::bracket(double alpha) const {
+  if (!distributed()) return {0, 0.0};
+  const double radius = std::sqrt(impactor_.radius * std::max(alpha, 0.0));
+  if (radius <= 0.0) return {0, 0.0};
+  if (radius < smallest_radius) return {0, radius / smallest_radius};
+  // a_j = a_1 · ratio^(j−1) ≤ radius < a_{j+1}
+  auto j =
+      1 + static_cast<std::size_t>(std::floor(std::log(radius / smallest_radius) / std::log(radius_ratio)));
+  while (j > 1 && entry(j).radius > radius) // round-off of the logarithm
+    --j;
+  while (entry(j + 1).radius <= radius)
+    ++j;
+  const double a0 = entry(j).radius, a1 = entry(j + 1).radius;
+  return {j, (radius - a0) / (a1 - a0)};
+}
+
+double ContactLoading::compliance(double alpha) const {
+  const Bracket b = bracket(alpha);
+  const double c0 = entry(b.j).compliance;
+  if (b.weight == 0.0) return c0;
+  return (1.0 - b.weight) * c0 + b.weight * entry(b.j + 1).compliance;
+}
+
+ContactSolution ContactLoading::solve(const ContactStep& step, double w_hat) const {
+  if (!distributed()) return step.solve(w_hat, entry(0).compliance);
+  // c depends weakly on α (through the radius): a fixed point on c converges in a few passes.
+  double c = compliance(step.previous_indentation());
+  ContactSolution cs = step.solve(w_hat, c);
+  for (int pass = 0; pass < 50; ++pass) {
+    const double c_new = compliance(cs.alpha);
+    if (std::abs(c_new - c) <= 1e-13 * std::abs(c)) break;
+    c = c_new;
+    cs = step.solve(w_hat, c);
+  }
+  return cs;
+}
+
+void ContactLoading::add_response(double alpha, double force, Eigen::VectorXd& u) const {
+  const Bracket b = bracket(alpha);
+  if (b.weight == 0.0) {
+    u += force * entry(b.j).response;
+    return;
+  }
+  u += ((1.0 - b.weight) * force) * entry(b.j).response + (b.weight * force) * entry(b.j + 1).response;
+}
+
+Eigen::VectorXd ContactLoading::load(double alpha) const {
+  const Bracket b = bracket(alpha);
+  if (b.weight == 0.0) return entry(b.j).load;
+  return (1.0 - b.weight) * entry(b.j).load + b.weight * entry(b.j + 1).load;
+}
+
+Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a) {
+  const Mesh& mesh = model.mesh();
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
+  const CircularPressure p = hertz_pressure({x, y}, a, 1.0);
+  double total = 0.0;
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const ElementCoordinates xy = mesh.element_coordinates(e);
+    if (xy.col(0).maxCoeff() < x - a || xy.col(0).minCoeff() > x + a || xy.col(1).maxCoeff() < y - a ||
+        xy.col(1).minCoeff() > y + a)
+      continue; // the circle cannot reach it (curved sides bulge a little: their midpoints are nodes)
+    const Eigen::Matrix<double, 9, 1> fe = circle_load(xy, p, quadrature);
+    total += fe.sum();
+    for (int n = 0; n < 9; ++n)
+      if (const int eq = model.dofs().equation(mesh.element_nodes(e)[static_cast<std::size_t>(n)], 2);
+          eq >= 0)
+        f(eq) += fe(n);
+  }
+  if (total > 0.0) f /= total; // the part of the circle off the plate carries nothing
+  return f;
+}
+
+} // namespace plyimpact

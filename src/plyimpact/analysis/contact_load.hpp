@@ -1,0 +1,81 @@
+#pragma once
+// Where the contact force acts on the plate (SPEC §4). The deflection under the impactor is sampled at
+// the impact point, ws = swᵀu, by the shape functions of the element holding it. The force loads the
+// plate with Fc s_load:
+//   point            s_load = sw (the thesis; a point force on a Mindlin plate has no converged
+//                    answer: w under it is logarithmically singular, docs/validation.md);
+//   hertz-pressure   the Hertz pressure p = 3Fc/(2πa²) √(1 − r²/a²) over the contact circle of radius
+//                    a = √(R α), integrated exactly against the shape functions of every element the
+//                    circle touches (fem/circle_load.hpp), whatever the size of the circle against the
+//                    elements and wherever it lies.
+//
+// The pressure's load vector depends on the indentation. It is tabulated at radii a_j growing
+// geometrically from 1 µm (8 % apart; the same radii for every case, so that runs sharing a plate give
+// the same numbers in any order), computed when the contact first reaches them, and interpolated linearly
+// in a between two entries; so is the plate's response K̄⁻¹ s_load and the contact compliance
+// c = swᵀK̄⁻¹ s_load. The contact force and the radius of the step are solved together (no lag).
+#include "plyimpact/analysis/contact_step.hpp"
+#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/fem/equation_subset.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace plyimpact {
+
+class ContactLoading {
+public:
+  /// x = K̄⁻¹ b with the factor the step uses.
+  using Solve = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+
+  /// Vectors in the numbering of `equations` (a subset of the model's).
+  ContactLoading(const PlateModel& model, const EquationSubset& equations, const Impactor& impactor,
+                 ContactLoad kind);
+
+  [[nodiscard]] const Eigen::VectorXd& sampler() const { return sw_; }
+  [[nodiscard]] bool distributed() const { return kind_ == ContactLoad::hertz_pressure; }
+
+  /// The factor changed: responses are recomputed with `solve` when next needed.
+  void set_solver(Solve solve);
+
+  /// The contact force and indentation of the step, the plate's deflection being ŵ + c(α) Fc at the
+  /// contact point (SPEC §4; c depends on α through the contact radius for the Hertz pressure).
+  [[nodiscard]] ContactSolution solve(const ContactStep& step, double w_hat) const;
+  /// u += Fc K̄⁻¹ s_load(α).
+  void add_response(double alpha, double force, Eigen::VectorXd& u) const;
+  /// s_load(α), the load of a unit contact force.
+  [[nodiscard]] Eigen::VectorXd load(double alpha) const;
+
+private:
+  struct Entry {
+    double radius = 0.0;
+    Eigen::VectorXd load;     ///< s_load of a unit force
+    Eigen::VectorXd response; ///< K̄⁻¹ s_load (empty until needed)
+    double compliance = 0.0;  ///< swᵀ K̄⁻¹ s_load
+  };
+  /// Entry j (built on first use) and j + 1 around the radius of α, and the weight of j + 1.
+  struct Bracket {
+    std::size_t j = 0;
+    double weight = 0.0;
+  };
+  [[nodiscard]] Bracket bracket(double alpha) const;
+  /// Entry j, its load and response computed on first use (the table is a cache).
+  const Entry& entry(std::size_t j) const;
+  [[nodiscard]] double compliance(double alpha) const;
+  [[nodiscard]] Eigen::VectorXd pressure_load(double radius) const;
+
+  const PlateModel& model_;
+  const EquationSubset& equations_;
+  Impactor impactor_;
+  ContactLoad kind_;
+  Eigen::VectorXd sw_;
+  Solve solve_;
+  mutable std::vector<Entry> table_; ///< radius 0 (= the point load), then 1 µm · 1.08^(j−1)
+};
+
+/// Unit-force Hertz pressure over the contact circle of radius a centred at (x, y), as consistent nodal
+/// forces on w (model numbering), renormalised to a total of 1 where the circle leaves the plate.
+[[nodiscard]] Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a);
+
+} // namespace plyimpact

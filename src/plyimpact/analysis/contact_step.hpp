@@ -1,0 +1,27 @@
+#pragma once
+// The scalar contact problem of one time step (SPEC §4): with the plate's deflection at the contact
+// point affine in the force, ws = ŵs + c Fc, the indentation is α = (ŵi − ŵs) − (βΔt²/m + c) Fc and
+// Fc = F(α) by the contact law.
+#include "plyimpact/analysis/hertz_contact.hpp"
+#include "plyimpact/analysis/newmark.hpp"
+
+namespace plyimpact {
+
+class ContactStep {
+public:
+  ContactStep(const HertzContact& law, const NewmarkStepper& impactor, double previous_indentation)
+      : law_(law), impactor_(impactor), previous_indentation_(previous_indentation) {}
+  /// Fc and α for the load-free plate deflection ŵs and the plate's compliance c at the contact point.
+  [[nodiscard]] ContactSolution solve(double w_hat, double c) const {
+    return solve_contact_force(law_, impactor_.predicted_displacement() - w_hat, impactor_.compliance() + c);
+  }
+  /// α of the last converged step.
+  [[nodiscard]] double previous_indentation() const { return previous_indentation_; }
+
+private:
+  const HertzContact& law_;
+  const NewmarkStepper& impactor_;
+  double previous_indentation_;
+};
+
+} // namespace plyimpact

@@ -1,0 +1,165 @@
+#include "plyimpact/analysis/impact_case.hpp"
+
+#include "plyimpact/analysis/contact_rules.hpp"
+#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/modal_analysis.hpp"
+#include "plyimpact/analysis/recorders.hpp"
+#include "plyimpact/fem/structured_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace plyimpact {
+
+namespace {
+
+/// The laminate under the impact point (the last region holding it, or the plate's own).
+const Laminate& impacted_laminate(const ImpactCaseDescription& d) {
+  const Laminate* lam = &d.laminates.front();
+  for (const Region& r : d.regions)
+    if (d.impactor.x >= r.x_min && d.impactor.x <= r.x_max && d.impactor.y >= r.y_min &&
+        d.impactor.y <= r.y_max)
+      lam = &d.laminates[static_cast<std::size_t>(r.laminate)];
+  return *lam;
+}
+
+MeshUsed mesh_used(const PlateModel& model, bool graded) {
+  MeshUsed m;
+  const Mesh& mesh = model.mesh();
+  m.elements = mesh.element_count();
+  m.element = model.formulation();
+  m.graded = graded;
+  m.smallest_element = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const ElementCoordinates X = mesh.element_coordinates(e);
+    const double side =
+        std::max(X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff());
+    m.smallest_element = std::min(m.smallest_element, side);
+    m.largest_element = std::max(m.largest_element, side);
+  }
+  return m;
+}
+
+} // namespace
+
+double resolved_contact_stiffness(const ImpactCaseDescription& d) {
+  if (d.contact.k) return *d.contact.k;
+  return automatic_contact_stiffness(d.impactor, impacted_laminate(d));
+}
+
+ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
+  ImpactSettings s;
+  s.impactor = d.impactor;
+  s.k = resolved_contact_stiffness(d);
+  s.contact = d.contact;
+  s.dt = d.time.dt ? *d.time.dt : automatic_time_step(d.impactor.mass, s.k, d.impactor.velocity);
+  s.end = d.time.end;
+  s.newmark_beta = d.time.newmark_beta;
+  s.newmark_gamma = d.time.newmark_gamma;
+  s.max_steps = d.time.max_steps;
+  s.rigid_target = d.plate.rigid;
+  s.nonlinear = d.nonlinear;
+  return s;
+}
+
+double expected_contact_radius(const ImpactCaseDescription& d) {
+  return expected_contact_radius(d.impactor.mass, d.impactor.velocity, resolved_contact_stiffness(d),
+                                 d.impactor.radius);
+}
+
+double size_at_impact(const ImpactCaseDescription& d) {
+  if (!d.mesh.grading) return 0.0;
+  if (d.mesh.grading->size_at_impact) return *d.mesh.grading->size_at_impact;
+  // The expected radius rounded down to a step of 2^(1/4) from 1 mm: cases of a sweep whose impactors
+  // differ a little share their mesh (and factorization), whatever the order they run in.
+  const double steps = std::floor(4.0 * std::log2(expected_contact_radius(d) / 1e-3));
+  return 1e-3 * std::exp2(steps / 4.0);
+}
+
+Mesh impact_mesh(const ImpactCaseDescription& d) {
+  if (!d.mesh.grading) return structured_rectangle(d.plate, d.mesh.nx, d.mesh.ny);
+  const MeshGrading& g = *d.mesh.grading;
+  const double h0 = size_at_impact(d);
+  const double h_max = std::max(h0, g.max_size.value_or(std::min(d.plate.a, d.plate.b) / 10.0));
+  // The impact point at `impact_offset` in its element, the sizes growing away from it.
+  return structured_rectangle(d.plate,
+                              graded_lines(d.plate.a, d.impactor.x, h0, g.growth, g.impact_offset[0], h_max),
+                              graded_lines(d.plate.b, d.impactor.y, h0, g.growth, g.impact_offset[1], h_max));
+}
+
+PlateModel impact_plate_model(const ImpactCaseDescription& d) {
+  if (d.laminates.empty()) throw std::invalid_argument("impact: the case has no laminate");
+  if (d.plate.rigid) return {d.laminates.front(), d.plate, MeshSpec{1, 1}, d.boundary};
+  Mesh mesh = impact_mesh(d);
+  std::vector<int> of_element = element_laminates(mesh, d.regions);
+  return {std::move(mesh), PlateSections{d.laminates, std::move(of_element)},
+          Discretization{d.mesh.mass, d.mesh.element}, d.boundary};
+}
+
+ImpactCase::ImpactCase(ImpactCaseDescription description)
+    : description_(std::move(description)), settings_(resolved_settings(description_)),
+      model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
+  settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
+  if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
+  if (!(settings_.impactor.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");
+  if (settings_.rigid_target) {
+    if (settings_.nonlinear)
+      throw std::invalid_argument(
+          "non-linear impact needs a plate: a rigid target has no deflection to stiffen");
+    policy_ = rigid_target_policy();
+    return;
+  }
+  StepPolicyOptions options;
+  options.newmark = NewmarkCoefficients(settings_.dt, settings_.newmark_beta, settings_.newmark_gamma);
+  options.load = settings_.contact.load;
+  options.solver = description_.solver;
+  options.memory_limit_bytes = description_.memory_limit_bytes;
+  policy_ = settings_.nonlinear ? newton_step_policy(*model_, options, *settings_.nonlinear)
+                                : linear_step_policy(*model_, options);
+  if (!settings_.end) fundamental_period_ = fundamental_period(*model_); // for the end-of-event rule
+}
+
+ImpactCase::~ImpactCase() = default;
+
+ImpactResult ImpactCase::run(const RunRequest& request) const {
+  const Impactor imp = request.impactor.value_or(settings_.impactor);
+  const double k = request.contact_stiffness.value_or(settings_.k);
+  if (!(imp.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");
+  LoopSettings loop;
+  loop.dt = settings_.dt;
+  loop.end = settings_.end;
+  loop.newmark_beta = settings_.newmark_beta;
+  loop.newmark_gamma = settings_.newmark_gamma;
+  loop.max_steps = settings_.max_steps;
+  loop.fundamental_period = fundamental_period_;
+  loop.cancel = request.cancel;
+  // Guards that warn (docs/robustness.md): a Δt too coarse for the contact, an impact point on an
+  // element boundary.
+  if (auto w = time_step_warning(imp.mass, imp.velocity, k, settings_.dt))
+    loop.warnings.push_back(std::move(*w));
+  if (!settings_.rigid_target) {
+    // A point force on an element boundary loads whichever element holds it; the Hertz pressure is
+    // integrated over every element its circle touches and needs no such warning.
+    if (settings_.contact.load == ContactLoad::point)
+      if (auto w = impact_point_warning(model_->mesh(), imp.x, imp.y)) loop.warnings.push_back(std::move(*w));
+    if (auto w = contact_mesh_warning(model_->mesh(), imp.x, imp.y,
+                                      expected_contact_radius(imp.mass, imp.velocity, k, imp.radius),
+                                      settings_.contact.load))
+      loop.warnings.push_back(std::move(*w));
+  }
+
+  std::vector<ImpactObserver*> observers = request.observers;
+  HistoryRecorder history(request.history_every);
+  FieldRecorder fields(request.field_times);
+  if (request.history_every > 0) observers.push_back(&history);
+  if (!request.field_times.empty()) observers.push_back(&fields);
+
+  ImpactResult r = run_impact_loop(*policy_, imp, k, settings_.contact, loop, observers);
+  r.history = std::move(history.samples());
+  r.fields = std::move(fields.fields());
+  return r;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,119 @@
+#pragma once
+// The impact engine's facade: one impact case, built once, run any number of times. Every entry point
+// (the impact and threshold commands, sweeps on threads and MPI ranks, Python) describes a case as
+// plain data, builds an ImpactCase and calls run(); none of them owns a time loop, a factorization or
+// the wiring of an observer.
+//
+//   ImpactCaseDescription ──► ImpactCase: mesh → sections → PlateModel → step policy (factorization)
+//                                 └─ run(RunRequest: impactor, observers) → ImpactResult
+//
+// The model (linear or geometrically non-linear), the contact law, the contact load and the time step
+// are chosen here, once. Runs that change only the impactor (velocity, mass, radius, contact stiffness)
+// reuse the plate and its factorization.
+#include "plyimpact/analysis/impact_loop.hpp"
+#include "plyimpact/analysis/impact_observer.hpp"
+#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/regions.hpp"
+#include "plyimpact/fem/spd_solver.hpp"
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace plyimpact {
+
+/// A whole impact case (SI; "auto" where the deck says so).
+struct ImpactCaseDescription {
+  PlateGeometry plate;
+  MeshSpec mesh;
+  std::vector<Laminate> laminates; ///< [0] is the plate's own; regions refer to the others
+  std::vector<Region> regions;
+  BoundaryConditions boundary;
+  Impactor impactor;
+  ContactLawParameters contact;
+  TimeStepping time;
+  std::optional<NonlinearImpactSettings> nonlinear; ///< engaged: the geometrically non-linear plate
+  SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
+  std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
+};
+
+/// The settings of a case with every "auto" resolved (SPEC §4 rules, contact_rules.hpp).
+/// The mesh a case runs on, for the report (issue 16: the output says which mesh was used).
+struct MeshUsed {
+  int elements = 0;
+  ElementFormulation element = ElementFormulation::q9; ///< resolved (never `automatic`)
+  bool graded = false;                                 ///< graded toward the impact point
+  double smallest_element = 0.0;                       ///< longest side of the smallest element [m]
+  double largest_element = 0.0;                        ///< longest side of the largest element [m]
+};
+
+struct ImpactSettings {
+  Impactor impactor;
+  MeshUsed mesh;  ///< filled by ImpactCase
+  double k = 0.0; ///< contact stiffness [N/m^1.5]
+  ContactLawParameters contact;
+  double dt = 1e-6;          ///< [s]
+  std::optional<double> end; ///< [s]; empty: SPEC §4 end-of-event rule
+  double newmark_beta = 0.25, newmark_gamma = 0.5;
+  long max_steps = 2'000'000;
+  bool rigid_target = false;
+  std::optional<NonlinearImpactSettings> nonlinear;
+};
+
+/// k (given or the modified Hertz constant of the impactor on the impacted ply at the impact point).
+[[nodiscard]] double resolved_contact_stiffness(const ImpactCaseDescription& d);
+[[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d);
+/// The largest contact radius expected: the rigid-target Hertz estimate √(R α_m) (contact_rules.hpp) [m].
+[[nodiscard]] double expected_contact_radius(const ImpactCaseDescription& d);
+/// The element size at the impact point of a graded mesh [m] (0 for a uniform one): the deck's
+/// size_at_impact, or the expected contact radius rounded down to a step of 2^(1/4) from 1 mm.
+[[nodiscard]] double size_at_impact(const ImpactCaseDescription& d);
+/// The case's mesh: nx × ny uniform, or graded toward the impact point (MeshSpec::grading).
+[[nodiscard]] Mesh impact_mesh(const ImpactCaseDescription& d);
+/// The plate of a case: the mesh with its regions' laminates, or a single element when the target is
+/// rigid (it only carries the impact point).
+[[nodiscard]] PlateModel impact_plate_model(const ImpactCaseDescription& d);
+
+/// What one run asks for besides the case.
+struct RunRequest {
+  std::optional<Impactor> impactor;          ///< replaces the case's (same plate and Δt)
+  std::optional<double> contact_stiffness;   ///< replaces the case's k [N/m^1.5]
+  std::vector<ImpactObserver*> observers;    ///< see every step
+  int history_every = 1;                     ///< ImpactResult::history every k-th step; 0: none
+  std::vector<double> field_times;           ///< ImpactResult::fields at these times [s]
+  const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
+};
+
+class ImpactCase {
+public:
+  /// Builds the plate, chooses the step policy and factors K̄. Throws std::invalid_argument for a case
+  /// that cannot run (non-positive Δt or mass, options the policy does not support), InsufficientMemory.
+  explicit ImpactCase(ImpactCaseDescription description);
+  ~ImpactCase();
+  ImpactCase(const ImpactCase&) = delete;
+  ImpactCase& operator=(const ImpactCase&) = delete;
+
+  [[nodiscard]] ImpactResult run(const RunRequest& request = {}) const;
+
+  [[nodiscard]] const ImpactCaseDescription& description() const { return description_; }
+  [[nodiscard]] const ImpactSettings& settings() const { return settings_; }
+  [[nodiscard]] const PlateModel& model() const { return *model_; }
+  [[nodiscard]] bool nonlinear() const { return settings_.nonlinear.has_value(); }
+  /// Equations of the time loop.
+  [[nodiscard]] int equations() const { return policy_->equations(); }
+  /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
+  [[nodiscard]] double time_one_solve(int repeats = 21) const { return policy_->time_one_solve(repeats); }
+
+private:
+  ImpactCaseDescription description_;
+  ImpactSettings settings_;
+  std::unique_ptr<PlateModel> model_;
+  std::unique_ptr<StepPolicy> policy_;
+  double fundamental_period_ = 0.0;
+};
+
+} // namespace plyimpact

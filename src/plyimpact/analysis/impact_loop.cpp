@@ -1,0 +1,213 @@
+#include "plyimpact/analysis/impact_loop.hpp"
+
+#include "plyimpact/analysis/guards.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace plyimpact {
+
+namespace {
+
+/// The whole plate state is checked for NaN/Inf every this many steps (the contact scalars every step).
+constexpr long full_state_check_every = 100;
+
+/// The bookkeeping of the event: step limit and interrupt, contact episodes and peaks, the SPEC §4
+/// end-of-event rule and the summary values of ImpactResult.
+class ImpactEvent {
+public:
+  ImpactEvent(ImpactResult& result, const LoopSettings& settings) : r_(result), s_(settings) {}
+
+  /// Before step+1: true (with ImpactResult::stop_reason set) at the step limit, on an interrupt or
+  /// when an observer asked to stop.
+  bool must_stop(long step, double t, bool observer_stop) {
+    if (step >= s_.max_steps) {
+      r_.stop_reason =
+          fmt::format("stopped at the step limit ({} steps, t = {:.6g} s) before the end of the event; "
+                      "raise time.max_steps or set time.end",
+                      s_.max_steps, t);
+      return true;
+    }
+    if (s_.cancel != nullptr && s_.cancel->load()) {
+      r_.stop_reason = fmt::format("interrupted at step {} (t = {:.6g} s)", step, t);
+      return true;
+    }
+    if (observer_stop) {
+      r_.stop_reason = fmt::format("stopped by an observer at step {} (t = {:.6g} s)", step, t);
+      return true;
+    }
+    return false;
+  }
+
+  /// A converged step: contact episodes, peak force, peak deflection ws and indentation α.
+  void record(double t, double force, double alpha, double ws) {
+    if (force > 0.0) {
+      if (!in_contact_) r_.episodes.push_back({t - s_.dt, t, 0.0});
+      in_contact_ = true;
+      auto& ep = r_.episodes.back();
+      ep.end = t;
+      ep.peak_force = std::max(ep.peak_force, force);
+      if (force > r_.peak_force) r_.peak_force = force, r_.time_of_peak_force = t;
+    } else if (in_contact_) {
+      in_contact_ = false;
+      last_separation_ = t;
+      if (r_.episodes.size() == 1) r_.contact_duration = r_.episodes.front().end - r_.episodes.front().start;
+    }
+    r_.peak_contact_deflection = std::max(r_.peak_contact_deflection, ws);
+    r_.max_indentation = std::max(r_.max_indentation, alpha);
+  }
+
+  /// End of the event at t: time.end reached, or (SPEC §4) out of contact for the longer of the first
+  /// contact and two fundamental periods.
+  bool over(double t) {
+    if (s_.end) return t >= *s_.end - 1e-9 * s_.dt;
+    if (in_contact_ || last_separation_ < 0.0) return false;
+    r_.fundamental_period = s_.fundamental_period;
+    return t - last_separation_ >= std::max(r_.contact_duration, 2.0 * r_.fundamental_period);
+  }
+
+  /// The summary values after the last step.
+  void finish(long steps, double t, const HertzContact& law, const NewmarkStepper& impactor, double e0,
+              double contact_work) {
+    if (in_contact_ && r_.episodes.size() == 1)
+      r_.contact_duration = r_.episodes.front().end - r_.episodes.front().start;
+    r_.steps = steps;
+    r_.end_time = t;
+    r_.permanent_indentation = law.permanent_indentation();
+    r_.rebound_velocity = -impactor.velocity();
+    r_.absorbed_energy = e0 - impactor.kinetic_energy();
+    r_.contact_dissipation = contact_work;
+  }
+
+private:
+  ImpactResult& r_;
+  const LoopSettings& s_;
+  bool in_contact_ = false;
+  double last_separation_ = -1.0;
+};
+
+/// The plate's part of the step view: expanded displacements and energies, computed on demand.
+class PlateAccess final : public PlateStateAccess {
+public:
+  PlateAccess(const PlateStepper& stepper, const PlateState& state, const double& force)
+      : stepper_(stepper), state_(state), force_(force) {}
+  void next_step() { expanded_ = false; }
+  [[nodiscard]] const Eigen::VectorXd& displacement() const override {
+    if (!expanded_) stepper_.to_model(state_.u, model_u_), expanded_ = true;
+    return model_u_;
+  }
+  [[nodiscard]] double kinetic_energy() const override { return stepper_.kinetic_energy(state_); }
+  [[nodiscard]] double strain_energy() const override { return stepper_.strain_energy(state_, force_); }
+
+private:
+  const PlateStepper& stepper_;
+  const PlateState& state_;
+  const double& force_;
+  mutable Eigen::VectorXd model_u_;
+  mutable bool expanded_ = false;
+};
+
+} // namespace
+
+ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, double k,
+                             const ContactLawParameters& contact, const LoopSettings& s,
+                             std::span<ImpactObserver* const> observers) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const NewmarkCoefficients nc(s.dt, s.newmark_beta, s.newmark_gamma);
+  const std::unique_ptr<PlateStepper> plate = policy.start(imp);
+  const auto n = static_cast<Eigen::Index>(policy.equations());
+  const bool rigid = n == 0;
+
+  HertzContact law(k, contact);
+  NewmarkStepper impactor(nc, imp.mass, 0.0, imp.velocity);
+  PlateState state{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+  Eigen::VectorXd u_next(n), a_next(n);
+
+  ImpactResult r;
+  r.warnings = s.warnings;
+  r.dofs = static_cast<int>(n);
+  r.inplane_eliminated = policy.inplane_eliminated();
+  const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
+  double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0;
+  ImpactEvent event(r, s);
+  PlateAccess plate_access(*plate, state, force);
+
+  StepView view;
+  view.dt = s.dt;
+  view.plate = rigid ? nullptr : &plate_access;
+  const auto update_view = [&](long step, double t) {
+    view.step = step;
+    view.t = t;
+    view.force = force;
+    view.indentation = alpha;
+    view.plate_w = ws;
+    view.impactor_w = impactor.displacement();
+    view.impactor_v = impactor.velocity();
+    view.impactor_energy = impactor.kinetic_energy();
+    view.contact_work = contact_work;
+    plate_access.next_step();
+  };
+  update_view(0, 0.0);
+  for (ImpactObserver* o : observers)
+    o->on_start(view);
+  const auto observer_stop = [&] {
+    return std::any_of(observers.begin(), observers.end(),
+                       [](const ImpactObserver* o) { return o->wants_stop(); });
+  };
+
+  long step = 0;
+  double t = 0.0;
+  for (;;) {
+    if (event.must_stop(step, t, step > 0 && observer_stop())) break;
+    ++step;
+    t = static_cast<double>(step) * s.dt;
+
+    // 1. Plate and contact force together (the step policy).
+    const ContactSolution cs = plate->advance(step, t, state, ContactStep(law, impactor, alpha), u_next);
+    r.newton_iterations_max = std::max(r.newton_iterations_max, cs.iterations);
+    const double force_old = force, alpha_old = alpha;
+    force = cs.force;
+    alpha = cs.alpha;
+    check_finite_step(step, t, {{"contact force Fc [N]", force}, {"indentation alpha [m]", alpha}});
+    law.commit(alpha);
+    contact_work += 0.5 * (force + force_old) * (alpha - alpha_old);
+    impactor.advance(force);
+
+    // 2. Newmark update of the plate (2.11)–(2.16).
+    plate->accept(state, u_next);
+    a_next = nc.c0 * (u_next - state.u) - nc.c2 * state.v - nc.c3 * state.a;
+    state.v += nc.c6 * state.a + nc.c7 * a_next;
+    state.u.swap(u_next);
+    state.a.swap(a_next);
+    ws = rigid ? 0.0 : plate->contact_deflection(state.u);
+    check_finite_step(step, t,
+                      {{"impactor displacement [m]", impactor.displacement()},
+                       {"impactor velocity [m/s]", impactor.velocity()},
+                       {"contact-point deflection ws [m]", ws}});
+    if (!rigid && step % full_state_check_every == 0) {
+      check_finite_vector(step, t, "plate displacement u", state.u);
+      check_finite_vector(step, t, "plate velocity", state.v);
+      check_finite_vector(step, t, "plate acceleration", state.a);
+    }
+
+    // 3. Episodes and peaks, observers, end of the event.
+    event.record(t, force, alpha, ws);
+    update_view(step, t);
+    for (ImpactObserver* o : observers)
+      o->on_step(view);
+    if (event.over(t)) {
+      r.complete = true;
+      break;
+    }
+  }
+  event.finish(step, t, law, impactor, e0, contact_work);
+  r.newton = plate->statistics();
+  r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  for (ImpactObserver* o : observers)
+    o->on_finish(view, r);
+  return r;
+}
+
+} // namespace plyimpact

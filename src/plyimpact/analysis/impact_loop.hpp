@@ -1,0 +1,41 @@
+#pragma once
+// The one time loop of every impact run (SPEC §4; thesis 2.3–2.4, 3.5): plate M ü + K u = Fc s (2.2)
+// (or its non-linear form), impactor m ẅi = −Fc (2.4), indentation α = wi − ws (2.8), contact law
+// HertzContact, Newmark with constant Δt for both.
+//
+//   initialise (u, v, a, impactor)               observers.on_start
+//   for each step:
+//     plate and contact force   (the step policy: the only part that differs between runs)
+//     contact history, impactor, Newmark update of the plate, energies, guards
+//     observers.on_step
+//     end-of-event rule
+//   summary                                       observers.on_finish
+#include "plyimpact/analysis/impact_observer.hpp"
+#include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
+
+#include <atomic>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+/// The run's time stepping, resolved (no "auto").
+struct LoopSettings {
+  double dt = 1e-6;          ///< [s]
+  std::optional<double> end; ///< [s]; empty: the SPEC §4 end-of-event rule
+  double newmark_beta = 0.25, newmark_gamma = 0.5;
+  long max_steps = 2'000'000;
+  double fundamental_period = 0.0;           ///< of the plate, for the end-of-event rule [s]
+  const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
+  std::vector<std::string> warnings; ///< found before the run (guards.hpp): start ImpactResult::warnings
+};
+
+/// Runs one impact event. The result's summary values are filled in; histories are the observers' job.
+[[nodiscard]] ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& impactor, double k,
+                                           const ContactLawParameters& contact, const LoopSettings& settings,
+                                           std::span<ImpactObserver* const> observers);
+
+} // namespace plyimpact

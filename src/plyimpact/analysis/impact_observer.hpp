@@ -1,0 +1,65 @@
+#pragma once
+// Observers of an impact run: damage tracking, stress probes, histories, ParaView frames, progress.
+// They see a read-only view of each converged step and cannot change the run, except by asking it to
+// stop (a threshold search stops at the first failure).
+#include "plyimpact/analysis/impact_result.hpp"
+
+#include <Eigen/Core>
+
+namespace plyimpact {
+
+/// The plate's part of a step's state, computed by the time loop on demand.
+class PlateStateAccess {
+public:
+  virtual ~PlateStateAccess() = default;
+  PlateStateAccess() = default;
+  PlateStateAccess(const PlateStateAccess&) = delete;
+  PlateStateAccess& operator=(const PlateStateAccess&) = delete;
+  [[nodiscard]] virtual const Eigen::VectorXd& displacement() const = 0;
+  [[nodiscard]] virtual double kinetic_energy() const = 0;
+  [[nodiscard]] virtual double strain_energy() const = 0;
+};
+
+/// The state after a converged step (or the initial state, step 0).
+class StepView {
+public:
+  long step = 0;
+  double t = 0.0, dt = 0.0;     ///< [s]
+  double force = 0.0;           ///< contact force [N]
+  double indentation = 0.0;     ///< α [m]
+  double plate_w = 0.0;         ///< plate deflection at the contact point [m]
+  double impactor_w = 0.0;      ///< [m]
+  double impactor_v = 0.0;      ///< [m/s]
+  double impactor_energy = 0.0; ///< [J]
+  double contact_work = 0.0;    ///< [J]
+
+  const PlateStateAccess* plate = nullptr; ///< null for a rigid target
+
+  /// Plate displacements over the free DOFs of the PlateModel (expanded once per step, on demand).
+  [[nodiscard]] const Eigen::VectorXd& plate_displacement() const { return plate->displacement(); }
+  /// ½ vᵀMv and the plate's elastic energy [J] (0 for a rigid target).
+  [[nodiscard]] double plate_kinetic_energy() const { return plate ? plate->kinetic_energy() : 0.0; }
+  [[nodiscard]] double plate_strain_energy() const { return plate ? plate->strain_energy() : 0.0; }
+};
+
+/// The history row of a step view.
+[[nodiscard]] ImpactSample history_sample(const StepView& v);
+
+class ImpactObserver {
+public:
+  virtual ~ImpactObserver() = default;
+  ImpactObserver() = default;
+  ImpactObserver(const ImpactObserver&) = delete;
+  ImpactObserver& operator=(const ImpactObserver&) = delete;
+
+  /// Before the first step, with the initial state (step 0).
+  virtual void on_start(const StepView& /*initial*/) {}
+  /// After every converged step.
+  virtual void on_step(const StepView& view) = 0;
+  /// After the last step (which on_step has seen), with the run's summary values filled in.
+  virtual void on_finish(const StepView& /*last*/, const ImpactResult& /*result*/) {}
+  /// True to end the run after this step (stop_reason says the observer stopped it).
+  [[nodiscard]] virtual bool wants_stop() const { return false; }
+};
+
+} // namespace plyimpact

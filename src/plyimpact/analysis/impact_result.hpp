@@ -1,0 +1,64 @@
+#pragma once
+// What an impact run returns (SPEC §4 "Results of a run", §10 impact keys). SI units.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+/// One row of the time history.
+struct ImpactSample {
+  double t = 0.0;               ///< [s]
+  double force = 0.0;           ///< contact force Fc [N]
+  double impactor_w = 0.0;      ///< impactor displacement [m] (+z)
+  double impactor_v = 0.0;      ///< impactor velocity [m/s]
+  double plate_w = 0.0;         ///< plate deflection at the contact point ws [m]
+  double indentation = 0.0;     ///< α = wi − ws [m]
+  double plate_kinetic = 0.0;   ///< ½ vᵀMv [J]
+  double plate_strain = 0.0;    ///< elastic energy of the plate [J]
+  double impactor_energy = 0.0; ///< ½ m vi² [J]
+  double contact_work = 0.0;    ///< ∫ Fc dα (trapezoidal, as Newmark integrates it) [J]
+};
+
+struct ContactEpisode {
+  double start = 0.0, end = 0.0, peak_force = 0.0;
+};
+
+/// The plate state (free DOFs of the PlateModel) at a requested time.
+struct FieldSnapshot {
+  double t = 0.0;
+  Eigen::VectorXd u;
+};
+
+/// Newton statistics of a geometrically non-linear run.
+struct NewtonStatistics {
+  long iterations = 0;             ///< linear solves over all steps
+  int max_iterations_per_step = 0; ///< most solves in one step
+  int factorizations = 0;          ///< of K̄ = K_T + c0 M, including the first
+};
+
+struct ImpactResult {
+  std::vector<ImpactSample> history; ///< every k-th step (RunRequest::history_every), first and last always
+  std::vector<ContactEpisode> episodes;
+  std::vector<FieldSnapshot> fields;
+  double peak_force = 0.0, time_of_peak_force = 0.0;
+  double contact_duration = 0.0; ///< of the first contact [s]
+  double peak_contact_deflection = 0.0, max_indentation = 0.0, permanent_indentation = 0.0;
+  double rebound_velocity = 0.0;    ///< speed of the impactor away from the plate at the end [m/s]
+  double absorbed_energy = 0.0;     ///< ½ m (v0² − v_end²) [J]
+  double contact_dissipation = 0.0; ///< ∮ Fc dα at the end [J]
+  double fundamental_period = 0.0;  ///< used by the end-of-event rule [s]
+  double end_time = 0.0;            ///< time of the last step [s]
+  long steps = 0;
+  int newton_iterations_max = 0; ///< most iterations of the scalar contact solve in one step
+  bool complete = false;
+  std::string stop_reason;
+  std::vector<std::string> warnings; ///< coarse Δt, impact point on an element boundary (guards.hpp)
+  double wall_time = 0.0;            ///< [s]
+  int dofs = 0;                      ///< equations in the time loop
+  bool inplane_eliminated = false;
+  std::optional<NewtonStatistics> newton; ///< geometrically non-linear runs only
+};
+
+} // namespace plyimpact

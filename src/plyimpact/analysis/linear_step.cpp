@@ -1,0 +1,153 @@
+// The linear step policy (SPEC §4): K̄ = K + M/(βΔt²) factored once per case; each step one
+// back-substitution for the load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a), the exact scalar
+// contact solve with ws = sᵀû + c Fc, c = sᵀK̄⁻¹s, and u_{n+1} = û + Fc K̄⁻¹ s_load.
+#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace plyimpact {
+
+MassOperator::MassOperator(const SparseMatrix& M, double tolerance) : M_(M) {
+  const double m_max = M_.rows() > 0 ? M_.diagonal().cwiseAbs().maxCoeff() : 0.0;
+  for (int col = 0; col < M_.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(M_, col); it; ++it)
+      if (it.row() != col && std::abs(it.value()) > tolerance * m_max) return;
+  diagonal_ = M_.diagonal();
+}
+
+namespace {
+
+/// Largest |A(i, j)| with i in-plane (u, v) and j bending (w, θx, θy), relative to max |A|.
+double inplane_coupling(const PlateModel& model, const SparseMatrix& A) {
+  std::vector<bool> inplane(static_cast<std::size_t>(model.size()));
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    for (int d = 0; d < 2; ++d)
+      if (const int eq = model.dofs().equation(n, d); eq >= 0) inplane[static_cast<std::size_t>(eq)] = true;
+  double coupling = 0.0, scale = 0.0;
+  for (int col = 0; col < A.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(A, col); it; ++it) {
+      scale = std::max(scale, std::abs(it.value()));
+      if (inplane[static_cast<std::size_t>(it.row())] != inplane[static_cast<std::size_t>(col)])
+        coupling = std::max(coupling, std::abs(it.value()));
+    }
+  return scale > 0.0 ? coupling / scale : 0.0;
+}
+
+/// In-plane DOFs carry no load and, for B = 0 and I1 = 0, no coupling: they stay exactly zero and are
+/// left out of the time loop (about 2/5 of the equations).
+EquationSubset loop_equations(const PlateModel& model, const SparseMatrix& K, const SparseMatrix& M) {
+  const bool decoupled = inplane_coupling(model, K) <= 1e-13 && inplane_coupling(model, M) <= 1e-13;
+  if (!decoupled) return EquationSubset(model.size());
+  std::vector<int> keep;
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    for (int d = 2; d < dofs_per_node; ++d)
+      if (const int eq = model.dofs().equation(n, d); eq >= 0) keep.push_back(eq);
+  return {std::move(keep), model.size()};
+}
+
+class LinearStepPolicy;
+
+class LinearStepper final : public PlateStepper {
+public:
+  LinearStepper(const LinearStepPolicy& policy, const Impactor& impactor);
+  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+                          Eigen::VectorXd& u_next) override;
+  [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
+  [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
+  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override { return sw().dot(u); }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
+
+private:
+  [[nodiscard]] const Eigen::VectorXd& sw() const { return loading_.sampler(); }
+
+  const LinearStepPolicy& p_;
+  ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and the compliance c = swᵀ K̄⁻¹ s_load
+  Eigen::VectorXd rhs_, u_hat_;
+  double alpha_ = 0.0; ///< indentation of the last step (its load vector)
+};
+
+class LinearStepPolicy final : public StepPolicy {
+public:
+  LinearStepPolicy(const PlateModel& model, const StepPolicyOptions& options, const SparseMatrix& K,
+                   const SparseMatrix& M)
+      : model_(model), options_(options), equations_(loop_equations(model, K, M)), K_(equations_.restrict(K)),
+        M_(equations_.restrict(M), 0.0) {
+    const SparseMatrix Kbar = K_ + options.newmark.c0 * M_.matrix(); // effective stiffness, factored once
+    if (options.memory_limit_bytes)
+      check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);
+    factor_ = SpdSolver(options.solver);
+    factor_.factorize(Kbar);
+  }
+
+  [[nodiscard]] int equations() const override { return equations_.size(); }
+  [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
+    return std::make_unique<LinearStepper>(*this, impactor);
+  }
+
+  [[nodiscard]] double time_one_solve(int repeats) const override {
+    if (equations() == 0) return 0.0;
+    Eigen::VectorXd b = Eigen::VectorXd::Ones(equations());
+    std::vector<double> t;
+    Eigen::VectorXd x;
+    for (int i = 0; i < repeats; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      x = factor_.solve(b);
+      t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      b(0) += 1e-30 * x(0);
+    }
+    std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
+    return t[static_cast<std::size_t>(repeats / 2)];
+  }
+
+  const PlateModel& model_;
+  StepPolicyOptions options_;
+  EquationSubset equations_;
+  SparseMatrix K_;
+  MassOperator M_; ///< exactly diagonal when lumped with I1 = 0
+  SpdSolver factor_;
+};
+
+LinearStepper::LinearStepper(const LinearStepPolicy& policy, const Impactor& impactor)
+    : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
+      rhs_(policy.equations()), u_hat_(policy.equations()) {
+  loading_.set_solver([&factor = p_.factor_](const Eigen::VectorXd& b) { return factor.solve(b); });
+}
+
+ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateState& s,
+                                       const ContactStep& contact, Eigen::VectorXd& u_next) {
+  const NewmarkCoefficients& nc = p_.options_.newmark;
+  // 1. Load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a): one back-substitution.
+  rhs_ = p_.M_.times(nc.c0 * s.u + nc.c2 * s.v + nc.c3 * s.a);
+  u_hat_ = p_.factor_.solve(rhs_);
+  // 2. Scalar contact problem with ws affine in Fc.
+  const ContactSolution cs = loading_.solve(contact, sw().dot(u_hat_));
+  alpha_ = cs.alpha;
+  // 3. The plate under the converged force.
+  u_next = u_hat_;
+  loading_.add_response(cs.alpha, cs.force, u_next);
+  return cs;
+}
+
+double LinearStepper::kinetic_energy(const PlateState& s) const {
+  return p_.M_.kinetic_energy(s.v);
+}
+
+double LinearStepper::strain_energy(const PlateState& s, double force) const {
+  return 0.5 * (force * loading_.load(alpha_).dot(s.u) - s.u.dot(p_.M_.times(s.a))); // K u = F s − M a
+}
+
+void LinearStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+  p_.equations_.expand(u, out);
+}
+
+} // namespace
+
+std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model, const StepPolicyOptions& options) {
+  return std::make_unique<LinearStepPolicy>(model, options, model.stiffness(), model.mass());
+}
+
+} // namespace plyimpact

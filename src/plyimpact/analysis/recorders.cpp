@@ -1,0 +1,33 @@
+#include "plyimpact/analysis/recorders.hpp"
+
+#include <algorithm>
+
+namespace plyimpact {
+
+ImpactSample history_sample(const StepView& v) {
+  ImpactSample h;
+  h.t = v.t;
+  h.force = v.force;
+  h.impactor_w = v.impactor_w;
+  h.impactor_v = v.impactor_v;
+  h.plate_w = v.plate_w;
+  h.indentation = v.indentation;
+  h.plate_kinetic = v.plate_kinetic_energy();
+  h.plate_strain = v.plate_strain_energy();
+  h.impactor_energy = v.impactor_energy;
+  h.contact_work = v.contact_work;
+  return h;
+}
+
+FieldRecorder::FieldRecorder(std::vector<double> times) : times_(std::move(times)) {
+  std::sort(times_.begin(), times_.end());
+}
+
+void FieldRecorder::on_step(const StepView& view) {
+  while (next_ < times_.size() && view.t >= times_[next_] - 1e-12 * view.dt) {
+    fields_.push_back({view.t, view.plate ? view.plate_displacement() : Eigen::VectorXd()});
+    ++next_;
+  }
+}
+
+} // namespace plyimpact

@@ -1,0 +1,123 @@
+#pragma once
+// Step policies: how the plate advances one Newmark step together with the contact force. The time loop
+// (impact_loop.hpp) is the same for all of them; only the solution of the step differs:
+//
+//   LinearStepPolicy   K̄ = K + c0 M factored once per case. One back-substitution for the load-free
+//                      predictor û, then ws = sᵀû + c·Fc is affine in Fc and the scalar contact problem
+//                      is solved exactly (SPEC §4).
+//   NewtonStepPolicy   geometrically non-linear plate (SPEC §8): Newton iterations on (u, Fc) with the
+//                      tangent K̄ = K_T + c0 M, refreshed when the iterations slow down (modified Newton).
+//   RigidTarget        no plate (closed-form checks of the contact law).
+//
+// A policy is built once per case (it owns what does not depend on the impactor: matrices and their
+// factorization) and starts a PlateStepper for each run (what does: the contact point and load).
+#include "plyimpact/analysis/contact_load.hpp"
+#include "plyimpact/analysis/contact_step.hpp"
+#include "plyimpact/analysis/hertz_contact.hpp"
+#include "plyimpact/analysis/impact_result.hpp"
+#include "plyimpact/analysis/newmark.hpp"
+#include "plyimpact/fem/equation_subset.hpp"
+#include "plyimpact/fem/nonlinear_plate_element.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/spd_solver.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace plyimpact {
+
+/// Displacement, velocity and acceleration of the plate at the start of a step (policy numbering).
+struct PlateState {
+  Eigen::VectorXd u, v, a;
+};
+
+/// One run's plate: advances steps and reports energies.
+class PlateStepper {
+public:
+  virtual ~PlateStepper() = default;
+  PlateStepper() = default;
+  PlateStepper(const PlateStepper&) = delete;
+  PlateStepper& operator=(const PlateStepper&) = delete;
+
+  /// Solves step `step` (ending at t) for the plate and the contact force together: u_{n+1} into u_next.
+  virtual ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+                                  Eigen::VectorXd& u_next) = 0;
+  /// The step is accepted: u_next will become u (energy bookkeeping of path-dependent plates).
+  virtual void accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {}
+  /// ½ vᵀMv.
+  [[nodiscard]] virtual double kinetic_energy(const PlateState& s) const = 0;
+  /// The plate's elastic energy in state s with contact force F.
+  [[nodiscard]] virtual double strain_energy(const PlateState& s, double force) const = 0;
+  /// ws = swᵀu.
+  [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
+  /// u in the model's numbering.
+  virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
+  [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
+};
+
+class StepPolicy {
+public:
+  virtual ~StepPolicy() = default;
+  StepPolicy() = default;
+  StepPolicy(const StepPolicy&) = delete;
+  StepPolicy& operator=(const StepPolicy&) = delete;
+
+  /// Equations of the time loop (0 for a rigid target).
+  [[nodiscard]] virtual int equations() const = 0;
+  /// True when the in-plane DOFs are left out (exactly decoupled from bending: B = 0, I1 = 0).
+  [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
+  [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor) const = 0;
+  /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
+  [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
+};
+
+/// Settings of the non-linear (Newton) policy.
+struct NonlinearImpactSettings {
+  StrainMeasure measure = StrainMeasure::von_karman;
+  int max_iterations = 30;              ///< per time step
+  double residual_tolerance = 1e-4;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
+  double displacement_tolerance = 1e-6; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖
+  int refresh_after = 4;                ///< refactor K̄ when a step needs more iterations
+  double refresh_ratio = 0.25;          ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  long refresh_interval =
+      200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
+};
+
+/// What the policies need to know of the run besides the plate.
+struct StepPolicyOptions {
+  NewmarkCoefficients newmark{1e-6, 0.25, 0.5};
+  ContactLoad load = ContactLoad::point;
+  SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
+  std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
+};
+
+/// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
+[[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
+                                                             const StepPolicyOptions& options);
+/// Newton iterations on the non-linear plate.
+[[nodiscard]] std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model,
+                                                             const StepPolicyOptions& options,
+                                                             const NonlinearImpactSettings& settings);
+/// A rigid, immovable target: ws = 0.
+[[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
+
+/// The mass matrix as the time loop uses it: M x as a diagonal scaling when M is diagonal (lumped mass
+/// with I1 = 0, or I1 at round-off level: off-diagonal entries below `tolerance` times the largest
+/// diagonal entry are dropped), as a sparse product otherwise.
+class MassOperator {
+public:
+  MassOperator(const SparseMatrix& M, double tolerance);
+  [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& x) const {
+    if (diagonal_.size() > 0) return diagonal_.cwiseProduct(x);
+    return M_ * x;
+  }
+  /// ½ vᵀMv.
+  [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v) const { return 0.5 * v.dot(times(v)); }
+  [[nodiscard]] const SparseMatrix& matrix() const { return M_; }
+
+private:
+  SparseMatrix M_;
+  Eigen::VectorXd diagonal_; ///< M when diagonal, else empty
+};
+
+} // namespace plyimpact

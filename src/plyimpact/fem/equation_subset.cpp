@@ -1,0 +1,47 @@
+#include "plyimpact/fem/equation_subset.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace plyimpact {
+
+EquationSubset::EquationSubset(int size) : keep_(static_cast<std::size_t>(size)), new_index_(keep_.size()) {
+  std::iota(keep_.begin(), keep_.end(), 0);
+  std::iota(new_index_.begin(), new_index_.end(), 0);
+}
+
+EquationSubset::EquationSubset(std::vector<int> keep, int size)
+    : keep_(std::move(keep)), new_index_(static_cast<std::size_t>(size), -1) {
+  std::sort(keep_.begin(), keep_.end());
+  for (std::size_t i = 0; i < keep_.size(); ++i)
+    new_index_[static_cast<std::size_t>(keep_[i])] = static_cast<int>(i);
+}
+
+Eigen::VectorXd EquationSubset::restrict(const Eigen::VectorXd& v) const {
+  Eigen::VectorXd r(static_cast<Eigen::Index>(keep_.size()));
+  for (std::size_t i = 0; i < keep_.size(); ++i)
+    r(static_cast<Eigen::Index>(i)) = v(keep_[i]);
+  return r;
+}
+
+void EquationSubset::expand(const Eigen::VectorXd& r, Eigen::VectorXd& out) const {
+  out.setZero(model_size());
+  for (std::size_t i = 0; i < keep_.size(); ++i)
+    out(keep_[i]) = r(static_cast<Eigen::Index>(i));
+}
+
+Eigen::SparseMatrix<double> EquationSubset::restrict(const Eigen::SparseMatrix<double>& A) const {
+  if (all()) return A;
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(A.nonZeros()));
+  for (const int col : keep_)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, col); it; ++it)
+      if (const int r = new_index_[static_cast<std::size_t>(it.row())]; r >= 0)
+        t.emplace_back(r, new_index_[static_cast<std::size_t>(col)], it.value());
+  Eigen::SparseMatrix<double> R(static_cast<Eigen::Index>(keep_.size()),
+                                static_cast<Eigen::Index>(keep_.size()));
+  R.setFromTriplets(t.begin(), t.end());
+  return R;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,45 @@
+#include "plyimpact/io/case_from_deck.hpp"
+
+#include "plyimpact/fem/structured_mesh.hpp"
+#include "plyimpact/io/system_memory.hpp"
+
+namespace plyimpact {
+
+PlateModel plate_model(const Deck& deck) {
+  const MeshSpec spec = deck.mesh.value_or(MeshSpec{}); // static, modal, buckling: nx × ny (15 × 11)
+  Mesh mesh = structured_rectangle(*deck.plate, spec.nx, spec.ny);
+  std::vector<int> of_element = element_laminates(mesh, deck.regions);
+  return {std::move(mesh), PlateSections{all_laminates(deck), std::move(of_element)},
+          Discretization{spec.mass, spec.element}, *deck.boundary};
+}
+
+ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) {
+  ImpactCaseDescription d;
+  d.plate = *deck.plate;
+  MeshSpec graded; // no [mesh] table: graded toward the impact point
+  graded.grading = MeshGrading{};
+  d.mesh = deck.mesh.value_or(graded);
+  d.laminates = all_laminates(deck);
+  d.regions = deck.regions;
+  d.boundary = deck.boundary.value_or(BoundaryConditions{});
+  d.impactor = *deck.impactor;
+  d.contact = deck.contact;
+  d.time = deck.time;
+  if (nonlinear || deck.nonlinear) {
+    NonlinearImpactSettings ns;
+    ns.measure = deck.nonlinear_settings.measure;
+    d.nonlinear = ns;
+  }
+  d.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
+  return d;
+}
+
+DamageOptions damage_options_from_deck(const Deck& deck) {
+  DamageOptions d;
+  d.every = deck.damage.every;
+  d.criterion_options.delamination_ply_n =
+      deck.damage.delamination_ply_n_lower ? DelaminationPlyN::lower : DelaminationPlyN::upper;
+  return d;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,108 @@
+#include "plyimpact/io/deck_tables.hpp"
+
+#include "plyimpact/laminate/failure_criteria.hpp"
+
+#include <fmt/format.h>
+
+namespace plyimpact::deck_tables {
+
+StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate) {
+  t.only({"pressure", "point", "patch"});
+  StaticLoad l;
+  l.pressure = t.optional_number("pressure", "Pa").value_or(0.0);
+  auto inside = [&](const TableReader& r, double x, double y) {
+    if (plate && !(x >= 0.0 && x <= plate->a && y >= 0.0 && y <= plate->b))
+      r.fail_at("x", fmt::format("load point ({}, {}) m lies outside the plate {} x {} m", x, y, plate->a,
+                                 plate->b));
+  };
+  if (const auto p = t.optional_table("point")) {
+    p->only({"x", "y", "force"});
+    l.point = PointLoad{p->number("x", "m"), p->number("y", "m"), p->number("force", "N")};
+    inside(*p, l.point->x, l.point->y);
+  }
+  if (const auto p = t.optional_table("patch")) {
+    p->only({"x", "y", "dx", "dy", "force"});
+    l.patch = PatchLoad{p->number("x", "m"), p->number("y", "m"), p->positive("dx", "m"),
+                        p->positive("dy", "m"), p->number("force", "N")};
+    inside(*p, l.patch->x, l.patch->y);
+  }
+  if (l.pressure == 0.0 && !l.point && !l.patch)
+    t.fail_here("[load] needs pressure (Pa), point = {x, y, force} or patch = {x, y, dx, dy, force}");
+  return l;
+}
+
+ModalSettings read_modal(const TableReader& t) {
+  ModalSettings m;
+  t.only({"count"});
+  const long n = t.optional_integer("count").value_or(10);
+  if (n < 1 || n > 1000)
+    t.fail_at("count", fmt::format("modal.count must lie between 1 and 1000, got {}", n));
+  m.count = static_cast<int>(n);
+  return m;
+}
+
+BucklingSettings read_buckling(const TableReader& t) {
+  t.only({"Nx", "Ny", "Nxy", "count"});
+  BucklingSettings b;
+  b.Nx = t.optional_number("Nx", "N/m").value_or(0.0);
+  b.Ny = t.optional_number("Ny", "N/m").value_or(0.0);
+  b.Nxy = t.optional_number("Nxy", "N/m").value_or(0.0);
+  const long n = t.optional_integer("count").value_or(5);
+  if (n < 1 || n > 1000)
+    t.fail_at("count", fmt::format("buckling.count must lie between 1 and 1000, got {}", n));
+  b.count = static_cast<int>(n);
+  if (b.Nx == 0.0 && b.Ny == 0.0 && b.Nxy == 0.0)
+    fail(t.file(), t.where(),
+         "[buckling] needs a non-zero reference load Nx, Ny or Nxy (N/m, compression negative)");
+  return b;
+}
+
+DamageSettings read_damage(const TableReader& t, const Deck& d) {
+  DamageSettings damage;
+  t.only({"criteria", "every", "delamination_ply_n"});
+  if (const toml::node* c = t.node("criteria")) {
+    const toml::array* arr = c->as_array();
+    if (arr == nullptr) t.fail_at("criteria", "damage.criteria must be an array of criterion names");
+    for (const toml::node& n : *arr) {
+      const auto* s = n.as_string();
+      if (s == nullptr || !parse_criterion(s->get())) {
+        std::string names;
+        for (const Criterion k : all_criteria())
+          names += (names.empty() ? "" : " | ") + std::string(to_string(k));
+        fail(t.file(), n.source(), "damage.criteria: expected a criterion name, one of " + names);
+      }
+      const Criterion crit = *parse_criterion(s->get());
+      if (d.laminate)
+        for (std::size_t k = 0; k < d.laminate->ply_count(); ++k) {
+          const Material& m = d.laminate->material_of(k);
+          const auto missing = missing_strengths(crit, m.strength);
+          if (!missing.empty())
+            fail(t.file(), n.source(),
+                 fmt::format("criterion {} needs {} of material '{}' (add it to [materials.{}])", s->get(),
+                             to_string(missing.front()), m.name, m.name));
+        }
+      damage.criteria.push_back(s->get());
+    }
+  }
+  const long every = t.optional_integer("every").value_or(1);
+  if (every < 1) t.fail_at("every", fmt::format("damage.every must be a positive step count, got {}", every));
+  damage.every = static_cast<int>(every);
+  damage.delamination_ply_n_lower =
+      t.optional_choice<bool>("delamination_ply_n", {{"upper", false}, {"lower", true}}).value_or(false);
+  return damage;
+}
+
+ThresholdSettings read_threshold(const TableReader& t) {
+  ThresholdSettings threshold;
+  t.only({"criterion", "tolerance", "max_velocity"});
+  if (const auto c = t.optional_string("criterion")) {
+    if (!parse_criterion(*c))
+      t.fail_at("criterion", fmt::format("threshold.criterion: unknown criterion \"{}\"", *c));
+    threshold.criterion = *c;
+  }
+  threshold.tolerance = t.optional_positive("tolerance", "m/s").value_or(0.01);
+  threshold.max_velocity = t.optional_positive("max_velocity", "m/s").value_or(500.0);
+  return threshold;
+}
+
+} // namespace plyimpact::deck_tables

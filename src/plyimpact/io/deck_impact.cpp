@@ -1,0 +1,108 @@
+#include "plyimpact/io/deck_tables.hpp"
+
+#include <fmt/format.h>
+
+#include <numbers>
+
+namespace plyimpact::deck_tables {
+
+Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate) {
+  t.only({"mass", "density", "radius", "E", "nu", "velocity", "x", "y"});
+  Impactor imp;
+  imp.radius = t.positive("radius", "m");
+  const auto mass = t.optional_positive("mass", "kg");
+  const auto density = t.optional_positive("density", "kg/m^3");
+  if (mass && density) t.fail_at("density", "give impactor.mass or impactor.density, not both");
+  if (!mass && !density)
+    t.fail_here("[impactor] needs mass (kg) or density (kg/m^3, mass of the sphere of the given radius)");
+  imp.mass = mass ? *mass : *density * 4.0 / 3.0 * std::numbers::pi * imp.radius * imp.radius * imp.radius;
+  imp.E = t.positive("E", "Pa");
+  imp.nu = t.optional_number("nu", "-").value_or(0.3);
+  if (!(imp.nu > -1.0 && imp.nu < 0.5))
+    t.fail_at("nu", fmt::format("impactor.nu must lie in (-1, 0.5), got {}", imp.nu));
+  imp.velocity = t.positive("velocity", "m/s");
+  const auto x = t.optional_number("x", "m");
+  const auto y = t.optional_number("y", "m");
+  if (plate) {
+    imp.x = x.value_or(plate->a / 2.0);
+    imp.y = y.value_or(plate->b / 2.0);
+    if (!(imp.x > 0.0 && imp.x < plate->a))
+      t.fail_at(x ? "x" : "radius",
+                fmt::format("impact point x = {} m lies outside the plate: expected 0 < x < a = {} m", imp.x,
+                            plate->a));
+    if (!(imp.y > 0.0 && imp.y < plate->b))
+      t.fail_at(y ? "y" : "radius",
+                fmt::format("impact point y = {} m lies outside the plate: expected 0 < y < b = {} m", imp.y,
+                            plate->b));
+  }
+  return imp;
+}
+
+ContactLawParameters read_contact(const TableReader& t) {
+  t.only({"k", "unloading", "q", "beta", "alpha_cr", "load"});
+  ContactLawParameters c;
+  c.k = t.positive_or_auto("k", "N/m^1.5");
+  c.unloading = t.optional_choice<UnloadingLaw>(
+                     "unloading", {{"tan-sun", UnloadingLaw::tan_sun}, {"elastic", UnloadingLaw::elastic}})
+                    .value_or(UnloadingLaw::tan_sun);
+  c.q = t.optional_positive("q", "-").value_or(2.5);
+  c.beta = t.optional_number("beta", "-").value_or(0.094);
+  if (!(c.beta >= 0.0 && c.beta < 1.0))
+    t.fail_at("beta", fmt::format("contact.beta must lie in [0, 1), got {}", c.beta));
+  c.alpha_cr = t.optional_number("alpha_cr", "m").value_or(1.7e-4);
+  if (!(c.alpha_cr >= 0.0)) t.fail_at("alpha_cr", "contact.alpha_cr must be zero or positive (m)");
+  c.load = t.optional_choice<ContactLoad>(
+                "load", {{"point", ContactLoad::point}, {"hertz-pressure", ContactLoad::hertz_pressure}})
+               .value_or(ContactLoad::hertz_pressure);
+  return c;
+}
+
+TimeStepping read_time(const TableReader& t) {
+  t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps"});
+  TimeStepping ts;
+  ts.dt = t.positive_or_auto("dt", "s");
+  ts.end = t.positive_or_auto("end", "s");
+  ts.newmark_beta = t.optional_positive("newmark_beta", "-").value_or(0.25);
+  ts.newmark_gamma = t.optional_number("newmark_gamma", "-").value_or(0.5);
+  if (!(ts.newmark_gamma >= 0.5))
+    t.fail_at("newmark_gamma", fmt::format("time.newmark_gamma must be at least 0.5 (no numerical energy "
+                                           "growth), got {}",
+                                           ts.newmark_gamma));
+  if (!(ts.newmark_beta <= 0.5)) t.fail_at("newmark_beta", "time.newmark_beta must lie in (0, 0.5]");
+  if (const auto m = t.optional_integer("max_steps")) {
+    if (*m < 1 || *m > max_step_cap)
+      t.fail_at("max_steps",
+                fmt::format("time.max_steps must lie between 1 and {}, got {}", max_step_cap, *m));
+    ts.max_steps = *m;
+  }
+  if (ts.dt && ts.end && *ts.end / *ts.dt > static_cast<double>(max_step_cap))
+    t.fail_at("end", fmt::format("time.end / time.dt = {:.3g} steps: more than the limit of {} steps",
+                                 *ts.end / *ts.dt, max_step_cap));
+  return ts;
+}
+
+/// Top-level `nonlinear` (bool), `strain_measure` and `load_steps` (SPEC §8, docs/deck.md).
+void read_nonlinear_keys(const TableReader& top, Deck& d) {
+  if (const toml::node* n = top.table().get("nonlinear")) {
+    const auto* b = n->as_boolean();
+    if (b == nullptr)
+      top.fail_at("nonlinear", fmt::format("nonlinear must be true or false, got {}", type_name(*n)));
+    d.nonlinear = b->get();
+  }
+  if (const auto m = top.optional_string("strain_measure")) {
+    if (*m == "von-karman")
+      d.nonlinear_settings.measure = StrainMeasure::von_karman;
+    else if (*m == "green-lagrange")
+      d.nonlinear_settings.measure = StrainMeasure::green_lagrange;
+    else
+      top.fail_at("strain_measure",
+                  fmt::format("strain_measure must be \"von-karman\" or \"green-lagrange\", got \"{}\"", *m));
+  }
+  if (const auto steps = top.optional_integer("load_steps")) {
+    if (*steps < 1 || *steps > 100000)
+      top.fail_at("load_steps", fmt::format("load_steps must be between 1 and 100000, got {}", *steps));
+    d.nonlinear_settings.load_steps = static_cast<int>(*steps);
+  }
+}
+
+} // namespace plyimpact::deck_tables

@@ -1,0 +1,118 @@
+#include "plyimpact/io/deck_tables.hpp"
+
+#include <fmt/format.h>
+
+namespace plyimpact::deck_tables {
+
+PlateGeometry read_plate(const TableReader& t) {
+  t.only({"a", "b", "rigid"});
+  PlateGeometry plate{t.positive("a", "m"), t.positive("b", "m")};
+  if (const toml::node* r = t.node("rigid")) {
+    if (r->as_boolean() == nullptr) t.fail_at("rigid", "plate.rigid must be true or false");
+    plate.rigid = r->as_boolean()->get();
+  }
+  return plate;
+}
+
+namespace {
+
+/// mesh.impact_offset = [ox, oy]: where the impact point lies in its element, fractions in [0, 1).
+std::array<double, 2> read_impact_offset(const TableReader& t) {
+  const toml::array* arr = t.node("impact_offset")->as_array();
+  std::array<double, 2> offset{};
+  if (arr == nullptr || arr->size() != 2)
+    t.fail_at("impact_offset",
+              "mesh.impact_offset must be two numbers [ox, oy] (fractions of the element "
+              "under the impact point: [0.5, 0.5] = its centre node, [0, 0] = a corner node)");
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto v = (*arr)[i].value<double>();
+    if (!v || !(*v >= 0.0 && *v < 1.0))
+      t.fail_at("impact_offset", "mesh.impact_offset: each fraction must be a number from 0 (inclusive) to 1 "
+                                 "(exclusive)");
+    offset[i] = *v;
+  }
+  return offset;
+}
+
+} // namespace
+
+MeshSpec read_mesh(const TableReader& t) {
+  t.only({"nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size", "impact_offset"});
+  MeshSpec m;
+  bool counts = false;
+  for (const auto* key : {"nx", "ny"}) {
+    const auto v = t.optional_integer(key);
+    if (!v) continue;
+    if (*v < 1 || *v > max_elements_per_side)
+      t.fail_at(key, fmt::format("mesh.{} must be an element count from 1 to {}, got {}", key,
+                                 max_elements_per_side, *v));
+    (std::string_view(key) == "nx" ? m.nx : m.ny) = static_cast<int>(*v);
+    counts = true;
+  }
+  if (static_cast<long>(m.nx) * m.ny > max_elements)
+    t.fail_here(
+        fmt::format("mesh of {} x {} elements exceeds the limit of {} elements", m.nx, m.ny, max_elements));
+  m.mass = t.optional_choice<MassMatrix>(
+                "mass", {{"lumped", MassMatrix::lumped}, {"consistent", MassMatrix::consistent}})
+               .value_or(MassMatrix::lumped);
+  m.element = t.optional_choice<ElementFormulation>("element", {{"auto", ElementFormulation::automatic},
+                                                                {"q9", ElementFormulation::q9},
+                                                                {"mitc9", ElementFormulation::mitc9}})
+                  .value_or(ElementFormulation::automatic);
+  // Graded toward the impact point unless the element counts are given (docs/deck.md).
+  const bool graded = t.optional_choice<bool>("grading", {{"auto", true}, {"none", false}}).value_or(!counts);
+  if (graded && counts)
+    t.fail_at("grading", "mesh.grading = \"auto\" grades the mesh toward the impact point: leave out mesh.nx "
+                         "and mesh.ny, or set grading = \"none\" for a uniform nx x ny mesh");
+  const bool grading_keys =
+      t.has("size_at_impact") || t.has("growth") || t.has("max_size") || t.has("impact_offset");
+  if (!graded && grading_keys)
+    t.fail_here("mesh.size_at_impact, growth, max_size and impact_offset shape a graded mesh: leave out "
+                "mesh.nx and mesh.ny "
+                "(or grading = \"none\")");
+  if (graded) {
+    MeshGrading g;
+    g.size_at_impact = t.positive_or_auto("size_at_impact", "m");
+    g.max_size = t.positive_or_auto("max_size", "m");
+    if (const auto r = t.optional_number("growth", "-")) {
+      if (!(*r >= 1.0 && *r <= 3.0))
+        t.fail_at("growth", fmt::format("mesh.growth must lie between 1 and 3 (size ratio of neighbouring "
+                                        "elements), got {}",
+                                        *r));
+      g.growth = *r;
+    }
+    if (t.has("impact_offset")) g.impact_offset = read_impact_offset(t);
+    if (g.size_at_impact && g.max_size && *g.max_size < *g.size_at_impact)
+      t.fail_at("max_size", "mesh.max_size must not be smaller than mesh.size_at_impact");
+    m.grading = g;
+  }
+  return m;
+}
+
+BoundaryConditions read_boundary(const TableReader& t) {
+  t.only({"x0", "xa", "y0", "yb", "corners"});
+  BoundaryConditions bc;
+  for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb}) {
+    const std::string_view key = to_string(e);
+    const std::string text = t.optional_string(key).value_or("ss");
+    const auto r = parse_restraint(text, e);
+    if (!r)
+      t.fail_at(key,
+                fmt::format("boundary.{} must be ss | ss-soft | clamped | free or a 5-character code of 0/1 "
+                            "for (u, v, w, θx, θy) such as \"01101\", got \"{}\"",
+                            key, text));
+    bc.set(key, text);
+  }
+  if (const auto c = t.optional_string("corners")) {
+    const auto r = parse_restraint(*c, Edge::x0);
+    if (!r || c->size() != 5)
+      t.fail_at("corners",
+                fmt::format("boundary.corners must be a 5-character code of 0/1 for (u, v, w, θx, θy), "
+                            "got \"{}\"",
+                            *c));
+    bc.corners = r;
+  }
+  return bc;
+}
+
+} // namespace plyimpact::deck_tables

@@ -1,0 +1,51 @@
+#pragma once
+// The deck parser's table readers (private to io/): one per table or group of tables of the deck
+// (docs/deck.md), each validating its keys with TableReader.
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/table_reader.hpp"
+
+#include <string>
+#include <vector>
+
+namespace plyimpact::deck_tables {
+
+inline constexpr int max_elements_per_side = 2000;
+inline constexpr long max_elements = 1'000'000;
+inline constexpr long max_step_cap = 100'000'000;
+
+// deck_materials.cpp
+[[nodiscard]] Material read_material(const TableReader& t, const std::string& name);
+/// Index of material `name` in `materials`; otherwise an error at `key` with the closest name.
+[[nodiscard]] std::size_t material_index(const std::vector<Material>& materials, const TableReader& t,
+                                         std::string_view key, const std::string& name);
+
+// deck_laminates.cpp
+/// [laminate] or [laminates.NAME] (`t.path()` names it in messages).
+[[nodiscard]] NamedLaminate read_laminate(const std::vector<Material>& materials, const TableReader& t,
+                                          std::string name);
+/// [[region]] tables: each names a laminate of [laminates.NAME] and its x, y bounds.
+[[nodiscard]] std::vector<Region> read_regions(const Deck& d, const TableReader& top);
+
+// deck_plate.cpp
+[[nodiscard]] PlateGeometry read_plate(const TableReader& t);
+[[nodiscard]] MeshSpec read_mesh(const TableReader& t);
+[[nodiscard]] BoundaryConditions read_boundary(const TableReader& t);
+
+// deck_impact.cpp
+[[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate);
+[[nodiscard]] ContactLawParameters read_contact(const TableReader& t);
+[[nodiscard]] TimeStepping read_time(const TableReader& t);
+/// Top-level `nonlinear`, `strain_measure`, `load_steps`.
+void read_nonlinear_keys(const TableReader& top, Deck& d);
+
+// deck_analyses.cpp
+[[nodiscard]] StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate);
+[[nodiscard]] ModalSettings read_modal(const TableReader& t);
+[[nodiscard]] BucklingSettings read_buckling(const TableReader& t);
+[[nodiscard]] DamageSettings read_damage(const TableReader& t, const Deck& d);
+[[nodiscard]] ThresholdSettings read_threshold(const TableReader& t);
+
+// deck_output.cpp
+void read_output(const TableReader& t, Deck& d);
+
+} // namespace plyimpact::deck_tables

@@ -1,0 +1,126 @@
+#include "plyimpact/io/impact_run.hpp"
+
+#include "plyimpact/analysis/stress_probe.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/damage_maps.hpp"
+#include "plyimpact/io/damage_report.hpp"
+#include "plyimpact/io/impact_report.hpp"
+#include "plyimpact/io/impact_text_report.hpp"
+#include "plyimpact/io/results.hpp"
+#include "plyimpact/io/vtk_output.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace plyimpact {
+
+namespace {
+
+/// ParaView frames every `every` steps and at the requested times (docs/deck.md, [output] vtk*).
+class VtkFrames final : public ImpactObserver {
+public:
+  VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const PlateModel& model,
+            VtkOptions options, const DamageTracker* damage)
+      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage) {
+    std::sort(at_.begin(), at_.end());
+  }
+  void on_step(const StepView& v) override {
+    bool due = every_ > 0 && v.step % every_ == 0;
+    while (next_ < at_.size() && v.t >= at_[next_] - 1e-9 * v.dt) {
+      due = true;
+      ++next_;
+    }
+    if (due)
+      series_.write(v.step, v.t, v.plate_displacement(), damage_ != nullptr ? damage_->onsets() : none_);
+  }
+  [[nodiscard]] std::size_t frames() const { return series_.frames(); }
+
+private:
+  int every_;
+  std::vector<double> at_;
+  std::size_t next_ = 0;
+  VtkSeries series_;
+  const DamageTracker* damage_;
+  std::vector<DamageOnset> none_;
+};
+
+/// The plate state at [output] report_displacements_at, for report.txt.
+class ReportSnapshot final : public ImpactObserver {
+public:
+  explicit ReportSnapshot(double t) : t_(t) {}
+  void on_step(const StepView& v) override {
+    if (!snapshot && v.t >= t_ - 1e-9 * v.dt) snapshot = NodalSnapshot{v.t, v.plate_displacement()};
+  }
+  std::optional<NodalSnapshot> snapshot;
+
+private:
+  double t_;
+};
+
+} // namespace
+
+ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const ImpactRunOptions& options) {
+  ImpactRunOutcome out;
+  out.settings = resolved_settings(impact_case_description(deck, impact.nonlinear()));
+  out.settings.mesh = impact.settings().mesh; // the mesh the shared case runs on
+  if (out.settings.dt != impact.settings().dt)
+    throw std::invalid_argument(
+        "impact: a case may reuse another's factorization only with the same time step");
+  const PlateModel& model = impact.model();
+  const bool plate = !impact.settings().rigid_target;
+  const std::vector<Criterion> criteria = parse_criteria(deck.damage.criteria);
+
+  RunRequest run;
+  run.impactor = out.settings.impactor;
+  run.contact_stiffness = out.settings.k;
+  run.cancel = options.cancel;
+  run.history_every = options.history ? deck.history_every : 0;
+  run.field_times = deck.field_times;
+  run.observers = options.observers;
+  std::optional<DamageTracker> damage;
+  if (!criteria.empty() && plate)
+    run.observers.push_back(&damage.emplace(model, criteria, damage_options_from_deck(deck)));
+  std::optional<StressProbes> probes;
+  if (!deck.probes.empty() && plate) run.observers.push_back(&probes.emplace(model, deck.probes));
+  // The folder exists before the run: ParaView frames are written while it runs.
+  std::optional<ResultsFolder> folder;
+  if (options.output_dir) folder.emplace(*options.output_dir, deck);
+  std::optional<VtkFrames> vtk;
+  if (folder && deck.vtk.enabled && plate)
+    run.observers.push_back(
+        &vtk.emplace(deck.vtk, folder->path(), model,
+                     VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
+                                damage_options_from_deck(deck).criterion_options},
+                     damage ? &*damage : nullptr));
+  std::optional<ReportSnapshot> snapshot;
+  if (deck.report_displacements_at && plate)
+    run.observers.push_back(&snapshot.emplace(*deck.report_displacements_at));
+
+  out.result = impact.run(run);
+  out.damage_tracked = damage.has_value();
+  if (damage) out.first_failures = damage->first_onsets();
+  if (!folder) return out;
+
+  if (damage) {
+    folder->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
+    folder->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
+    if (options.pictures) {
+      const DamageMapFiles maps = write_damage_maps(folder->path(), model.mesh(), damage->onsets());
+      if (!maps.warning.empty()) out.notes.push_back(maps.warning);
+    }
+  }
+  if (probes) folder->write_text("probes.csv", probes_csv(*probes));
+  folder->write_text("report.txt",
+                     impact_report_text(deck, model, out.settings, out.result, out.first_failures,
+                                        snapshot ? snapshot->snapshot : std::nullopt));
+  write_impact_results(*folder, deck, &model, out.settings, out.result, [&](nlohmann::json& j) {
+    if (vtk) j["vtk_frames"] = vtk->frames();
+    if (!damage) return;
+    j["first_failures"] = nlohmann::json::array();
+    for (const auto& f : out.first_failures)
+      j["first_failures"].push_back(onset_json(f));
+  });
+  return out;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,41 @@
+#pragma once
+// An impact deck run end to end: the deck's observers (damage tracking, stress probes, ParaView frames,
+// the displacement snapshot of report.txt) attached to an ImpactCase, the run, and the results folder.
+// The impact command, sweep cases and the Python module all run impacts through here.
+#include "plyimpact/analysis/damage_tracker.hpp"
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/io/deck.hpp"
+
+#include <atomic>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+struct ImpactRunOptions {
+  /// Results folder: deck.toml, provenance.json, history.csv, fields, damage tables and maps,
+  /// probes.csv, ParaView frames, report.txt and, last, summary.json. None: nothing is written.
+  std::optional<std::filesystem::path> output_dir;
+  bool history = true;                       ///< keep the time history (history.csv)
+  bool pictures = true;                      ///< damage maps (gnuplot) in the results folder
+  std::vector<ImpactObserver*> observers;    ///< more observers (progress display)
+  const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
+};
+
+struct ImpactRunOutcome {
+  ImpactSettings settings; ///< of the deck's own case: its impactor, k, Δt
+  ImpactResult result;
+  bool damage_tracked = false;
+  std::vector<DamageOnset> first_failures; ///< per criterion, mode and ply or interface, in order of onset
+  std::vector<std::string> notes;          ///< things the run could not do (e.g. no gnuplot for maps)
+};
+
+/// Runs the impact of `deck` on `impact`, which was built from this deck or from one with the same
+/// plate and time step (its factorization is reused; the deck's impactor and contact stiffness are
+/// used). Throws std::invalid_argument when the time steps differ.
+[[nodiscard]] ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact,
+                                          const ImpactRunOptions& options);
+
+} // namespace plyimpact

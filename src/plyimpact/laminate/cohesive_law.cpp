@@ -1,0 +1,210 @@
+// Bilinear mixed-mode cohesive law (see cohesive_law.hpp and docs/delamination.md).
+//
+// On a proportional path the equivalent traction–separation curve is a triangle: linear up to the
+// onset separation Δ⁰ with slope K, linear softening to zero at Δᶠ. With d the damage,
+//   τ = (1 − d) K δ  (opening and sliding),      d = Δᶠ (λ − Δ⁰) / (λ (Δᶠ − Δ⁰))  on the envelope,
+// so that (1 − d) K λ falls linearly from K Δ⁰ at λ = Δ⁰ to 0 at λ = Δᶠ. The area of the triangle is
+// ½ K Δ⁰ Δᶠ, set equal to the B-K toughness G_c(B): Δᶠ = 2 G_c / (K Δ⁰).
+#include "plyimpact/laminate/cohesive_law.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string_view>
+
+namespace plyimpact {
+
+namespace {
+
+/// Macaulay bracket ⟨x⟩ = max(x, 0).
+double macaulay(double x) {
+  return x > 0.0 ? x : 0.0;
+}
+
+void require_positive(std::string_view name, double value, std::string_view unit) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw std::invalid_argument(
+        fmt::format("cohesive law: {} must be positive and finite (in {}), got {}", name, unit, value));
+  }
+}
+
+/// Number of mode mixities at which the constructor checks Δ⁰(B) < Δᶠ(B) (B = 0, 1/n, ..., 1).
+constexpr int kMixityChecks = 1000;
+
+} // namespace
+
+double turon_penalty_stiffness(double E3, double sublaminate_thickness, double alpha) {
+  require_positive("E3", E3, "Pa");
+  require_positive("the sub-laminate thickness", sublaminate_thickness, "m");
+  require_positive("alpha", alpha, "-");
+  return alpha * E3 / sublaminate_thickness;
+}
+
+double cohesive_zone_length(double E_transverse, double G_c, double strength, double M) {
+  require_positive("E_transverse", E_transverse, "Pa");
+  require_positive("G_c", G_c, "J/m²");
+  require_positive("the strength", strength, "Pa");
+  require_positive("M", M, "-");
+  return M * E_transverse * G_c / (strength * strength);
+}
+
+CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) {
+  require_positive("penalty_stiffness K", p_.penalty_stiffness, "Pa/m");
+  require_positive("normal_strength N", p_.normal_strength, "Pa");
+  require_positive("shear_strength S", p_.shear_strength, "Pa");
+  require_positive("G_Ic", p_.G_Ic, "J/m²");
+  require_positive("G_IIc", p_.G_IIc, "J/m²");
+  require_positive("the B-K exponent eta", p_.bk_exponent, "-");
+  const double K = p_.penalty_stiffness;
+  normal_onset_ = p_.normal_strength / K;
+  shear_onset_ = p_.shear_strength / K;
+
+  // The triangle must have its peak before its end: K Δ⁰² < 2 G_c, i.e. for pure modes
+  // K > N²/(2 G_Ic) and K > S²/(2 G_IIc). For the B-K onset both sides are linear in B^η, so the pure
+  // modes decide; for the quadratic onset the sampled mixities are a practical check.
+  const auto check_mode = [&](double K_min, std::string_view mode) {
+    if (!(K > K_min)) {
+      throw std::invalid_argument(fmt::format(
+          "cohesive law: penalty_stiffness K = {:g} Pa/m is too small for {}: the onset separation must "
+          "come before the final one, which needs K > {:g} Pa/m",
+          K, mode, K_min));
+    }
+  };
+  check_mode(p_.normal_strength * p_.normal_strength / (2.0 * p_.G_Ic), "mode I (K > N²/(2 G_Ic))");
+  check_mode(p_.shear_strength * p_.shear_strength / (2.0 * p_.G_IIc), "mode II (K > S²/(2 G_IIc))");
+  for (int i = 0; i <= kMixityChecks; ++i) {
+    const double B = static_cast<double>(i) / kMixityChecks;
+    if (!(onset_separation(B) < final_separation(B))) {
+      throw std::invalid_argument(fmt::format(
+          "cohesive law: at mode mixity B = {:g} the onset separation {:g} m is not below the final "
+          "separation {:g} m; raise the penalty stiffness K = {:g} Pa/m",
+          B, onset_separation(B), final_separation(B), K));
+    }
+  }
+}
+
+double CohesiveLaw::equivalent_separation(const Eigen::Vector3d& separation) {
+  return std::hypot(separation(0), separation(1), macaulay(separation(2)));
+}
+
+double CohesiveLaw::mode_mixity(const Eigen::Vector3d& separation) {
+  const double shear2 = separation(0) * separation(0) + separation(1) * separation(1);
+  const double normal = macaulay(separation(2));
+  const double total = shear2 + normal * normal;
+  return total > 0.0 ? shear2 / total : 0.0;
+}
+
+// Benzeggagh & Kenane 1996 (Compos. Sci. Technol. 56:439).
+double CohesiveLaw::critical_energy_release_rate(double B) const {
+  return p_.G_Ic + (p_.G_IIc - p_.G_Ic) * std::pow(B, p_.bk_exponent);
+}
+
+double CohesiveLaw::onset_separation(double B) const {
+  const double a = normal_onset_;
+  const double b = shear_onset_;
+  switch (p_.onset) {
+  case CohesiveOnset::camanho_quadratic:
+    return 1.0 / std::sqrt((1.0 - B) / (a * a) + B / (b * b));
+  case CohesiveOnset::turon_bk:
+    break;
+  }
+  return std::sqrt(a * a + (b * b - a * a) * std::pow(B, p_.bk_exponent));
+}
+
+double CohesiveLaw::onset_separation_slope(double B) const {
+  const double a = normal_onset_;
+  const double b = shear_onset_;
+  const double onset = onset_separation(B);
+  switch (p_.onset) {
+  case CohesiveOnset::camanho_quadratic:
+    // d(Δ⁰⁻²)/dB = 1/b² − 1/a²  ⇒  dΔ⁰/dB = ½ Δ⁰³ (1/a² − 1/b²).
+    return 0.5 * onset * onset * onset * (1.0 / (a * a) - 1.0 / (b * b));
+  case CohesiveOnset::turon_bk:
+    break;
+  }
+  // Precondition B > 0 (the caller skips B = 0, where ∂B/∂δ = 0).
+  const double eta = p_.bk_exponent;
+  return (b * b - a * a) * eta * std::pow(B, eta - 1.0) / (2.0 * onset);
+}
+
+double CohesiveLaw::final_separation(double B) const {
+  return 2.0 * critical_energy_release_rate(B) / (p_.penalty_stiffness * onset_separation(B));
+}
+
+double CohesiveLaw::envelope_damage(double lambda, double B) const {
+  const double onset = onset_separation(B);
+  const double failure = final_separation(B);
+  if (lambda <= onset) return 0.0;
+  if (lambda >= failure) return 1.0;
+  return failure * (lambda - onset) / (lambda * (failure - onset));
+}
+
+double CohesiveLaw::envelope_separation(double d, double B) const {
+  const double onset = onset_separation(B);
+  const double failure = final_separation(B);
+  return onset * failure / (failure - d * (failure - onset));
+}
+
+CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen::Vector3d& separation) const {
+  const double K = p_.penalty_stiffness;
+  const double normal = separation(2);
+  // The part of the separation that damage degrades: sliding and opening, not closing.
+  const Eigen::Vector3d degradable(separation(0), separation(1), macaulay(normal));
+  const double lambda = equivalent_separation(separation);
+  const double B = mode_mixity(separation);
+
+  const double trial = envelope_damage(lambda, B);
+  const bool damage_grows = trial > previous.damage;
+  const double d = damage_grows ? trial : previous.damage;
+
+  CohesiveResponse r;
+  r.state.damage = d;
+  r.traction = (1.0 - d) * K * degradable;
+  r.tangent.diagonal() << (1.0 - d) * K, (1.0 - d) * K, (1.0 - d) * K;
+  if (normal <= 0.0) {
+    r.traction(2) = K * normal; // contact penalty: closing is never softened
+    r.tangent(2, 2) = K;
+  }
+  if (!damage_grows) return r; // elastic on the secant (1 − d) K: loading below the envelope, unloading
+
+  const double onset = onset_separation(B);
+  const double failure = final_separation(B);
+  const double G_c = critical_energy_release_rate(B);
+  // ∫ ½ K λ² dd along the envelope from d_previous to d: linear in the envelope separation.
+  r.dissipated_energy =
+      G_c * (envelope_separation(d, B) - envelope_separation(previous.damage, B)) / (failure - onset);
+  if (d >= 1.0) return r; // past Δᶠ: d is stuck at 1 and does not vary with δ
+
+  // Softening: τ = (1 − d(λ, B)) K δ̂ ⇒ ∂τ/∂δ = (1 − d) K I − K δ̂ ⊗ ∂d/∂δ.
+  const double spread = failure - onset;
+  const Eigen::Vector3d dlambda = degradable / lambda;
+  Eigen::Vector3d dd = onset * failure / (lambda * lambda * spread) * dlambda;
+  if (B > 0.0) {
+    // B = sh²/(sh² + n²): ∂B/∂δ_s = 2 δ_s n²/(sh² + n²)², ∂B/∂δ_n = −2 n sh²/(sh² + n²)² (n = ⟨δ_n⟩).
+    const double shear2 = separation(0) * separation(0) + separation(1) * separation(1);
+    const double n = degradable(2);
+    const double total2 = (shear2 + n * n) * (shear2 + n * n);
+    const Eigen::Vector3d dB(2.0 * separation(0) * n * n / total2, 2.0 * separation(1) * n * n / total2,
+                             -2.0 * n * shear2 / total2);
+    const double eta = p_.bk_exponent;
+    const double dGc_dB = (p_.G_IIc - p_.G_Ic) * eta * std::pow(B, eta - 1.0);
+    const double donset_dB = onset_separation_slope(B);
+    const double dfailure_dB = 2.0 / K * (dGc_dB / onset - G_c * donset_dB / (onset * onset));
+    // d = Δᶠ (λ − Δ⁰) / (λ (Δᶠ − Δ⁰)): partial derivatives in Δ⁰ and Δᶠ.
+    const double dd_donset = failure * (lambda - failure) / (lambda * spread * spread);
+    const double dd_dfailure = -onset * (lambda - onset) / (lambda * spread * spread);
+    dd += (dd_donset * donset_dB + dd_dfailure * dfailure_dB) * dB;
+  }
+  r.tangent -= K * degradable * dd.transpose();
+  return r;
+}
+
+double CohesiveLaw::stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const {
+  const double K = p_.penalty_stiffness;
+  const double lambda = equivalent_separation(separation);
+  const double closing = macaulay(-separation(2));
+  return 0.5 * (1.0 - state.damage) * K * lambda * lambda + 0.5 * K * closing * closing;
+}
+
+} // namespace plyimpact

@@ -1,0 +1,531 @@
+// Progressive ply damage: Hashin (1980) initiation, Matzenmiller–Lubliner–Taylor (1995) stiffness,
+// Lapczyk & Hurtado (2007) linear softening with crack-band regularisation. The equation numbers
+// (PD1)–(PD12) refer to docs/progressive_damage.md.
+#include "plyimpact/laminate/ply_damage.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace plyimpact {
+
+std::string_view to_string(DamageMode mode) {
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return "fibre-tension";
+  case DamageMode::fibre_compression:
+    return "fibre-compression";
+  case DamageMode::matrix_tension:
+    return "matrix-tension";
+  case DamageMode::matrix_compression:
+    return "matrix-compression";
+  }
+  return "unknown";
+}
+
+BandLimitError::BandLimitError(std::string_view material, DamageMode mode, double characteristic_length,
+                               double max_characteristic_length)
+    : std::runtime_error(fmt::format(
+          "progressive damage of material '{}': the characteristic length L_c = {:.4g} mm exceeds the "
+          "band limit of mode {}, 2G/(sigma0_eq * eps0_eq) = {:.4g} mm (linear softening would snap back "
+          "and dissipate more than G); refine the mesh to a maximum element size (characteristic length) "
+          "of {:.4g} mm, or check the mode's fracture toughness",
+          material, characteristic_length * 1e3, to_string(mode), max_characteristic_length * 1e3,
+          max_characteristic_length * 1e3)),
+      mode_(mode), characteristic_length_(characteristic_length),
+      max_characteristic_length_(max_characteristic_length) {}
+
+namespace {
+
+/// The Macaulay bracket ⟨x⟩ = max(x, 0).
+double macaulay(double x) {
+  return x > 0.0 ? x : 0.0;
+}
+
+/// Which fibre and which matrix mode is loaded: the other two keep their damage but do not act on
+/// the stiffness and do not grow (Matzenmiller et al. 1995; Lapczyk & Hurtado 2007).
+struct ActiveModes {
+  DamageMode fibre = DamageMode::fibre_tension;
+  DamageMode matrix = DamageMode::matrix_tension;
+
+  [[nodiscard]] bool contains(DamageMode mode) const { return mode == fibre || mode == matrix; }
+};
+
+/// The variables that enter the stiffness: d_f, d_m of the active modes, the shear damage
+/// d_s = 1 − (1 − d_ft)(1 − d_fc)(1 − d_mt)(1 − d_mc) (PD4) and the transverse shear damage
+/// d_t = 1 − (1 − d_mt)(1 − d_mc) (PD5). The two shear variables do not depend on the active modes,
+/// so that no shear modulus jumps when a normal stress changes sign.
+struct StiffnessDamage {
+  double fibre = 0.0;
+  double matrix = 0.0;
+  double shear = 0.0;
+  double transverse_shear = 0.0;
+};
+
+StiffnessDamage stiffness_damage(const PerDamageMode& d, ActiveModes active) {
+  const double matrix_intact =
+      (1.0 - d[DamageMode::matrix_tension]) * (1.0 - d[DamageMode::matrix_compression]);
+  const double intact =
+      (1.0 - d[DamageMode::fibre_tension]) * (1.0 - d[DamageMode::fibre_compression]) * matrix_intact;
+  return {d[active.fibre], d[active.matrix], 1.0 - intact, 1.0 - matrix_intact};
+}
+
+bool is_matrix(DamageMode mode) {
+  return mode == DamageMode::matrix_tension || mode == DamageMode::matrix_compression;
+}
+
+/// ∂d_t/∂d_I = 1 − d of the other matrix mode for a matrix mode, 0 for a fibre mode.
+double transverse_shear_damage_sensitivity(const PerDamageMode& d, DamageMode mode) {
+  if (!is_matrix(mode)) return 0.0;
+  const DamageMode other =
+      mode == DamageMode::matrix_tension ? DamageMode::matrix_compression : DamageMode::matrix_tension;
+  return 1.0 - d[other];
+}
+
+/// ∂d_s/∂d_I = Π_{J≠I} (1 − d_J).
+double shear_damage_sensitivity(const PerDamageMode& d, DamageMode mode) {
+  double product = 1.0;
+  for (const DamageMode other : all_damage_modes)
+    if (other != mode) product *= 1.0 - d[other];
+  return product;
+}
+
+/// D = 1 − (1 − d_f)(1 − d_m) ν12 ν21 (PD3).
+double poisson_denominator(const Material& m, StiffnessDamage d) {
+  return 1.0 - (1.0 - d.fibre) * (1.0 - d.matrix) * m.nu12 * m.nu21();
+}
+
+/// Matzenmiller–Lubliner–Taylor degraded reduced stiffness (PD3), the inverse of the compliance
+/// S(d) = [[1/((1−d_f)E1), −ν21/E2, 0], [−ν12/E1, 1/((1−d_m)E2), 0], [0, 0, 1/((1−d_s)G12)]].
+Eigen::Matrix3d degraded_reduced_stiffness(const Material& m, StiffnessDamage d) {
+  const double D = poisson_denominator(m, d);
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  C(0, 0) = (1.0 - d.fibre) * m.E1 / D;
+  C(1, 1) = (1.0 - d.matrix) * m.E2 / D;
+  C(0, 1) = C(1, 0) = (1.0 - d.fibre) * (1.0 - d.matrix) * m.nu21() * m.E1 / D;
+  C(2, 2) = (1.0 - d.shear) * m.G12;
+  return C;
+}
+
+/// Transverse shear stiffness degraded with the matrix damage d_t (PD5), order (23, 13).
+Eigen::Matrix2d degraded_transverse_shear(const Material& m, double transverse_shear_damage) {
+  Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
+  G(0, 0) = (1.0 - transverse_shear_damage) * m.G23;
+  G(1, 1) = (1.0 - transverse_shear_damage) * m.G13;
+  return G;
+}
+
+/// Effective stress σ̂ = M σ = M C(d) ε, M = diag(1/(1−d_f), 1/(1−d_m), 1/(1−d_s)) (PD6), written
+/// out so that it stays finite when a variable reaches 1.
+Eigen::Vector3d effective_stress(const Material& m, StiffnessDamage d, const Eigen::Vector3d& e) {
+  const double D = poisson_denominator(m, d);
+  return {(m.E1 * e(0) + (1.0 - d.matrix) * m.nu21() * m.E1 * e(1)) / D,
+          ((1.0 - d.fibre) * m.nu12 * m.E2 * e(0) + m.E2 * e(1)) / D, m.G12 * e(2)};
+}
+
+/// The active modes by the signs of σ̂11 and σ̂22 (PD7). sign σ̂11 = sign(ε11 + (1 − d_m)ν21 ε22)
+/// depends on which matrix variable is active and sign σ̂22 = sign(ε22 + (1 − d_f)ν12 ε11) on which
+/// fibre variable is: the fibre mode is settled first (the ν21 term is small), and where the two
+/// matrix variables give it opposite signs, tension is taken if it is self-consistent.
+ActiveModes active_modes(const Material& m, const PerDamageMode& d, const Eigen::Vector3d& e) {
+  const auto fibre_sign = [&](DamageMode matrix) { return e(0) + (1.0 - d[matrix]) * m.nu21() * e(1); };
+  const auto matrix_for = [&](DamageMode fibre) {
+    return e(1) + (1.0 - d[fibre]) * m.nu12 * e(0) >= 0.0 ? DamageMode::matrix_tension
+                                                          : DamageMode::matrix_compression;
+  };
+  const bool tension_if_mt = fibre_sign(DamageMode::matrix_tension) >= 0.0;
+  const bool tension_if_mc = fibre_sign(DamageMode::matrix_compression) >= 0.0;
+  bool fibre_tension = tension_if_mt;
+  if (tension_if_mt != tension_if_mc)
+    fibre_tension = fibre_sign(matrix_for(DamageMode::fibre_tension)) >= 0.0;
+  const DamageMode fibre = fibre_tension ? DamageMode::fibre_tension : DamageMode::fibre_compression;
+  return {fibre, matrix_for(fibre)};
+}
+
+/// Equivalent strain ε_eq = δ_eq/L_c of a mode (PD8), engineering γ12 so that ½σ_eq ε_eq is the
+/// mode's strain energy density.
+double equivalent_strain(DamageMode mode, const Eigen::Vector3d& e, double alpha) {
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return std::sqrt(macaulay(e(0)) * macaulay(e(0)) + alpha * e(2) * e(2));
+  case DamageMode::fibre_compression:
+    return macaulay(-e(0));
+  case DamageMode::matrix_tension:
+    return std::sqrt(macaulay(e(1)) * macaulay(e(1)) + e(2) * e(2));
+  case DamageMode::matrix_compression:
+    return std::sqrt(macaulay(-e(1)) * macaulay(-e(1)) + e(2) * e(2));
+  }
+  return 0.0;
+}
+
+/// ∂ε_eq/∂ε (11, 22, 12) of a mode, where ε_eq > 0.
+Eigen::Vector3d equivalent_strain_gradient(DamageMode mode, const Eigen::Vector3d& e, double alpha) {
+  const double eq = equivalent_strain(mode, e, alpha);
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return Eigen::Vector3d(macaulay(e(0)), 0.0, alpha * e(2)) / eq;
+  case DamageMode::fibre_compression:
+    return {e(0) < 0.0 ? -1.0 : 0.0, 0.0, 0.0};
+  case DamageMode::matrix_tension:
+    return Eigen::Vector3d(0.0, macaulay(e(1)), e(2)) / eq;
+  case DamageMode::matrix_compression:
+    return Eigen::Vector3d(0.0, -macaulay(-e(1)), e(2)) / eq;
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+/// Equivalent stress σ_eq of a mode (PD8), the work conjugate of ε_eq, from the stress `s` given
+/// (the effective stress at initiation, see docs/progressive_damage.md).
+double equivalent_stress(DamageMode mode, const Eigen::Vector3d& e, const Eigen::Vector3d& s, double alpha) {
+  const double eq = equivalent_strain(mode, e, alpha);
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return (macaulay(s(0)) * macaulay(e(0)) + alpha * s(2) * e(2)) / eq;
+  case DamageMode::fibre_compression:
+    return macaulay(-s(0)) * macaulay(-e(0)) / eq;
+  case DamageMode::matrix_tension:
+    return (macaulay(s(1)) * macaulay(e(1)) + s(2) * e(2)) / eq;
+  case DamageMode::matrix_compression:
+    return (macaulay(-s(1)) * macaulay(-e(1)) + s(2) * e(2)) / eq;
+  }
+  return 0.0;
+}
+
+/// Quadratic and linear parts of a Hashin index, F(λσ̂) = a λ² + b λ.
+struct IndexParts {
+  double quadratic = 0.0;
+  double linear = 0.0;
+};
+
+IndexParts hashin_parts(DamageMode mode, const Eigen::Vector3d& s, const Strengths& st, double alpha) {
+  const auto sq = [](double x) { return x * x; };
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return {sq(s(0) / *st.Xt) + alpha * sq(s(2) / *st.S12), 0.0};
+  case DamageMode::fibre_compression:
+    return {sq(s(0) / *st.Xc), 0.0};
+  case DamageMode::matrix_tension:
+    return {sq(s(1) / *st.Yt) + sq(s(2) / *st.S12), 0.0};
+  case DamageMode::matrix_compression:
+    return {sq(s(1) / (2.0 * *st.S23)) + sq(s(2) / *st.S12),
+            (sq(*st.Yc / (2.0 * *st.S23)) - 1.0) * s(1) / *st.Yc};
+  }
+  return {};
+}
+
+/// R > 0 with F(R σ̂) = 1: the positive root of a R² + b R − 1 = 0, in the form free of cancellation
+/// for either sign of b; +∞ when the ray never reaches the surface.
+double onset_ratio(IndexParts p) {
+  const double a = p.quadratic, b = p.linear;
+  if (a <= 0.0) return b > 0.0 ? 1.0 / b : std::numeric_limits<double>::infinity();
+  const double root = std::sqrt(b * b + 4.0 * a);
+  return b >= 0.0 ? 2.0 / (b + root) : (root - b) / (2.0 * a);
+}
+
+/// The point where a mode initiates: its equivalent strain and stress.
+struct Onset {
+  double strain = 0.0;
+  double stress = 0.0;
+};
+
+/// Initiation (PD1): when the effective stress σ̂ of the strain ε meets or has crossed the mode's
+/// Hashin surface, the onset point is the crossing of the ray of ε with the surface, R·ε with
+/// F(R σ̂) = 1; ε_eq and σ_eq scale with R. None if the surface is not reached or if the mode's
+/// equivalent strain is zero (no displacement for it to soften on).
+std::optional<Onset> initiation(DamageMode mode, const Eigen::Vector3d& e, const Eigen::Vector3d& s_hat,
+                                const Strengths& strengths, double alpha) {
+  const double eq = equivalent_strain(mode, e, alpha);
+  const IndexParts parts = hashin_parts(mode, s_hat, strengths, alpha);
+  if (!(eq > 0.0) || parts.quadratic + parts.linear < 1.0) return std::nullopt;
+  const double ratio = onset_ratio(parts);
+  return Onset{ratio * eq, ratio * equivalent_stress(mode, e, s_hat, alpha)};
+}
+
+/// Linear softening on the equivalent strain (PD9): d = ε_f(κ − ε_0)/(κ(ε_f − ε_0)), 0 below ε_0, 1
+/// beyond ε_f.
+double softening_damage(double kappa, double onset, double final_strain) {
+  if (kappa <= onset) return 0.0;
+  if (kappa >= final_strain) return 1.0;
+  return final_strain * (kappa - onset) / (kappa * (final_strain - onset));
+}
+
+/// dd/dκ on the softening branch.
+double softening_slope(double kappa, double onset, double final_strain) {
+  return final_strain * onset / (kappa * kappa * (final_strain - onset));
+}
+
+/// ε_f = 2G/(σ⁰_eq L_c) (PD10).
+double final_equivalent_strain(double toughness, double onset_stress, double characteristic_length) {
+  return 2.0 * toughness / (onset_stress * characteristic_length);
+}
+
+/// Thermodynamic force Y_I = −∂ψ/∂d_I of each mode (PD11), ψ = ½εᵀC(d)ε + ½γᵀG(d)γ:
+/// −∂ψ/∂d_f = σ̂11²/(2E1), −∂ψ/∂d_m = σ̂22²/(2E2), −∂ψ/∂d_s = ½G12γ12², −∂ψ/∂d_t = ½(G23γ23² + G13γ13²),
+/// chained through d_f, d_m (active modes only), d_s and d_t.
+PerDamageMode thermodynamic_forces(const Material& m, const PerDamageMode& d, ActiveModes active,
+                                   const PlyStrain& strain) {
+  const Eigen::Vector3d& e = strain.in_plane;
+  const Eigen::Vector2d& g = strain.transverse_shear;
+  const Eigen::Vector3d s_hat = effective_stress(m, stiffness_damage(d, active), e);
+  const double y_fibre = 0.5 * s_hat(0) * s_hat(0) / m.E1;
+  const double y_matrix = 0.5 * s_hat(1) * s_hat(1) / m.E2;
+  const double y_shear = 0.5 * m.G12 * e(2) * e(2);
+  const double y_transverse_shear = 0.5 * (m.G23 * g(0) * g(0) + m.G13 * g(1) * g(1));
+  PerDamageMode y;
+  for (const DamageMode mode : all_damage_modes) {
+    y[mode] = y_shear * shear_damage_sensitivity(d, mode) +
+              y_transverse_shear * transverse_shear_damage_sensitivity(d, mode);
+    if (mode == active.fibre) y[mode] += y_fibre;
+    if (mode == active.matrix) y[mode] += y_matrix;
+  }
+  return y;
+}
+
+/// ∂σ/∂d_I (5-vector, order σ11, σ22, τ12, τ23, τ13) at fixed strain, for the tangent.
+Eigen::Matrix<double, 5, 1> stress_sensitivity(const Material& m, const PerDamageMode& d, ActiveModes active,
+                                               const PlyStrain& strain, DamageMode mode) {
+  const StiffnessDamage sd = stiffness_damage(d, active);
+  const double D = poisson_denominator(m, sd);
+  const Eigen::Vector3d s_hat = effective_stress(m, sd, strain.in_plane);
+  Eigen::Matrix<double, 5, 1> ds = Eigen::Matrix<double, 5, 1>::Zero();
+  if (mode == active.fibre) { // −C (∂S/∂d_f) σ
+    ds(0) -= s_hat(0) / D;
+    ds(1) -= (1.0 - sd.matrix) * m.nu21() * s_hat(0) / D;
+  }
+  if (mode == active.matrix) { // −C (∂S/∂d_m) σ
+    ds(0) -= (1.0 - sd.fibre) * m.nu12 * s_hat(1) / D;
+    ds(1) -= s_hat(1) / D;
+  }
+  ds(2) -= m.G12 * strain.in_plane(2) * shear_damage_sensitivity(d, mode);
+  const double transverse = transverse_shear_damage_sensitivity(d, mode);
+  ds(3) -= m.G23 * strain.transverse_shear(0) * transverse;
+  ds(4) -= m.G13 * strain.transverse_shear(1) * transverse;
+  return ds;
+}
+
+PlyStrain midpoint(const PlyStrain& a, const PlyStrain& b) {
+  return {0.5 * (a.in_plane + b.in_plane), 0.5 * (a.transverse_shear + b.transverse_shear)};
+}
+
+PerDamageMode midpoint(const PerDamageMode& a, const PerDamageMode& b) {
+  PerDamageMode mid;
+  for (std::size_t i = 0; i < mid.values.size(); ++i)
+    mid.values[i] = 0.5 * (a.values[i] + b.values[i]);
+  return mid;
+}
+
+std::optional<double> toughness_of(const FractureToughness& g, DamageMode mode) {
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return g.G_ft;
+  case DamageMode::fibre_compression:
+    return g.G_fc;
+  case DamageMode::matrix_tension:
+    return g.G_mt;
+  case DamageMode::matrix_compression:
+    return g.G_mc;
+  }
+  return std::nullopt;
+}
+
+std::string_view toughness_name(DamageMode mode) {
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return "G_ft";
+  case DamageMode::fibre_compression:
+    return "G_fc";
+  case DamageMode::matrix_tension:
+    return "G_mt";
+  case DamageMode::matrix_compression:
+    return "G_mc";
+  }
+  return "G";
+}
+
+/// Names of the data the law needs and `m` lacks (or gives as non-positive).
+std::vector<std::string> missing_data(const Material& m) {
+  std::vector<std::string> missing;
+  const std::pair<const char*, std::optional<double>> strengths[] = {
+      {"Xt", m.strength.Xt}, {"Xc", m.strength.Xc},   {"Yt", m.strength.Yt},
+      {"Yc", m.strength.Yc}, {"S12", m.strength.S12}, {"S23", m.strength.S23}};
+  for (const auto& [name, value] : strengths)
+    if (!value || !(*value > 0.0)) missing.emplace_back(name);
+  for (const DamageMode mode : all_damage_modes) {
+    const std::optional<double> g = toughness_of(m.toughness, mode);
+    if (!g || !(*g > 0.0)) missing.emplace_back(toughness_name(mode));
+  }
+  const std::pair<const char*, double> moduli[] = {
+      {"E1", m.E1}, {"E2", m.E2}, {"G12", m.G12}, {"G13", m.G13}, {"G23", m.G23}};
+  for (const auto& [name, value] : moduli)
+    if (!(value > 0.0)) missing.emplace_back(name);
+  return missing;
+}
+
+} // namespace
+
+double hashin_plane_stress_index(DamageMode mode, const Eigen::Vector3d& effective_stress,
+                                 const Strengths& strengths, double alpha) {
+  const IndexParts p = hashin_parts(mode, effective_stress, strengths, alpha);
+  return p.quadratic + p.linear;
+}
+
+PlyDamageLaw::PlyDamageLaw(Material material, PlyDamageOptions options)
+    : material_(std::move(material)), options_(options) {
+  const std::vector<std::string> missing = missing_data(material_);
+  if (!missing.empty())
+    throw std::invalid_argument(fmt::format("progressive damage of material '{}' needs positive {}",
+                                            material_.name, fmt::join(missing, ", ")));
+  if (!(options_.alpha >= 0.0 && options_.alpha <= 1.0))
+    throw std::invalid_argument(
+        fmt::format("progressive damage: alpha must lie in [0, 1], got {}", options_.alpha));
+  if (!(options_.viscosity >= 0.0))
+    throw std::invalid_argument(
+        fmt::format("progressive damage: the viscosity must be >= 0 s, got {}", options_.viscosity));
+  for (const DamageMode mode : all_damage_modes)
+    toughness_[mode] = *toughness_of(material_.toughness, mode);
+  undamaged_stiffness_ = degraded_reduced_stiffness(material_, {});
+  undamaged_transverse_shear_ = degraded_transverse_shear(material_, 0.0);
+}
+
+PlyDamageResponse PlyDamageLaw::elastic_response(const PlyDamageState& previous,
+                                                 const PlyStrain& strain) const {
+  PlyDamageResponse r;
+  r.state = previous;
+  r.state.strain = strain;
+  r.secant = undamaged_stiffness_;
+  r.transverse_shear_secant = undamaged_transverse_shear_;
+  r.stress = r.secant * strain.in_plane;
+  r.transverse_shear_stress = r.transverse_shear_secant * strain.transverse_shear;
+  r.tangent.setZero();
+  r.tangent.topLeftCorner<3, 3>() = r.secant;
+  r.tangent.bottomRightCorner<2, 2>() = r.transverse_shear_secant;
+  return r;
+}
+
+double PlyDamageLaw::max_characteristic_length(DamageMode mode) const {
+  const Material& m = material_;
+  const Strengths& st = m.strength;
+  const double G = toughness_[mode];
+  const auto band_limit = [G](double modulus, double strength) {
+    return 2.0 * G * modulus / (strength * strength);
+  };
+  const double shear = band_limit(m.G12, *st.S12);
+  switch (mode) {
+  case DamageMode::fibre_tension:
+    return options_.alpha > 0.0 ? std::min(band_limit(m.E1, *st.Xt), shear) : band_limit(m.E1, *st.Xt);
+  case DamageMode::fibre_compression:
+    return band_limit(m.E1, *st.Xc);
+  case DamageMode::matrix_tension:
+    return std::min(band_limit(m.E2, *st.Yt), shear);
+  case DamageMode::matrix_compression:
+    return std::min(band_limit(m.E2, *st.Yc), shear);
+  }
+  return 0.0;
+}
+
+double PlyDamageLaw::max_characteristic_length() const {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const DamageMode mode : all_damage_modes)
+    smallest = std::min(smallest, max_characteristic_length(mode));
+  return smallest;
+}
+
+PlyDamageResponse PlyDamageLaw::update(const PlyDamageState& previous, const PlyStrain& strain,
+                                       double characteristic_length, double dt) const {
+  if (!(characteristic_length > 0.0))
+    throw std::invalid_argument(fmt::format(
+        "progressive damage: the characteristic length must be > 0 m, got {}", characteristic_length));
+  if (!(dt >= 0.0))
+    throw std::invalid_argument(fmt::format("progressive damage: the time step must be >= 0 s, got {}", dt));
+
+  const Material& m = material_;
+  const double alpha = options_.alpha;
+  const Eigen::Vector3d& e = strain.in_plane;
+
+  // Loaded modes and effective stress, with the committed damage.
+  const ActiveModes active = active_modes(m, previous.regularised_damage, e);
+  const Eigen::Vector3d s_hat = effective_stress(m, stiffness_damage(previous.regularised_damage, active), e);
+
+  // Most points of a structure never reach a failure surface: answer them without the damage algebra.
+  const auto below_surface = [&](DamageMode mode) {
+    return hashin_plane_stress_index(mode, s_hat, m.strength, alpha) < 1.0;
+  };
+  const bool virgin = std::all_of(all_damage_modes.begin(), all_damage_modes.end(), [&](DamageMode mode) {
+    return !previous.initiated(mode) && previous.regularised_damage[mode] == 0.0;
+  });
+  if (virgin && below_surface(active.fibre) && below_surface(active.matrix))
+    return elastic_response(previous, strain);
+
+  PlyDamageResponse r;
+  r.state = previous;
+  r.state.strain = strain;
+  PerDamageMode growth_rate; // ∂d_I/∂κ_I · (loading), for the tangent
+  for (const DamageMode mode : all_damage_modes) {
+    if (!active.contains(mode)) continue;
+    const double eq = equivalent_strain(mode, e, alpha);
+    if (!r.state.initiated(mode)) {
+      const std::optional<Onset> onset = initiation(mode, e, s_hat, m.strength, alpha);
+      if (!onset) continue;
+      r.state.onset_equivalent_strain[mode] = onset->strain;
+      r.state.onset_equivalent_stress[mode] = onset->stress;
+    }
+    const double onset = r.state.onset_equivalent_strain[mode];
+    const double onset_stress = r.state.onset_equivalent_stress[mode];
+    const double final_strain =
+        final_equivalent_strain(toughness_[mode], onset_stress, characteristic_length);
+    if (!(final_strain > onset)) // band limit (PD10)
+      throw BandLimitError(m.name, mode, characteristic_length,
+                           2.0 * toughness_[mode] / (onset_stress * onset));
+    const double kappa = std::max(previous.max_equivalent_strain[mode], eq);
+    r.state.max_equivalent_strain[mode] = kappa;
+    r.state.damage[mode] = std::max(previous.damage[mode], softening_damage(kappa, onset, final_strain));
+    const bool loading = previous.initiated(mode) && eq > previous.max_equivalent_strain[mode] &&
+                         kappa > onset && kappa < final_strain;
+    if (loading) growth_rate[mode] = softening_slope(kappa, onset, final_strain);
+  }
+
+  // Viscous regularisation, backward Euler (PD12): d_v = (η d_v,n + Δt d)/(η + Δt).
+  const double eta = options_.viscosity;
+  const double weight = eta > 0.0 ? dt / (eta + dt) : 1.0;
+  for (const DamageMode mode : all_damage_modes) {
+    const double d = r.state.damage[mode];
+    r.state.regularised_damage[mode] =
+        eta > 0.0 ? (eta * previous.regularised_damage[mode] + dt * d) / (eta + dt) : d;
+  }
+
+  // Degraded stiffness and stresses (PD3)–(PD5).
+  const PerDamageMode& dv = r.state.regularised_damage;
+  const StiffnessDamage sd = stiffness_damage(dv, active);
+  r.secant = degraded_reduced_stiffness(m, sd);
+  r.transverse_shear_secant = degraded_transverse_shear(m, sd.transverse_shear);
+  r.stress = r.secant * e;
+  r.transverse_shear_stress = r.transverse_shear_secant * strain.transverse_shear;
+
+  // Dissipation of the increment, Y_I at the midpoint times the growth of d_v,I (PD11).
+  if (dv.values != previous.regularised_damage.values) {
+    const PerDamageMode y = thermodynamic_forces(m, midpoint(previous.regularised_damage, dv), active,
+                                                 midpoint(previous.strain, strain));
+    for (const DamageMode mode : all_damage_modes)
+      r.dissipation[mode] = y[mode] * (dv[mode] - previous.regularised_damage[mode]);
+  }
+
+  // Algorithmic tangent: C + Σ_I ∂σ/∂d_v,I ⊗ ∂d_v,I/∂ε.
+  r.tangent.setZero();
+  r.tangent.topLeftCorner<3, 3>() = r.secant;
+  r.tangent.bottomRightCorner<2, 2>() = r.transverse_shear_secant;
+  for (const DamageMode mode : all_damage_modes) {
+    if (growth_rate[mode] == 0.0) continue;
+    Eigen::Matrix<double, 1, 5> dd = Eigen::Matrix<double, 1, 5>::Zero();
+    dd.head<3>() = weight * growth_rate[mode] * equivalent_strain_gradient(mode, e, alpha).transpose();
+    r.tangent += stress_sensitivity(m, dv, active, strain, mode) * dd;
+  }
+  return r;
+}
+
+} // namespace plyimpact

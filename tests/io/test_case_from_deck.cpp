@@ -1,0 +1,89 @@
+// From decks to the engine's descriptions: regions of a deck reach the plate, and a deck whose two
+// halves are regions with the plate's own laminate runs the one-region impact bit for bit.
+#include "plyimpact/io/case_from_deck.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+const std::string plate_deck = R"(
+[materials.m]
+E1 = 129.0e9
+E2 = 7.5e9
+G12 = 3.5e9
+nu12 = 0.33
+rho = 1540.0
+[laminate]
+material = "m"
+layup = "[45/90/-45/0]3s"
+ply_thickness = 0.19375e-3
+[plate]
+a = 0.127
+b = 0.0762
+[mesh]
+nx = 9
+ny = 7
+[boundary]
+x0 = "ss"
+xa = "ss"
+y0 = "ss"
+yb = "ss"
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+[contact]
+k = 0.6e9
+[time]
+dt = 1e-6
+)";
+
+const std::string same_laminate_right_half = R"(
+[laminates.same]
+material = "m"
+layup = "[45/90/-45/0]3s"
+ply_thickness = 0.19375e-3
+[[region]]
+laminate = "same"
+x = [0.0635, 0.127]
+y = [0.0, 0.0762]
+)";
+
+TEST(CaseFromDeck, RegionsGiveEachElementItsLaminate) {
+  const PlateModel one = plate_model(parse_deck(plate_deck, "one.toml"));
+  const PlateModel two = plate_model(parse_deck(plate_deck + same_laminate_right_half, "two.toml"));
+  EXPECT_TRUE(one.single_section());
+  ASSERT_EQ(two.laminates().size(), 2U);
+  int right = 0;
+  for (int e = 0; e < two.mesh().element_count(); ++e) {
+    const bool in_region = two.mesh().map(e, 0.0, 0.0).x() >= 0.0635;
+    EXPECT_EQ(two.section_index(e), in_region ? 1 : 0) << e;
+    right += in_region ? 1 : 0;
+  }
+  EXPECT_EQ(right, 5 * 7); // 9 columns; the middle one has its centre on x = a/2 (bounds included)
+}
+
+TEST(CaseFromDeck, TwoRegionsWithTheSameLaminateRunTheOneRegionImpactBitForBit) {
+  const ImpactResult one = ImpactCase(impact_case_description(parse_deck(plate_deck, "one.toml"))).run();
+  const ImpactResult two =
+      ImpactCase(impact_case_description(parse_deck(plate_deck + same_laminate_right_half, "two.toml")))
+          .run();
+  ASSERT_TRUE(one.complete);
+  EXPECT_EQ(one.steps, two.steps);
+  EXPECT_EQ(one.peak_force, two.peak_force);
+  EXPECT_EQ(one.time_of_peak_force, two.time_of_peak_force);
+  EXPECT_EQ(one.peak_contact_deflection, two.peak_contact_deflection);
+  EXPECT_EQ(one.absorbed_energy, two.absorbed_energy);
+  ASSERT_EQ(one.history.size(), two.history.size());
+  for (std::size_t i = 0; i < one.history.size(); ++i) {
+    EXPECT_EQ(one.history[i].force, two.history[i].force) << i;
+    EXPECT_EQ(one.history[i].plate_strain, two.history[i].plate_strain) << i;
+  }
+}
+
+} // namespace
+} // namespace plyimpact

@@ -1,0 +1,453 @@
+// The bilinear mixed-mode cohesive law (src/plyimpact/laminate/cohesive_law.hpp) at one integration
+// point, checked against what the law must be independently of how it is coded: the peak traction is
+// the strength, the work of the tractions to full failure is the B-K toughness (trapezoidal rule over
+// the traction path, not the law's own dissipation bookkeeping), unloading follows the secant,
+// compression never damages, and the tangent is the derivative of the tractions (central differences).
+#include "plyimpact/laminate/cohesive_law.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+namespace plyimpact {
+namespace {
+
+// AS4/PEEK interface as tabulated by Camanho, Dávila & de Moura 2003 (J. Compos. Mater. 37:1415):
+// K = 10⁶ N/mm³, N = 80 MPa, S = 100 MPa, G_Ic = 0.969 kJ/m², G_IIc = 1.719 kJ/m², η = 2.284.
+constexpr double K = 1.0e15;
+constexpr double N = 80.0e6;
+constexpr double S = 100.0e6;
+constexpr double G_Ic = 969.0;
+constexpr double G_IIc = 1719.0;
+constexpr double eta = 2.284;
+
+CohesiveParameters as4_peek(CohesiveOnset onset = CohesiveOnset::turon_bk) {
+  return {.penalty_stiffness = K,
+          .normal_strength = N,
+          .shear_strength = S,
+          .G_Ic = G_Ic,
+          .G_IIc = G_IIc,
+          .bk_exponent = eta,
+          .onset = onset};
+}
+
+/// B-K law written out here (Benzeggagh & Kenane 1996), independently of the class.
+double bk_toughness(double B) {
+  return G_Ic + (G_IIc - G_Ic) * std::pow(B, eta);
+}
+
+/// Unit separation direction of mode mixity B: sliding √B split 0.8/0.6 between s1 and s2 (so both
+/// shear components work), opening √(1 − B). Along t·direction, λ = t and G_shear/G_T = B.
+Eigen::Vector3d direction(double B) {
+  const double shear = std::sqrt(B);
+  return {0.8 * shear, 0.6 * shear, std::sqrt(1.0 - B)};
+}
+
+/// Far enough to fail every mode: Δᶠ = 2 G_c/(K Δ⁰) ≤ 2 max(G)/min(N, S) since K Δ⁰ ≥ min(N, S).
+constexpr double kBeyondFailure = 1.1 * 2.0 * G_IIc / N;
+
+/// What a separation path did to one point.
+struct PathResult {
+  double work = 0.0;        ///< ∫ τ·dδ by the trapezoidal rule [J/m²]
+  double dissipated = 0.0;  ///< Σ of the law's dissipated_energy [J/m²]
+  double peak = 0.0;        ///< largest |τ| met [Pa]
+  CohesiveState state;      ///< at the end
+  Eigen::Vector3d traction; ///< at the end
+};
+
+/// Drives one point along the given separations (starting from δ = 0, state `start`).
+PathResult drive(const CohesiveLaw& law, const std::vector<Eigen::Vector3d>& path, CohesiveState start = {}) {
+  PathResult r;
+  r.state = start;
+  Eigen::Vector3d previous_separation = Eigen::Vector3d::Zero();
+  Eigen::Vector3d previous_traction = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& separation : path) {
+    const CohesiveResponse response = law.update(r.state, separation);
+    EXPECT_GE(response.state.damage, r.state.damage) << "damage decreased";
+    EXPECT_GE(response.dissipated_energy, 0.0);
+    r.work += 0.5 * (previous_traction + response.traction).dot(separation - previous_separation);
+    r.dissipated += response.dissipated_energy;
+    r.peak = std::max(r.peak, response.traction.norm());
+    r.state = response.state;
+    previous_separation = separation;
+    previous_traction = response.traction;
+  }
+  r.traction = previous_traction;
+  return r;
+}
+
+/// n equal steps from 0 to `length` along `dir`.
+std::vector<Eigen::Vector3d> ray(const Eigen::Vector3d& dir, double length, int n) {
+  std::vector<Eigen::Vector3d> path;
+  for (int i = 1; i <= n; ++i)
+    path.emplace_back(length * static_cast<double>(i) / n * dir);
+  return path;
+}
+
+// 10⁵ steps to 1.1 × the largest final separation: the trapezoidal rule is exact on the linear pieces,
+// its error sits in the step that holds the onset kink, ≈ K h²/8 against G_c = ½ K Δ⁰ Δᶠ, i.e.
+// h²/(4 Δ⁰ Δᶠ) ≈ 3e-8 relative here.
+constexpr int kSteps = 100000;
+
+// ------------------------------------------------------------------------------------------------
+// Pure modes
+// ------------------------------------------------------------------------------------------------
+
+// Mode I: the opening traction peaks at N when δ_n = N/K (the hand-computed onset) and the work to
+// full failure is G_Ic; afterwards the interface carries nothing in opening.
+TEST(CohesiveLawPureMode, ModeIPeaksAtNormalStrengthAndDissipatesGIc) {
+  const CohesiveLaw law(as4_peek());
+  const Eigen::Vector3d opening(0.0, 0.0, 1.0);
+
+  const CohesiveResponse at_onset = law.update({}, (N / K) * opening);
+  EXPECT_NEAR(at_onset.traction(2), N, 1e-12 * N);
+  EXPECT_EQ(at_onset.state.damage, 0.0);
+
+  const PathResult r = drive(law, ray(opening, kBeyondFailure, kSteps));
+  EXPECT_LE(r.peak, N * (1.0 + 1e-14));
+  EXPECT_NEAR(r.work, G_Ic, 1e-6 * G_Ic);
+  EXPECT_NEAR(r.dissipated, G_Ic, 1e-12 * G_Ic);
+  EXPECT_EQ(r.state.damage, 1.0);
+  EXPECT_EQ(r.traction.norm(), 0.0);
+  // Final separation of the bilinear law, by hand: Δᶠ = 2 G_Ic / N.
+  EXPECT_NEAR(law.final_separation(0.0), 2.0 * G_Ic / N, 1e-12 * 2.0 * G_Ic / N);
+}
+
+// Mode II (sliding along s1, along s2 and obliquely): the shear traction peaks at S and the work to
+// failure is G_IIc, whatever the sliding direction in the interface plane.
+TEST(CohesiveLawPureMode, ModeIIPeaksAtShearStrengthAndDissipatesGIIc) {
+  const CohesiveLaw law(as4_peek());
+  for (const Eigen::Vector3d& sliding :
+       {Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, -1.0, 0.0), Eigen::Vector3d(0.8, 0.6, 0.0)}) {
+    const CohesiveResponse at_onset = law.update({}, (S / K) * sliding);
+    EXPECT_NEAR(at_onset.traction.norm(), S, 1e-12 * S);
+    EXPECT_EQ(at_onset.traction(2), 0.0);
+
+    const PathResult r = drive(law, ray(sliding, kBeyondFailure, kSteps));
+    EXPECT_LE(r.peak, S * (1.0 + 1e-14));
+    EXPECT_NEAR(r.work, G_IIc, 1e-6 * G_IIc);
+    EXPECT_NEAR(r.dissipated, G_IIc, 1e-12 * G_IIc);
+    EXPECT_EQ(r.state.damage, 1.0);
+  }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Mixed mode
+// ------------------------------------------------------------------------------------------------
+
+// At a fixed mode mixity B the work to failure is the B-K toughness G_Ic + (G_IIc − G_Ic) B^η, for
+// both onset criteria (the onset changes the triangle's height, not its area).
+TEST(CohesiveLawMixedMode, WorkToFailureIsBenzeggaghKenaneToughness) {
+  for (const CohesiveOnset onset : {CohesiveOnset::turon_bk, CohesiveOnset::camanho_quadratic}) {
+    const CohesiveLaw law(as4_peek(onset));
+    for (const double B : {0.25, 0.5, 0.75}) {
+      SCOPED_TRACE(testing::Message() << "B = " << B << ", onset " << static_cast<int>(onset));
+      EXPECT_NEAR(CohesiveLaw::mode_mixity(direction(B)), B, 1e-15);
+      const PathResult r = drive(law, ray(direction(B), kBeyondFailure, kSteps));
+      EXPECT_NEAR(r.work, bk_toughness(B), 1e-6 * bk_toughness(B));
+      EXPECT_NEAR(r.dissipated, bk_toughness(B), 1e-12 * bk_toughness(B));
+      EXPECT_EQ(r.state.damage, 1.0);
+    }
+  }
+}
+
+// Camanho's onset is the quadratic traction criterion (σ_n/N)² + (τ_sh/S)² = 1: it holds exactly at
+// the onset separation, with no damage just before it and some just after.
+TEST(CohesiveLawMixedMode, CamanhoOnsetSatisfiesQuadraticTractionCriterion) {
+  const CohesiveLaw law(as4_peek(CohesiveOnset::camanho_quadratic));
+  for (const double B : {0.1, 0.25, 0.5, 0.75, 0.9}) {
+    const double onset = law.onset_separation(B);
+    const CohesiveResponse peak = law.update({}, onset * direction(B));
+    const double shear = std::hypot(peak.traction(0), peak.traction(1));
+    const double criterion = std::pow(peak.traction(2) / N, 2) + std::pow(shear / S, 2);
+    EXPECT_NEAR(criterion, 1.0, 1e-12) << "B = " << B;
+    EXPECT_EQ(law.update({}, (1.0 - 1e-9) * onset * direction(B)).state.damage, 0.0);
+    EXPECT_GT(law.update({}, (1.0 + 1e-6) * onset * direction(B)).state.damage, 0.0);
+  }
+}
+
+// Turon's onset interpolates the squared strengths as B-K interpolates the toughnesses:
+// |τ|² = N² + (S² − N²) B^η at the onset; and the largest traction met along the ray is that one.
+TEST(CohesiveLawMixedMode, TuronOnsetInterpolatesSquaredStrengthsLikeBK) {
+  const CohesiveLaw law(as4_peek(CohesiveOnset::turon_bk));
+  for (const double B : {0.1, 0.25, 0.5, 0.75, 0.9}) {
+    const double peak2 = N * N + (S * S - N * N) * std::pow(B, eta);
+    const double onset = law.onset_separation(B);
+    EXPECT_NEAR(law.update({}, onset * direction(B)).traction.squaredNorm(), peak2, 1e-12 * peak2);
+    EXPECT_EQ(law.update({}, (1.0 - 1e-9) * onset * direction(B)).state.damage, 0.0);
+    const PathResult r = drive(law, ray(direction(B), kBeyondFailure, 20000));
+    EXPECT_LE(r.peak, std::sqrt(peak2) * (1.0 + 1e-14));
+    EXPECT_GT(r.peak, std::sqrt(peak2) * (1.0 - 1e-2)); // the sampled ray passes within a step of it
+  }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Unloading, reloading, irreversibility
+// ------------------------------------------------------------------------------------------------
+
+// Unloading from the softening branch and reloading to the same point follow the secant (1 − d) K δ:
+// no damage change, no dissipation; loading on from there ends with the same total G_c(B).
+TEST(CohesiveLawHistory, UnloadAndReloadFollowTheSecantWithoutDissipation) {
+  const CohesiveLaw law(as4_peek());
+  const double B = 0.5;
+  const Eigen::Vector3d dir = direction(B);
+  const double turn = 0.5 * (law.onset_separation(B) + law.final_separation(B));
+
+  std::vector<Eigen::Vector3d> loading = ray(dir, turn, kSteps / 2);
+  const PathResult first = drive(law, loading);
+  const double d = first.state.damage;
+  ASSERT_GT(d, 0.5);
+  ASSERT_LT(d, 1.0);
+
+  // Down to zero and back up, checking every point against the secant.
+  CohesiveState state = first.state;
+  for (int i = -100; i <= 100; ++i) {
+    const Eigen::Vector3d separation = turn * std::abs(i) / 100.0 * dir;
+    const CohesiveResponse r = law.update(state, separation);
+    EXPECT_EQ(r.state.damage, d);
+    EXPECT_EQ(r.dissipated_energy, 0.0);
+    EXPECT_NEAR((r.traction - (1.0 - d) * K * separation).norm(), 0.0, 1e-12 * N);
+    state = r.state;
+  }
+
+  // The whole history: load, unload, reload, fail. The loop encloses no area.
+  std::vector<Eigen::Vector3d> history = loading;
+  for (int i = 99; i >= 0; --i)
+    history.emplace_back(turn * i / 100.0 * dir);
+  for (const Eigen::Vector3d& separation : ray(dir, kBeyondFailure, kSteps))
+    history.push_back(separation);
+  const PathResult all = drive(law, history);
+  EXPECT_NEAR(all.work, bk_toughness(B), 1e-6 * bk_toughness(B));
+  EXPECT_NEAR(all.dissipated, bk_toughness(B), 1e-12 * bk_toughness(B));
+}
+
+// Damage never heals when the mode changes: after sliding to d ≈ 0.5, an opening whose mode I
+// envelope damage is lower keeps d, and the opening traction is the secant one.
+TEST(CohesiveLawHistory, ModeChangeDoesNotHealDamage) {
+  const CohesiveLaw law(as4_peek());
+  const Eigen::Vector3d sliding(1.0, 0.0, 0.0);
+  const double lambda_II = 0.5 * (law.onset_separation(1.0) + law.final_separation(1.0));
+  const CohesiveState damaged = law.update({}, lambda_II * sliding).state;
+  ASSERT_GT(damaged.damage, 0.4);
+
+  // Mode I separation a little past its own onset: its envelope damage is far below d.
+  const Eigen::Vector3d opening(0.0, 0.0, 1.2 * N / K);
+  ASSERT_LT(law.envelope_damage(opening.norm(), 0.0), damaged.damage);
+  const CohesiveResponse r = law.update(damaged, opening);
+  EXPECT_EQ(r.state.damage, damaged.damage);
+  EXPECT_EQ(r.dissipated_energy, 0.0);
+  EXPECT_NEAR(r.traction(2), (1.0 - damaged.damage) * K * opening(2), 1e-12 * N);
+}
+
+// On a non-proportional path (slide to d ≈ 0.5, then turn the separation towards pure opening and on to
+// failure) the law's dissipation, which freezes the mixity within an increment, still closes the
+// energy balance  ∫ τ·dδ = ψ_end + Σ dissipated  as the steps shrink (first order in the step).
+TEST(CohesiveLawHistory, EnergyBalanceClosesOnNonProportionalPath) {
+  const CohesiveLaw law(as4_peek());
+  const double lambda_II = 0.5 * (law.onset_separation(1.0) + law.final_separation(1.0));
+  const Eigen::Vector3d corner(lambda_II, 0.0, 0.0);
+  const Eigen::Vector3d end(0.0, 0.0, kBeyondFailure);
+  std::vector<double> errors;
+  for (const int n : {2000, 20000}) {
+    std::vector<Eigen::Vector3d> path = ray(Eigen::Vector3d(1.0, 0.0, 0.0), lambda_II, n);
+    for (int i = 1; i <= n; ++i) {
+      const double s = static_cast<double>(i) / n;
+      path.emplace_back((1.0 - s) * corner + s * end);
+    }
+    const PathResult r = drive(law, path);
+    ASSERT_EQ(r.state.damage, 1.0);
+    const double stored = law.stored_energy(r.state, path.back());
+    errors.push_back(std::abs(r.work - stored - r.dissipated) / r.dissipated);
+  }
+  // Measured: 1.12e-4 with 2000 steps per leg, 1.19e-5 with 20000: first order, as the frozen
+  // mixity predicts.
+  EXPECT_LT(errors[1], 2e-5);
+  EXPECT_GT(errors[1] / errors[0], 0.08);
+  EXPECT_LT(errors[1] / errors[0], 0.13);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Compression
+// ------------------------------------------------------------------------------------------------
+
+// Closing the interface never damages it, however far: σ_n = K δ_n, tangent K, no dissipation; and a
+// fully cracked interface (d = 1) still resists closing with the same penalty (no interpenetration
+// beyond it), while carrying no shear.
+TEST(CohesiveLawCompression, ClosingNeverDamagesAndCrackedFacesStillContact) {
+  const CohesiveLaw law(as4_peek());
+  const double far = 100.0 * law.final_separation(0.0);
+  for (const double closing : {0.5 * N / K, 2.0 * N / K, far}) {
+    const CohesiveResponse r = law.update({}, Eigen::Vector3d(0.0, 0.0, -closing));
+    EXPECT_EQ(r.state.damage, 0.0);
+    EXPECT_EQ(r.traction(2), -K * closing);
+    EXPECT_EQ(r.tangent(2, 2), K);
+    EXPECT_EQ(r.dissipated_energy, 0.0);
+  }
+  const CohesiveState cracked{.damage = 1.0};
+  const CohesiveResponse r = law.update(cracked, Eigen::Vector3d(3e-6, -1e-6, -2e-6));
+  EXPECT_EQ(r.traction(2), -K * 2e-6);
+  EXPECT_EQ(r.traction(0), 0.0);
+  EXPECT_EQ(r.traction(1), 0.0);
+  EXPECT_EQ(r.tangent(2, 2), K);
+  EXPECT_EQ(law.stored_energy(cracked, Eigen::Vector3d(3e-6, -1e-6, -2e-6)), 0.5 * K * 4e-12);
+}
+
+// Sliding under a closing pressure is pure mode II for the damage (B = 1, λ = |δ_sh|): the work of
+// the shear tractions to failure is G_IIc and the normal traction stays K δ_n throughout.
+TEST(CohesiveLawCompression, SlidingUnderClosingFailsInModeII) {
+  const CohesiveLaw law(as4_peek());
+  const double closing = -2e-7;
+  std::vector<Eigen::Vector3d> path;
+  for (int i = 1; i <= kSteps; ++i)
+    path.emplace_back(kBeyondFailure * i / kSteps, 0.0, closing);
+  EXPECT_EQ(CohesiveLaw::mode_mixity(path.front()), 1.0);
+  // The first step closes the interface from δ = 0: its work ½ K δ_n² is elastic and stays stored.
+  const PathResult r = drive(law, path);
+  const double stored = 0.5 * K * closing * closing;
+  EXPECT_NEAR(r.work - stored, G_IIc, 1e-6 * G_IIc);
+  EXPECT_NEAR(r.dissipated, G_IIc, 1e-12 * G_IIc);
+  EXPECT_EQ(r.traction(2), K * closing);
+  EXPECT_EQ(r.traction(0), 0.0);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Consistent tangent
+// ------------------------------------------------------------------------------------------------
+
+/// Tangent by central differences of the tractions, the previous state held fixed (the FEBio-style
+/// check of the stiffness a Newton iteration would use).
+Eigen::Matrix3d finite_difference_tangent(const CohesiveLaw& law, const CohesiveState& previous,
+                                          const Eigen::Vector3d& separation) {
+  const double h = 1e-5 * separation.norm();
+  Eigen::Matrix3d tangent;
+  for (int j = 0; j < 3; ++j) {
+    Eigen::Vector3d plus = separation;
+    Eigen::Vector3d minus = separation;
+    plus(j) += h;
+    minus(j) -= h;
+    tangent.col(j) = (law.update(previous, plus).traction - law.update(previous, minus).traction) / (2.0 * h);
+  }
+  return tangent;
+}
+
+struct TangentCase {
+  const char* branch;
+  CohesiveState previous;
+  Eigen::Vector3d separation;
+};
+
+/// Branches at an oblique separation of mixity 0.456 (all three components non-zero) and at the pure
+/// modes, for one onset criterion.
+std::vector<TangentCase> tangent_cases(const CohesiveLaw& law) {
+  const Eigen::Vector3d oblique = Eigen::Vector3d(0.5, -0.4, 0.7).normalized();
+  const double B = CohesiveLaw::mode_mixity(oblique);
+  // Separation at which the envelope damage is ½: λ = 2 Δ⁰ Δᶠ / (Δᶠ + Δ⁰).
+  const auto softening = [&](double b) {
+    return 2.0 * law.onset_separation(b) * law.final_separation(b) /
+           (law.final_separation(b) + law.onset_separation(b));
+  };
+  return {
+      {"elastic, undamaged", {}, 0.5 * law.onset_separation(B) * oblique},
+      {"softening, oblique", {}, softening(B) * oblique},
+      {"softening, oblique, from earlier damage", {.damage = 0.2}, softening(B) * oblique},
+      {"softening, oblique, just past the onset", {}, 1.001 * law.onset_separation(B) * oblique},
+      {"softening, oblique, just before failure", {}, 0.999 * law.final_separation(B) * oblique},
+      {"softening, pure mode I", {}, softening(0.0) * Eigen::Vector3d(0.0, 0.0, 1.0)},
+      // (δ_n = 0 exactly is the kink between opening and contact, where central differences straddle
+      // two branches: a slight opening keeps the case on one.)
+      {"softening, sliding with a slight opening", {}, softening(1.0) * Eigen::Vector3d(0.6, 0.8, 1e-3)},
+      {"softening, mixity 0.25", {}, softening(0.25) * direction(0.25)},
+      {"softening, mixity 0.75", {}, softening(0.75) * direction(0.75)},
+      {"softening, sliding under closing",
+       {},
+       Eigen::Vector3d(0.8, 0.6, 0.0) * softening(1.0) + Eigen::Vector3d(0.0, 0.0, -1e-7)},
+      {"unloading on the secant", law.update({}, softening(B) * oblique).state, 0.7 * softening(B) * oblique},
+      {"closing, damaged", {.damage = 0.6}, Eigen::Vector3d(1e-7, 2e-7, -3e-7)},
+  };
+}
+
+// The consistent tangent equals the central-difference derivative of the tractions to 1e-6 (relative,
+// Frobenius norm) on every branch, for both onset criteria; on the softening branches it is
+// unsymmetric (the damage depends on the mixity) and must still match.
+TEST(CohesiveLawTangent, MatchesFiniteDifferencesOnEveryBranch) {
+  for (const CohesiveOnset onset : {CohesiveOnset::turon_bk, CohesiveOnset::camanho_quadratic}) {
+    const CohesiveLaw law(as4_peek(onset));
+    for (const TangentCase& c : tangent_cases(law)) {
+      SCOPED_TRACE(testing::Message() << c.branch << ", onset " << static_cast<int>(onset));
+      const Eigen::Matrix3d analytic = law.update(c.previous, c.separation).tangent;
+      const Eigen::Matrix3d numeric = finite_difference_tangent(law, c.previous, c.separation);
+      EXPECT_LT((analytic - numeric).norm(), 1e-6 * analytic.norm()) << "analytic\n"
+                                                                     << analytic << "\nfinite differences\n"
+                                                                     << numeric;
+    }
+  }
+}
+
+// On the oblique softening branch the tangent is not symmetric and its opening row drops below the
+// secant: the softening is real, not an artefact of a secant tangent.
+TEST(CohesiveLawTangent, SofteningTangentIsUnsymmetricAndBelowSecant) {
+  const CohesiveLaw law(as4_peek());
+  const Eigen::Vector3d oblique = Eigen::Vector3d(0.5, -0.4, 0.7).normalized();
+  const double B = CohesiveLaw::mode_mixity(oblique);
+  const Eigen::Vector3d separation =
+      (0.6 * law.onset_separation(B) + 0.4 * law.final_separation(B)) * oblique;
+  const CohesiveResponse r = law.update({}, separation);
+  EXPECT_GT((r.tangent - r.tangent.transpose()).norm(), 1e-3 * r.tangent.norm());
+  // Along the ray the traction falls: δ̂ᵀ T δ̂ < 0.
+  EXPECT_LT(oblique.dot(r.tangent * oblique), 0.0);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Parameters
+// ------------------------------------------------------------------------------------------------
+
+TEST(CohesiveLawParameters, RejectsNonPositiveValuesAndTooSoftPenalty) {
+  for (double CohesiveParameters::*member :
+       {&CohesiveParameters::penalty_stiffness, &CohesiveParameters::normal_strength,
+        &CohesiveParameters::shear_strength, &CohesiveParameters::G_Ic, &CohesiveParameters::G_IIc,
+        &CohesiveParameters::bk_exponent}) {
+    CohesiveParameters p = as4_peek();
+    p.*member = 0.0;
+    EXPECT_THROW(CohesiveLaw{p}, std::invalid_argument);
+    p.*member = -1.0;
+    EXPECT_THROW(CohesiveLaw{p}, std::invalid_argument);
+  }
+  // Mode I needs K > N²/(2 G_Ic) = 3.30e12 Pa/m, mode II K > S²/(2 G_IIc) = 2.91e12 Pa/m.
+  CohesiveParameters p = as4_peek();
+  p.penalty_stiffness = 3.2e12;
+  EXPECT_THROW(CohesiveLaw{p}, std::invalid_argument);
+  p.penalty_stiffness = 3.4e12;
+  EXPECT_NO_THROW(CohesiveLaw{p});
+}
+
+// Turon et al. 2007: K = α E3 / t makes the interface compliance 1/K the fraction 1/α of the
+// through-thickness compliance t/E3 of the sub-laminate. AS4/PEEK, E3 = 10.1 GPa, t = 1.56 mm, α = 50:
+// K = 3.24e14 Pa/m (Camanho et al. used 1e15).
+TEST(CohesiveLawParameters, TuronPenaltyStiffnessIsAFiftiethOfTheSublaminateCompliance) {
+  const double E3 = 10.1e9;
+  const double t = 1.56e-3;
+  const double penalty = turon_penalty_stiffness(E3, t);
+  EXPECT_NEAR((1.0 / penalty) / (t / E3), 1.0 / 50.0, 1e-15);
+  EXPECT_NEAR(penalty, 3.2372e14, 1e-4 * 3.2372e14);
+  EXPECT_THROW((void)turon_penalty_stiffness(E3, 0.0), std::invalid_argument);
+}
+
+// Cohesive-zone length l = M E G_c/τ⁰²: with Turon et al.'s mesh rule, the strength lowered to
+// τ̄ = √(9π E G_c/(32 N_e l_e)) makes the zone (M = 9π/32) span exactly N_e elements of length l_e.
+// For AS4/PEEK in mode I (E2 = 10.1 GPa, G_Ic = 969 J/m², N = 80 MPa) and M = 1 the zone is 1.53 mm.
+TEST(CohesiveLawParameters, CohesiveZoneLengthMatchesTuronMeshRule) {
+  const double E = 10.1e9;
+  EXPECT_NEAR(cohesive_zone_length(E, G_Ic, N), 1.5292e-3, 1e-4 * 1.5292e-3);
+  const double element = 0.5e-3;
+  const double elements_in_zone = 3.0;
+  const double lowered = std::sqrt(9.0 * std::numbers::pi * E * G_Ic / (32.0 * elements_in_zone * element));
+  EXPECT_NEAR(cohesive_zone_length(E, G_Ic, lowered, 9.0 * std::numbers::pi / 32.0),
+              elements_in_zone * element, 1e-12);
+}
+
+} // namespace
+} // namespace plyimpact

@@ -1,0 +1,2 @@
+// Must not compile: the fem layer cannot see analysis headers (tests/CMakeLists.txt, Layering tests).
+#include "plyimpact/analysis/contact_rules.hpp"
