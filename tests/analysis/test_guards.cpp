@@ -174,7 +174,8 @@ const std::vector<GuardCase>& guard_cases() {
          ImpactCaseDescription d = steel_sphere(2.68, 4, 4);
          d.time.end = 2e-5;
          std::vector<std::string> said = ImpactCase(d).run().warnings;
-         std::erase_if(said, [](const std::string& w) { return w.find("not resolved") != std::string::npos; });
+         std::erase_if(said,
+                       [](const std::string& w) { return w.find("not resolved") != std::string::npos; });
          return said;
        },
        {}},
