@@ -19,9 +19,7 @@ namespace {
 const Laminate& impacted_laminate(const ImpactCaseDescription& d) {
   const Laminate* lam = &d.laminates.front();
   for (const Region& r : d.regions)
-    if (d.impactor.x >= r.x_min && d.impactor.x <= r.x_max && d.impactor.y >= r.y_min &&
-        d.impactor.y <= r.y_max)
-      lam = &d.laminates[static_cast<std::size_t>(r.laminate)];
+    if (r.contains(d.impactor.x, d.impactor.y)) lam = &d.laminates[static_cast<std::size_t>(r.laminate)];
   return *lam;
 }
 

@@ -9,9 +9,7 @@ std::vector<int> element_laminates(const Mesh& mesh, const std::vector<Region>& 
   for (int e = 0; e < mesh.element_count(); ++e) {
     const Eigen::Vector2d c = mesh.map(e, 0.0, 0.0);
     for (const Region& r : regions)
-      if (c.x() >= r.x_min - tol && c.x() <= r.x_max + tol && c.y() >= r.y_min - tol &&
-          c.y() <= r.y_max + tol)
-        of_element[static_cast<std::size_t>(e)] = r.laminate;
+      if (r.contains(c.x(), c.y(), tol)) of_element[static_cast<std::size_t>(e)] = r.laminate;
   }
   return of_element;
 }

@@ -13,6 +13,11 @@ struct Region {
   std::string name; ///< for messages and reports (the laminate's name)
   int laminate = 0; ///< index into PlateSections::laminates
   double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0; ///< [m], bounds included
+
+  /// (x, y) in the box, its bounds widened by `tol` [m].
+  [[nodiscard]] bool contains(double x, double y, double tol = 0.0) const {
+    return x >= x_min - tol && x <= x_max + tol && y >= y_min - tol && y <= y_max + tol;
+  }
 };
 
 /// The laminate index of every element; empty when `regions` is empty.
