@@ -193,6 +193,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "deck.toml:36:7: error: output.vtk must be true or false"},
         BadDeck{"VtkPlyOutOfRange", "", "[output]\nvtk_plies = [1, 9]\n",
                 "deck.toml:36:17: error: output.vtk_plies: expected a ply number from 1 to 8"},
+        BadDeck{"VtkPlyHugeFloat", "", "[output]\nvtk_plies = [5e87]\n",
+                "deck.toml:36:14: error: output.vtk_plies: expected a ply number from 1 to 8"},
         BadDeck{"VtkInterfaceOutOfRange", "", "[output]\nvtk_interfaces = [8]\n",
                 "deck.toml:36:19: error: output.vtk_interfaces: expected an interface number from 1 to 7"},
         BadDeck{"VtkAtNegative", "", "[output]\nvtk_at = [1e-6, -2e-6]\n",

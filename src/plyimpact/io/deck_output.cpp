@@ -33,7 +33,10 @@ std::vector<int> layer_list(const TableReader& t, std::string_view key, int coun
     t.fail_at(key, fmt::format("{}.{} must be an array of {} numbers", t.path(), key,
                                what.substr(what.find(' ') + 1)));
   for (const toml::node& item : *arr) {
-    const auto v = item.value<long>();
+    // Integers only: value<long>() of a float node casts it, undefined beyond the range of long
+    // (the deck fuzzer found vtk_plies = [5e87]).
+    const auto* i = item.as_integer();
+    const std::optional<long> v = i != nullptr ? std::optional<long>(i->get()) : std::nullopt;
     if (!v || *v < 1 || (count > 0 && *v > count))
       fail(t.file(), item.source(),
            fmt::format("{}.{}: expected {} number from 1 to {}", t.path(), key, what, count));
