@@ -37,7 +37,7 @@ PlotCurve csv_curve(fs::path csv, std::string using_expr, std::string title) {
 PlotSpec plot_spec(std::string name, std::string title, std::string xlabel, std::string ylabel,
                    std::vector<PlotCurve> curves, std::string key = "top right", std::string extra = "") {
   return {std::move(name),   std::move(title), std::move(xlabel), std::move(ylabel),
-          std::move(curves), std::move(key),   std::move(extra)};
+          std::move(curves), std::move(key),   std::move(extra),  {}};
 }
 
 /// The history.csv time axis in microseconds.
@@ -51,13 +51,22 @@ std::vector<PlotCurve> per_run(const std::vector<PlotRun>& runs, const std::stri
   return curves;
 }
 
-/// Failed area versus time as steps, one curve per (criterion, layer) of damage_area.csv (a row is
-/// written whenever a layer's area changes), held to the end of the run at `t_end`.
-std::vector<PlotCurve> damage_area_curves(const fs::path& csv, double t_end) {
+/// One layer of damage_area.csv: criterion, ply or interface, and its number (1 = top).
+struct DamageLayer {
+  std::string criterion;
+  bool is_ply = true;
+  int index = 0;
+  auto operator<=>(const DamageLayer&) const = default;
+};
+
+/// The failed-area history of every layer of damage_area.csv (a row is written whenever a layer's
+/// area changes), as (t [µs], area [mm²]) rows, held to the end of the run at `t_end`; layers sorted by
+/// criterion, plies before interfaces, then in stacking order.
+std::map<DamageLayer, std::string> damage_area_rows(const fs::path& csv, double t_end) {
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line); // header: time_s,criterion,ply,interface,failed_area_m2
-  std::map<std::string, std::pair<std::string, double>> layers; // title → (rows, last area)
+  std::map<DamageLayer, std::pair<std::string, double>> layers; // → (rows, last area)
   while (std::getline(in, line)) {
     std::istringstream row(line);
     std::string time, criterion, ply, interface, area;
@@ -67,22 +76,103 @@ std::vector<PlotCurve> damage_area_curves(const fs::path& csv, double t_end) {
     std::getline(row, interface, ',');
     std::getline(row, area, ',');
     const bool is_ply = !ply.empty();
-    const std::string title =
-        fmt::format("{} {} {}", criterion, is_ply ? "ply" : "interface", is_ply ? ply : interface);
-    auto& [rows, last] = layers[title];
+    auto& [rows, last] = layers[{criterion, is_ply, std::stoi(is_ply ? ply : interface)}];
     last = std::stod(area) * 1e6; // mm²
     rows += fmt::format("{:.6g},{:.6g}\n", std::stod(time) * 1e6, last);
   }
-  std::vector<PlotCurve> curves;
-  for (const auto& [title, layer] : layers) {
-    PlotCurve c;
-    c.using_expr = "1:2";
-    c.title = title;
-    c.data = "t_us,area_mm2\n" + layer.first + fmt::format("{:.6g},{:.6g}\n", t_end * 1e6, layer.second);
-    c.style = "steps";
-    curves.push_back(std::move(c));
+  std::map<DamageLayer, std::string> out;
+  for (const auto& [layer, history] : layers)
+    out[layer] =
+        "t_us,area_mm2\n" + history.first + fmt::format("{:.6g},{:.6g}\n", t_end * 1e6, history.second);
+  return out;
+}
+
+/// tab10, the ten colours of a panel.
+constexpr std::array<const char*, max_curves_per_panel> tab10 = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                                                                 "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+                                                                 "#bcbd22", "#17becf"};
+
+PlotCurve damage_curve(const DamageLayer& layer, std::string rows, std::string title, std::size_t position) {
+  PlotCurve c;
+  c.using_expr = "1:2";
+  c.title = std::move(title);
+  c.data = std::move(rows);
+  c.style = "steps";
+  c.colour = tab10.at(position % tab10.size());
+  (void)layer;
+  return c;
+}
+
+std::string layer_name(const DamageLayer& layer) {
+  return fmt::format("{} {}", layer.is_ply ? "ply" : "interface", layer.index);
+}
+
+/// Failed area versus time as steps. Up to max_curves_per_panel layers: one plot. More (a 24-ply
+/// laminate has 24 plies and 23 interfaces per criterion pair): small multiples, one group of panels
+/// per criterion and kind of layer, each panel a contiguous run of the stacking order of at most
+/// max_curves_per_panel layers, the runs as even as possible.
+PlotSpec damage_area_plot(const fs::path& csv, double t_end) {
+  const auto layers = damage_area_rows(csv, t_end);
+  PlotSpec spec =
+      plot_spec("damage_area", "Failed area (tributary areas of failed Gauss points)", "t [us]",
+                "failed area [mm^2]", {}, "outside right top", "set xrange [0:*]\nset yrange [0:*]\n");
+  if (layers.size() <= max_curves_per_panel) {
+    for (const auto& [layer, rows] : layers)
+      spec.curves.push_back(
+          damage_curve(layer, rows, layer.criterion + " " + layer_name(layer), spec.curves.size()));
+    return spec;
   }
-  return curves;
+  std::vector<std::vector<std::pair<DamageLayer, std::string>>> groups; // criterion × kind
+  for (const auto& [layer, rows] : layers) {
+    if (groups.empty() || groups.back().front().first.criterion != layer.criterion ||
+        groups.back().front().first.is_ply != layer.is_ply)
+      groups.emplace_back();
+    groups.back().emplace_back(layer, rows);
+  }
+  for (const auto& group : groups) {
+    const std::size_t panels = (group.size() + max_curves_per_panel - 1) / max_curves_per_panel;
+    const std::size_t per_panel = (group.size() + panels - 1) / panels;
+    for (std::size_t first = 0; first < group.size(); first += per_panel) {
+      const std::size_t last = std::min(group.size(), first + per_panel) - 1;
+      const DamageLayer& a = group[first].first;
+      PlotPanel panel{fmt::format("{}: {} {}-{}", a.criterion, a.is_ply ? "plies" : "interfaces", a.index,
+                                  group[last].first.index),
+                      {}};
+      for (std::size_t i = first; i <= last; ++i)
+        panel.curves.push_back(
+            damage_curve(group[i].first, group[i].second, layer_name(group[i].first), i - first));
+      spec.panels.push_back(std::move(panel));
+    }
+  }
+  return spec;
+}
+
+/// Index of `column` in a CSV header line, or npos.
+std::size_t column_index(const std::string& header, const std::string& column) {
+  std::istringstream names(header);
+  std::string name;
+  for (std::size_t i = 0; std::getline(names, name, ','); ++i)
+    if (name == column) return i;
+  return std::string::npos;
+}
+
+/// Value of `column` in the first data row of a history.csv (0 when absent).
+double first_value(const fs::path& history, const std::string& column) {
+  std::ifstream in(history);
+  std::string header, row, cell;
+  std::getline(in, header);
+  std::getline(in, row);
+  const std::size_t k = column_index(header, column);
+  std::istringstream cells(row);
+  for (std::size_t i = 0; std::getline(cells, cell, ','); ++i)
+    if (i == k) {
+      try {
+        return std::stod(cell);
+      } catch (const std::exception&) {
+        return 0.0;
+      }
+    }
+  return 0.0;
 }
 
 /// Time of the last row of a history.csv [s].
@@ -98,7 +188,34 @@ double last_time(const fs::path& history) {
   }
 }
 
+/// Impactor energy against time, as a drop-weight report draws it: the impact energy E0 = ½ m v0²,
+/// the impactor's kinetic energy, and E0 minus it — the energy given to the plate, whose maximum is at
+/// the largest deflection and whose final value is the absorbed energy once the impactor has left.
+PlotSpec impactor_energy_plot(const std::vector<PlotRun>& runs) {
+  std::vector<PlotCurve> curves;
+  for (const PlotRun& r : runs) {
+    const fs::path h = r.dir / "history.csv";
+    const double e0 = first_value(h, "impactor_energy_J");
+    const std::string suffix = runs.size() > 1 ? ", " + r.label : "";
+    if (runs.size() == 1) {
+      curves.push_back(csv_curve(h, fmt::format("{}:({:.17g})", t_us, e0), "impact energy E0"));
+      curves.push_back(
+          csv_curve(h, fmt::format("{}:(column('impactor_energy_J'))", t_us), "impactor kinetic"));
+    }
+    curves.push_back(csv_curve(h, fmt::format("{}:({:.17g}-column('impactor_energy_J'))", t_us, e0),
+                               "E0 - impactor kinetic (to the plate)" + suffix));
+  }
+  return plot_spec("impactor_energy", "Impactor energy (drop-weight convention)", "t [us]", "energy [J]",
+                   std::move(curves), "center right", "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n");
+}
+
 } // namespace
+
+std::pair<int, int> picture_size(const PlotSpec& spec) {
+  if (spec.panels.empty()) return {plot_width_px, plot_height_px};
+  const auto rows = int((spec.panels.size() + 1) / 2);
+  return {panels_width_px, panel_row_height_px * rows};
+}
 
 std::string run_label(const fs::path& dir) {
   std::ifstream in(dir / "summary.json");
@@ -119,9 +236,21 @@ std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs) {
                         per_run(runs, fmt::format("{}:(column('plate_w_m')*1e3)", t_us))));
   p.push_back(plot_spec("velocity_time", "Impactor velocity (+ towards the plate)", "t [us]", "v_i [m/s]",
                         per_run(runs, fmt::format("{}:(column('impactor_v_m_per_s'))", t_us))));
+  // Contact part only (indentation >= 0): after separation the indentation runs far negative and
+  // would swamp the loading-unloading loop.
   p.push_back(plot_spec("force_indentation", "Contact force versus indentation (loading, Tan-Sun unloading)",
                         "indentation alpha [mm]", "contact force F_c [kN]",
-                        per_run(runs, "(column('indentation_m')*1e3):(column('force_N')*1e-3)")));
+                        per_run(runs, "(column('indentation_m') >= 0 ? column('indentation_m')*1e3 : NaN)"
+                                      ":(column('force_N')*1e-3)"),
+                        "top left"));
+  // The two plots of a drop-weight test report (ASTM D7136 §13): force against the impactor's
+  // displacement since first contact (contact part), and the impactor's energy against time.
+  p.push_back(plot_spec("force_displacement", "Contact force versus impactor displacement",
+                        "impactor displacement [mm]", "contact force F_c [kN]",
+                        per_run(runs, "(column('indentation_m') >= 0 ? column('impactor_w_m')*1e3 : NaN)"
+                                      ":(column('force_N')*1e-3)"),
+                        "top left"));
+  p.push_back(impactor_energy_plot(runs));
   if (runs.size() == 1) {
     // Energy balance (SPEC §4): impactor + plate kinetic + plate strain + contact work = ½ m v0².
     const fs::path h = runs.front().dir / "history.csv";
@@ -139,15 +268,45 @@ std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs) {
         "center right", "set yrange [0:*]\n"));
     const fs::path area = runs.front().dir / "damage_area.csv";
     if (fs::exists(area)) {
-      auto curves = damage_area_curves(area, last_time(h));
-      if (!curves.empty())
-        p.push_back(plot_spec("damage_area", "Failed area (tributary areas of failed Gauss points)", "t [us]",
-                              "failed area [mm^2]", std::move(curves), "outside right top",
-                              "set xrange [0:*]\nset yrange [0:*]\n"));
+      PlotSpec damage = damage_area_plot(area, last_time(h));
+      if (!damage.curves.empty() || !damage.panels.empty()) p.push_back(std::move(damage));
     }
   }
   return p;
 }
+
+namespace {
+
+/// Inline data blocks of `curves` (named $<tag><i>) and the `plot` command that draws them.
+std::pair<std::string, std::string> plot_command(const std::vector<PlotCurve>& curves, const fs::path& cwd,
+                                                 const std::string& tag) {
+  std::string blocks, plot = "plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const PlotCurve& c = curves[i];
+    if (!c.data.empty()) blocks += fmt::format("${}{} << EOD\n{}EOD\n", tag, i, c.data);
+    const std::string source =
+        c.data.empty() ? quoted(fs::relative(c.csv, cwd).generic_string()) : fmt::format("${}{}", tag, i);
+    const std::string colour = c.colour.empty() ? "" : fmt::format(" lc rgb {}", quoted(c.colour));
+    plot += fmt::format("{}{} using {} with {} lw 2{} title {}", i ? ", \\\n     " : "", source, c.using_expr,
+                        c.style, colour, quoted(c.title));
+  }
+  return {blocks, plot + "\n"};
+}
+
+/// The drawing commands of a spec: one plot, or a 2-column multiplot of its panels.
+std::pair<std::string, std::string> drawing(const PlotSpec& spec, const fs::path& cwd) {
+  if (spec.panels.empty()) return plot_command(spec.curves, cwd, "curve");
+  std::string blocks, draw = fmt::format("set multiplot layout {},2 title {} noenhanced\n",
+                                         (spec.panels.size() + 1) / 2, quoted(spec.title));
+  for (std::size_t k = 0; k < spec.panels.size(); ++k) {
+    const auto [data, plot] = plot_command(spec.panels[k].curves, cwd, fmt::format("panel{}_", k));
+    blocks += data;
+    draw += fmt::format("set title {} noenhanced\n{}", quoted(spec.panels[k].title), plot);
+  }
+  return {blocks, draw + "unset multiplot\n"};
+}
+
+} // namespace
 
 std::string gnuplot_script(const PlotSpec& spec, const fs::path& cwd, const std::string& svg,
                            const std::string& png) {
@@ -157,24 +316,15 @@ std::string gnuplot_script(const PlotSpec& spec, const fs::path& cwd, const std:
                    quoted(spec.title), quoted(spec.xlabel), quoted(spec.ylabel));
   s += fmt::format("set grid lc rgb '#d0d0d0'\nset key {} noenhanced box opaque\nset border lw 1.2\n",
                    spec.key);
-  for (std::size_t i = 0; i < spec.curves.size(); ++i)
-    if (!spec.curves[i].data.empty()) s += fmt::format("$curve{} << EOD\n{}EOD\n", i, spec.curves[i].data);
-  s += spec.extra;
-  std::string plot = "plot ";
-  for (std::size_t i = 0; i < spec.curves.size(); ++i) {
-    const PlotCurve& c = spec.curves[i];
-    const std::string source =
-        c.data.empty() ? quoted(fs::relative(c.csv, cwd).generic_string()) : fmt::format("$curve{}", i);
-    plot += fmt::format("{}{} using {} with {} lw 2 title {}", i ? ", \\\n     " : "", source, c.using_expr,
-                        c.style, quoted(c.title));
-  }
-  plot += "\n";
-  s += fmt::format("set terminal svg size {},{} dynamic font 'Sans,12'\nset output {}\n", plot_width_px,
-                   plot_height_px, quoted(svg));
-  s += plot;
-  s += fmt::format("set terminal pngcairo size {},{} font 'Sans,11'\nset output {}\n", plot_width_px,
-                   plot_height_px, quoted(png));
-  s += plot + "set output\n";
+  const auto [blocks, draw] = drawing(spec, cwd);
+  s += blocks + spec.extra;
+  const auto [width, height] = picture_size(spec);
+  s += fmt::format("set terminal svg size {},{} dynamic font 'Sans,12'\nset output {}\n", width, height,
+                   quoted(svg));
+  s += draw;
+  s += fmt::format("set terminal pngcairo size {},{} font 'Sans,11'\nset output {}\n", width, height,
+                   quoted(png));
+  s += draw + "set output\n";
   return s;
 }
 

@@ -1,12 +1,15 @@
 #pragma once
 // Pictures of impact results (`plyimpact plot`): contact force, contact-point deflection and impactor
-// velocity versus time, the energy balance, force versus indentation (the Tan–Sun loop) and, when
-// the run tracked damage, the failed area versus time. Drawn by gnuplot (Debian's gnuplot-nox) from
-// generated scripts that read the results' CSV files directly; the scripts are kept next to the
-// images so a picture can be restyled and redrawn by hand. Several results folders give overlays
-// (e.g. three impact velocities, thesis Fig. 4.8).
+// velocity versus time, the energy balance, force versus indentation (the Tan–Sun loop, contact part),
+// the drop-weight pair force versus impactor displacement and impactor energy versus time and, when the
+// run tracked damage, the failed area versus time (small multiples, layers in stacking order). Drawn by
+// gnuplot (Debian's gnuplot-nox) from generated scripts that read the results' CSV files directly; the
+// scripts are kept next to the images so a picture can be restyled and redrawn by hand. Several results
+// folders give overlays (e.g. three impact velocities, thesis Fig. 4.8).
+#include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -19,6 +22,13 @@ struct PlotCurve {
   std::string title;
   std::string data;            ///< inline CSV (a header line, then x,y rows); replaces csv if set
   std::string style = "lines"; ///< gnuplot style: lines, steps, ...
+  std::string colour;          ///< "#rrggbb", or empty for gnuplot's cycle
+};
+
+/// One panel of a small-multiples picture: its own title and curves (at most ~10, each distinguishable).
+struct PlotPanel {
+  std::string title;
+  std::vector<PlotCurve> curves;
 };
 
 struct PlotSpec {
@@ -27,6 +37,7 @@ struct PlotSpec {
   std::vector<PlotCurve> curves;
   std::string key = "top right"; ///< legend position
   std::string extra;             ///< further gnuplot commands (ranges, ...)
+  std::vector<PlotPanel> panels; ///< small multiples (2 columns) instead of `curves` when not empty
 };
 
 /// One results folder to draw, with its legend label.
@@ -36,6 +47,14 @@ struct PlotRun {
 };
 
 inline constexpr int plot_width_px = 900, plot_height_px = 600;
+/// Small multiples: a picture of 2 columns, each row of panels this high.
+inline constexpr int panels_width_px = 1400, panel_row_height_px = 400;
+/// Most curves in one panel: the tab10 palette's ten colours, each used once.
+inline constexpr std::size_t max_curves_per_panel = 10;
+
+/// Picture size of a spec in pixels: single plots plot_width_px x plot_height_px, small multiples
+/// panels_width_px wide and panel_row_height_px per row of two panels.
+[[nodiscard]] std::pair<int, int> picture_size(const PlotSpec& spec);
 
 /// The plots for these runs (one run: its own plots; several: overlays of the time histories).
 [[nodiscard]] std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs);
