@@ -16,10 +16,12 @@
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/impact_progress.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/plots.hpp"
+#include "plyimpact/io/progress.hpp"
 #include "plyimpact/io/results.hpp"
 #include "sweep_command.hpp"
 
@@ -29,13 +31,14 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
-#include <unistd.h>
 
 namespace {
 
@@ -48,6 +51,7 @@ struct Options {
   std::string criterion;
   double tolerance = 0.0;
   bool nonlinear = false; ///< --nonlinear (or the deck's top-level nonlinear = true)
+  ProgressSettings progress;
 };
 
 Deck read_deck_for(const std::string& path, AnalysisKind kind) {
@@ -162,29 +166,6 @@ extern "C" void on_signal(int /*signal*/) {
   interrupted.store(true);
 }
 
-/// Progress on a terminal only, and only once a run has taken more than a second.
-class ProgressBar final : public ImpactObserver {
-public:
-  ProgressBar() : enabled_(::isatty(STDOUT_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
-  void on_step(const StepView& v) override {
-    if (!enabled_ || v.step % 1000 != 0) return;
-    if (std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
-    shown_ = true;
-    fmt::print(stderr, "\r  t = {:10.1f} us, step {:>9}", v.t * 1e6, v.step);
-    std::fflush(stderr);
-  }
-  ~ProgressBar() override {
-    if (shown_) fmt::print(stderr, "\r{:40}\r", "");
-  }
-  ProgressBar(const ProgressBar&) = delete;
-  ProgressBar& operator=(const ProgressBar&) = delete;
-
-private:
-  bool enabled_;
-  bool shown_ = false;
-  std::chrono::steady_clock::time_point start_;
-};
-
 int run_impact(const Options& o) {
   // First thing: an interrupt during set-up still ends in consistent, incomplete results.
   std::signal(SIGINT, on_signal);
@@ -194,12 +175,9 @@ int run_impact(const Options& o) {
   ImpactRunOptions options;
   if (!o.output_dir.empty()) options.output_dir = o.output_dir;
   options.cancel = &interrupted;
-  ImpactRunOutcome run;
-  {
-    ProgressBar bar;
-    options.observers = {&bar};
-    run = run_impact(deck, impact, options);
-  }
+  ImpactProgress progress(impact.settings(), progress_style(o.progress, stderr), o.progress.line_interval_s);
+  options.observers = {&progress};
+  const ImpactRunOutcome run = run_impact(deck, impact, options);
   const ImpactResult& r = run.result;
   if (r.newton)
     fmt::print("non-linear ({}): {} Newton iterations in {} steps ({:.2f} per step, at most {}), {} "
@@ -251,7 +229,15 @@ int run_threshold(const Options& o) {
   options.damage = damage_options_from_deck(deck);
   const auto t0 = std::chrono::steady_clock::now();
   const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  Progress progress("threshold", 1.0, progress_style(o.progress, stderr), o.progress.line_interval_s);
+  options.on_trial = [&](const std::vector<ThresholdTrial>& trials) {
+    const ThresholdTrial& t = trials.back();
+    progress.update(bracket_progress(trials, options.tolerance),
+                    fmt::format("trial {}: v = {:.4g} m/s {}", trials.size(), t.velocity,
+                                t.failed ? "fails" : fmt::format("holds, peak index {:.3f}", t.peak_index)));
+  };
   const ThresholdResult r = find_threshold_velocity(impact, *criterion, options);
+  progress.finish(fmt::format("{} trials", r.trials.size()));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fmt::print("{}", threshold_text(name, r));
   if (const auto out = results_folder(o, deck)) {
@@ -316,6 +302,8 @@ int run(int argc, char** argv) {
   for (CLI::App* sub : {impact, stat, threshold})
     sub->add_flag("--nonlinear", o.nonlinear,
                   "large deflections: geometrically non-linear plate (or nonlinear = true in the deck)");
+  for (CLI::App* sub : {impact, threshold})
+    add_progress_options(*sub, o.progress);
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
   std::vector<std::string> plot_dirs;

@@ -205,6 +205,19 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   options.case_folders = o.case_folders;
   options.share_factorization = !o.no_sharing;
   options.cancel = &interrupted;
+  // Progress of this process's cases. Under MPI every rank reports its own share (the dispenser
+  // balances the ranks, so the share is about pending / ranks), as lines that carry the rank.
+  const ProgressStyle style =
+      ranks.size() > 1 && !o.progress.quiet ? ProgressStyle::lines : progress_style(o.progress, stderr);
+  const std::size_t share = (pending.size() + ranks.size() - 1) / ranks.size();
+  Progress progress(ranks.size() > 1 ? fmt::format("sweep rank {} of {}", ranks.rank(), ranks.size())
+                                     : "sweep",
+                    static_cast<double>(share), style, o.progress.line_interval_s);
+  std::atomic<std::size_t> recorded{0};
+  options.on_case_recorded = [&] {
+    const std::size_t done = ++recorded;
+    progress.update(static_cast<double>(done), fmt::format("{} of {} cases", done, share));
+  };
   int local_factorizations = 0;
   try {
     const NextCase next = ranks.dispenser(pending.size());
@@ -214,13 +227,16 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
     fmt::print(stderr, "plyimpact: error: rank {}: {}\n", ranks.rank(), e.what());
     ranks.abort(1);
   }
+  progress.finish(fmt::format("{} case{} recorded", recorded.load(), recorded.load() == 1 ? "" : "s"));
   ranks.barrier(); // sleeps while the slowest rank finishes its last case
   const long factorizations = ranks.sum(local_factorizations);
   if (!root) return interrupted.load() ? 130 : 0;
   const SweepFolder::TableStatus status = folder.write_table();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("sweep: {} cases run in {:.3f} s ({:.3f} cases/s), {} factorization{} of K\n", pending.size(),
-             wall, static_cast<double>(pending.size()) / wall, factorizations,
+  // The cases this run actually recorded: an interrupted sweep says how far it got.
+  const std::size_t finished = pending.size() - std::min<std::size_t>(status.missing, pending.size());
+  fmt::print("sweep: {} of {} cases run in {:.3f} s ({:.3f} cases/s), {} factorization{} of K\n", finished,
+             pending.size(), wall, static_cast<double>(finished) / wall, factorizations,
              factorizations == 1 ? "" : "s");
   if (status.missing > 0) {
     fmt::print(stderr, "plyimpact: {} of {} cases have no record: run again with --resume\n", status.missing,
@@ -255,7 +271,15 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
   sub->add_flag("--resume", o.resume, "run only the cases without a record in DIR/cases");
   sub->add_flag("--case-folders", o.case_folders, "also write DIR/cases/NNNNNN/ with each case's results");
   sub->add_flag("--no-sharing", o.no_sharing, "factor K for every case (to measure what sharing saves)");
+  add_progress_options(*sub, o.progress);
   return sub;
+}
+
+void add_progress_options(CLI::App& sub, ProgressSettings& progress) {
+  sub.add_flag("-q,--quiet", progress.quiet, "no progress display on stderr");
+  sub.add_option("--progress-every", progress.line_interval_s,
+                 "seconds between progress lines when stderr is not a terminal (default 10)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 int run_sweep_command(const SweepCommandOptions& o, const std::atomic<bool>& interrupted) {

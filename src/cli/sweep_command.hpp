@@ -1,6 +1,8 @@
 #pragma once
 // `plyimpact sweep DECK -o DIR`: parameter studies on all cores (--jobs) and across machines
 // (mpirun/srun, docs/cluster.md), resumable (--resume). See docs/sweep.md.
+#include "plyimpact/io/progress.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <atomic>
@@ -19,7 +21,11 @@ struct SweepCommandOptions {
   bool resume = false;
   bool case_folders = false;
   bool no_sharing = false; ///< factor K̄ for every case (benchmarks)
+  ProgressSettings progress;
 };
+
+/// --quiet and --progress-every on a subcommand (impact, threshold, sweep).
+void add_progress_options(CLI::App& sub, ProgressSettings& progress);
 
 CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o);
 

@@ -130,6 +130,28 @@ TEST(Cli, SigintFinishesTheStepAndWritesConsistentPartialResults) {
   EXPECT_EQ(rows, j["steps"].get<std::size_t>() + 2); // header + t = 0 + one row per step
 }
 
+TEST(Cli, ImpactAndThresholdShowProgressWithAnEtaInLogsAndNothingWhenQuiet) {
+  const fs::path dir = scratch("progress");
+  const std::string deck = std::string(PLYIMPACT_SOURCE_DIR) + "/examples/thesis-3.6-v268.toml";
+  // stderr is a pipe here, as in a CI or cluster log: plain lines, every update with --progress-every 0.
+  const CommandResult r = run("impact " + deck + " -o " + (dir / "lines").string() + " --progress-every 0");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("impact:  50 % (t = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" ms, step "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("elapsed, ETA "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("impact: 8626 steps to t = 8.626 ms, "), std::string::npos) << r.out;
+  const CommandResult quiet =
+      run("impact " + deck + " -o " + (dir / "quiet").string() + " --progress-every 0 -q");
+  ASSERT_EQ(quiet.status, 0) << quiet.out;
+  EXPECT_EQ(quiet.out.find("ETA"), std::string::npos) << quiet.out;
+  const std::string threshold =
+      std::string(PLYIMPACT_SOURCE_DIR) + "/examples/thesis-4.3-threshold-0_2-90_2-0_2.toml";
+  const CommandResult t = run("threshold " + threshold + " --progress-every 0");
+  ASSERT_EQ(t.status, 0) << t.out;
+  EXPECT_NE(t.out.find("threshold:   0 % (trial 1: v = "), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("threshold: 100 % (trial "), std::string::npos) << t.out;
+}
+
 TEST(Cli, UnrestrainedStaticPlateIsAClearErrorNotNaN) {
   const fs::path dir = scratch("free");
   std::string text = small_deck("static", "[load]\npressure = 1e5\n");

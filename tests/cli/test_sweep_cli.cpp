@@ -3,6 +3,7 @@
 // a failing case is recorded and the others run.
 #include "support/cli.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -277,16 +278,17 @@ TEST(SweepCli, CaseFoldersHoldEachCasesOwnResults) {
   }
 }
 
-TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsAndResumes) {
+TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsSaysHowManyAndResumes) {
   const fs::path dir = scratch("sweep-sigint");
   const fs::path deck = twelve_case_deck(dir, "nx = 12\nny = 8\n");
   const CommandResult whole = sweep(deck.string() + " -o " + (dir / "whole").string() + " --jobs 2");
   ASSERT_EQ(whole.status, 0) << whole.out;
   const fs::path out = dir / "interrupted";
+  const fs::path log = dir / "interrupted.log";
   const pid_t pid = ::fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
-    (void)std::freopen("/dev/null", "w", stdout);
+    (void)std::freopen(log.c_str(), "w", stdout);
     (void)std::freopen("/dev/null", "w", stderr);
     ::execl(PLYIMPACT_EXE, "plyimpact", "sweep", deck.c_str(), "-o", out.c_str(), "--jobs", "2",
             static_cast<char*>(nullptr));
@@ -302,6 +304,9 @@ TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsAndResumes) {
   const std::size_t kept = records_in(out);
   std::printf("  interrupted with %zu of 12 records\n", kept);
   ASSERT_LT(kept, 12U);
+  // The summary line counts the cases this run recorded, not the cases it was asked to run.
+  EXPECT_NE(read_text(log).find("sweep: " + std::to_string(kept) + " of 12 cases run"), std::string::npos)
+      << read_text(log);
   for (const auto& e : fs::directory_iterator(out / "cases")) { // the cases cut short left no record
     if (e.path().extension() == ".json") {
       EXPECT_EQ(nlohmann::json::parse(read_text(e.path()))["status"], "ok") << e.path();
@@ -310,6 +315,24 @@ TEST(SweepCli, CtrlCStopsWithStatus130KeepsOnlyWholeRecordsAndResumes) {
   const CommandResult resumed = sweep(deck.string() + " -o " + out.string() + " --resume");
   ASSERT_EQ(resumed.status, 0) << resumed.out;
   EXPECT_EQ(read_text(out / "sweep.csv"), read_text(dir / "whole" / "sweep.csv"));
+}
+
+TEST(SweepCli, ShowsProgressLinesWithAnEtaWhenStderrIsNotATerminalAndNoneWhenQuiet) {
+  const fs::path dir = scratch("sweep-progress");
+  const fs::path deck = twelve_case_deck(dir);
+  // --progress-every 0: a line per recorded case (the default is one line every 10 s).
+  const CommandResult r =
+      sweep(deck.string() + " -o " + (dir / "lines").string() + " --jobs 1 --progress-every 0");
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (int k = 1; k <= 12; ++k)
+    EXPECT_NE(r.out.find(fmt::format("% ({} of 12 cases), ", k)), std::string::npos) << k << "\n" << r.out;
+  EXPECT_NE(r.out.find("sweep: 100 % (12 of 12 cases), "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ETA 0:0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sweep: 12 cases recorded, "), std::string::npos) << r.out;
+  const CommandResult quiet =
+      sweep(deck.string() + " -o " + (dir / "quiet").string() + " --jobs 1 --progress-every 0 --quiet");
+  ASSERT_EQ(quiet.status, 0) << quiet.out;
+  EXPECT_EQ(quiet.out.find("ETA"), std::string::npos) << quiet.out;
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace plyimpact {
@@ -40,6 +41,7 @@ ThresholdResult find_threshold_velocity(const ImpactCase& impact, Criterion crit
     const DamageTracker& tracker = watch.tracker;
     const bool failed = tracker.any_failure();
     result.trials.push_back({v, failed, tracker.peak_index(criterion)});
+    if (options.on_trial) options.on_trial(result.trials);
     if (failed) onset_at_upper = tracker.first_onsets().front();
     return failed;
   };
@@ -93,6 +95,20 @@ ThresholdResult find_threshold_velocity(const ImpactCase& impact, Criterion crit
   result.lower = lower;
   result.first_failure = best;
   return result;
+}
+
+double bracket_progress(const std::vector<ThresholdTrial>& trials, double tolerance) {
+  double lower = 0.0, upper = std::numeric_limits<double>::infinity(), first_width = -1.0;
+  for (const ThresholdTrial& t : trials) {
+    if (t.failed)
+      upper = std::min(upper, t.velocity);
+    else
+      lower = std::max(lower, t.velocity);
+    if (first_width < 0.0 && std::isfinite(upper)) first_width = upper - lower;
+  }
+  if (!std::isfinite(upper)) return 0.0;
+  if (first_width <= tolerance) return 1.0;
+  return std::clamp(std::log(first_width / (upper - lower)) / std::log(first_width / tolerance), 0.0, 1.0);
 }
 
 } // namespace plyimpact

@@ -6,22 +6,29 @@
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace plyimpact {
-
-struct ThresholdOptions {
-  double tolerance = 0.01;     ///< bracket width at the end [m/s]
-  double max_velocity = 500.0; ///< give up above this [m/s]
-  DamageOptions damage;
-};
 
 struct ThresholdTrial {
   double velocity = 0.0;
   bool failed = false;
   double peak_index = 0.0;
 };
+
+struct ThresholdOptions {
+  double tolerance = 0.01;     ///< bracket width at the end [m/s]
+  double max_velocity = 500.0; ///< give up above this [m/s]
+  DamageOptions damage;
+  /// After every trial run, with all the trials so far (the last one is new): a progress display.
+  std::function<void(const std::vector<ThresholdTrial>&)> on_trial;
+};
+
+/// How far a search has narrowed its bracket, 0 to 1 on a log scale, from the first bracket
+/// [no failure, failure] to `tolerance`: log(w0 / w) / log(w0 / tolerance); 0 while no trial has failed.
+[[nodiscard]] double bracket_progress(const std::vector<ThresholdTrial>& trials, double tolerance);
 
 struct ThresholdResult {
   bool found = false;

@@ -325,6 +325,7 @@ int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::ve
         const auto record = worker.run(index);
         if (!record) break; // cancelled part-way: not recorded, runs again on --resume
         write_file_atomically(folder.record_path(index), record->dump(1) + "\n");
+        if (options.on_case_recorded) options.on_case_recorded();
       }
       factorizations += worker.factorizations();
     } catch (const std::exception& e) { // cannot write a record: stop this worker, report it

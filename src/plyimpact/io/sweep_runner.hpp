@@ -22,6 +22,7 @@ struct SweepOptions {
   bool case_folders = false;                 ///< also write DIR/cases/NNNNNN/ (summary.json, history.csv…)
   bool share_factorization = true;           ///< reuse a worker's plate and K̄ factor across cases
   const std::atomic<bool>* cancel = nullptr; ///< stop taking cases; a case cut short is not recorded
+  std::function<void()> on_case_recorded;    ///< after each record is on disk (any thread: thread-safe)
 };
 
 /// Thread-safe source of positions in the list of pending cases; nullopt when none is left.
