@@ -3,9 +3,9 @@
 //   plyimpact impact   examples/thesis-3.6-v268.toml -o results/v268   # the default analysis
 //   plyimpact laminate examples/annex2.toml          # ABD, F, inertias, Hertz constant
 //   plyimpact laminate examples/annex2.toml --json   # the same as JSON (SI)
-//   plyimpact static   examples/static-navier.toml -o results/static
-//   plyimpact modal    examples/modal-navier.toml  -o results/modal
-//   plyimpact buckling examples/buckling-isotropic.toml -o results/buckling
+//   plyimpact static   examples/static-annex2-loads.toml -o results/static
+//   plyimpact modal    examples/modal-annex2.toml -o results/modal
+//   plyimpact buckling examples/buckling-annex2.toml -o results/buckling
 #include "plyimpact/analysis/buckling_analysis.hpp"
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
