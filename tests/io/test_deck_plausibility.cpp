@@ -225,6 +225,12 @@ TEST(DeckPlausibility, ALaminateThickerThanAFifthOfTheSpanIsNoLongerAPlate) {
   EXPECT_EQ(w[0], "[laminate] is 0.0465 m thick, more than a fifth of the plate's shorter side (0.0762 m): "
                   "plate theory no longer applies (a thick plate or a solid needs a 3-D model); check "
                   "laminate.ply_thickness and the layup");
+  const auto mm = warnings_of(with(mm_deck, "layup = ", "layup = \"[45/90/-45/0]30s\""));
+  ASSERT_EQ(mm.size(), 1U) << joined(mm);
+  EXPECT_EQ(
+      mm[0].rfind("[laminate] is 46.5 mm thick, more than a fifth of the plate's shorter side (76.2 mm)", 0),
+      0U)
+      << mm[0];
   // 24 plies (4.65 mm) are well inside the limit.
   EXPECT_TRUE(warnings_of(si_deck).empty());
 }

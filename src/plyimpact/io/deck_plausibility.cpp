@@ -90,11 +90,12 @@ void check_laminate(const std::string& path, const LaminateSpec& spec, const Lam
   if (!d.plate || d.plate->rigid) return;
   const double span = std::min(d.plate->a, d.plate->b);
   const double h = laminate.thickness();
+  const UnitConversion mm = unit_conversion(d.units, "m");
   if (h > span / 5.0)
     c.warnings.push_back(fmt::format(
-        "[{}] is {} m thick, more than a fifth of the plate's shorter side ({} m): plate theory no longer "
+        "[{}] is {} {} thick, more than a fifth of the plate's shorter side ({} {}): plate theory no longer "
         "applies (a thick plate or a solid needs a 3-D model); check {}.ply_thickness and the layup",
-        path, short_number(h), short_number(span), path));
+        path, short_number(mm.from_si(h)), mm.unit, short_number(mm.from_si(span)), mm.unit, path));
 }
 
 /// The laminate under the impact point: the contact stiffness "auto" takes E2 of its ply 1.
