@@ -52,11 +52,19 @@ struct Options {
   double tolerance = 0.0;
   bool nonlinear = false; ///< --nonlinear (or the deck's top-level nonlinear = true)
   ProgressSettings progress;
+  bool strict = false; ///< --strict: plausibility warnings of the deck are errors
 };
 
-Deck read_deck_for(const std::string& path, AnalysisKind kind) {
-  Deck deck = load_deck(path);
+/// Reads the deck, prints its plausibility warnings (docs/deck.md) and refuses it under --strict.
+Deck read_deck_for(const Options& o, AnalysisKind kind) {
+  Deck deck = load_deck(o.deck_path);
   require_sections(deck, kind);
+  for (const std::string& w : deck.warnings)
+    fmt::print(stderr, "{}: {}: {}\n", deck.source, o.strict ? "error" : "warning", w);
+  if (o.strict && !deck.warnings.empty())
+    throw DeckError(fmt::format("{}: error: {} implausible value{} refused by --strict (fix the deck, or run "
+                                "without --strict to see the results anyway)",
+                                deck.source, deck.warnings.size(), deck.warnings.size() == 1 ? "" : "s"));
   return deck;
 }
 
@@ -66,7 +74,7 @@ std::optional<ResultsFolder> results_folder(const Options& o, const Deck& deck) 
 }
 
 int run_laminate(const Options& o) {
-  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::laminate);
+  const Deck deck = read_deck_for(o, AnalysisKind::laminate);
   fmt::print("{}", o.json ? laminate_report_json(deck) : laminate_report_text(deck));
   return 0;
 }
@@ -74,7 +82,7 @@ int run_laminate(const Options& o) {
 int run_static_nonlinear(const Options& o, const Deck& deck);
 
 int run_static(const Options& o) {
-  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::static_);
+  const Deck deck = read_deck_for(o, AnalysisKind::static_);
   if (o.nonlinear || deck.nonlinear) return run_static_nonlinear(o, deck);
   const PlateModel model = plate_model(deck);
   const StaticResult r = solve_static(model, *deck.load);
@@ -124,7 +132,7 @@ int run_static_nonlinear(const Options& o, const Deck& deck) {
 }
 
 int run_modal(const Options& o) {
-  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::modal);
+  const Deck deck = read_deck_for(o, AnalysisKind::modal);
   const PlateModel model = plate_model(deck);
   const ModalResult r = solve_modal(model, deck.modal.count);
   fmt::print("modal: {} elements, {} free DOFs, {} zero-energy modes (rigid-body or spurious)\n",
@@ -142,7 +150,7 @@ int run_modal(const Options& o) {
 }
 
 int run_buckling(const Options& o) {
-  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::buckling);
+  const Deck deck = read_deck_for(o, AnalysisKind::buckling);
   const PlateModel model = plate_model(deck);
   const BucklingResult r = solve_buckling(model, *deck.buckling);
   const auto& b = *deck.buckling;
@@ -170,7 +178,7 @@ int run_impact(const Options& o) {
   // First thing: an interrupt during set-up still ends in consistent, incomplete results.
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
+  const Deck deck = read_deck_for(o, AnalysisKind::impact);
   const ImpactCase impact(impact_case_description(deck, o.nonlinear));
   ImpactRunOptions options;
   if (!o.output_dir.empty()) options.output_dir = o.output_dir;
@@ -215,7 +223,7 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
 }
 
 int run_threshold(const Options& o) {
-  const Deck deck = read_deck_for(o.deck_path, AnalysisKind::threshold);
+  const Deck deck = read_deck_for(o, AnalysisKind::threshold);
   std::string name = !o.criterion.empty() ? o.criterion : deck.threshold.criterion;
   if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
   if (name.empty())
@@ -260,6 +268,8 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
   CLI::App* sub = app.add_subcommand(name, what);
   sub->add_option("deck", o.deck_path, "TOML input deck")->required();
   sub->add_option("-o,--output", o.output_dir, "results folder (summary.json, CSV tables)");
+  sub->add_flag("--strict", o.strict,
+                "treat the deck's plausibility warnings (values that look like unit slips) as errors");
   return sub;
 }
 
@@ -291,6 +301,7 @@ int run(int argc, char** argv) {
       app.add_subcommand("laminate", "Ply and laminate properties (A, B, D, F, inertias, Hertz k)");
   laminate->add_option("deck", o.deck_path, "TOML input deck")->required();
   laminate->add_flag("--json", o.json, "print JSON (SI units) instead of text");
+  laminate->add_flag("--strict", o.strict, "treat the deck's plausibility warnings (unit slips) as errors");
   CLI::App* impact =
       add_analysis(app, "impact", "Impact of a rigid sphere: contact force, deflection, energies", o);
   CLI::App* threshold = add_analysis(

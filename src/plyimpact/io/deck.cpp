@@ -1,6 +1,7 @@
 // The deck parser (docs/deck.md): the top-level table and the order in which the tables are read;
 // each table has its reader in deck_*.cpp (deck_tables.hpp).
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/deck_plausibility.hpp"
 #include "plyimpact/io/deck_table.hpp"
 #include "plyimpact/io/deck_tables.hpp"
 
@@ -68,8 +69,8 @@ void read_materials(const TableReader& top, Deck& d) {
       fail(top.file(), node.source(),
            fmt::format("materials.{} must be a table of material constants ([materials.{}])", name.str(),
                        name.str()));
-    d.materials.push_back(read_material(TableReader(*t, "materials." + std::string(name.str()), top.file()),
-                                        std::string(name.str())));
+    d.materials.push_back(
+        read_material(top.nested(*t, "materials." + std::string(name.str())), std::string(name.str())));
   }
 }
 
@@ -86,11 +87,22 @@ void read_laminates(const TableReader& top, Deck& d) {
         fail(top.file(), node.source(),
              fmt::format("laminates.{} must be a table like [laminate] ([laminates.{}])", name.str(),
                          name.str()));
-      d.laminates.push_back(read_laminate(d.materials,
-                                          TableReader(*t, "laminates." + std::string(name.str()), top.file()),
+      d.laminates.push_back(read_laminate(d.materials, top.nested(*t, "laminates." + std::string(name.str())),
                                           std::string(name.str())));
     }
   d.regions = read_regions(d, top);
+}
+
+/// Top-level `units`: how every number of the deck is written (docs/deck.md).
+UnitSystem read_units(const toml::table& root, const std::string& source) {
+  const TableReader top(root, "", source);
+  const auto name = top.optional_string("units");
+  if (!name) return UnitSystem::si;
+  if (const auto u = parse_unit_system(*name)) return *u;
+  const auto best = closest_name(*name, std::vector<std::string_view>{"SI", "mm-N-MPa-tonne"});
+  top.fail_at("units",
+              fmt::format("units = \"{}\" is not a unit system{}: expected {}", *name,
+                          best ? fmt::format(" (did you mean \"{}\"?)", *best) : "", unit_system_names()));
 }
 
 } // namespace
@@ -99,11 +111,12 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   Deck d;
   d.source = source;
   d.text = std::string(text);
-  const TableReader top(root, "", source);
-  top.only({"analysis",  "title",          "materials",  "laminate", "laminates", "region",
-            "plate",     "mesh",           "boundary",   "impactor", "contact",   "time",
-            "load",      "modal",          "buckling",   "damage",   "threshold", "output",
-            "nonlinear", "strain_measure", "load_steps", "sweep"});
+  d.units = read_units(root, source);
+  const TableReader top(root, "", source, d.units);
+  top.only({"units",  "analysis",  "title",          "materials",  "laminate", "laminates",
+            "region", "plate",     "mesh",           "boundary",   "impactor", "contact",
+            "time",   "load",      "modal",          "buckling",   "damage",   "threshold",
+            "output", "nonlinear", "strain_measure", "load_steps", "sweep"});
   d.title = top.optional_string("title").value_or("");
   read_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {
@@ -120,7 +133,8 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   read_laminates(top, d);
   if (const auto t = top.optional_table("mesh")) d.mesh = read_mesh(*t);
   if (const auto t = top.optional_table("boundary")) d.boundary = read_boundary(*t);
-  if (const auto t = top.optional_table("impactor")) d.impactor = read_impactor(*t, d.plate);
+  if (const auto t = top.optional_table("impactor"))
+    d.impactor = read_impactor(*t, d.plate, d.impactor_input);
   if (const auto t = top.optional_table("contact")) d.contact = read_contact(*t);
   if (const auto t = top.optional_table("time")) d.time = read_time(*t);
   if (const auto t = top.optional_table("load")) d.load = read_load(*t, d.plate);
@@ -129,6 +143,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("damage")) d.damage = read_damage(*t, d);
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
+  d.warnings = plausibility_warnings(d);
   return d;
 }
 

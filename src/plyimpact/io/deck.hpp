@@ -7,6 +7,7 @@
 #include "plyimpact/fem/mesh_spec.hpp"
 #include "plyimpact/fem/regions.hpp"
 #include "plyimpact/io/deck_error.hpp"
+#include "plyimpact/io/deck_units.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 
 #include <filesystem>
@@ -53,8 +54,15 @@ struct VtkOutputSettings {
   double thickness_scale = 1.0; ///< thickness exaggeration of the layered (3-D) view
 };
 
+/// [impactor] as written where Impactor keeps only what follows from it (for plausibility checks).
+struct ImpactorInput {
+  std::optional<double> density; ///< [kg/m^3] when the mass was given as a density
+  std::optional<double> energy;  ///< [J] when the velocity was given as an impact energy
+};
+
 struct Deck {
-  std::string source; ///< file name used in messages
+  std::string source;                ///< file name used in messages
+  UnitSystem units = UnitSystem::si; ///< top-level `units`: how the numbers were written (all SI here)
   std::string title;
   AnalysisKind analysis = AnalysisKind::impact;
   std::vector<Material> materials;
@@ -66,6 +74,7 @@ struct Deck {
   std::optional<MeshSpec> mesh;
   std::optional<BoundaryConditions> boundary;
   std::optional<Impactor> impactor;
+  ImpactorInput impactor_input;
   ContactLawParameters contact;
   TimeStepping time;
   std::optional<StaticLoad> load;
@@ -82,6 +91,9 @@ struct Deck {
   std::string text;                              ///< the deck's own text, recorded next to results
   bool nonlinear = false;                        ///< top-level `nonlinear`: large deflections (SPEC §8)
   NonlinearSettings nonlinear_settings;          ///< top-level `strain_measure`, `load_steps`
+  /// Plausibility warnings (deck_plausibility.hpp): values that look like a unit slip. The CLI prints
+  /// them, summary.json lists them under "warnings", --strict refuses the deck.
+  std::vector<std::string> warnings;
 };
 
 /// Parses a deck from text; `source` names it in messages. Throws DeckError.

@@ -6,6 +6,23 @@
 
 namespace plyimpact::deck_tables {
 
+namespace {
+
+/// "unknown criterion "NAME" (did you mean "tsai-wu"?)" or the list of the known names.
+std::string unknown_criterion(std::string_view what, std::string_view name) {
+  std::vector<std::string> names;
+  std::string list;
+  for (const Criterion k : all_criteria()) {
+    names.emplace_back(to_string(k));
+    list += (list.empty() ? "" : " | ") + names.back();
+  }
+  if (const auto best = closest_name(name, names))
+    return fmt::format("{}: unknown criterion \"{}\" (did you mean \"{}\"?)", what, name, *best);
+  return fmt::format("{}: unknown criterion \"{}\": expected one of {}", what, name, list);
+}
+
+} // namespace
+
 StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate) {
   t.only({"pressure", "point", "patch"});
   StaticLoad l;
@@ -65,12 +82,10 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
     if (arr == nullptr) t.fail_at("criteria", "damage.criteria must be an array of criterion names");
     for (const toml::node& n : *arr) {
       const auto* s = n.as_string();
-      if (s == nullptr || !parse_criterion(s->get())) {
-        std::string names;
-        for (const Criterion k : all_criteria())
-          names += (names.empty() ? "" : " | ") + std::string(to_string(k));
-        fail(t.file(), n.source(), "damage.criteria: expected a criterion name, one of " + names);
-      }
+      if (s == nullptr)
+        fail(t.file(), n.source(), "damage.criteria: expected criterion names (strings) such as \"tsai-wu\"");
+      if (!parse_criterion(s->get()))
+        fail(t.file(), n.source(), unknown_criterion("damage.criteria", s->get()));
       const Criterion crit = *parse_criterion(s->get());
       if (d.laminate)
         for (std::size_t k = 0; k < d.laminate->ply_count(); ++k) {
@@ -96,8 +111,7 @@ ThresholdSettings read_threshold(const TableReader& t) {
   ThresholdSettings threshold;
   t.only({"criterion", "tolerance", "max_velocity"});
   if (const auto c = t.optional_string("criterion")) {
-    if (!parse_criterion(*c))
-      t.fail_at("criterion", fmt::format("threshold.criterion: unknown criterion \"{}\"", *c));
+    if (!parse_criterion(*c)) t.fail_at("criterion", unknown_criterion("threshold.criterion", *c));
     threshold.criterion = *c;
   }
   threshold.tolerance = t.optional_positive("tolerance", "m/s").value_or(0.01);

@@ -2,25 +2,50 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numbers>
 
 namespace plyimpact::deck_tables {
 
-Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate) {
-  t.only({"mass", "density", "radius", "E", "nu", "velocity", "x", "y"});
+namespace {
+
+/// impactor.velocity, or the velocity √(2E/m) of the impact energy impactor.energy: exactly one.
+double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& input) {
+  const bool velocity = t.has("velocity");
+  const bool energy = t.has("energy");
+  if (velocity && energy)
+    t.fail_at("energy", fmt::format("give impactor.velocity ({}) or impactor.energy ({}), not both",
+                                    t.deck_unit("m/s"), t.deck_unit("J")));
+  if (!velocity && !energy)
+    t.fail_here(fmt::format("[impactor] needs velocity ({}, towards the plate) or energy ({}, the impact "
+                            "energy: velocity = sqrt(2 energy / mass))",
+                            t.deck_unit("m/s"), t.deck_unit("J")));
+  if (velocity) return t.positive("velocity", "m/s");
+  input.energy = t.positive("energy", "J");
+  return std::sqrt(2.0 * *input.energy / mass);
+}
+
+} // namespace
+
+Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
+                       ImpactorInput& input) {
+  t.only({"mass", "density", "radius", "E", "nu", "velocity", "energy", "x", "y"});
   Impactor imp;
   imp.radius = t.positive("radius", "m");
   const auto mass = t.optional_positive("mass", "kg");
   const auto density = t.optional_positive("density", "kg/m^3");
   if (mass && density) t.fail_at("density", "give impactor.mass or impactor.density, not both");
   if (!mass && !density)
-    t.fail_here("[impactor] needs mass (kg) or density (kg/m^3, mass of the sphere of the given radius)");
+    t.fail_here(
+        fmt::format("[impactor] needs mass ({}) or density ({}, mass of the sphere of the given radius)",
+                    t.deck_unit("kg"), t.deck_unit("kg/m^3")));
+  input.density = density;
   imp.mass = mass ? *mass : *density * 4.0 / 3.0 * std::numbers::pi * imp.radius * imp.radius * imp.radius;
   imp.E = t.positive("E", "Pa");
   imp.nu = t.optional_number("nu", "-").value_or(0.3);
   if (!(imp.nu > -1.0 && imp.nu < 0.5))
     t.fail_at("nu", fmt::format("impactor.nu must lie in (-1, 0.5), got {}", imp.nu));
-  imp.velocity = t.positive("velocity", "m/s");
+  imp.velocity = read_impact_velocity(t, imp.mass, input);
   const auto x = t.optional_number("x", "m");
   const auto y = t.optional_number("y", "m");
   if (plate) {

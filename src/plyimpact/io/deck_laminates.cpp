@@ -44,7 +44,7 @@ NamedLaminate read_laminate(const std::vector<Material>& materials, const TableR
       t.fail_at("override",
                 fmt::format("{0}.override must be an array of tables: [[{0}.override]]", t.path()));
     for (const toml::node& item : *arr) {
-      const TableReader o(*item.as_table(), t.path() + ".override", file);
+      const TableReader o = t.nested(*item.as_table(), t.path() + ".override");
       o.only({"plies", "material", "thickness"});
       PlyOverride po;
       const toml::node* pn = o.node("plies");
@@ -85,7 +85,7 @@ std::vector<Region> read_regions(const Deck& d, const TableReader& top) {
         "region",
         "region must be an array of tables: [[region]] with laminate = \"NAME\", x = [x0, x1], y = [y0, y1]");
   for (const toml::node& item : *arr) {
-    const TableReader t(*item.as_table(), "region", top.file());
+    const TableReader t = top.nested(*item.as_table(), "region");
     t.only({"laminate", "x", "y"});
     Region r;
     r.name = t.string("laminate", "the name of a [laminates.NAME] table");
@@ -102,10 +102,15 @@ std::vector<Region> read_regions(const Deck& d, const TableReader& top) {
     const auto bounds = [&](std::string_view key, double length) -> std::pair<double, double> {
       const toml::node* b = t.node(key);
       const toml::array* pair = b != nullptr ? b->as_array() : nullptr;
-      const auto lo = pair != nullptr && pair->size() == 2 ? (*pair)[0].value<double>() : std::nullopt;
-      const auto hi = pair != nullptr && pair->size() == 2 ? (*pair)[1].value<double>() : std::nullopt;
+      const auto bound = [&](std::size_t i) -> std::optional<double> {
+        const auto v = pair != nullptr && pair->size() == 2 ? (*pair)[i].value<double>() : std::nullopt;
+        return v ? std::optional<double>(t.to_si(*v, "m")) : std::nullopt;
+      };
+      const auto lo = bound(0);
+      const auto hi = bound(1);
       if (!lo || !hi || !(*lo < *hi))
-        t.fail_here(fmt::format("region.{} must be [{}0, {}1] in m with {}0 < {}1", key, key, key, key, key));
+        t.fail_here(fmt::format("region.{} must be [{}0, {}1] in {} with {}0 < {}1", key, key, key,
+                                t.deck_unit("m"), key, key));
       if (*lo < 0.0 || *hi > length * (1.0 + 1e-12))
         t.fail_at(key, fmt::format("region.{} = [{}, {}] m reaches outside the plate (0 to {} m)", key, *lo,
                                    *hi, length));

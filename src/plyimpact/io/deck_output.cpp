@@ -18,7 +18,7 @@ std::vector<double> time_list(const TableReader& t, std::string_view key) {
     if (!v || !(*v >= 0.0) || !std::isfinite(*v))
       fail(t.file(), item.source(),
            fmt::format("{}.{}: expected a time in s (a number >= 0)", t.path(), key));
-    times.push_back(*v);
+    times.push_back(t.to_si(*v, "s"));
   }
   return times;
 }
@@ -78,7 +78,7 @@ void read_output(const TableReader& t, Deck& d) {
     if (arr == nullptr || !arr->is_array_of_tables())
       t.fail_at("probe", "output.probe must be an array of tables: [[output.probe]]");
     for (const toml::node& item : *arr) {
-      const TableReader p(*item.as_table(), "output.probe", t.file());
+      const TableReader p = t.nested(*item.as_table(), "output.probe");
       p.only({"name", "x", "y", "ply", "interface", "position"});
       StressProbeSpec spec;
       spec.x = p.number("x", "m");

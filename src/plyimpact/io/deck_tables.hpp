@@ -32,7 +32,9 @@ inline constexpr long max_step_cap = 100'000'000;
 [[nodiscard]] BoundaryConditions read_boundary(const TableReader& t);
 
 // deck_impact.cpp
-[[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate);
+/// [impactor]; `input` receives the density and energy when the deck gives them.
+[[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
+                                     ImpactorInput& input);
 [[nodiscard]] ContactLawParameters read_contact(const TableReader& t);
 [[nodiscard]] TimeStepping read_time(const TableReader& t);
 /// Top-level `nonlinear`, `strain_measure`, `load_steps`.

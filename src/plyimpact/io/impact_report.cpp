@@ -27,7 +27,9 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["end_time"] = r.end_time;
   j["complete"] = r.complete;
   if (!r.stop_reason.empty()) j["stop_reason"] = r.stop_reason;
-  j["warnings"] = r.warnings; // guards: coarse Δt, impact point on an element boundary
+  j["warnings"] = deck.warnings; // plausibility of the deck (deck_plausibility.hpp), then the guards:
+  for (const std::string& w : r.warnings) // coarse Δt, impact point on an element boundary
+    j["warnings"].push_back(w);
   j["wall_time"] = r.wall_time;
   j["contact_stiffness"] = s.k;
   j["impactor_mass"] = s.impactor.mass;

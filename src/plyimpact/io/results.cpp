@@ -8,10 +8,12 @@
 namespace plyimpact {
 
 nlohmann::json summary_header(const Deck& deck, const std::string& analysis) {
-  return {{"analysis", analysis},
-          {"program", "plyimpact"},
-          {"version", PLYIMPACT_VERSION},
-          {"deck", deck.source}};
+  nlohmann::json j = {{"analysis", analysis},
+                      {"program", "plyimpact"},
+                      {"version", PLYIMPACT_VERSION},
+                      {"deck", deck.source}};
+  if (!deck.warnings.empty()) j["warnings"] = deck.warnings; // plausibility (deck_plausibility.hpp)
+  return j;
 }
 
 ResultsFolder::ResultsFolder(std::filesystem::path dir, const Deck& deck) : dir_(std::move(dir)) {

@@ -3,6 +3,7 @@
 // is checked for its type, unit and range, unknown keys are refused with the closest known name, and
 // every error reads "FILE:LINE:COLUMN: error: ..." (DeckError).
 #include "plyimpact/io/deck_error.hpp"
+#include "plyimpact/io/deck_units.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -14,6 +15,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace plyimpact {
 
@@ -29,11 +31,36 @@ namespace plyimpact {
 /// "a, b, c".
 [[nodiscard]] std::string join(std::initializer_list<std::string_view> names);
 
-/// Typed, located access to one TOML table; rejects unknown keys with a suggestion.
+/// The entry of `names` closest to `name` when it is close enough to be a slip of the keyboard
+/// (edit distance at most max(2, a third of the name)), for "did you mean" hints.
+template <class Names>
+[[nodiscard]] std::optional<std::string> closest_name(std::string_view name, const Names& names) {
+  std::optional<std::string> best;
+  std::size_t best_d = 1000;
+  for (const auto& n : names)
+    if (const std::size_t d = edit_distance(name, n); d < best_d) best_d = d, best = std::string(n);
+  if (best_d <= std::max<std::size_t>(2, name.size() / 3)) return best;
+  return std::nullopt;
+}
+
+/// Typed, located access to one TOML table; rejects unknown keys with a suggestion. Numbers are
+/// written in the deck's unit system and returned in SI (the `unit` arguments name the SI unit).
 class TableReader {
 public:
-  TableReader(const toml::table& table, std::string path, const std::string& file)
-      : table_(table), path_(std::move(path)), file_(file) {}
+  TableReader(const toml::table& table, std::string path, const std::string& file,
+              UnitSystem units = UnitSystem::si)
+      : table_(table), path_(std::move(path)), file_(file), units_(units) {}
+
+  /// A reader of `table`, a table inside this one, named `path` in messages (same file and units).
+  [[nodiscard]] TableReader nested(const toml::table& table, std::string path) const {
+    return {table, std::move(path), file_, units_};
+  }
+
+  [[nodiscard]] UnitSystem units() const { return units_; }
+  /// `written` (a number in the deck's units of the quantity whose SI unit is `si_unit`) in SI.
+  [[nodiscard]] double to_si(double written, std::string_view si_unit) const {
+    return unit_conversion(units_, si_unit).to_si(written);
+  }
 
   [[nodiscard]] const std::string& path() const { return path_; }
   [[nodiscard]] const std::string& file() const { return file_; }
@@ -51,15 +78,9 @@ public:
     for (auto&& [key, node] : table_) {
       const std::string_view k = key.str();
       if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
-      std::string_view best;
-      std::size_t best_d = 1000;
-      for (const auto a : allowed) {
-        const std::size_t d = edit_distance(k, a);
-        if (d < best_d) best_d = d, best = a;
-      }
       std::string msg = fmt::format("unknown key '{}' in [{}]", k, path_);
-      if (best_d <= std::max<std::size_t>(2, k.size() / 3))
-        msg += fmt::format(" (did you mean '{}'?)", best);
+      if (const auto best = closest_name(k, allowed))
+        msg += fmt::format(" (did you mean '{}'?)", *best);
       else
         msg += fmt::format(" (expected one of: {})", join(allowed));
       fail(file_, key.source().begin.line > 0 ? key.source() : node.source(), msg);
@@ -71,40 +92,34 @@ public:
   /// An error located at the table itself (for what is missing or inconsistent as a whole).
   [[noreturn]] void fail_here(const std::string& message) const { fail(file_, table_.source(), message); }
 
+  /// The number at `key` in SI (`unit`: its SI unit), converted from the deck's units.
   [[nodiscard]] std::optional<double> optional_number(std::string_view key, std::string_view unit) const {
-    const toml::node* n = table_.get(key);
-    if (n == nullptr) return std::nullopt;
-    double v = 0.0;
-    if (const auto* f = n->as_floating_point())
-      v = f->get();
-    else if (const auto* i = n->as_integer())
-      v = static_cast<double>(i->get());
-    else
-      fail_at(key, fmt::format("{}.{} must be a number in {}, got {}", path_, key, unit, type_name(*n)));
-    if (!std::isfinite(v)) fail_at(key, fmt::format("{}.{} must be a finite number in {}", path_, key, unit));
-    return v;
+    const auto v = written_number(key, unit);
+    if (!v) return std::nullopt;
+    return to_si(*v, unit);
   }
 
   [[nodiscard]] double number(std::string_view key, std::string_view unit) const {
     const auto v = optional_number(key, unit);
-    if (!v) fail(file_, table_.source(), fmt::format("missing key {}.{} (a number in {})", path_, key, unit));
+    if (!v)
+      fail(file_, table_.source(),
+           fmt::format("missing key {}.{} (a number in {})", path_, key, deck_unit(unit)));
     return *v;
   }
 
   [[nodiscard]] double positive(std::string_view key, std::string_view unit) const {
-    const double v = number(key, unit);
-    check_positive(key, v, unit);
-    return v;
+    if (!has(key))
+      fail(file_, table_.source(),
+           fmt::format("missing key {}.{} (a number in {})", path_, key, deck_unit(unit)));
+    return *optional_positive(key, unit);
   }
 
   [[nodiscard]] std::optional<double> optional_positive(std::string_view key, std::string_view unit) const {
-    const auto v = optional_number(key, unit);
-    if (v) check_positive(key, *v, unit);
-    return v;
-  }
-
-  void check_positive(std::string_view key, double v, std::string_view unit) const {
-    if (!(v > 0.0)) fail_at(key, fmt::format("{}.{} must be positive (in {}), got {}", path_, key, unit, v));
+    const auto v = written_number(key, unit);
+    if (!v) return std::nullopt;
+    if (!(*v > 0.0))
+      fail_at(key, fmt::format("{}.{} must be positive (in {}), got {}", path_, key, deck_unit(unit), *v));
+    return to_si(*v, unit);
   }
 
   [[nodiscard]] std::optional<long> optional_integer(std::string_view key) const {
@@ -137,11 +152,15 @@ public:
     const auto s = optional_string(key);
     if (!s) return std::nullopt;
     std::string names;
+    std::vector<std::string_view> all;
     for (const auto& [name, value] : choices) {
       if (*s == name) return value;
       names += (names.empty() ? "" : " | ") + std::string(name);
+      all.push_back(name);
     }
-    fail_at(key, fmt::format("{}.{} must be one of {}, got \"{}\"", path_, key, names, *s));
+    const auto best = closest_name(*s, all);
+    const std::string hint = best ? fmt::format(" (did you mean \"{}\"?)", *best) : "";
+    fail_at(key, fmt::format("{}.{} must be one of {}, got \"{}\"{}", path_, key, names, *s, hint));
   }
 
   [[nodiscard]] std::optional<TableReader> optional_table(std::string_view key) const {
@@ -149,7 +168,7 @@ public:
     if (n == nullptr) return std::nullopt;
     const auto* t = n->as_table();
     if (t == nullptr) fail_at(key, fmt::format("{}.{} must be a table, got {}", path_, key, type_name(*n)));
-    return TableReader(*t, path_.empty() ? std::string(key) : path_ + "." + std::string(key), file_);
+    return nested(*t, path_.empty() ? std::string(key) : path_ + "." + std::string(key));
   }
 
   /// A number or the string "auto" (returned as nullopt).
@@ -159,15 +178,38 @@ public:
     if (const auto* s = n->as_string()) {
       if (s->get() == "auto") return std::nullopt;
       fail_at(key, fmt::format("{}.{} must be a positive number in {} or \"auto\", got \"{}\"", path_, key,
-                               unit, s->get()));
+                               deck_unit(unit), s->get()));
     }
     return optional_positive(key, unit);
   }
 
+  /// The unit numbers of SI unit `si_unit` are written in ("MPa" for "Pa" in mm-N-MPa-tonne).
+  [[nodiscard]] std::string_view deck_unit(std::string_view si_unit) const {
+    return unit_conversion(units_, si_unit).unit;
+  }
+
 private:
+  /// The number at `key` as written (deck units), checked to be a finite number.
+  [[nodiscard]] std::optional<double> written_number(std::string_view key, std::string_view unit) const {
+    const toml::node* n = table_.get(key);
+    if (n == nullptr) return std::nullopt;
+    double v = 0.0;
+    if (const auto* f = n->as_floating_point())
+      v = f->get();
+    else if (const auto* i = n->as_integer())
+      v = static_cast<double>(i->get());
+    else
+      fail_at(key, fmt::format("{}.{} must be a number in {}, got {}", path_, key, deck_unit(unit),
+                               type_name(*n)));
+    if (!std::isfinite(v))
+      fail_at(key, fmt::format("{}.{} must be a finite number in {}", path_, key, deck_unit(unit)));
+    return v;
+  }
+
   const toml::table& table_;
   std::string path_;
   const std::string& file_;
+  UnitSystem units_;
 };
 
 } // namespace plyimpact
