@@ -23,6 +23,7 @@
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/progress.hpp"
 #include "plyimpact/io/results.hpp"
+#include "plyimpact/io/vtk_output.hpp"
 #include "sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -73,6 +74,11 @@ std::optional<ResultsFolder> results_folder(const Options& o, const Deck& deck) 
   return ResultsFolder(o.output_dir, deck);
 }
 
+/// ParaView options of the deck's [output] vtk* keys (no failure criteria outside an impact).
+VtkOptions vtk_options(const Deck& deck) {
+  return {deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, {}, {}};
+}
+
 int run_laminate(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::laminate);
   fmt::print("{}", o.json ? laminate_report_json(deck) : laminate_report_text(deck));
@@ -97,6 +103,7 @@ int run_static(const Options& o) {
     j["max_abs_deflection"] = r.max_abs_deflection;
     j["dofs"] = model.size();
     out->write_nodal_field("displacements.csv", model, r.u);
+    if (deck.vtk.enabled) write_static_vtk(out->path(), model, r.u, vtk_options(deck));
     out->write_json("summary.json", j);
   }
   return 0;
@@ -126,6 +133,7 @@ int run_static_nonlinear(const Options& o, const Deck& deck) {
     j["step_cuts"] = r.step_cuts;
     j["dofs"] = model.size();
     out->write_nodal_field("displacements.csv", model, r.state.u);
+    if (deck.vtk.enabled) write_static_vtk(out->path(), model, r.state.u, vtk_options(deck));
     out->write_json("summary.json", j);
   }
   return 0;
@@ -144,6 +152,7 @@ int run_modal(const Options& o) {
     j["frequencies_hz"] = r.frequencies_hz;
     j["zero_energy_modes"] = r.zero_energy_modes;
     out->write_mode_shapes("modes.csv", model, r.modes, "mode");
+    if (deck.vtk.enabled) write_modes_vtk(out->path(), model, r.modes, vtk_options(deck));
     out->write_json("summary.json", j);
   }
   return 0;
@@ -163,6 +172,7 @@ int run_buckling(const Options& o) {
     j["load_factors"] = r.load_factors;
     j["reference_load"] = {{"Nx", b.Nx}, {"Ny", b.Ny}, {"Nxy", b.Nxy}};
     out->write_mode_shapes("modes.csv", model, r.modes, "buckling");
+    if (deck.vtk.enabled) write_modes_vtk(out->path(), model, r.modes, vtk_options(deck));
     out->write_json("summary.json", j);
   }
   return 0;

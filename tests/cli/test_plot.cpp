@@ -138,14 +138,17 @@ TEST(CliOutput, ImpactWritesParaViewFramesAndAnAnnexTwoStyleReport) {
   ASSERT_EQ(r.status, 0) << r.out;
   const auto summary = read_json(dir / "out" / "summary.json");
   const long steps = summary["steps"].get<long>();
-  // A frame every 20 steps: 80 steps of 0.5 µs to 40 µs → frames at steps 20, 40, 60, 80.
-  EXPECT_EQ(summary["vtk_frames"].get<long>(), steps / 20);
+  // A frame every 20 steps: 80 steps of 0.5 µs to 40 µs → frames at steps 20, 40, 60, 80, and the
+  // undeformed plate at t = 0 (the last step, 80, is already a frame).
+  ASSERT_EQ(steps % 20, 0);
+  EXPECT_EQ(summary["vtk_frames"].get<long>(), steps / 20 + 1);
   vtkNew<vtkXMLDataParser> parser;
   parser->SetFileName((dir / "out" / "plate.pvd").string().c_str());
   ASSERT_EQ(parser->Parse(), 1);
   vtkXMLDataElement* collection = parser->GetRootElement()->FindNestedElementWithName("Collection");
   ASSERT_NE(collection, nullptr);
-  EXPECT_EQ(collection->GetNumberOfNestedElements(), steps / 20);
+  ASSERT_EQ(collection->GetNumberOfNestedElements(), steps / 20 + 1);
+  EXPECT_STREQ(collection->GetNestedElement(0)->GetAttribute("timestep"), "0");
   EXPECT_TRUE(fs::exists(dir / "out" / "layers.pvd"));
 
   const std::string report = read_text(dir / "out" / "report.txt");
@@ -159,6 +162,45 @@ TEST(CliOutput, ImpactWritesParaViewFramesAndAnAnnexTwoStyleReport) {
   // One displacement row per node of the 6 × 4 Q9 mesh: 13 × 9 = 117.
   const std::string table = report.substr(report.find("DISPLACEMENTS AT"));
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 3 + 117);
+}
+
+TEST(CliOutput, ParaViewFramesIncludeTheFirstAndTheLastStepWhateverTheInterval) {
+  const fs::path dir = scratch("vtk-ends");
+  std::string deck = impact_deck(12.0);
+  deck.replace(deck.find("vtk_every = 20"), 14, "vtk_every = 30"); // 80 steps: 30, 60 and not 80
+  const CommandResult r = run("impact " + write(dir, deck).string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string pvd = read_text(dir / "out" / "plate.pvd");
+  for (const char* frame :
+       {"plate_0000000.vtu", "plate_0000030.vtu", "plate_0000060.vtu", "plate_0000080.vtu"})
+    EXPECT_NE(pvd.find(frame), std::string::npos) << frame;
+  EXPECT_EQ(read_json(dir / "out" / "summary.json")["vtk_frames"].get<long>(), 4);
+}
+
+TEST(CliOutput, StaticAndModalWriteParaViewFilesWithVtkTrue) {
+  const fs::path dir = scratch("vtk-static-modal");
+  const std::string source(PLYIMPACT_SOURCE_DIR);
+  for (const char* name : {"static-annex2-loads", "modal-annex2"}) {
+    std::string deck = read_text(source + "/examples/" + name + ".toml");
+    deck += "\n[output]\nvtk = true\n";
+    const fs::path sub = dir / name;
+    fs::create_directories(sub);
+    const std::string command = std::string(name).starts_with("static") ? "static " : "modal ";
+    const CommandResult r = run(command + write(sub, deck).string() + " -o " + (sub / "out").string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    vtkNew<vtkXMLDataParser> parser;
+    parser->SetFileName((sub / "out" / "plate.pvd").string().c_str());
+    ASSERT_EQ(parser->Parse(), 1) << name;
+    const int frames =
+        parser->GetRootElement()->FindNestedElementWithName("Collection")->GetNumberOfNestedElements();
+    if (std::string(name).starts_with("static")) {
+      EXPECT_EQ(frames, 1);
+    } else {
+      // One frame per mode, its "time" the mode number.
+      EXPECT_EQ(frames, static_cast<int>(read_json(sub / "out" / "summary.json")["frequencies_hz"].size()));
+    }
+    EXPECT_TRUE(fs::exists(sub / "out" / "layers.pvd")) << name;
+  }
 }
 
 } // namespace

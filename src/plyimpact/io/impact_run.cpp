@@ -24,18 +24,28 @@ public:
       : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage) {
     std::sort(at_.begin(), at_.end());
   }
+  /// The undeformed plate at t = 0 is the first frame, the last step the last one, whatever `every`.
+  void on_start(const StepView& initial) override { write(initial); }
   void on_step(const StepView& v) override {
     bool due = every_ > 0 && v.step % every_ == 0;
     while (next_ < at_.size() && v.t >= at_[next_] - 1e-9 * v.dt) {
       due = true;
       ++next_;
     }
-    if (due)
-      series_.write(v.step, v.t, v.plate_displacement(), damage_ != nullptr ? damage_->onsets() : none_);
+    if (due) write(v);
+  }
+  void on_finish(const StepView& last, const ImpactResult& /*result*/) override {
+    if (last.step != last_written_) write(last);
   }
   [[nodiscard]] std::size_t frames() const { return series_.frames(); }
 
 private:
+  void write(const StepView& v) {
+    series_.write(v.step, v.t, v.plate_displacement(), damage_ != nullptr ? damage_->onsets() : none_);
+    last_written_ = v.step;
+  }
+
+  long last_written_ = -1;
   int every_;
   std::vector<double> at_;
   std::size_t next_ = 0;

@@ -4,6 +4,9 @@
 #include "plyimpact/io/atomic_file.hpp"
 
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
@@ -300,6 +303,24 @@ void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::
   layers_.push_back({t, layers});
   write_pvd(dir_ / "plate.pvd", plate_);
   write_pvd(dir_ / "layers.pvd", layers_);
+}
+
+void write_static_vtk(const fs::path& dir, const PlateModel& model, const Eigen::VectorXd& u,
+                      const VtkOptions& options) {
+  VtkSeries(dir, model, options).write(0, 0.0, u, {});
+}
+
+void write_modes_vtk(const fs::path& dir, const PlateModel& model, const Eigen::MatrixXd& modes,
+                     const VtkOptions& options) {
+  VtkSeries series(dir, model, options);
+  for (Eigen::Index k = 0; k < modes.cols(); ++k) {
+    const Eigen::VectorXd nodal = model.to_nodal(modes.col(k));
+    double w_max = 0.0;
+    for (Eigen::Index i = 2; i < nodal.size(); i += 5) // u v w θx θy per node
+      w_max = std::max(w_max, std::abs(nodal(i)));
+    const double scale = w_max > 0.0 ? 1e-3 / w_max : 1.0;
+    series.write(static_cast<long>(k + 1), static_cast<double>(k + 1), modes.col(k) * scale, {});
+  }
 }
 
 } // namespace plyimpact

@@ -62,4 +62,14 @@ private:
   std::vector<PvdEntry> plate_, layers_;
 };
 
+/// A static solution u as ParaView files: plate.pvd and layers.pvd holding one frame (t = 0).
+void write_static_vtk(const std::filesystem::path& dir, const PlateModel& model, const Eigen::VectorXd& u,
+                      const VtkOptions& options);
+
+/// Mode shapes (columns of `modes`, free DOFs) as ParaView files: plate.pvd and layers.pvd with one frame
+/// per mode, whose "time" is the mode number (ParaView's time control steps through the modes). Each
+/// shape is scaled so that its largest deflection |w| is 1 mm (modes have no amplitude of their own).
+void write_modes_vtk(const std::filesystem::path& dir, const PlateModel& model, const Eigen::MatrixXd& modes,
+                     const VtkOptions& options);
+
 } // namespace plyimpact
