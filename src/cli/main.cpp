@@ -239,7 +239,7 @@ int run_threshold(const Options& o) {
   if (name.empty())
     throw DeckError(fmt::format("{}: error: give --criterion NAME or [threshold] criterion", deck.source));
   const auto criterion = parse_criterion(name);
-  if (!criterion) throw DeckError(fmt::format("{}: error: unknown criterion '{}'", deck.source, name));
+  if (!criterion) throw DeckError(unknown_criterion(deck.source + ": error: --criterion", name));
   const PlateModel model = plate_model(deck);
   ThresholdOptions options;
   options.tolerance = o.tolerance > 0.0 ? o.tolerance : deck.threshold.tolerance;

@@ -152,6 +152,17 @@ TEST(Cli, ImpactAndThresholdShowProgressWithAnEtaInLogsAndNothingWhenQuiet) {
   EXPECT_NE(t.out.find("threshold: 100 % (trial "), std::string::npos) << t.out;
 }
 
+TEST(Cli, AMisspeltCriterionOnTheCommandLineGetsADidYouMean) {
+  const CommandResult r =
+      run("threshold " + std::string(PLYIMPACT_SOURCE_DIR) +
+          "/examples/thesis-4.3-threshold-0_2-90_2-0_2.toml --criterion choi-chang-matrx");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(
+      r.out.find("--criterion: unknown criterion \"choi-chang-matrx\" (did you mean \"choi-chang-matrix\"?)"),
+      std::string::npos)
+      << r.out;
+}
+
 TEST(Cli, UnrestrainedStaticPlateIsAClearErrorNotNaN) {
   const fs::path dir = scratch("free");
   std::string text = small_deck("static", "[load]\npressure = 1e5\n");

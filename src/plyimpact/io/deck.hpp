@@ -109,4 +109,7 @@ void require_sections(const Deck& deck, AnalysisKind kind);
 /// The plate's laminates in the order regions refer to them: [laminate] first, then [laminates.NAME].
 [[nodiscard]] std::vector<Laminate> all_laminates(const Deck& deck);
 
+/// "WHAT: unknown criterion "NAME" (did you mean "tsai-wu"?)", or with the list of the known names.
+[[nodiscard]] std::string unknown_criterion(std::string_view what, std::string_view name);
+
 } // namespace plyimpact

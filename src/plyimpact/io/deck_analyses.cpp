@@ -4,11 +4,8 @@
 
 #include <fmt/format.h>
 
-namespace plyimpact::deck_tables {
+namespace plyimpact {
 
-namespace {
-
-/// "unknown criterion "NAME" (did you mean "tsai-wu"?)" or the list of the known names.
 std::string unknown_criterion(std::string_view what, std::string_view name) {
   std::vector<std::string> names;
   std::string list;
@@ -21,7 +18,9 @@ std::string unknown_criterion(std::string_view what, std::string_view name) {
   return fmt::format("{}: unknown criterion \"{}\": expected one of {}", what, name, list);
 }
 
-} // namespace
+} // namespace plyimpact
+
+namespace plyimpact::deck_tables {
 
 StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate) {
   t.only({"pressure", "point", "patch"});
