@@ -179,12 +179,28 @@ std::optional<AnalysisKind> analysis_option(const std::string& analysis) {
   return parse_analysis_kind(analysis);
 }
 
+/// --strict: every case's deck is read before anything runs, and the first plausibility warnings
+/// (docs/deck.md) stop the sweep.
+void refuse_implausible_cases(const Sweep& sweep) {
+  std::string found;
+  std::size_t cases = 0;
+  for (std::size_t i = 0; i < sweep.size(); ++i) {
+    const Deck deck = sweep.deck_for(sweep.case_at(i));
+    if (deck.warnings.empty()) continue;
+    if (++cases <= 3) found += fmt::format("\n  case {}: {}", i + 1, deck.warnings.front());
+  }
+  if (cases > 0)
+    throw DeckError(fmt::format("{}: error: {} of {} cases have implausible values, refused by --strict:{}",
+                                sweep.source(), cases, sweep.size(), found));
+}
+
 /// Everything after MPI start-up; collective steps in the same order on every rank.
 int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool>& interrupted) {
   const auto t0 = std::chrono::steady_clock::now();
   const bool root = ranks.rank() == 0;
   // Every rank reads the same deck and folder, so a bad spec stops every rank alike.
   const Sweep sweep = Sweep::load(o.deck_path, o.set, mode_option(o.mode), analysis_option(o.analysis));
+  if (o.strict) refuse_implausible_cases(sweep);
   const SweepFolder folder(o.output_dir, sweep);
   folder.check(o.resume);
   ranks.barrier();
@@ -271,6 +287,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
   sub->add_flag("--resume", o.resume, "run only the cases without a record in DIR/cases");
   sub->add_flag("--case-folders", o.case_folders, "also write DIR/cases/NNNNNN/ with each case's results");
   sub->add_flag("--no-sharing", o.no_sharing, "factor K for every case (to measure what sharing saves)");
+  sub->add_flag("--strict", o.strict,
+                "refuse the sweep when a case's deck has implausible values (unit slips)");
   add_progress_options(*sub, o.progress);
   return sub;
 }

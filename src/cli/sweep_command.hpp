@@ -21,6 +21,7 @@ struct SweepCommandOptions {
   bool resume = false;
   bool case_folders = false;
   bool no_sharing = false; ///< factor K̄ for every case (benchmarks)
+  bool strict = false;     ///< refuse the sweep when any case's deck has a plausibility warning
   ProgressSettings progress;
 };
 

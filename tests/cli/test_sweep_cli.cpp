@@ -335,4 +335,16 @@ TEST(SweepCli, ShowsProgressLinesWithAnEtaWhenStderrIsNotATerminalAndNoneWhenQui
   EXPECT_EQ(quiet.out.find("ETA"), std::string::npos) << quiet.out;
 }
 
+TEST(SweepCli, StrictRefusesASweepWithAnImplausibleCaseBeforeRunningAny) {
+  const fs::path dir = scratch("sweep-strict");
+  const fs::path deck = twelve_case_deck(dir);
+  // 2920 "m/s": the velocity written in mm/s in one case.
+  const CommandResult r =
+      sweep(deck.string() + " -o " + (dir / "out").string() + " --set impactor.velocity=2.92,2920 --strict");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("cases have implausible values, refused by --strict"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("impactor.velocity = 2920: this looks like mm/s"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "cases"));
+}
+
 } // namespace
