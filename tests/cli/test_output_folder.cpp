@@ -147,6 +147,16 @@ TEST(OutputFolder, AReusedFolderIsRefusedWithoutOverwriteAndClearedWithIt) {
   EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
 
+TEST(OutputFolder, AFolderNoRunHasMarkedIsNotRefusedNorCleared) {
+  const fs::path dir = scratch("own-folder");
+  const std::string text = small_deck("modal", "[modal]\ncount = 2\n");
+  const fs::path deck = write(dir, text); // the user's own deck.toml, in the folder given to -o
+  const CommandResult r = run("modal " + deck.string() + " -o " + dir.string() + " --overwrite");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
+  EXPECT_EQ(read_text(deck), text); // not removed by --overwrite (rewritten with the same text)
+}
+
 TEST(OutputFolder, WithoutOutputOptionResultsGoToResultsDeckNameOrOutputDir) {
   const fs::path dir = scratch("default-dir");
   std::ofstream(dir / "plate-a.toml") << small_deck("static", "[load]\npressure = 1e5\n");

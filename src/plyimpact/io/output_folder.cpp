@@ -27,6 +27,10 @@ constexpr std::array<std::string_view, 17> result_files{
     "sweep.json", "sweep.csv",       "damage_maps",       "paraview",
     "plots"};
 constexpr std::string_view cases_folder = "cases";
+/// Written first by every run (impact, static, modal, buckling, threshold: provenance.json; a sweep:
+/// sweep.json, cases/) or last (summary.json): a folder holds results only when one of them is there.
+constexpr std::array<std::string_view, 4> run_markers{"provenance.json", "summary.json", "sweep.json",
+                                                      "cases"};
 
 bool starts_with(std::string_view s, std::string_view prefix) {
   return s.substr(0, prefix.size()) == prefix;
@@ -92,11 +96,18 @@ bool is_result_name(std::string_view name) {
 
 std::vector<std::string> results_in(const fs::path& dir) {
   std::vector<std::string> found;
+  bool marked = false;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (is_result_name(name)) found.push_back(name);
+    if (!is_result_name(name)) continue;
+    found.push_back(name);
+    const std::string_view n = without_temporary_suffix(name);
+    marked = marked || std::find(run_markers.begin(), run_markers.end(), n) != run_markers.end();
   }
+  // A folder that no run has marked (a user's own folder with a deck.toml in it) holds no results:
+  // nothing in it is refused or removed.
+  if (!marked) return {};
   std::sort(found.begin(), found.end());
   return found;
 }

@@ -35,7 +35,9 @@ public:
 /// temporary files of an interrupted write, ...), false for anything else (the lock file included).
 [[nodiscard]] bool is_result_name(std::string_view name);
 
-/// The entries of `dir` that are results of a run (is_result_name), in name order.
+/// The entries of `dir` that are results of a run (is_result_name), in name order; none unless a run
+/// marked the folder (provenance.json, summary.json, sweep.json or cases/ is there), so a user's own
+/// folder holding, say, deck.toml is never refused nor cleared.
 [[nodiscard]] std::vector<std::string> results_in(const std::filesystem::path& dir);
 
 /// Removes every result entry of `dir` (results_in); other files stay. Throws naming a file it cannot
