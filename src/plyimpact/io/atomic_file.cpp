@@ -21,7 +21,7 @@ std::string write_new_file(const std::filesystem::path& tmp, std::string_view co
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) {
-      const std::string why = std::strerror(errno);
+      std::string why = std::strerror(errno);
       ::close(fd);
       ::unlink(tmp.c_str());
       return why;
@@ -29,7 +29,7 @@ std::string write_new_file(const std::filesystem::path& tmp, std::string_view co
     done += static_cast<std::size_t>(n);
   }
   if (::close(fd) != 0) { // delayed write errors (a full disk over NFS) show here
-    const std::string why = std::strerror(errno);
+    std::string why = std::strerror(errno);
     ::unlink(tmp.c_str());
     return why;
   }
