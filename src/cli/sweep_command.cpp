@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -186,7 +187,11 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   const bool root = ranks.rank() == 0;
   // Every rank reads the same deck and folder, so a bad spec stops every rank alike.
   const Sweep sweep = Sweep::load(o.deck_path, o.set, mode_option(o.mode), analysis_option(o.analysis));
-  const SweepFolder folder(o.output_dir, sweep);
+  // -o, else <[output] dir>/<deck name>/ as for the other commands (docs/output.md)
+  const std::filesystem::path dir = o.output_dir.empty()
+                                        ? default_output_dir(load_deck(o.deck_path).output_dir, o.deck_path)
+                                        : std::filesystem::path(o.output_dir);
+  const SweepFolder folder(dir, sweep);
   // Rank 0 locks the folder for the whole sweep (another sweep or run into it is refused) and checks
   // what it holds; the other ranks learn the outcome and stop alike.
   std::optional<OutputLock> lock;
@@ -194,7 +199,8 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   if (root) try {
       ClaimOptions claim{o.overwrite, {}};
       if (!o.overwrite) claim.keep = {"sweep.json", "sweep.csv", "cases"};
-      lock.emplace(claim_output_folder(o.output_dir, o.command, claim));
+      lock.emplace(claim_output_folder(dir, o.command, claim));
+      fmt::print("results: {}\n", dir.string());
       if (const auto warning = folder.check(o.resume))
         fmt::print(stderr, "plyimpact: warning: {}\n", *warning);
     } catch (const std::exception& e) {
@@ -261,7 +267,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
       app.add_subcommand("sweep", "Parameter study: many decks from one ([sweep] table or --set), "
                                   "on all cores and MPI ranks, resumable");
   sub->add_option("deck", o.deck_path, "base TOML deck, with an optional [sweep] table")->required();
-  sub->add_option("-o,--output", o.output_dir, "results folder: sweep.csv, sweep.json, cases/")->required();
+  sub->add_option("-o,--output", o.output_dir,
+                  "results folder: sweep.csv, sweep.json, cases/ (default: results/<deck name>)");
   sub->add_option("--set", o.set,
                   "KEY=V1,V2,... or KEY=start:stop:count (repeatable), e.g. impactor.velocity=1,2")
       ->allow_extra_args(false);

@@ -166,6 +166,14 @@ TEST(OutputFolder, WithoutOutputOptionResultsGoToResultsDeckNameOrOutputDir) {
   EXPECT_TRUE(fs::exists(dir / "results" / "plate-a" / "summary.json"));
   EXPECT_TRUE(fs::exists(dir / "results" / "plate-a" / "displacements.csv"));
 
+  std::ofstream(dir / "plate-c.toml")
+      << small_deck("impact", impactor) << "[sweep.values]\n\"impactor.velocity\" = [1.0, 2.0]\n";
+  const CommandResult c =
+      shell("cd " + dir.string() + " && " + PLYIMPACT_EXE + " sweep plate-c.toml --jobs 1");
+  ASSERT_EQ(c.status, 0) << c.out;
+  EXPECT_NE(c.out.find("results: results/plate-c\n"), std::string::npos) << c.out;
+  EXPECT_TRUE(fs::exists(dir / "results" / "plate-c" / "sweep.csv"));
+
   std::ofstream(dir / "plate-b.toml")
       << small_deck("modal", "[modal]\ncount = 2\n[output]\ndir = \"runs\"\n");
   const CommandResult b = shell("cd " + dir.string() + " && " + PLYIMPACT_EXE + " plate-b.toml");
