@@ -210,8 +210,10 @@ int run_impact(const Options& o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::impact);
+  const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
+  check_memory_before_assembly(description); // a graded mesh: its node count
   const OutputLock lock = claim_folder(o, deck);
-  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  const ImpactCase impact(description);
   ImpactRunOptions options;
   options.output_dir = lock.dir();
   options.cancel = &interrupted;
@@ -259,6 +261,8 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
 
 int run_threshold(const Options& o) {
   const Deck deck = read_deck_for(o.deck_path, AnalysisKind::threshold);
+  const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
+  check_memory_before_assembly(description); // a graded mesh: its node count
   const OutputLock lock = claim_folder(o, deck);
   std::string name = !o.criterion.empty() ? o.criterion : deck.threshold.criterion;
   if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
@@ -272,7 +276,7 @@ int run_threshold(const Options& o) {
   options.max_velocity = deck.threshold.max_velocity;
   options.damage = damage_options_from_deck(deck);
   const auto t0 = std::chrono::steady_clock::now();
-  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  const ImpactCase impact(description);
   const ThresholdResult r = find_threshold_velocity(impact, *criterion, options);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fmt::print("{}", threshold_text(name, r));

@@ -254,6 +254,27 @@ TEST(OutputFolder, AThousandByThousandMeshIsRefusedBeforeAssemblyWithTheEstimate
   }
 }
 
+TEST(OutputFolder, AGradedMeshTooFineIsRefusedBeforeAssembly) {
+  const fs::path dir = scratch("huge-graded");
+  std::string text = small_deck("impact", impactor);
+  // 20 um elements at the impact point, growing by 1 % up to 0.1 mm: a mesh of millions of nodes
+  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 20e-6\ngrowth = 1.01\nmax_size = 1e-4");
+  const fs::path deck = write(dir, text);
+  const CommandResult r = shell("PLYIMPACT_MEMORY_LIMIT_BYTES=16e9 " + std::string(PLYIMPACT_EXE) +
+                                " impact " + deck.string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(
+      r.out.find("plyimpact: error: a mesh graded toward the impact point of 1431 x 923 elements (2.64e+07 "
+                 "equations) needs about 269 GB"),
+      std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("but this machine has 16 GB available: give a larger mesh.size_at_impact or "
+                       "mesh.max_size"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(OutputFolder, ADeckPathThatIsAFolderIsAClearError) {
   const fs::path dir = scratch("deck-folder");
   const CommandResult r = run("impact " + dir.string() + " -o " + (dir / "out").string());

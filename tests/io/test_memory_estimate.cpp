@@ -48,5 +48,24 @@ TEST(MemoryEstimate, ExceedsTheSymbolicAnalysisOfStructuredMeshes) {
   }
 }
 
+TEST(MemoryEstimate, GradedMeshSizeIsTheMeshTheImpactCaseBuilds) {
+  std::string text = test::small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+x = 0.05
+)");
+  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-3\ngrowth = 1.2");
+  const ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  ASSERT_TRUE(d.mesh.grading);
+  const auto [nx, ny] = graded_mesh_size(d);
+  const Mesh mesh = impact_mesh(d);
+  EXPECT_EQ(nx * ny, mesh.element_count());
+  EXPECT_EQ((2 * nx + 1) * (2 * ny + 1), mesh.node_count());
+  EXPECT_GT(nx, 6);
+}
+
 } // namespace
 } // namespace plyimpact

@@ -3,8 +3,10 @@
 // (docs/robustness.md): a 1000 × 1000 mesh is refused in a fraction of a second with the estimate and
 // the machine's memory, instead of growing to 15 GB or ending in std::bad_alloc. The factorization is
 // checked again, exactly, from its symbolic analysis once K̄ is assembled (analysis/guards.hpp).
+#include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/io/deck.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -25,6 +27,8 @@ inline constexpr double factor_fill_constant = 1.0;
 
 /// The estimate for a structured nx × ny mesh of 9-node elements.
 [[nodiscard]] MeshMemoryEstimate estimate_mesh_memory(long nx, long ny);
+/// The estimate for a mesh of 9-node elements with `nodes` nodes.
+[[nodiscard]] MeshMemoryEstimate estimate_mesh_memory(double nodes);
 
 /// The message of a refusal: the mesh, the estimate and the memory available.
 [[nodiscard]] std::string memory_refusal_message(long nx, long ny, const MeshMemoryEstimate& e,
@@ -32,7 +36,12 @@ inline constexpr double factor_fill_constant = 1.0;
 
 /// For a deck with a uniform [mesh] nx × ny: throws InsufficientMemory (analysis/guards.hpp) when the
 /// estimate exceeds the available memory (io/system_memory.hpp). A graded mesh is sized from the
-/// impact and checked after assembly.
+/// impact: see the overload for impact cases.
 void check_memory_before_assembly(const Deck& deck);
+/// Elements along x and y of an impact case's graded mesh (MeshSpec::grading engaged), from its
+/// element lines alone.
+[[nodiscard]] std::array<long, 2> graded_mesh_size(const ImpactCaseDescription& d);
+/// For an impact case with a graded mesh (graded_mesh_size; nothing is built or assembled).
+void check_memory_before_assembly(const ImpactCaseDescription& d);
 
 } // namespace plyimpact

@@ -285,7 +285,9 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
   if (name.empty())
     throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
-  const ImpactCase impact(impact_case_description(deck));
+  const ImpactCaseDescription description = impact_case_description(deck);
+  check_memory_before_assembly(description);
+  const ImpactCase impact(description);
   ThresholdOptions to;
   to.tolerance = deck.threshold.tolerance;
   to.max_velocity = deck.threshold.max_velocity;
@@ -354,6 +356,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
                                           resolved_settings(description).dt, size_at_impact(description));
     if (!options_.share_factorization || !cache_ || cache_->key != key) {
       cache_.reset();
+      check_memory_before_assembly(description);
       cache_ = std::make_unique<Cache>(Cache{key, std::make_unique<ImpactCase>(description)});
       ++factorizations_;
     }
