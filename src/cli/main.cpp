@@ -20,6 +20,8 @@
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/laminate_report.hpp"
+#include "plyimpact/io/memory_estimate.hpp"
+#include "plyimpact/io/output_folder.hpp"
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/progress.hpp"
 #include "plyimpact/io/results.hpp"
@@ -38,6 +40,7 @@
 #include <exception>
 #include <filesystem>
 #include <limits>
+#include <new>
 #include <optional>
 #include <string>
 
@@ -53,10 +56,13 @@ struct Options {
   double tolerance = 0.0;
   bool nonlinear = false; ///< --nonlinear (or the deck's top-level nonlinear = true)
   ProgressSettings progress;
-  bool strict = false; ///< --strict: plausibility warnings of the deck are errors
+  bool strict = false;    ///< --strict: plausibility warnings of the deck are errors
+  bool overwrite = false; ///< --overwrite: replace another run's results in the folder
+  std::string command;    ///< this command line, recorded in the folder's lock
 };
 
-/// Reads the deck, prints its plausibility warnings (docs/deck.md) and refuses it under --strict.
+/// The deck, checked for the analysis' sections and for the memory its mesh needs (before assembly);
+/// prints its plausibility warnings (docs/deck.md) and refuses it under --strict.
 Deck read_deck_for(const Options& o, AnalysisKind kind) {
   Deck deck = load_deck(o.deck_path);
   require_sections(deck, kind);
@@ -66,12 +72,23 @@ Deck read_deck_for(const Options& o, AnalysisKind kind) {
     throw DeckError(fmt::format("{}: error: {} implausible value{} refused by --strict (fix the deck, or run "
                                 "without --strict to see the results anyway)",
                                 deck.source, deck.warnings.size(), deck.warnings.size() == 1 ? "" : "s"));
+  if (kind != AnalysisKind::laminate) check_memory_before_assembly(deck);
   return deck;
 }
 
-std::optional<ResultsFolder> results_folder(const Options& o, const Deck& deck) {
-  if (o.output_dir.empty()) return std::nullopt;
-  return ResultsFolder(o.output_dir, deck);
+/// The results folder of this run (-o, else <[output] dir>/<deck name>/), locked for the run and
+/// cleared of another run's results (--overwrite) or refused (io/output_folder.hpp). Says where.
+OutputLock claim_folder(const Options& o, const Deck& deck) {
+  const std::filesystem::path dir = o.output_dir.empty() ? default_output_dir(deck.output_dir, o.deck_path)
+                                                         : std::filesystem::path(o.output_dir);
+  OutputLock lock = claim_output_folder(dir, o.command, ClaimOptions{o.overwrite, {}});
+  fmt::print("results: {}\n", dir.string());
+  std::fflush(stdout);
+  return lock;
+}
+
+std::optional<ResultsFolder> results_folder(const OutputLock& lock, const Deck& deck) {
+  return ResultsFolder(lock.dir(), deck);
 }
 
 /// ParaView options of the deck's [output] vtk* keys (no failure criteria outside an impact).
@@ -85,18 +102,19 @@ int run_laminate(const Options& o) {
   return 0;
 }
 
-int run_static_nonlinear(const Options& o, const Deck& deck);
+int run_static_nonlinear(const Deck& deck, const OutputLock& lock);
 
 int run_static(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::static_);
-  if (o.nonlinear || deck.nonlinear) return run_static_nonlinear(o, deck);
+  const OutputLock lock = claim_folder(o, deck);
+  if (o.nonlinear || deck.nonlinear) return run_static_nonlinear(deck, lock);
   const PlateModel model = plate_model(deck);
   const StaticResult r = solve_static(model, *deck.load);
   fmt::print("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
   fmt::print("  center_deflection     = {:.6e} m\n", r.center_deflection);
   fmt::print("  load_point_deflection = {:.6e} m\n", r.load_point_deflection);
   fmt::print("  max_abs_deflection    = {:.6e} m\n", r.max_abs_deflection);
-  if (const auto out = results_folder(o, deck)) {
+  if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = summary_header(deck, "static");
     j["center_deflection"] = r.center_deflection;
     j["load_point_deflection"] = r.load_point_deflection;
@@ -110,7 +128,7 @@ int run_static(const Options& o) {
 }
 
 /// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.
-int run_static_nonlinear(const Options& o, const Deck& deck) {
+int run_static_nonlinear(const Deck& deck, const OutputLock& lock) {
   const PlateModel model = plate_model(deck);
   const NonlinearStaticResult r = solve_static_nonlinear(model, *deck.load, deck.nonlinear_settings);
   fmt::print(
@@ -121,7 +139,7 @@ int run_static_nonlinear(const Options& o, const Deck& deck) {
   fmt::print("  center_deflection     = {:.6e} m\n", r.state.center_deflection);
   fmt::print("  load_point_deflection = {:.6e} m\n", r.state.load_point_deflection);
   fmt::print("  max_abs_deflection    = {:.6e} m\n", r.state.max_abs_deflection);
-  if (const auto out = results_folder(o, deck)) {
+  if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = summary_header(deck, "static");
     j["nonlinear"] = true;
     j["strain_measure"] = to_string(deck.nonlinear_settings.measure);
@@ -141,13 +159,14 @@ int run_static_nonlinear(const Options& o, const Deck& deck) {
 
 int run_modal(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::modal);
+  const OutputLock lock = claim_folder(o, deck);
   const PlateModel model = plate_model(deck);
   const ModalResult r = solve_modal(model, deck.modal.count);
   fmt::print("modal: {} elements, {} free DOFs, {} zero-energy modes (rigid-body or spurious)\n",
              model.mesh().element_count(), model.size(), r.zero_energy_modes);
   for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k)
     fmt::print("  mode {:>3}: {:12.4f} Hz\n", k + 1, r.frequencies_hz[k]);
-  if (const auto out = results_folder(o, deck)) {
+  if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = summary_header(deck, "modal");
     j["frequencies_hz"] = r.frequencies_hz;
     j["zero_energy_modes"] = r.zero_energy_modes;
@@ -160,6 +179,7 @@ int run_modal(const Options& o) {
 
 int run_buckling(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::buckling);
+  const OutputLock lock = claim_folder(o, deck);
   const PlateModel model = plate_model(deck);
   const BucklingResult r = solve_buckling(model, *deck.buckling);
   const auto& b = *deck.buckling;
@@ -167,7 +187,7 @@ int run_buckling(const Options& o) {
   for (std::size_t k = 0; k < r.load_factors.size(); ++k)
     fmt::print("  mode {:>3}: load factor {:12.6g}  (Nx_cr = {:.6g} N/m)\n", k + 1, r.load_factors[k],
                r.load_factors[k] * b.Nx);
-  if (const auto out = results_folder(o, deck)) {
+  if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = summary_header(deck, "buckling");
     j["load_factors"] = r.load_factors;
     j["reference_load"] = {{"Nx", b.Nx}, {"Ny", b.Ny}, {"Nxy", b.Nxy}};
@@ -189,9 +209,12 @@ int run_impact(const Options& o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o, AnalysisKind::impact);
-  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
+  check_memory_before_assembly(description); // a graded mesh: its node count
+  const OutputLock lock = claim_folder(o, deck);
+  const ImpactCase impact(description);
   ImpactRunOptions options;
-  if (!o.output_dir.empty()) options.output_dir = o.output_dir;
+  options.output_dir = lock.dir();
   options.cancel = &interrupted;
   ImpactProgress progress(impact.settings(), progress_style(o.progress, stderr), o.progress.line_interval_s);
   options.observers = {&progress};
@@ -234,6 +257,9 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
 
 int run_threshold(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::threshold);
+  const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
+  check_memory_before_assembly(description); // a graded mesh: its node count
+  const OutputLock lock = claim_folder(o, deck);
   std::string name = !o.criterion.empty() ? o.criterion : deck.threshold.criterion;
   if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
   if (name.empty())
@@ -246,7 +272,7 @@ int run_threshold(const Options& o) {
   options.max_velocity = deck.threshold.max_velocity;
   options.damage = damage_options_from_deck(deck);
   const auto t0 = std::chrono::steady_clock::now();
-  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  const ImpactCase impact(description);
   Progress progress("threshold", 1.0, progress_style(o.progress, stderr), o.progress.line_interval_s);
   options.on_trial = [&](const std::vector<ThresholdTrial>& trials) {
     const ThresholdTrial& t = trials.back();
@@ -258,7 +284,7 @@ int run_threshold(const Options& o) {
   progress.finish(fmt::format("{} trials", r.trials.size()));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fmt::print("{}", threshold_text(name, r));
-  if (const auto out = results_folder(o, deck)) {
+  if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = summary_header(deck, "threshold");
     j["criterion"] = name;
     j["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
@@ -277,7 +303,9 @@ int run_threshold(const Options& o) {
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->add_option("deck", o.deck_path, "TOML input deck")->required();
-  sub->add_option("-o,--output", o.output_dir, "results folder (summary.json, CSV tables)");
+  sub->add_option("-o,--output", o.output_dir,
+                  "results folder (default: <[output] dir>/<deck name>, i.e. results/<deck name>)");
+  sub->add_flag("--overwrite", o.overwrite, "replace the results of another run in the folder");
   sub->add_flag("--strict", o.strict,
                 "treat the deck's plausibility warnings (values that look like unit slips) as errors");
   return sub;
@@ -307,6 +335,7 @@ int run(int argc, char** argv) {
   app.set_version_flag("--version", std::string("plyimpact ") + PLYIMPACT_VERSION);
   app.require_subcommand(1);
   Options o;
+  o.command = command_line(argc, argv);
   CLI::App* laminate =
       app.add_subcommand("laminate", "Ply and laminate properties (A, B, D, F, inertias, Hertz k)");
   laminate->add_option("deck", o.deck_path, "TOML input deck")->required();
@@ -333,6 +362,7 @@ int run(int argc, char** argv) {
   plot->add_option("results", plot_dirs, "impact results folder(s) written with -o")->required();
   plot->add_option("-o,--output", o.output_dir, "folder for the pictures (default: RESULTS/plots)");
   SweepCommandOptions sweep_options;
+  sweep_options.command = o.command;
   CLI::App* sweep = add_sweep_command(app, sweep_options);
 
   try {
@@ -358,6 +388,11 @@ int run(int argc, char** argv) {
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return 2;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "plyimpact: error: out of memory: the run needed more memory than this machine could "
+                       "give (std::bad_alloc); use a coarser mesh ([mesh] nx, ny) or a machine with more "
+                       "memory (docs/robustness.md)\n");
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "plyimpact: error: {}\n", e.what());
     return 1;

@@ -1,12 +1,14 @@
 #include "sweep_command.hpp"
 
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/output_folder.hpp"
 #include "plyimpact/io/sweep_runner.hpp"
 
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -201,12 +203,36 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   // Every rank reads the same deck and folder, so a bad spec stops every rank alike.
   const Sweep sweep = Sweep::load(o.deck_path, o.set, mode_option(o.mode), analysis_option(o.analysis));
   if (o.strict) refuse_implausible_cases(sweep);
-  const SweepFolder folder(o.output_dir, sweep);
-  folder.check(o.resume);
-  ranks.barrier();
+  // -o, else <[output] dir>/<deck name>/ as for the other commands (docs/output.md)
+  const std::filesystem::path dir = o.output_dir.empty()
+                                        ? default_output_dir(load_deck(o.deck_path).output_dir, o.deck_path)
+                                        : std::filesystem::path(o.output_dir);
+  const SweepFolder folder(dir, sweep);
+  // Rank 0 locks the folder for the whole sweep (another sweep or run into it is refused) and checks
+  // what it holds; the other ranks learn the outcome and stop alike.
+  std::optional<OutputLock> lock;
+  std::string refusal;
+  if (root) try {
+      ClaimOptions claim{o.overwrite, {}};
+      if (!o.overwrite) claim.keep = {"sweep.json", "sweep.csv", "cases"};
+      lock.emplace(claim_output_folder(dir, o.command, claim));
+      fmt::print("results: {}\n", dir.string());
+      if (const auto warning = folder.check(o.resume))
+        fmt::print(stderr, "plyimpact: warning: {}\n", *warning);
+    } catch (const std::exception& e) {
+      refusal = e.what();
+    }
+  if (ranks.sum(refusal.empty() ? 0 : 1) > 0) {
+    if (root) throw std::runtime_error(refusal);
+    return 1;
+  }
   if (root) folder.write_manifest();
   ranks.barrier();
-  const std::vector<std::size_t> pending = folder.pending();
+  const SweepFolder::Pending scanned = folder.scan();
+  const std::vector<std::size_t>& pending = scanned.cases;
+  if (root)
+    for (const std::string& d : scanned.damaged)
+      fmt::print(stderr, "plyimpact: warning: {}\n", d);
   ranks.barrier(); // every rank has the same list before any record is written
   const int jobs =
       o.jobs > 0
@@ -273,7 +299,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
       app.add_subcommand("sweep", "Parameter study: many decks from one ([sweep] table or --set), "
                                   "on all cores and MPI ranks, resumable");
   sub->add_option("deck", o.deck_path, "base TOML deck, with an optional [sweep] table")->required();
-  sub->add_option("-o,--output", o.output_dir, "results folder: sweep.csv, sweep.json, cases/")->required();
+  sub->add_option("-o,--output", o.output_dir,
+                  "results folder: sweep.csv, sweep.json, cases/ (default: results/<deck name>)");
   sub->add_option("--set", o.set,
                   "KEY=V1,V2,... or KEY=start:stop:count (repeatable), e.g. impactor.velocity=1,2")
       ->allow_extra_args(false);
@@ -285,6 +312,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
   sub->add_option("-j,--jobs", o.jobs, "threads per process (default: all cores; 1 per MPI rank)")
       ->check(CLI::PositiveNumber);
   sub->add_flag("--resume", o.resume, "run only the cases without a record in DIR/cases");
+  sub->add_flag("--overwrite", o.overwrite, "replace the results of another run or sweep in the folder");
   sub->add_flag("--case-folders", o.case_folders, "also write DIR/cases/NNNNNN/ with each case's results");
   sub->add_flag("--no-sharing", o.no_sharing, "factor K for every case (to measure what sharing saves)");
   sub->add_flag("--strict", o.strict,

@@ -19,6 +19,8 @@ struct SweepCommandOptions {
   std::string analysis;         ///< impact | threshold (default: [sweep] analysis, else the deck's)
   int jobs = 0;                 ///< threads per process; 0: all cores (1 per rank under MPI)
   bool resume = false;
+  bool overwrite = false; ///< replace another run's results (another sweep's too) in the folder
+  std::string command;    ///< this command line, recorded in the folder's lock
   bool case_folders = false;
   bool no_sharing = false; ///< factor K̄ for every case (benchmarks)
   bool strict = false;     ///< refuse the sweep when any case's deck has a plausibility warning

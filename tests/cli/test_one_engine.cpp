@@ -146,7 +146,8 @@ TEST(OneEngine, NonlinearRunGivesTheGuardWarningsOfTheLinearOne) {
             std::string::npos);
   EXPECT_NE(linear["warnings"][1].get<std::string>().find("lies on an element corner"), std::string::npos);
   EXPECT_NE(linear["warnings"][2].get<std::string>().find("the contact is not resolved"), std::string::npos);
-  const CommandResult r = run("impact --nonlinear " + (dir / "linear.toml").string());
+  const CommandResult r = run("impact --nonlinear " + (dir / "linear.toml").string() + " -o " +
+                              (dir / "nonlinear-option").string());
   EXPECT_NE(r.out.find("plyimpact: warning: time.dt"), std::string::npos) << r.out;
 }
 

@@ -17,7 +17,11 @@ struct DamageMapFiles {
   std::string warning;                        ///< non-empty when gnuplot could not be run
 };
 
-/// Writes damage_map_<criterion>_<ply|interface><n>.{gp,svg,png} into `dir` (atomically).
+/// The subfolder of a results folder that holds the damage maps.
+inline constexpr const char* damage_maps_folder = "damage_maps";
+
+/// Writes damage_map_<criterion>_<ply|interface><n>.{gp,svg,png} into `dir` (atomically; created when
+/// there is a map to write). An impact run passes RESULTS/damage_maps_folder.
 [[nodiscard]] DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& mesh,
                                                const std::vector<DamageOnset>& onsets);
 

@@ -148,6 +148,12 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
 }
 
 Deck load_deck(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) // an ifstream opens a folder and reads nothing
+    throw DeckError(
+        fmt::format("{}: error: this is a folder, not a deck file: give the .toml file (a results "
+                    "folder keeps the deck it ran as deck.toml)",
+                    path.string()));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DeckError(fmt::format("{}: error: cannot open the deck file", path.string()));
   std::ostringstream ss;

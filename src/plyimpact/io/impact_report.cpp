@@ -1,5 +1,7 @@
 #include "plyimpact/io/impact_report.hpp"
 
+#include "plyimpact/io/history_csv.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -55,12 +57,9 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
 }
 
 std::string impact_history_csv(const ImpactResult& r) {
-  std::string csv = "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
-                    "plate_strain_J,impactor_energy_J,contact_work_J\n";
+  std::string csv = history_csv_header();
   for (const auto& h : r.history)
-    csv += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", h.t,
-                       h.force, h.impactor_w, h.impactor_v, h.plate_w, h.indentation, h.plate_kinetic,
-                       h.plate_strain, h.impactor_energy, h.contact_work);
+    csv += history_csv_row(h);
   return csv;
 }
 
@@ -94,7 +93,6 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
 void write_impact_results(const ResultsFolder& folder, const Deck& deck, const PlateModel* model,
                           const ImpactSettings& s, const ImpactResult& r,
                           const std::function<void(nlohmann::json&)>& extend) {
-  folder.write_text("history.csv", impact_history_csv(r));
   if (model != nullptr)
     for (const auto& f : r.fields)
       folder.write_nodal_field(fmt::format("field_t{:.6e}.csv", f.t), *model, f.u);

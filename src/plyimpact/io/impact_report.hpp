@@ -14,7 +14,8 @@ namespace plyimpact {
                                                  const ImpactResult& result);
 [[nodiscard]] std::string impact_history_csv(const ImpactResult& result);
 [[nodiscard]] std::string impact_summary_text(const ImpactSettings& settings, const ImpactResult& result);
-/// history.csv, field_<t>.csv for every snapshot and, last, summary.json (`extend` may add keys).
+/// field_<t>.csv for every snapshot and, last, summary.json (`extend` may add keys); history.csv is
+/// streamed during the run (io/history_csv.hpp).
 void write_impact_results(const ResultsFolder& folder, const Deck& deck, const PlateModel* model,
                           const ImpactSettings& settings, const ImpactResult& result,
                           const std::function<void(nlohmann::json&)>& extend = {});

@@ -4,6 +4,7 @@
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_maps.hpp"
 #include "plyimpact/io/damage_report.hpp"
+#include "plyimpact/io/history_csv.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_text_report.hpp"
 #include "plyimpact/io/results.hpp"
@@ -84,7 +85,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   run.impactor = out.settings.impactor;
   run.contact_stiffness = out.settings.k;
   run.cancel = options.cancel;
-  run.history_every = options.history ? deck.history_every : 0;
+  run.history_every = 0; // history.csv is streamed to the folder below, never kept in memory
   run.field_times = deck.field_times;
   run.observers = options.observers;
   std::optional<DamageTracker> damage;
@@ -95,6 +96,9 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   // The folder exists before the run: ParaView frames are written while it runs.
   std::optional<ResultsFolder> folder;
   if (options.output_dir) folder.emplace(*options.output_dir, deck);
+  std::optional<HistoryCsvWriter> history;
+  if (folder && options.history)
+    run.observers.push_back(&history.emplace(folder->path() / "history.csv", deck.history_every));
   std::optional<VtkFrames> vtk;
   if (folder && deck.vtk.enabled && plate)
     run.observers.push_back(
@@ -115,7 +119,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
     folder->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
     folder->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
     if (options.pictures) {
-      const DamageMapFiles maps = write_damage_maps(folder->path(), model.mesh(), damage->onsets());
+      const DamageMapFiles maps =
+          write_damage_maps(folder->path() / damage_maps_folder, model.mesh(), damage->onsets());
       if (!maps.warning.empty()) out.notes.push_back(maps.warning);
     }
   }

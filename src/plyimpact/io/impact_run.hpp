@@ -15,10 +15,11 @@
 namespace plyimpact {
 
 struct ImpactRunOptions {
-  /// Results folder: deck.toml, provenance.json, history.csv, fields, damage tables and maps,
-  /// probes.csv, ParaView frames, report.txt and, last, summary.json. None: nothing is written.
+  /// Results folder: deck.toml, provenance.json, history.csv (written while the run goes), fields,
+  /// damage tables and maps (damage_maps/), probes.csv, ParaView frames, report.txt and, last,
+  /// summary.json. None: nothing is written. The caller claims the folder (io/output_folder.hpp).
   std::optional<std::filesystem::path> output_dir;
-  bool history = true;                       ///< keep the time history (history.csv)
+  bool history = true;                       ///< write history.csv (streamed while the run goes)
   bool pictures = true;                      ///< damage maps (gnuplot) in the results folder
   std::vector<ImpactObserver*> observers;    ///< more observers (progress display)
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set

@@ -7,6 +7,7 @@
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_run.hpp"
+#include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/results.hpp"
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include <fstream>
 #include <limits>
 #include <mutex>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -100,25 +102,67 @@ fs::path SweepFolder::record_path(std::size_t index) const {
   return dir_ / "cases" / fmt::format("{:06}.json", index);
 }
 
-void SweepFolder::check(bool resume) const {
+namespace {
+
+bool has_records(const fs::path& cases) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(cases, ec))
+    if (e.path().extension() == ".json") return true;
+  return false;
+}
+
+} // namespace
+
+std::optional<std::pair<std::string, std::string>> SweepFolder::foreign_record() const {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir_ / "cases", ec)) {
+    if (e.path().extension() != ".json") continue;
+    std::ifstream in(e.path());
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (!j.is_object() || !j.contains("fingerprint") || !j["fingerprint"].is_string()) continue; // damaged
+    const std::string theirs = j["fingerprint"].get<std::string>();
+    if (theirs != sweep_.fingerprint()) return std::pair{e.path().string(), theirs};
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> SweepFolder::check(bool resume) const {
   const fs::path manifest = dir_ / "sweep.json";
+  const bool records = has_records(dir_ / "cases");
+  std::optional<std::string> warning;
   if (fs::exists(manifest)) {
     std::ifstream in(manifest);
     const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    const std::string theirs = j.is_object() ? j.value("fingerprint", std::string()) : std::string();
-    if (theirs != sweep_.fingerprint())
-      throw std::runtime_error(fmt::format(
-          "{} holds another sweep (fingerprint {}, this deck and options give {}): the deck or the sweep "
-          "changed; use another output folder",
-          dir_.string(), theirs.empty() ? "unreadable" : theirs, sweep_.fingerprint()));
+    if (j.is_object() && j.contains("fingerprint") && j["fingerprint"].is_string()) {
+      const std::string theirs = j["fingerprint"].get<std::string>();
+      if (theirs != sweep_.fingerprint())
+        throw std::runtime_error(fmt::format(
+            "{} holds another sweep (fingerprint {}, this deck and options give {}): the deck or the sweep "
+            "changed; use another output folder, or add --overwrite to replace it",
+            dir_.string(), theirs, sweep_.fingerprint()));
+    } else { // truncated or corrupt: the records say which sweep they belong to
+      if (records && !resume)
+        throw std::runtime_error(fmt::format(
+            "{} is truncated or corrupt (not the JSON object plyimpact writes), so it no longer says which "
+            "sweep the folder holds; each record in cases/ carries its sweep's fingerprint: run the same "
+            "command with --resume to check them against this sweep, rewrite sweep.json and run only the "
+            "missing cases",
+            manifest.string()));
+      if (const auto other = foreign_record())
+        throw std::runtime_error(fmt::format("{} holds another sweep ({} has fingerprint {}, this deck and "
+                                             "options give {}; sweep.json is truncated or corrupt): use "
+                                             "another output folder, or add --overwrite to replace it",
+                                             dir_.string(), other->first, other->second,
+                                             sweep_.fingerprint()));
+      warning = fmt::format("{} was truncated or corrupt: rewritten for this sweep (the records in cases/ "
+                            "belong to it)",
+                            manifest.string());
+    }
   }
-  if (resume) return;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir_ / "cases", ec))
-    if (e.path().extension() == ".json")
-      throw std::runtime_error(fmt::format("{} already holds case records: add --resume to run only the "
-                                           "missing cases, or use another output folder",
-                                           dir_.string()));
+  if (resume || !records) return warning;
+  throw std::runtime_error(fmt::format("{} already holds case records: add --resume to run only the missing "
+                                       "cases, --overwrite to start again, or use another output folder",
+                                       dir_.string()));
 }
 
 void SweepFolder::write_manifest() const {
@@ -137,21 +181,42 @@ void SweepFolder::write_manifest() const {
   write_file_atomically(dir_ / "sweep.json", j.dump(2) + "\n");
 }
 
-std::optional<nlohmann::json> SweepFolder::read_record(std::size_t index) const {
+std::optional<nlohmann::json> SweepFolder::read_record(std::size_t index, std::string* problem) const {
   std::ifstream in(record_path(index));
   if (!in) return std::nullopt;
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (!j.is_object() || j.value("fingerprint", std::string()) != sweep_.fingerprint() ||
-      j.value("case", std::numeric_limits<std::size_t>::max()) != index ||
-      j.value("values", std::vector<std::string>{}) != value_texts(sweep_.case_at(index)))
+  const auto damaged = [&](const std::string& why) -> std::optional<nlohmann::json> {
+    if (problem != nullptr) *problem = why;
     return std::nullopt;
+  };
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded()) return damaged("not valid JSON (truncated?)");
+  try {
+    if (!j.is_object()) return damaged("not a JSON object");
+    if (j.value("fingerprint", std::string()) != sweep_.fingerprint() ||
+        j.value("case", std::numeric_limits<std::size_t>::max()) != index ||
+        j.value("values", std::vector<std::string>{}) != value_texts(sweep_.case_at(index)))
+      return std::nullopt;
+    // what sweep.csv reads of a record
+    (void)j.at("status").get<std::string>();
+    if (!j.at("results").is_object()) return damaged("\"results\" is not an object");
+  } catch (const nlohmann::json::exception& e) { // what() starts with "[json.exception.type_error.302] "
+    const std::string what = e.what();
+    const std::size_t end = what.find("] ");
+    return damaged("a field has the wrong type: " + (end == std::string::npos ? what : what.substr(end + 2)));
+  }
   return j;
 }
 
-std::vector<std::size_t> SweepFolder::pending() const {
-  std::vector<std::size_t> p;
-  for (std::size_t i = 0; i < sweep_.size(); ++i)
-    if (!read_record(i)) p.push_back(i);
+SweepFolder::Pending SweepFolder::scan() const {
+  Pending p;
+  for (std::size_t i = 0; i < sweep_.size(); ++i) {
+    std::string problem;
+    if (read_record(i, &problem)) continue;
+    p.cases.push_back(i);
+    if (!problem.empty())
+      p.damaged.push_back(
+          fmt::format("{} is damaged ({}): case {} runs again", record_path(i).string(), problem, i));
+  }
   return p;
 }
 
@@ -220,7 +285,9 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
   if (name.empty())
     throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
-  const ImpactCase impact(impact_case_description(deck));
+  const ImpactCaseDescription description = impact_case_description(deck);
+  check_memory_before_assembly(description);
+  const ImpactCase impact(description);
   ThresholdOptions to;
   to.tolerance = deck.threshold.tolerance;
   to.max_velocity = deck.threshold.max_velocity;
@@ -273,6 +340,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
   try {
     const Deck deck = sweep_.deck_for(c);
     require_sections(deck, sweep_.spec().analysis);
+    check_memory_before_assembly(deck);
     std::optional<fs::path> case_dir;
     if (options_.case_folders) case_dir = folder_.path() / "cases" / fmt::format("{:06}", index);
     if (sweep_.spec().analysis == AnalysisKind::threshold) {
@@ -288,6 +356,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
                                           resolved_settings(description).dt, size_at_impact(description));
     if (!options_.share_factorization || !cache_ || cache_->key != key) {
       cache_.reset();
+      check_memory_before_assembly(description);
       cache_ = std::make_unique<Cache>(Cache{key, std::make_unique<ImpactCase>(description)});
       ++factorizations_;
     }
@@ -302,6 +371,10 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
     put_impact_results(record["results"], outcome);
     record["status"] = outcome.result.complete ? "ok" : "incomplete";
     if (!outcome.result.complete) record["error"] = outcome.result.stop_reason;
+  } catch (const std::bad_alloc&) { // never a bare std::bad_alloc in a table
+    record["status"] = "failed";
+    record["error"] = "out of memory (std::bad_alloc): use a coarser mesh";
+    record["results"] = nlohmann::json::object();
   } catch (const std::exception& e) { // a bad combination of values fails this case only
     record["status"] = "failed";
     record["error"] = e.what();

@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -34,15 +35,26 @@ public:
   SweepFolder(std::filesystem::path dir, const Sweep& sweep);
 
   /// Throws std::runtime_error when DIR holds another sweep (different fingerprint), or holds records
-  /// and `resume` is false.
-  void check(bool resume) const;
+  /// and `resume` is false. A truncated or corrupt sweep.json is said to be so: with `resume` (or when
+  /// there is no record) the records' own fingerprints are checked and the returned warning says that
+  /// sweep.json is rewritten; without, the message says to add --resume.
+  [[nodiscard]] std::optional<std::string> check(bool resume) const;
   /// Writes sweep.json (atomically).
   void write_manifest() const;
+
+  struct Pending {
+    std::vector<std::size_t> cases;   ///< indices without a valid record, ascending
+    std::vector<std::string> damaged; ///< one message per record file that could not be read (run again)
+  };
+  /// Case indices without a valid record, and the damaged record files among them.
+  [[nodiscard]] Pending scan() const;
   /// Case indices without a valid record, ascending.
-  [[nodiscard]] std::vector<std::size_t> pending() const;
+  [[nodiscard]] std::vector<std::size_t> pending() const { return scan().cases; }
   [[nodiscard]] std::filesystem::path record_path(std::size_t index) const;
-  /// The record of case `index` when it exists and belongs to this sweep.
-  [[nodiscard]] std::optional<nlohmann::json> read_record(std::size_t index) const;
+  /// The record of case `index` when it exists and belongs to this sweep (a malformed record is none;
+  /// `problem`, when given, then says what is wrong with the file).
+  [[nodiscard]] std::optional<nlohmann::json> read_record(std::size_t index,
+                                                          std::string* problem = nullptr) const;
 
   struct TableStatus {
     std::size_t missing = 0; ///< cases without a record (the table is not written)
@@ -54,6 +66,9 @@ public:
   [[nodiscard]] const std::filesystem::path& path() const { return dir_; }
 
 private:
+  /// The first record in cases/ written by another sweep (its file name and fingerprint), if any.
+  [[nodiscard]] std::optional<std::pair<std::string, std::string>> foreign_record() const;
+
   std::filesystem::path dir_;
   const Sweep& sweep_;
 };

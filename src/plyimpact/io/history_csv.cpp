@@ -1,0 +1,79 @@
+#include "plyimpact/io/history_csv.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace plyimpact {
+
+namespace {
+
+/// Rows are written in blocks of about this many bytes (a few hundred rows).
+constexpr std::size_t block_bytes = 64 * 1024;
+/// ... and at least this often while the run goes, so a slow run shows its history.
+constexpr auto flush_interval = std::chrono::seconds(1);
+
+} // namespace
+
+std::string history_csv_header() {
+  return "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
+         "plate_strain_J,impactor_energy_J,contact_work_J\n";
+}
+
+std::string history_csv_row(const ImpactSample& h) {
+  return fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", h.t, h.force,
+                     h.impactor_w, h.impactor_v, h.plate_w, h.indentation, h.plate_kinetic, h.plate_strain,
+                     h.impactor_energy, h.contact_work);
+}
+
+HistoryCsvWriter::HistoryCsvWriter(std::filesystem::path path, int every)
+    : path_(std::move(path)), every_(every < 1 ? 1 : every), last_flush_(std::chrono::steady_clock::now()) {
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw std::runtime_error(fmt::format("{}: cannot write: {}", path_.string(), std::strerror(errno)));
+  buffer_ = history_csv_header();
+  flush();
+}
+
+HistoryCsvWriter::~HistoryCsvWriter() {
+  try {
+    flush(); // a run stopped by an exception keeps the rows it computed
+  } catch (const std::exception&) {
+    // the error that stopped the run is the one reported
+  }
+  ::close(fd_);
+}
+
+void HistoryCsvWriter::on_finish(const StepView& last, const ImpactResult& /*result*/) {
+  if (last_step_ != last.step) record(last);
+  flush();
+}
+
+void HistoryCsvWriter::record(const StepView& v) {
+  buffer_ += history_csv_row(history_sample(v));
+  last_step_ = v.step;
+  if (buffer_.size() >= block_bytes || std::chrono::steady_clock::now() - last_flush_ >= flush_interval)
+    flush();
+}
+
+void HistoryCsvWriter::flush() {
+  last_flush_ = std::chrono::steady_clock::now();
+  std::size_t done = 0;
+  while (done < buffer_.size()) {
+    const ssize_t n = ::write(fd_, buffer_.data() + done, buffer_.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string why = std::strerror(errno);
+      buffer_.clear();
+      throw std::runtime_error(fmt::format("{}: write failed: {}", path_.string(), why));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  buffer_.clear();
+}
+
+} // namespace plyimpact

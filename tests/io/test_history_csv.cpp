@@ -1,0 +1,60 @@
+// history.csv streamed while the run goes (io/history_csv.hpp) holds exactly the rows and text the
+// in-memory history gave (analysis/recorders.hpp + impact_history_csv), for every step and every k-th.
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/history_csv.hpp"
+#include "plyimpact/io/impact_report.hpp"
+#include "support/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+TEST(HistoryCsv, StreamedFileEqualsTheInMemoryHistoryText) {
+  const std::string deck_text = test::small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+[time]
+dt = 2e-6
+)");
+  const Deck deck = parse_deck(deck_text, "deck.toml");
+  const ImpactCase impact(impact_case_description(deck));
+  const test::fs::path dir = test::scratch("history-csv");
+  for (const int every : {1, 7}) {
+    const test::fs::path file = dir / ("history-" + std::to_string(every) + ".csv");
+    ImpactResult streamed;
+    {
+      HistoryCsvWriter writer(file, every);
+      RunRequest request;
+      request.history_every = every; // the in-memory recorder alongside, for the comparison
+      request.observers = {&writer};
+      streamed = impact.run(request);
+    }
+    ASSERT_TRUE(streamed.complete);
+    ASSERT_GT(streamed.history.size(), 10U);
+    const std::string text = test::read_text(file);
+    EXPECT_EQ(text, impact_history_csv(streamed)) << "every " << every;
+    // the header, the initial state, every k-th step and the last step
+    const auto rows = static_cast<long>(std::count(text.begin(), text.end(), '\n')) - 1;
+    EXPECT_EQ(rows, streamed.steps / every + 1 + (streamed.steps % every != 0 ? 1 : 0)) << every;
+  }
+}
+
+TEST(HistoryCsv, RowsAreTheNineDigitScientificTextOfEachColumn) {
+  ImpactSample s;
+  s.t = 1e-6;
+  s.force = 12345.678901234;
+  s.contact_work = -0.5;
+  EXPECT_EQ(history_csv_row(s), "1.000000000e-06,1.234567890e+04,0.000000000e+00,0.000000000e+00,"
+                                "0.000000000e+00,0.000000000e+00,0.000000000e+00,0.000000000e+00,"
+                                "0.000000000e+00,-5.000000000e-01\n");
+}
+
+} // namespace
+} // namespace plyimpact

@@ -1,0 +1,71 @@
+// The memory estimate made before assembly (io/memory_estimate.hpp): the formula's numbers for one mesh,
+// and that it errs on the large side of the exact symbolic analysis of the assembled K̄ on structured
+// meshes of several sizes and aspect ratios.
+#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/memory_estimate.hpp"
+#include "support/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+TEST(MemoryEstimate, FormulaOfA15By11Mesh) {
+  const MeshMemoryEstimate e = estimate_mesh_memory(15, 11);
+  EXPECT_EQ(e.nodes, 31.0 * 23.0);
+  EXPECT_EQ(e.equations, 5.0 * 713.0);
+  EXPECT_EQ(e.matrix_nonzeros, 400.0 * 713.0);
+  EXPECT_DOUBLE_EQ(e.factor_nonzeros, factor_fill_constant * 3565.0 * std::pow(std::log2(3565.0), 2));
+  EXPECT_DOUBLE_EQ(e.bytes, 12.0 * (e.factor_nonzeros + e.equations + 3.0 * e.matrix_nonzeros));
+}
+
+TEST(MemoryEstimate, ExceedsTheSymbolicAnalysisOfStructuredMeshes) {
+  for (const auto& [nx, ny] : {std::pair{4, 4}, {8, 8}, {16, 12}, {24, 24}, {40, 6}, {32, 32}, {48, 48}}) {
+    const std::string text = test::small_deck("static", "") + "";
+    Deck deck = parse_deck(text, "deck.toml");
+    deck.mesh->nx = nx;
+    deck.mesh->ny = ny;
+    const PlateModel model = plate_model(deck);
+    const SparseMatrix Kbar = model.stiffness() + 1e6 * model.mass();
+    const FactorMemoryEstimate exact = estimate_factor_memory(Kbar);
+    const MeshMemoryEstimate e = estimate_mesh_memory(nx, ny);
+    std::printf("%d x %d: equations %ld (estimate %.0f), nnz(A) %ld (estimate %.0f), nnz(L) %ld, ratio to "
+                "n log2 n %.3f\n",
+                nx, ny, exact.equations, e.equations, exact.matrix_nonzeros, e.matrix_nonzeros,
+                exact.factor_nonzeros,
+                static_cast<double>(exact.factor_nonzeros) /
+                    (static_cast<double>(exact.equations) *
+                     std::pow(std::log2(static_cast<double>(exact.equations)), 2)));
+    EXPECT_GE(e.equations, static_cast<double>(exact.equations)) << nx << " x " << ny;
+    EXPECT_GE(e.matrix_nonzeros, static_cast<double>(exact.matrix_nonzeros)) << nx << " x " << ny;
+    EXPECT_GE(e.factor_nonzeros, static_cast<double>(exact.factor_nonzeros)) << nx << " x " << ny;
+    EXPECT_GE(e.bytes, exact.bytes) << nx << " x " << ny;
+  }
+}
+
+TEST(MemoryEstimate, GradedMeshSizeIsTheMeshTheImpactCaseBuilds) {
+  std::string text = test::small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+x = 0.05
+)");
+  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-3\ngrowth = 1.2");
+  const ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  ASSERT_TRUE(d.mesh.grading);
+  const auto [nx, ny] = graded_mesh_size(d);
+  const Mesh mesh = impact_mesh(d);
+  EXPECT_EQ(nx * ny, mesh.element_count());
+  EXPECT_EQ((2 * nx + 1) * (2 * ny + 1), mesh.node_count());
+  EXPECT_GT(nx, 6);
+}
+
+} // namespace
+} // namespace plyimpact
