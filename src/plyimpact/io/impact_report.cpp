@@ -113,7 +113,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   t += "  absorbed energy         " +
        (r.absorbed_energy ? fmt::format("{:12.4f} J of {:.4f} J", *r.absorbed_energy, e0) : not_given(r)) +
        fmt::format(" (contact dissipation {:.4f} J)\n", r.contact_dissipation);
-  t += fmt::format("  energy balance error    {:12.4f} % of {:.4f} J{}\n", 100.0 * r.energy_balance_error, e0,
+  t += fmt::format("  energy balance error    {:12.3g} % of {:.4f} J{}\n", 100.0 * r.energy_balance_error, e0,
                    r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,
                    r.end_time * 1e6, r.wall_time, r.complete ? "" : "  INCOMPLETE");
