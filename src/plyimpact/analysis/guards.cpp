@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace plyimpact {
 
@@ -31,10 +32,12 @@ std::optional<std::string> time_step_warning(double mass, double velocity, doubl
   const double t_c = hertz_contact_time(mass, velocity, k);
   const double steps = t_c / dt;
   if (steps >= min_steps_per_contact) return std::nullopt;
-  return fmt::format("time.dt = {:.4g} s gives only {:.1f} steps over the Hertz contact time estimate "
+  // One decimal, or three digits below one step (0.0168, not 0.0).
+  const std::string count = steps >= 1.0 ? fmt::format("{:.1f}", steps) : fmt::format("{:.3g}", steps);
+  return fmt::format("time.dt = {:.4g} s gives only {} steps over the Hertz contact time estimate "
                      "t_c = {:.4g} s (rigid target, SPEC §4): the force pulse is not resolved; use time.dt "
                      "<= {:.4g} s (t_c/{:.0f})",
-                     dt, steps, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
+                     dt, count, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
 }
 
 std::optional<std::string> impact_point_warning(const Mesh& mesh, double x, double y) {
