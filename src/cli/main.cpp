@@ -235,7 +235,7 @@ int run_impact(const Options& o) {
     fmt::print("first failures (per criterion, mode and ply/interface):\n{}",
                first_failures_text(run.first_failures));
   if (interrupted.load()) return 130;
-  return r.complete ? 0 : 3;
+  return r.stop_reason.empty() ? 0 : 3; // 3: stopped early; a run cut short by time.end only warns
 }
 
 /// `plyimpact plot DIR... [-o OUT]`: PNG and SVG pictures of one run, or overlays of several.
@@ -311,11 +311,36 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
   return sub;
 }
 
+const std::vector<std::string>& command_names() {
+  static const std::vector<std::string> names{"laminate", "static",    "modal", "buckling",
+                                              "impact",   "threshold", "plot",  "sweep"};
+  return names;
+}
+
+/// A first argument that is neither a command nor a deck (no such file, no .toml): its name, a
+/// command it may be a slip for, and the valid commands.
+std::optional<std::string> unknown_command(const std::vector<std::string>& args) {
+  const std::vector<std::string>& commands = command_names();
+  if (args.empty() || args[0].empty() || args[0][0] == '-' ||
+      std::find(commands.begin(), commands.end(), args[0]) != commands.end() || args[0].ends_with(".toml") ||
+      std::filesystem::exists(args[0]))
+    return std::nullopt;
+  std::string list;
+  for (const std::string& c : commands)
+    list += (list.empty() ? "" : ", ") + c;
+  const auto slip = std::find_if(commands.begin(), commands.end(), [&](const std::string& c) {
+    return args[0].starts_with(c.substr(0, 3)) || c.starts_with(args[0].substr(0, 3));
+  });
+  return fmt::format("plyimpact: error: unknown command '{}'{}; the commands are {} (plyimpact --help), or "
+                     "give a deck file: plyimpact DECK.toml",
+                     args[0], slip != commands.end() ? fmt::format(" (did you mean '{}'?)", *slip) : "",
+                     list);
+}
+
 /// `plyimpact DECK [options]` runs the deck's own `analysis` (impact by default).
 std::vector<std::string> with_default_command(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  static const std::vector<std::string> commands{"laminate", "static",    "modal", "buckling",
-                                                 "impact",   "threshold", "plot",  "sweep"};
+  const std::vector<std::string>& commands = command_names();
   if (args.empty() || args[0].empty() || args[0][0] == '-' ||
       std::find(commands.begin(), commands.end(), args[0]) != commands.end())
     return args;
@@ -365,6 +390,10 @@ int run(int argc, char** argv) {
   sweep_options.command = o.command;
   CLI::App* sweep = add_sweep_command(app, sweep_options);
 
+  if (const auto message = unknown_command({argv + std::min(argc, 1), argv + argc})) {
+    fmt::print(stderr, "{}\n", *message);
+    return 2;
+  }
   try {
     std::vector<std::string> args = with_default_command(argc, argv);
     std::reverse(args.begin(), args.end()); // CLI11 takes the arguments in reverse order

@@ -196,6 +196,16 @@ void refuse_implausible_cases(const Sweep& sweep) {
                                 sweep.source(), cases, sweep.size(), found));
 }
 
+/// "case N: <error>" of the first case whose record holds an error, for the message of a sweep in which
+/// no case completed.
+std::string first_error(const SweepFolder& folder, std::size_t cases) {
+  for (std::size_t i = 0; i < cases; ++i)
+    if (const auto record = folder.read_record(i);
+        record && record->contains("error") && record->at("error").is_string())
+      return fmt::format("case {}: {}", i, record->at("error").get<std::string>());
+  return "no error recorded";
+}
+
 /// Everything after MPI start-up; collective steps in the same order on every rank.
 int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool>& interrupted) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -285,10 +295,16 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
                sweep.size());
     return interrupted.load() ? 130 : 3;
   }
+  fmt::print("sweep: table {}\n", (folder.path() / "sweep.csv").string());
+  if (status.failed == sweep.size()) { // nothing usable: a script must not take it for a good run
+    fmt::print(stderr,
+               "plyimpact: error: none of the {} cases completed (status and error columns of {}); {}\n",
+               sweep.size(), (folder.path() / "sweep.csv").string(), first_error(folder, sweep.size()));
+    return 1;
+  }
   if (status.failed > 0)
     fmt::print(stderr, "plyimpact: warning: {} of {} cases did not complete (status and error columns)\n",
                status.failed, sweep.size());
-  fmt::print("sweep: table {}\n", (folder.path() / "sweep.csv").string());
   return 0;
 }
 

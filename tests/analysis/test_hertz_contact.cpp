@@ -37,6 +37,30 @@ TEST(HertzContact, UnloadingLeavesThePermanentIndentationOfTanAndSun) {
   EXPECT_NEAR(law.force(am), Fm, 1e-9 * Fm); // continuous at the turning point
 }
 
+/// ∫ law.force dα from a to b by Simpson's rule on 2000 intervals (the law's state held fixed).
+double simpson(const HertzContact& law, double a, double b) {
+  constexpr int n = 2000;
+  const double h = (b - a) / n;
+  double sum = law.force(a) + law.force(b);
+  for (int i = 1; i < n; ++i)
+    sum += (i % 2 == 1 ? 4.0 : 2.0) * law.force(a + i * h);
+  return sum * h / 3.0;
+}
+
+TEST(HertzContact, WorkIsTheExactIntegralOfTheForceOnEveryBranch) {
+  // The energy balance of a run (impact_loop.cpp) counts the contact's share with work(): loading
+  // 0.4 k α^2.5, and on the Tan–Sun unloading curve Fm (αm − α0)/(q + 1) ((α − α0)/(αm − α0))^(q+1).
+  HertzContact law(0.6e9, tan_sun());
+  EXPECT_NEAR(law.work(0.0, 5e-4), 0.4 * 0.6e9 * std::pow(5e-4, 2.5), 1e-12);
+  EXPECT_NEAR(law.work(-1e-5, 2e-4), simpson(law, -1e-5, 2e-4), 1e-9 * law.work(0.0, 2e-4));
+  law.commit(5e-4);
+  const double a0 = 0.094 * (5e-4 - 1.7e-4), Fm = 0.6e9 * std::pow(5e-4, 1.5);
+  EXPECT_NEAR(law.work(a0, 5e-4), Fm * (5e-4 - a0) / 3.5, 1e-12); // whole unloading curve, q = 2.5
+  EXPECT_NEAR(law.work(5e-4, 3e-4), simpson(law, 5e-4, 3e-4), 1e-9 * Fm * 5e-4); // unloading part-way
+  EXPECT_NEAR(law.work(3e-4, 6e-4), simpson(law, 3e-4, 6e-4), 1e-9 * Fm * 5e-4); // back up past αm
+  EXPECT_EQ(law.work(-1e-4, a0), 0.0);                                           // no force below α0
+}
+
 TEST(HertzContact, NoPermanentIndentationBelowTheCriticalIndentation) {
   HertzContact law(0.6e9, tan_sun());
   law.commit(1e-4); // below αcr = 1.7e-4

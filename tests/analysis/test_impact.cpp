@@ -102,10 +102,10 @@ dt = 0.25e-6
   const auto& last = r.history.back();
   const double plate_energy = last.plate_kinetic + last.plate_strain;
   std::printf("  tan-sun: absorbed %.6f J = loop %.6f J + plate %.6f J; permanent indentation %.3e m\n",
-              r.absorbed_energy, loop, plate_energy, r.permanent_indentation);
+              r.absorbed_energy.value(), loop, plate_energy, r.permanent_indentation);
   EXPECT_GT(loop, 0.0);
   EXPECT_GT(r.permanent_indentation, 0.0);
-  EXPECT_NEAR(r.absorbed_energy, loop + plate_energy, 1e-6 * r.absorbed_energy);
+  EXPECT_NEAR(r.absorbed_energy.value(), loop + plate_energy, 1e-6 * r.absorbed_energy.value());
   EXPECT_NEAR(loop, r.contact_dissipation, 1e-9 * loop);
 }
 
@@ -146,9 +146,9 @@ TEST(Impact, RigidTargetReproducesTheHertzClosedForm) {
   const double F_max = std::pow(k, 0.4) * std::pow(1.25 * m * v0 * v0, 0.6);
   const double T = 3.21807 * std::pow(m * m / (k * k * v0), 0.2);
   std::printf("  rigid target: F_max %.4f N (closed form %.4f), T %.4f us (%.4f), rebound %.6f m/s\n",
-              rigid.peak_force, F_max, rigid.contact_duration * 1e6, T * 1e6, rigid.rebound_velocity);
+              rigid.peak_force, F_max, rigid.contact_duration * 1e6, T * 1e6, rigid.rebound_velocity.value());
   EXPECT_NEAR(rigid.peak_force / F_max, 1.0, 1e-3);
-  EXPECT_NEAR(rigid.rebound_velocity / v0, 1.0, 1e-3);
+  EXPECT_NEAR(rigid.rebound_velocity.value() / v0, 1.0, 1e-3);
   EXPECT_NEAR(rigid.contact_duration / T, 1.0, 5e-3);
   EXPECT_NEAR(rigid.contact_duration, 2.94328 * rigid.max_indentation / v0, 5e-3 * T);
   EXPECT_TRUE(rigid.complete);
@@ -273,8 +273,8 @@ TEST(Impact, EpisodesAndSummaryAreConsistent) {
   EXPECT_DOUBLE_EQ(highest, r.peak_force);
   // The run ends only after the impactor has been free for max(first contact, 2 T1).
   const double free_time = r.history.back().t - r.episodes.back().end;
-  EXPECT_GE(free_time + 1e-12, std::max(r.contact_duration, 2 * r.fundamental_period));
-  EXPECT_GT(r.rebound_velocity, 0.0);
+  EXPECT_GE(free_time + 1e-12, std::max(r.contact_duration, 2 * r.fundamental_period.value()));
+  EXPECT_GT(r.rebound_velocity.value(), 0.0);
 }
 
 } // namespace

@@ -201,9 +201,11 @@ end = 1e-4
             std::string::npos)
       << ok.out;
   const auto warnings = read_json(dir / "out" / "summary.json")["warnings"];
-  ASSERT_EQ(warnings.size(), 3U);
+  ASSERT_EQ(warnings.size(), 4U);
   EXPECT_NE(warnings[0].get<std::string>().find("(t_c/50)"), std::string::npos);
   EXPECT_NE(warnings[2].get<std::string>().find("the contact is not resolved"), std::string::npos);
+  // end = 0.1 ms comes before the end of the 0.5 ms contact (test_honest_summary.cpp).
+  EXPECT_NE(warnings[3].get<std::string>().find("is still in contact"), std::string::npos);
 
   // The memory limit (overridden by the environment) refuses the factorization with the estimate.
   // (the mesh's estimate, io/memory_estimate.hpp, refuses it before assembly)
@@ -229,6 +231,27 @@ end = 1e-4
   EXPECT_EQ(nan.status, 1);
   EXPECT_NE(nan.out.find("non-finite contact force Fc [N] at step 1 (t = 2e-05 s)"), std::string::npos)
       << nan.out;
+}
+
+TEST(Cli, AnUnknownCommandIsNamedWithTheValidOnesAndExits2) {
+  // Not a command, not a file, not a .toml: named, with a near command when there is one (exit 2 as
+  // for other usage errors; before: CLI11's exit 109 "The following argument was not expected").
+  const CommandResult slip = run("impactt examples/annex2.toml");
+  EXPECT_EQ(slip.status, 2) << slip.out;
+  EXPECT_EQ(slip.out,
+            "plyimpact: error: unknown command 'impactt' (did you mean 'impact'?); the commands are "
+            "laminate, static, modal, buckling, impact, threshold, plot, sweep (plyimpact --help), "
+            "or give a deck file: plyimpact DECK.toml\n");
+  const CommandResult other = run("frobnicate");
+  EXPECT_EQ(other.status, 2) << other.out;
+  EXPECT_NE(other.out.find("plyimpact: error: unknown command 'frobnicate'; the commands are laminate,"),
+            std::string::npos)
+      << other.out;
+  // A missing deck is still a deck error, named as such.
+  const CommandResult missing = run("no-such-deck.toml");
+  EXPECT_EQ(missing.status, 2) << missing.out;
+  EXPECT_NE(missing.out.find("no-such-deck.toml: error: cannot open the deck file"), std::string::npos)
+      << missing.out;
 }
 
 } // namespace

@@ -217,6 +217,25 @@ TEST(SweepCli, AFailingCaseIsRecordedAndTheOthersRun) {
   EXPECT_EQ(failed, 2); // v = -1 with each of the two layups
 }
 
+TEST(SweepCli, ASweepInWhichEveryCaseFailedExitsNonZero) {
+  // A script must tell it from a good run: exit 1, the count and the first case's error; the table is
+  // still written, with each case's error.
+  const fs::path dir = scratch("sweep-all-failed");
+  const fs::path deck = twelve_case_deck(dir);
+  const CommandResult r = sweep(deck.string() + " -o " + (dir / "out").string() +
+                                " --set impactor.velocity=-1.0,-2.0 --set impactor.mass=0.3 --jobs 1");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("plyimpact: error: none of the 4 cases completed (status and error columns of "),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("case 0: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("impactor.velocity must be positive"), std::string::npos) << r.out;
+  const auto rows = lines(read_text(dir / "out" / "sweep.csv"));
+  ASSERT_EQ(rows.size(), 5U);
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    EXPECT_NE(rows[i].find(",failed,"), std::string::npos) << rows[i];
+}
+
 /// The field of `column` in data row `row` (1-based) of a CSV without quoted commas.
 std::string field(const std::string& table, std::size_t row, const std::string& column) {
   const auto rows = lines(table);

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <string>
 #include <tuple>
+#include <vector>
 
 namespace plyimpact {
 namespace {
@@ -136,7 +137,11 @@ TEST_P(DefaultDeck, GivesTheNavierPeakForceWhereverTheImpactorLands) {
   EXPECT_NEAR(r.peak_force, c.peak_force, 0.01 * c.peak_force);
   EXPECT_NEAR(t_band, c.time_of_peak, 0.01 * c.time_of_peak);
   EXPECT_NEAR(r.contact_duration, c.duration, 0.01 * c.duration);
-  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  // No mesh or time-step guard fires. Case (i) is the §3.6 impact, deflected by 0.63 h in this linear
+  // run: its large-deflection warning (guards.hpp) is due and left aside here.
+  std::vector<std::string> said = r.warnings;
+  std::erase_if(said, [](const std::string& w) { return w.find("laminate thickness") != std::string::npos; });
+  EXPECT_TRUE(said.empty()) << said.front();
 }
 
 INSTANTIATE_TEST_SUITE_P(Issue16, DefaultDeck,

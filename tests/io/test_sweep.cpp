@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -151,6 +152,21 @@ TEST(SweepSpec, RangesGiveEquallySpacedValuesWithExactEnds) {
     const std::string e = error_of([&] { (void)parse_range(bad, "--set 'k'"); });
     EXPECT_NE(e.find("--set 'k': error: malformed range"), std::string::npos) << bad << ": " << e;
   }
+}
+
+TEST(SweepSpec, RangeValuesAreTheShortestDecimalsNotTheirSumsFloatNoise) {
+  // 0.1 + 2 (0.5 − 0.1)/4 is 0.30000000000000004 in doubles; the range gives the decimal 0.3.
+  const auto v = parse_range("0.1:0.5:5", "x");
+  ASSERT_EQ(v.size(), 5U);
+  const char* text[] = {"0.1", "0.2", "0.3", "0.4", "0.5"};
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    EXPECT_EQ(to_text(v[i]), text[i]);
+    EXPECT_EQ(std::get<double>(v[i]), std::strtod(text[i], nullptr));
+  }
+  // No short decimal within a few ulps: the value as computed (1/3 to 15 digits).
+  const auto third = parse_range("0:1:4", "x");
+  EXPECT_NEAR(std::get<double>(third[1]), 1.0 / 3.0, 1e-15);
+  EXPECT_EQ(to_text(third[1]), "0.333333333333333");
 }
 
 TEST(SweepSpec, RandomDrawsFollowTheDocumentedSequence) {

@@ -207,6 +207,24 @@ TEST(VtkOutput, DamageFractionCountsEachFailedGaussPointOnceUpToTheFrameTime) {
   EXPECT_DOUBLE_EQ(total, 2.0 / 9.0);
 }
 
+TEST(VtkOutput, AWhollyFailedElementIsExactlyOne) {
+  // Nine additions of 1/9 give 1.0000000000000002; the fraction is counted, then divided, at most 1.
+  std::vector<DamageOnset> onsets;
+  for (int i = 1; i <= 3; ++i)
+    for (int j = 1; j <= 3; ++j) {
+      DamageOnset o;
+      o.criterion = Criterion::choi_chang_matrix;
+      o.ply = 1;
+      o.element = 2;
+      o.ipgs = i;
+      o.jpgs = j;
+      onsets.push_back(o);
+    }
+  const DamageFractions d = damage_fractions(onsets, 2, 1, 1.0);
+  EXPECT_EQ(d.ply[1], 1.0);
+  EXPECT_EQ(d.ply[0], 0.0);
+}
+
 TEST(VtkOutput, SeriesKeepsAValidPvdListingEveryFrameWithItsTime) {
   const PressurePlate p(test::t300_976(), "[0/90]s", 0.25e-3);
   const fs::path dir = scratch("series");

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace plyimpact {
 
@@ -30,10 +32,12 @@ std::optional<std::string> time_step_warning(double mass, double velocity, doubl
   const double t_c = hertz_contact_time(mass, velocity, k);
   const double steps = t_c / dt;
   if (steps >= min_steps_per_contact) return std::nullopt;
-  return fmt::format("time.dt = {:.4g} s gives only {:.1f} steps over the Hertz contact time estimate "
-                     "t_c = {:.4g} s (rigid target, SPEC §4): the force pulse is not resolved; use time.dt "
+  // One decimal, or three digits below one step (0.0168, not 0.0).
+  const std::string count = steps >= 1.0 ? fmt::format("{:.1f}", steps) : fmt::format("{:.3g}", steps);
+  return fmt::format("time.dt = {:.4g} s gives only {} steps over the Hertz contact time estimate "
+                     "t_c = {:.4g} s (rigid target, docs/robustness.md): the force pulse is not resolved; use time.dt "
                      "<= {:.4g} s (t_c/{:.0f})",
-                     dt, steps, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
+                     dt, count, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
 }
 
 std::optional<std::string> impact_point_warning(const Mesh& mesh, double x, double y) {
@@ -66,6 +70,38 @@ std::optional<std::string> contact_mesh_warning(const Mesh& mesh, double x, doub
                          ? " and the point load's peak force depends on the mesh and on where the impactor "
                            "lands (contact.load = \"hertz-pressure\" converges)"
                          : ", the pressure acts like a point force");
+}
+
+void check_end_after_first_step(double dt, const std::optional<double>& end) {
+  if (!end || *end >= dt * (1.0 - 1e-9)) return;
+  throw std::invalid_argument(fmt::format(
+      "impact: time.end = {:.6g} s is shorter than one time step, time.dt = {:.6g} s: the first step would "
+      "end past time.end. Set [time] end to at least {:.6g} s (or \"auto\"), or lower [time] dt",
+      *end, dt, dt));
+}
+
+std::optional<std::string> energy_balance_reason(double energy_error, double initial_energy, double mass,
+                                                 double velocity, double k, double dt) {
+  if (!(energy_error > energy_balance_tolerance)) return std::nullopt;
+  const double t_c = hertz_contact_time(mass, velocity, k);
+  return fmt::format("energy balance error {:.3g} J, {:.3g} % of the initial kinetic energy {:.4g} J "
+                     "(tolerance {:.3g} %): the time integration created or lost energy and the results "
+                     "are not trustworthy. The Hertz contact time estimate is t_c = {:.4g} s, {:.3g} steps "
+                     "of time.dt = {:.4g} s: lower [time] dt to t_c/{:.0f} = {:.4g} s or less, or set "
+                     "dt = \"auto\"",
+                     energy_error * initial_energy, 100.0 * energy_error, initial_energy,
+                     100.0 * energy_balance_tolerance, t_c, t_c / dt, dt, min_steps_per_contact,
+                     t_c / min_steps_per_contact);
+}
+
+std::optional<std::string> large_deflection_warning(double peak_deflection, double thickness) {
+  if (!(thickness > 0.0) || !(peak_deflection > max_linear_deflection * thickness)) return std::nullopt;
+  return fmt::format(
+      "the peak deflection {:.4g} mm is {:.3g} times the laminate thickness h = {:.4g} mm in a "
+      "linear run: beyond about {:.1f} h membrane stretching stiffens the plate and the "
+      "linear model overestimates the deflection and underestimates the force. Set "
+      "nonlinear = true at the top of the deck (or run with --nonlinear; docs/nonlinear.md)",
+      peak_deflection * 1e3, peak_deflection / thickness, thickness * 1e3, max_linear_deflection);
 }
 
 namespace {

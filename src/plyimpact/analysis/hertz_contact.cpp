@@ -28,6 +28,21 @@ double HertzContact::stiffness(double alpha) const {
   return force_m_ * e * std::pow((alpha - alpha_0_) / span, e - 1.0) / span; // SPEC §4 misprint of (2.30)
 }
 
+double HertzContact::work_to(double alpha) const {
+  if (alpha <= alpha_0_) return 0.0;
+  const double loading = 0.4 * k_; // ∫ k α^1.5 dα = 0.4 k α^2.5
+  if (alpha_m_ <= alpha_0_) return loading * (std::pow(alpha, 2.5) - std::pow(alpha_0_, 2.5));
+  const double span = alpha_m_ - alpha_0_;
+  const double e = reloading_ ? 1.5 : law_.q;
+  const double curve = force_m_ * span / (e + 1.0); // ∫ Fm ((α − α0)/span)^e dα from α0 to αm
+  if (alpha < alpha_m_) return curve * std::pow((alpha - alpha_0_) / span, e + 1.0);
+  return curve + loading * (std::pow(alpha, 2.5) - std::pow(alpha_m_, 2.5));
+}
+
+double HertzContact::work(double from, double to) const {
+  return work_to(to) - work_to(from);
+}
+
 void HertzContact::commit(double alpha) {
   if (alpha > alpha_m_) {
     alpha_m_ = alpha;

@@ -21,6 +21,10 @@ public:
   [[nodiscard]] double force(double alpha) const;
   /// dF/dα at α (one-sided from the right at kinks; 0 where F = 0).
   [[nodiscard]] double stiffness(double alpha) const;
+  /// ∫ F dα from `from` to `to` with the current history, exact (the antiderivative of each branch):
+  /// the work the law asks for over a step, against which the time integration's trapezoids are
+  /// checked (the energy balance of impact_loop.cpp). Call before commit(to).
+  [[nodiscard]] double work(double from, double to) const;
   /// Records a converged indentation: updates αm, Fm, α0 and the branch.
   void commit(double alpha);
 
@@ -30,6 +34,9 @@ public:
   [[nodiscard]] bool reloading() const { return reloading_; }
 
 private:
+  /// An antiderivative of force(α) with the current history, 0 at α ≤ α0.
+  [[nodiscard]] double work_to(double alpha) const;
+
   double k_;
   ContactLawParameters law_;
   double alpha_m_ = 0.0;   ///< largest indentation reached

@@ -101,6 +101,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
+  check_end_after_first_step(settings_.dt, settings_.end); // before the factorization
   if (!(settings_.impactor.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");
   if (settings_.rigid_target) {
     if (settings_.nonlinear)
@@ -133,6 +134,8 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   loop.max_steps = settings_.max_steps;
   loop.fundamental_period = fundamental_period_;
   loop.cancel = request.cancel;
+  if (!settings_.rigid_target && !settings_.nonlinear)
+    loop.linear_thickness = impacted_laminate(description_).thickness();
   // Guards that warn (docs/robustness.md): a Δt too coarse for the contact, an impact point on an
   // element boundary.
   if (auto w = time_step_warning(imp.mass, imp.velocity, k, settings_.dt))

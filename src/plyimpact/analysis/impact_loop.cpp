@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace plyimpact {
 
@@ -43,6 +44,7 @@ public:
 
   /// A converged step: contact episodes, peak force, peak deflection ws and indentation α.
   void record(double t, double force, double alpha, double ws) {
+    last_force_ = force;
     if (force > 0.0) {
       if (!in_contact_) r_.episodes.push_back({t - s_.dt, t, 0.0});
       in_contact_ = true;
@@ -64,28 +66,55 @@ public:
   bool over(double t) {
     if (s_.end) return t >= *s_.end - 1e-9 * s_.dt;
     if (in_contact_ || last_separation_ < 0.0) return false;
-    r_.fundamental_period = s_.fundamental_period;
-    return t - last_separation_ >= std::max(r_.contact_duration, 2.0 * r_.fundamental_period);
+    return t - last_separation_ >= std::max(r_.contact_duration, 2.0 * s_.fundamental_period);
   }
 
-  /// The summary values after the last step.
-  void finish(long steps, double t, const HertzContact& law, const NewmarkStepper& impactor, double e0,
-              double contact_work) {
+  /// The summary values after the last step; `ended` is true when over() ended the run.
+  void finish(bool ended, long steps, double t, const HertzContact& law, const NewmarkStepper& impactor,
+              double e0, double contact_work) {
     if (in_contact_ && r_.episodes.size() == 1)
       r_.contact_duration = r_.episodes.front().end - r_.episodes.front().start;
     r_.steps = steps;
     r_.end_time = t;
     r_.permanent_indentation = law.permanent_indentation();
-    r_.rebound_velocity = -impactor.velocity();
-    r_.absorbed_energy = e0 - impactor.kinetic_energy();
     r_.contact_dissipation = contact_work;
+    if (!s_.end && s_.fundamental_period > 0.0) r_.fundamental_period = s_.fundamental_period;
+    // The end-of-event rule ends a run only after the impactor has left; time.end may come before.
+    const bool by_rule = ended && !s_.end;
+    const bool left = by_rule || (!in_contact_ && !r_.episodes.empty() && impactor.velocity() < 0.0);
+    if (left) {
+      r_.rebound_velocity = -impactor.velocity();
+      r_.absorbed_energy = e0 - impactor.kinetic_energy();
+    }
+    r_.complete = ended && left;
+    if (r_.complete) return;
+    if (!ended) {
+      r_.incomplete_reason = r_.stop_reason;
+      return;
+    }
+    r_.incomplete_reason = cut_short_reason(t, impactor);
+    r_.warnings.push_back(r_.incomplete_reason);
   }
 
 private:
+  /// Why a run that reached time.end is not a whole event, and the deck key to change.
+  [[nodiscard]] std::string cut_short_reason(double t, const NewmarkStepper& impactor) const {
+    const std::string state =
+        in_contact_ ? fmt::format("is still in contact with the plate (contact force {:.4g} N)", last_force_)
+        : r_.episodes.empty() ? std::string("has not reached the plate yet")
+                              : fmt::format("has left contact but still moves toward the plate ({:.4g} m/s)",
+                                            impactor.velocity());
+    return fmt::format("the run ended at time.end = {:.6g} s (t = {:.6g} s) while the impactor {}: the event "
+                       "is not over, so rebound_velocity and absorbed_energy are not given (null). Set "
+                       "[time] end = \"auto\" (the end-of-event rule) or a later time to get them",
+                       *s_.end, t, state);
+  }
+
   ImpactResult& r_;
   const LoopSettings& s_;
   bool in_contact_ = false;
   double last_separation_ = -1.0;
+  double last_force_ = 0.0;
 };
 
 /// The plate's part of the step view: expanded displacements and energies, computed on demand.
@@ -109,12 +138,35 @@ private:
   mutable bool expanded_ = false;
 };
 
+/// The checks of a finished run (guards.hpp): the energy balance (suspect above
+/// energy_balance_tolerance) and a linear plate deflected beyond max_linear_deflection thicknesses.
+/// The balance counts the contact's share as the contact law's exact work ∫F dα along the path of α
+/// (`law_work`): the time integration's own trapezoidal work (contact_work) balances the other energies
+/// by construction for a point load, so only the law tells whether a step was too coarse to follow it.
+void check_after_run(ImpactResult& r, const StepView& end, double e0, double law_work, const Impactor& imp,
+                     double k, const LoopSettings& s) {
+  if (e0 > 0.0) {
+    const double total =
+        end.impactor_energy + end.plate_kinetic_energy() + end.plate_strain_energy() + law_work;
+    r.energy_balance_error = std::abs(e0 - total) / e0;
+  }
+  if (auto why = energy_balance_reason(r.energy_balance_error, e0, imp.mass, imp.velocity, k, s.dt)) {
+    r.suspect = true;
+    r.suspect_reason = *why;
+    r.warnings.push_back(std::move(*why));
+  }
+  if (s.linear_thickness)
+    if (auto w = large_deflection_warning(r.peak_contact_deflection, *s.linear_thickness))
+      r.warnings.push_back(std::move(*w));
+}
+
 } // namespace
 
 ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, double k,
                              const ContactLawParameters& contact, const LoopSettings& s,
                              std::span<ImpactObserver* const> observers) {
   const auto wall0 = std::chrono::steady_clock::now();
+  check_end_after_first_step(s.dt, s.end);
   const NewmarkCoefficients nc(s.dt, s.newmark_beta, s.newmark_gamma);
   const std::unique_ptr<PlateStepper> plate = policy.start(imp);
   const auto n = static_cast<Eigen::Index>(policy.equations());
@@ -130,7 +182,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   r.dofs = static_cast<int>(n);
   r.inplane_eliminated = policy.inplane_eliminated();
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
-  double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0;
+  double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0, law_work = 0.0;
   ImpactEvent event(r, s);
   PlateAccess plate_access(*plate, state, force);
 
@@ -159,6 +211,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
   long step = 0;
   double t = 0.0;
+  bool ended = false;
   for (;;) {
     if (event.must_stop(step, t, step > 0 && observer_stop())) break;
     ++step;
@@ -171,6 +224,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     force = cs.force;
     alpha = cs.alpha;
     check_finite_step(step, t, {{"contact force Fc [N]", force}, {"indentation alpha [m]", alpha}});
+    law_work += law.work(alpha_old, alpha); // the energy balance's contact work (check_after_run)
     law.commit(alpha);
     contact_work += 0.5 * (force + force_old) * (alpha - alpha_old);
     impactor.advance(force);
@@ -198,11 +252,12 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     for (ImpactObserver* o : observers)
       o->on_step(view);
     if (event.over(t)) {
-      r.complete = true;
+      ended = true;
       break;
     }
   }
-  event.finish(step, t, law, impactor, e0, contact_work);
+  event.finish(ended, step, t, law, impactor, e0, contact_work);
+  check_after_run(r, view, e0, law_work, imp, k, s);
   r.newton = plate->statistics();
   r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   for (ImpactObserver* o : observers)

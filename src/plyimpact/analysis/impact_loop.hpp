@@ -30,6 +30,9 @@ struct LoopSettings {
   long max_steps = 2'000'000;
   double fundamental_period = 0.0;           ///< of the plate, for the end-of-event rule [s]
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
+  /// Laminate thickness under the impact point of a linear plate (empty: non-linear plate or rigid
+  /// target): a peak deflection above guards.hpp's max_linear_deflection of it warns [m].
+  std::optional<double> linear_thickness;
   std::vector<std::string> warnings; ///< found before the run (guards.hpp): start ImpactResult::warnings
 };
 

@@ -45,16 +45,28 @@ struct ImpactResult {
   double peak_force = 0.0, time_of_peak_force = 0.0;
   double contact_duration = 0.0; ///< of the first contact [s]
   double peak_contact_deflection = 0.0, max_indentation = 0.0, permanent_indentation = 0.0;
-  double rebound_velocity = 0.0;    ///< speed of the impactor away from the plate at the end [m/s]
-  double absorbed_energy = 0.0;     ///< ½ m (v0² − v_end²) [J]
-  double contact_dissipation = 0.0; ///< ∮ Fc dα at the end [J]
-  double fundamental_period = 0.0;  ///< used by the end-of-event rule [s]
-  double end_time = 0.0;            ///< time of the last step [s]
+  /// Speed of the impactor away from the plate at the end [m/s]; empty while the impactor has not left
+  /// the plate (still in contact, still approaching, or never touched it): it would not be a rebound.
+  std::optional<double> rebound_velocity;
+  std::optional<double> absorbed_energy; ///< ½ m (v0² − v_end²) [J]; empty when rebound_velocity is
+  double contact_dissipation = 0.0;      ///< ∮ Fc dα at the end [J]
+  /// The plate's first period, used by the end-of-event rule [s]; empty when it was not computed
+  /// (time.end given, or a rigid target).
+  std::optional<double> fundamental_period;
+  double end_time = 0.0; ///< time of the last step [s]
   long steps = 0;
   int newton_iterations_max = 0; ///< most iterations of the scalar contact solve in one step
+  /// The event is over: the end-of-event rule ended the run, or time.end came after the impactor had
+  /// left the plate. False when the run stopped early (stop_reason) or ended in contact.
   bool complete = false;
-  std::string stop_reason;
-  std::vector<std::string> warnings; ///< coarse Δt, impact point on an element boundary (guards.hpp)
+  std::string stop_reason;       ///< why the run stopped before its end (step limit, interrupt)
+  std::string incomplete_reason; ///< why `complete` is false (empty when it is true)
+  /// |½ m v0² − (impactor kinetic + plate kinetic + plate strain + contact work)| at the end, as a
+  /// fraction of ½ m v0² (impact_loop.hpp, energy_balance_tolerance).
+  double energy_balance_error = 0.0;
+  bool suspect = false;              ///< energy_balance_error above energy_balance_tolerance
+  std::string suspect_reason;        ///< why `suspect` is true (empty when it is false)
+  std::vector<std::string> warnings; ///< guards.hpp: coarse Δt, mesh, cut-short or suspect run, w/h
   double wall_time = 0.0;            ///< [s]
   int dofs = 0;                      ///< equations in the time loop
   bool inplane_eliminated = false;

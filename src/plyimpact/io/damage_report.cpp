@@ -27,7 +27,7 @@ std::string damage_onsets_csv(const std::vector<DamageOnset>& onsets) {
   std::string csv =
       "criterion,mode,ply,interface,element,ipgs,jpgs,x_m,y_m,time_s,force_N,sigma22_Pa,tau23_Pa,index\n";
   for (const auto& o : onsets)
-    csv += fmt::format("{},{},{},{},{},{},{},{:.9g},{:.9g},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f}\n",
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", // numbers: shortest round-trip text
                        to_string(o.criterion), to_string(o.mode), o.ply > 0 ? std::to_string(o.ply) : "",
                        o.interface > 0 ? std::to_string(o.interface) : "", o.element, o.ipgs, o.jpgs, o.x,
                        o.y, o.time, o.force, o.sigma22, o.tau23, o.index);
@@ -37,7 +37,7 @@ std::string damage_onsets_csv(const std::vector<DamageOnset>& onsets) {
 std::string damage_area_csv(const std::vector<DamageAreaSample>& areas) {
   std::string csv = "time_s,criterion,ply,interface,failed_area_m2\n";
   for (const auto& a : areas)
-    csv += fmt::format("{:.9e},{},{},{},{:.9e}\n", a.time, to_string(a.criterion),
+    csv += fmt::format("{},{},{},{},{}\n", a.time, to_string(a.criterion),
                        a.ply > 0 ? std::to_string(a.ply) : "",
                        a.interface > 0 ? std::to_string(a.interface) : "", a.area);
   return csv;
@@ -51,7 +51,7 @@ std::string probes_csv(const StressProbes& probes) {
   csv += "\n";
   for (const auto& row : probes.rows()) {
     for (std::size_t i = 0; i < row.size(); ++i)
-      csv += fmt::format("{}{:.9e}", i ? "," : "", row[i]);
+      csv += fmt::format("{}{}", i ? "," : "", row[i]);
     csv += "\n";
   }
   return csv;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
+
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -24,10 +26,17 @@ std::string history_csv_header() {
          "plate_strain_J,impactor_energy_J,contact_work_J\n";
 }
 
+void append_history_csv_row(std::string& out, const ImpactSample& h) {
+  // The shortest text that reads back as the same double (no float noise, no lost digits).
+  fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{}\n", h.t, h.force, h.impactor_w,
+                 h.impactor_v, h.plate_w, h.indentation, h.plate_kinetic, h.plate_strain, h.impactor_energy,
+                 h.contact_work);
+}
+
 std::string history_csv_row(const ImpactSample& h) {
-  return fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", h.t, h.force,
-                     h.impactor_w, h.impactor_v, h.plate_w, h.indentation, h.plate_kinetic, h.plate_strain,
-                     h.impactor_energy, h.contact_work);
+  std::string row;
+  append_history_csv_row(row, h);
+  return row;
 }
 
 HistoryCsvWriter::HistoryCsvWriter(std::filesystem::path path, int every)
@@ -54,7 +63,7 @@ void HistoryCsvWriter::on_finish(const StepView& last, const ImpactResult& /*res
 }
 
 void HistoryCsvWriter::record(const StepView& v) {
-  buffer_ += history_csv_row(history_sample(v));
+  append_history_csv_row(buffer_, history_sample(v)); // appends in place: no string per step
   last_step_ = v.step;
   if (buffer_.size() >= block_bytes || std::chrono::steady_clock::now() - last_flush_ >= flush_interval)
     flush();

@@ -12,8 +12,10 @@ namespace plyimpact {
 
 /// The header line of history.csv (with its newline); every column name carries its unit.
 [[nodiscard]] std::string history_csv_header();
-/// One row of history.csv (with its newline).
+/// One row of history.csv (with its newline): the shortest round-trip text of every number.
 [[nodiscard]] std::string history_csv_row(const ImpactSample& sample);
+/// The same row appended to `out`.
+void append_history_csv_row(std::string& out, const ImpactSample& sample);
 
 /// Observer that writes history.csv: the initial state, every `every`-th step and the last step (the
 /// rows of HistoryRecorder, analysis/recorders.hpp).

@@ -5,8 +5,33 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace plyimpact {
+
+namespace {
+
+/// A value that may not apply: JSON null when empty, never a 0 that reads like a result.
+nlohmann::json or_null(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json or_null(const std::string& text) {
+  return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(text);
+}
+
+/// x to three significant digits: an error estimate, whose further digits are rounding noise.
+double three_digits(double x) {
+  return std::strtod(fmt::format("{:.3g}", x).c_str(), nullptr);
+}
+
+/// Why the rebound velocity and absorbed energy are not given.
+std::string not_given(const ImpactResult& r) {
+  return r.episodes.empty() ? "   not given (no contact)"
+                            : "   not given (the impactor has not left the plate)";
+}
+
+} // namespace
 
 nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, const ImpactResult& r) {
   nlohmann::json j = summary_header(deck, "impact");
@@ -19,8 +44,8 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["peak_contact_deflection"] = r.peak_contact_deflection;
   j["max_indentation"] = r.max_indentation;
   j["permanent_indentation"] = r.permanent_indentation;
-  j["rebound_velocity"] = r.rebound_velocity;
-  j["absorbed_energy"] = r.absorbed_energy;
+  j["rebound_velocity"] = or_null(r.rebound_velocity);
+  j["absorbed_energy"] = or_null(r.absorbed_energy);
   j["contact_dissipation"] = r.contact_dissipation;
   j["initial_energy"] = 0.5 * s.impactor.mass * s.impactor.velocity * s.impactor.velocity;
   j["contacts"] = r.episodes.size();
@@ -28,15 +53,19 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["dt"] = s.dt;
   j["end_time"] = r.end_time;
   j["complete"] = r.complete;
+  j["incomplete_reason"] = or_null(r.incomplete_reason);
   if (!r.stop_reason.empty()) j["stop_reason"] = r.stop_reason;
-  j["warnings"] = deck.warnings; // plausibility of the deck (deck_plausibility.hpp), then the guards:
-  for (const std::string& w : r.warnings) // coarse Δt, impact point on an element boundary
+  j["energy_balance_error"] = three_digits(r.energy_balance_error);
+  j["suspect"] = r.suspect;
+  j["suspect_reason"] = or_null(r.suspect_reason);
+  j["warnings"] = deck.warnings;          // plausibility of the deck (deck_plausibility.hpp), then the run's
+  for (const std::string& w : r.warnings) // guards.hpp: coarse Δt, mesh, cut-short or suspect run, w/h
     j["warnings"].push_back(w);
   j["wall_time"] = r.wall_time;
   j["contact_stiffness"] = s.k;
   j["impactor_mass"] = s.impactor.mass;
   j["impact_velocity"] = s.impactor.velocity;
-  j["fundamental_period"] = r.fundamental_period;
+  j["fundamental_period"] = or_null(r.fundamental_period);
   j["equations"] = r.dofs;
   j["mesh"] = {{"elements", s.mesh.elements},
                {"element", to_string(s.mesh.element)},
@@ -80,13 +109,18 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                    r.peak_contact_deflection * 1e3);
   t += fmt::format("  max indentation         {:12.4f} mm, permanent {:.4f} mm\n", r.max_indentation * 1e3,
                    r.permanent_indentation * 1e3);
-  t += fmt::format("  rebound velocity        {:12.4f} m/s\n", r.rebound_velocity);
-  t += fmt::format("  absorbed energy         {:12.4f} J of {:.4f} J (contact dissipation {:.4f} J)\n",
-                   r.absorbed_energy, 0.5 * s.impactor.mass * s.impactor.velocity * s.impactor.velocity,
-                   r.contact_dissipation);
+  const double e0 = 0.5 * s.impactor.mass * s.impactor.velocity * s.impactor.velocity;
+  t += "  rebound velocity        " +
+       (r.rebound_velocity ? fmt::format("{:12.4f} m/s", *r.rebound_velocity) : not_given(r)) + "\n";
+  t += "  absorbed energy         " +
+       (r.absorbed_energy ? fmt::format("{:12.4f} J of {:.4f} J", *r.absorbed_energy, e0) : not_given(r)) +
+       fmt::format(" (contact dissipation {:.4f} J)\n", r.contact_dissipation);
+  t += fmt::format("  energy balance error    {:12.3g} % of {:.4f} J{}\n", 100.0 * r.energy_balance_error, e0,
+                   r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,
                    r.end_time * 1e6, r.wall_time, r.complete ? "" : "  INCOMPLETE");
-  if (!r.stop_reason.empty()) t += "  " + r.stop_reason + "\n";
+  if (!r.incomplete_reason.empty()) t += "  incomplete: " + r.incomplete_reason + "\n";
+  if (r.suspect) t += "  suspect: " + r.suspect_reason + "\n";
   return t;
 }
 

@@ -87,7 +87,7 @@ std::string laminate_report_text(const Deck& d) {
                     d.impactor->mass, d.impactor->radius * 1e3, d.impactor->E / 1e9, d.impactor->nu,
                     d.impactor->velocity);
     s += fmt::format("  contact stiffness k = {:.6g} N/m^1.5 ({})\n", contact_stiffness(d),
-                     d.contact.k ? "given" : "modified Hertz, SPEC §4");
+                     d.contact.k ? "given" : "modified Hertz, docs/deck.md [contact] k");
   }
   return s;
 }

@@ -316,8 +316,11 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
   results["contact_duration"] = r.contact_duration;
   results["peak_contact_deflection"] = r.peak_contact_deflection;
   results["max_indentation"] = r.max_indentation;
-  results["absorbed_energy"] = r.absorbed_energy;
-  results["rebound_velocity"] = r.rebound_velocity;
+  // null while the impactor has not left the plate (ImpactResult)
+  results["absorbed_energy"] =
+      r.absorbed_energy ? nlohmann::json(*r.absorbed_energy) : nlohmann::json(nullptr);
+  results["rebound_velocity"] =
+      r.rebound_velocity ? nlohmann::json(*r.rebound_velocity) : nlohmann::json(nullptr);
   results["contacts"] = r.episodes.size();
   results["steps"] = r.steps;
   results["dt"] = o.settings.dt;
@@ -370,7 +373,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
       return std::nullopt;
     put_impact_results(record["results"], outcome);
     record["status"] = outcome.result.complete ? "ok" : "incomplete";
-    if (!outcome.result.complete) record["error"] = outcome.result.stop_reason;
+    if (!outcome.result.complete) record["error"] = outcome.result.incomplete_reason;
   } catch (const std::bad_alloc&) { // never a bare std::bad_alloc in a table
     record["status"] = "failed";
     record["error"] = "out of memory (std::bad_alloc): use a coarser mesh";

@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -184,6 +186,16 @@ std::string serialize(const toml::table& t) {
   return os.str();
 }
 
+/// The double with the fewest significant decimal digits within `tolerance` of x (x itself if none
+/// shorter is).
+double shortest_decimal_near(double x, double tolerance) {
+  for (int digits = 1; digits < 17; ++digits) {
+    const double y = std::strtod(fmt::format("{:.{}g}", x, digits).c_str(), nullptr);
+    if (std::abs(y - x) <= tolerance) return y;
+  }
+  return x;
+}
+
 } // namespace
 
 std::vector<SweepValue> parse_range(std::string_view text, const std::string& origin) {
@@ -210,9 +222,16 @@ std::vector<SweepValue> parse_range(std::string_view text, const std::string& or
       return values;
     }
   }
-  for (long i = 0; i < n; ++i) // end points exact; x_i = start + i (stop − start)/(count − 1)
-    values.emplace_back(
-        i == n - 1 ? *stop : *start + static_cast<double>(i) * (*stop - *start) / static_cast<double>(n - 1));
+  // x_i = start + i (stop − start)/(count − 1), end points exact, each rounded to the shortest decimal
+  // within a few ulps: 0.1:0.5:5 gives 0.3, not 0.30000000000000004.
+  const double ulps =
+      8.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(*start), std::abs(*stop));
+  for (long i = 0; i < n; ++i)
+    values.emplace_back(i == n - 1
+                            ? *stop
+                            : shortest_decimal_near(*start + static_cast<double>(i) * (*stop - *start) /
+                                                                 static_cast<double>(n - 1),
+                                                    ulps));
   return values;
 }
 
