@@ -34,10 +34,11 @@ std::optional<std::string> time_step_warning(double mass, double velocity, doubl
   if (steps >= min_steps_per_contact) return std::nullopt;
   // One decimal, or three digits below one step (0.0168, not 0.0).
   const std::string count = steps >= 1.0 ? fmt::format("{:.1f}", steps) : fmt::format("{:.3g}", steps);
-  return fmt::format("time.dt = {:.4g} s gives only {} steps over the Hertz contact time estimate "
-                     "t_c = {:.4g} s (rigid target, docs/robustness.md): the force pulse is not resolved; use time.dt "
-                     "<= {:.4g} s (t_c/{:.0f})",
-                     dt, count, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
+  return fmt::format(
+      "time.dt = {:.4g} s gives only {} steps over the Hertz contact time estimate "
+      "t_c = {:.4g} s (rigid target, docs/robustness.md): the force pulse is not resolved; use time.dt "
+      "<= {:.4g} s (t_c/{:.0f})",
+      dt, count, t_c, t_c / min_steps_per_contact, min_steps_per_contact);
 }
 
 std::optional<std::string> impact_point_warning(const Mesh& mesh, double x, double y) {

@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace plyimpact {
 namespace {
@@ -56,7 +57,9 @@ struct DamageLayer {
   std::string criterion;
   bool is_ply = true;
   int index = 0;
-  auto operator<=>(const DamageLayer&) const = default;
+  bool operator<(const DamageLayer& o) const {
+    return std::tie(criterion, is_ply, index) < std::tie(o.criterion, o.is_ply, o.index);
+  }
 };
 
 /// The failed-area history of every layer of damage_area.csv (a row is written whenever a layer's

@@ -76,7 +76,7 @@ void Progress::draw(double done, const std::string& detail, double now) {
     const int filled = static_cast<int>(fraction * cells);
     const std::string bar = fmt::format("\r[{:#<{}}{:.<{}}] {}", "", filled, "", cells - filled, text);
     fmt::print(stream_, "{:<{}}", bar, bar_width_ + 1); // blanks over a longer previous bar
-    bar_width_ = bar.size() - 1;                             // visible characters, without the \r
+    bar_width_ = bar.size() - 1;                        // visible characters, without the \r
   }
   std::fflush(stream_);
 }

@@ -21,6 +21,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace plyimpact {
 
@@ -272,7 +273,7 @@ struct SweepWorker::Cache {
 };
 
 SweepWorker::SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options)
-    : sweep_(sweep), folder_(folder), options_(options) {}
+    : sweep_(sweep), folder_(folder), options_(std::move(options)) {}
 
 SweepWorker::~SweepWorker() = default;
 
