@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdlib>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -21,10 +21,24 @@ using namespace plyimpact::test;
 const fs::path examples = fs::path(PLYIMPACT_SOURCE_DIR) / "examples";
 
 /// The text of examples/NAME.toml with the first line starting with `key =` replaced by `key = value`.
+/// (Plain string search: std::regex trips GCC 12's -Wmaybe-uninitialized in the sanitizer build.)
 std::string example_with(const std::string& name, const std::string& key, const std::string& value) {
   std::string text = read_text(examples / (name + ".toml"));
-  const std::regex line("(^|\n)" + key + " *=[^\n]*");
-  return std::regex_replace(text, line, "$1" + key + " = " + value, std::regex_constants::format_first_only);
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::size_t after = text.find_first_not_of(' ', start + key.size());
+    if (text.compare(start, key.size(), key) == 0 && after < end && text[after] == '=')
+      return text.replace(start, end - start, key + " = " + value);
+    start = end + 1;
+  }
+  return text;
+}
+
+/// `text` with its `criteria = [...]` list emptied.
+std::string without_criteria(std::string text) {
+  const std::size_t start = text.find("criteria = [");
+  if (start == std::string::npos) return text;
+  return text.replace(start, text.find(']', start) + 1 - start, "criteria = []");
 }
 
 /// Runs `impact DECK -o DIR/out` on `text` and returns the exit status, the output and summary.json.
@@ -49,7 +63,7 @@ TEST_P(CutShortExample, ReportsIncompleteWithNullReboundAndAbsorbedEnergy) {
   const std::string name = GetParam();
   const fs::path dir = scratch("cut-short-" + name);
   std::string text = example_with(name, "end", "20e-6");
-  text = std::regex_replace(text, std::regex("criteria = \\[[^\\]]*\\]"), "criteria = []");
+  text = without_criteria(text);
   const ImpactRun r = impact(dir, text);
   ASSERT_EQ(r.result.status, 0) << r.result.out; // the run did what the deck asked; the summary says more
   const nlohmann::json& j = r.summary;
