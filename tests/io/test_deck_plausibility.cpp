@@ -18,28 +18,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
+using test::with_line;
 
 /// examples/thesis-3.6-v268.toml (SI) and its mm-N-MPa-tonne twin: 6.14 kg, R = 12.7 mm, 2.68 m/s on a
 /// 127 × 76.2 mm [45/90/-45/0]3s plate, k = 0.6e9 N/m^1.5, dt = 1 µs (Hertz contact time 4.3 ms).
 const fs::path examples = fs::path(PLYIMPACT_SOURCE_DIR) / "examples";
 const std::string si_deck = read_text(examples / "thesis-3.6-v268.toml");
 const std::string mm_deck = read_text(examples / "thesis-3.6-v268-mm.toml");
-
-/// `text` with the first occurrence of the line starting with `from` replaced by `to`.
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find("\n" + from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos == std::string::npos) return text;
-  const auto end = text.find('\n', pos + 1);
-  text.replace(pos + 1, end - pos - 1, to);
-  return text;
-}
 
 struct Slip {
   std::string name;     ///< what the case slips
@@ -70,110 +56,110 @@ const std::string graded = "grading = \"auto\"\nsize_at_impact = 1";
 /// Unit slips of each quantity family, each with the warning it must give.
 std::vector<Slip> slips() {
   const std::string moduli = " (a ply modulus is expected between 500e6 and 1.5e12 Pa)";
-  std::string mm_graded = with(mm_deck, "nx = 15", "grading = \"auto\"");
-  mm_graded = with(mm_graded, "ny = 11", "");
+  std::string mm_graded = with_line(mm_deck, "nx = 15", "grading = \"auto\"");
+  mm_graded = with_line(mm_graded, "ny = 11", "");
   return {
       // moduli (ply and impactor)
-      {"E2 in kPa (1e3)", with(si_deck, "E2 = ", "E2 = 7.5e6"),
+      {"E2 in kPa (1e3)", with_line(si_deck, "E2 = ", "E2 = 7.5e6"),
        "materials.thesis_3_6.E2 = 7.5e6: this looks like kPa; decks are in Pa (SI) — write 7.5e9" + moduli},
-      {"E2 in MPa (1e6)", with(si_deck, "E2 = ", "E2 = 7500"),
+      {"E2 in MPa (1e6)", with_line(si_deck, "E2 = ", "E2 = 7500"),
        "materials.thesis_3_6.E2 = 7500: this looks like MPa; decks are in Pa (SI) — write 7.5e9, or set "
        "units "
        "= \"mm-N-MPa-tonne\" for the whole deck" +
            moduli},
-      {"G12 in MPa (1e6)", with(si_deck, "G12 = ", "G12 = 3500"),
+      {"G12 in MPa (1e6)", with_line(si_deck, "G12 = ", "G12 = 3500"),
        "materials.thesis_3_6.G12 = 3500: this looks like MPa; decks are in Pa (SI) — write 3.5e9"},
-      {"G13 in kPa (1e3)", with(si_deck, "G13 = ", "G13 = 3.5e6"),
+      {"G13 in kPa (1e3)", with_line(si_deck, "G13 = ", "G13 = 3.5e6"),
        "materials.thesis_3_6.G13 = 3.5e6: this looks like kPa; decks are in Pa (SI) — write 3.5e9"},
-      {"G23 in GPa (1e9)", with(si_deck, "G23 = ", "G23 = 3.5"),
+      {"G23 in GPa (1e9)", with_line(si_deck, "G23 = ", "G23 = 3.5"),
        "materials.thesis_3_6.G23 = 3.5: this looks like GPa; decks are in Pa (SI) — write 3.5e9"},
-      {"impactor E in MPa (1e6)", with(si_deck, "E = ", "E = 207000"),
+      {"impactor E in MPa (1e6)", with_line(si_deck, "E = ", "E = 207000"),
        "impactor.E = 207000: this looks like MPa; decks are in Pa (SI) — write 207e9"},
-      {"G12 in Pa in an mm deck (1e6 too large)", with(mm_deck, "G12 = ", "G12 = 3.5e9"),
+      {"G12 in Pa in an mm deck (1e6 too large)", with_line(mm_deck, "G12 = ", "G12 = 3.5e9"),
        "materials.thesis_3_6.G12 = 3.5e9: this looks like Pa; this deck is in MPa (units = "
        "\"mm-N-MPa-tonne\") — write 3500 (a ply shear modulus is expected between 100 and 500000 MPa)"},
       // strengths
-      {"Xt in MPa (1e6)", with(with(si_deck, "rho = ", strengths), "Xt = ", "Xt = 1500"),
+      {"Xt in MPa (1e6)", with_line(with_line(si_deck, "rho = ", strengths), "Xt = ", "Xt = 1500"),
        "materials.thesis_3_6.Xt = 1500: this looks like MPa; decks are in Pa (SI) — write 1.5e9"},
-      {"Xt in kPa (1e3)", with(with(si_deck, "rho = ", strengths), "Xt = ", "Xt = 1.5e6"),
+      {"Xt in kPa (1e3)", with_line(with_line(si_deck, "rho = ", strengths), "Xt = ", "Xt = 1.5e6"),
        "materials.thesis_3_6.Xt = 1.5e6: this looks like kPa; decks are in Pa (SI) — write 1.5e9"},
-      {"Yt in MPa (1e6)", with(with(si_deck, "rho = ", strengths), "Yt = ", "Yt = 40"),
+      {"Yt in MPa (1e6)", with_line(with_line(si_deck, "rho = ", strengths), "Yt = ", "Yt = 40"),
        "materials.thesis_3_6.Yt = 40: this looks like MPa; decks are in Pa (SI) — write 40e6"},
-      {"Yt 1e3 too large", with(with(si_deck, "rho = ", strengths), "Yt = ", "Yt = 40e9"),
+      {"Yt 1e3 too large", with_line(with_line(si_deck, "rho = ", strengths), "Yt = ", "Yt = 40e9"),
        "materials.thesis_3_6.Yt = 40e9 Pa: implausible (a matrix or shear strength is expected between 1e6 "
        "and 5e9 Pa); check its unit"},
       // densities
-      {"rho in g/cm^3 (1e3)", with(si_deck, "rho = ", "rho = 1.54"),
+      {"rho in g/cm^3 (1e3)", with_line(si_deck, "rho = ", "rho = 1.54"),
        "materials.thesis_3_6.rho = 1.54: this looks like g/cm^3; decks are in kg/m^3 (SI) — write 1540 (a "
        "density is expected between 300 and 25000 kg/m^3)"},
-      {"rho in g/mm^3 (1e6)", with(si_deck, "rho = ", "rho = 1.54e-3"),
+      {"rho in g/mm^3 (1e6)", with_line(si_deck, "rho = ", "rho = 1.54e-3"),
        "materials.thesis_3_6.rho = 0.00154: this looks like g/mm^3; decks are in kg/m^3 (SI) — write 1540"},
-      {"rho in tonne/mm^3 in an SI deck", with(si_deck, "rho = ", "rho = 1.54e-9"),
+      {"rho in tonne/mm^3 in an SI deck", with_line(si_deck, "rho = ", "rho = 1.54e-9"),
        "materials.thesis_3_6.rho = 1.54e-9: this looks like tonne/mm^3; decks are in kg/m^3 (SI) — write "
        "1540, or set units = \"mm-N-MPa-tonne\" for the whole deck"},
-      {"rho in kg/m^3 in an mm deck", with(mm_deck, "rho = ", "rho = 1540"),
+      {"rho in kg/m^3 in an mm deck", with_line(mm_deck, "rho = ", "rho = 1540"),
        "materials.thesis_3_6.rho = 1540: this looks like kg/m^3; this deck is in tonne/mm^3 (units = "
        "\"mm-N-MPa-tonne\") — write 1.54e-9"},
-      {"impactor density in g/cm^3", with(si_deck, "mass = 6.14", "density = 7.8"),
+      {"impactor density in g/cm^3", with_line(si_deck, "mass = 6.14", "density = 7.8"),
        "impactor.density = 7.8: this looks like g/cm^3; decks are in kg/m^3 (SI) — write 7800"},
       // ply thickness
-      {"ply thickness in mm (1e3)", with(si_deck, "ply_thickness = ", "ply_thickness = 0.19375"),
+      {"ply thickness in mm (1e3)", with_line(si_deck, "ply_thickness = ", "ply_thickness = 0.19375"),
        "laminate.ply_thickness = 0.19375: this looks like mm; decks are in m (SI) — write 193.75e-6"},
-      {"ply thickness in µm (1e6)", with(si_deck, "ply_thickness = ", "ply_thickness = 193.75"),
+      {"ply thickness in µm (1e6)", with_line(si_deck, "ply_thickness = ", "ply_thickness = 193.75"),
        "laminate.ply_thickness = 193.75: this looks like µm; decks are in m (SI) — write 193.75e-6"},
       // plate size
-      {"plate side in mm (1e3)", with(si_deck, "a = ", "a = 127"),
+      {"plate side in mm (1e3)", with_line(si_deck, "a = ", "a = 127"),
        "plate.a = 127: this looks like mm; decks are in m (SI) — write 0.127, or set units = "
        "\"mm-N-MPa-tonne\" for the whole deck (a plate side is expected between 0.01 and 10 m)"},
-      {"plate side in µm (1e6)", with(si_deck, "b = ", "b = 76200"),
+      {"plate side in µm (1e6)", with_line(si_deck, "b = ", "b = 76200"),
        "plate.b = 76200: this looks like µm; decks are in m (SI) — write 0.0762"},
-      {"plate side in m in an mm deck", with(mm_deck, "a = ", "a = 0.127"),
+      {"plate side in m in an mm deck", with_line(mm_deck, "a = ", "a = 0.127"),
        "plate.a = 0.127: this looks like m; this deck is in mm (units = \"mm-N-MPa-tonne\") — write 127"},
-      {"graded-mesh size in mm", with(with(si_deck, "nx = 15", graded), "ny = 11", ""),
+      {"graded-mesh size in mm", with_line(with_line(si_deck, "nx = 15", graded), "ny = 11", ""),
        "mesh.size_at_impact = 1: this looks like mm; decks are in m (SI) — write 0.001"},
       // impactor mass, radius, velocity, energy
-      {"mass in g (1e3)", with(si_deck, "mass = 6.14", "mass = 6140"),
+      {"mass in g (1e3)", with_line(si_deck, "mass = 6.14", "mass = 6140"),
        "impactor.mass = 6140: this looks like g; decks are in kg (SI) — write 6.14"},
-      {"mass in mg (1e6)", with(si_deck, "mass = 6.14", "mass = 6.14e6"),
+      {"mass in mg (1e6)", with_line(si_deck, "mass = 6.14", "mass = 6.14e6"),
        "impactor.mass = 6.14e6: this looks like mg; decks are in kg (SI) — write 6.14"},
-      {"mass in tonne (1e-3)", with(si_deck, "mass = 6.14", "mass = 0.314e-3"),
+      {"mass in tonne (1e-3)", with_line(si_deck, "mass = 6.14", "mass = 0.314e-3"),
        "impactor.mass = 314e-6: this looks like tonne; decks are in kg (SI) — write 0.314, or set units = "
        "\"mm-N-MPa-tonne\" for the whole deck"},
-      {"mass in kg in an mm deck", with(mm_deck, "mass = 6.14e-3", "mass = 6.14"),
+      {"mass in kg in an mm deck", with_line(mm_deck, "mass = 6.14e-3", "mass = 6.14"),
        "impactor.mass = 6.14: this looks like kg; this deck is in tonne (units = \"mm-N-MPa-tonne\") — write "
        "0.00614"},
-      {"radius in mm (1e3)", with(si_deck, "radius = ", "radius = 12.7"),
+      {"radius in mm (1e3)", with_line(si_deck, "radius = ", "radius = 12.7"),
        "impactor.radius = 12.7: this looks like mm; decks are in m (SI) — write 0.0127"},
-      {"radius in µm (1e6)", with(si_deck, "radius = ", "radius = 12.7e3"),
+      {"radius in µm (1e6)", with_line(si_deck, "radius = ", "radius = 12.7e3"),
        "impactor.radius = 12700: this looks like µm; decks are in m (SI) — write 0.0127"},
-      {"velocity in mm/s (1e3)", with(si_deck, "velocity = ", "velocity = 2680"),
+      {"velocity in mm/s (1e3)", with_line(si_deck, "velocity = ", "velocity = 2680"),
        "impactor.velocity = 2680: this looks like mm/s; decks are in m/s (SI) — write 2.68"},
-      {"velocity in m/s in an mm deck (1e3)", with(mm_deck, "velocity = ", "velocity = 2.68"),
+      {"velocity in m/s in an mm deck (1e3)", with_line(mm_deck, "velocity = ", "velocity = 2.68"),
        "impactor.velocity = 2.68: this looks like m/s; this deck is in mm/s (units = \"mm-N-MPa-tonne\") — "
        "write 2680"},
-      {"energy in mJ (1e3)", with(si_deck, "velocity = ", "energy = 22050"),
+      {"energy in mJ (1e3)", with_line(si_deck, "velocity = ", "energy = 22050"),
        "impactor.energy = 22050: this looks like mJ; decks are in J (SI) — write 22.05"},
       // contact
-      {"k in N/mm^1.5", with(si_deck, "k = ", "k = 18973.67"),
+      {"k in N/mm^1.5", with_line(si_deck, "k = ", "k = 18973.67"),
        "contact.k = 18973.7: 1.74e-05 times the Hertz stiffness of this impactor on ply 1 (k = \"auto\" "
        "gives "
        "1.09097e9 N/m^1.5); this looks like N/mm^1.5; decks are in N/m^1.5 (SI) — write 600e6"},
-      {"k 1e3 too large", with(si_deck, "k = ", "k = 0.6e12"),
+      {"k 1e3 too large", with_line(si_deck, "k = ", "k = 0.6e12"),
        "contact.k = 600e9: 550 times the Hertz stiffness of this impactor on ply 1 (k = \"auto\" gives "
        "1.09097e9 N/m^1.5); check its unit"},
-      {"k in N/m^1.5 in an mm deck", with(mm_deck, "k = ", "k = 0.6e9"),
+      {"k in N/m^1.5 in an mm deck", with_line(mm_deck, "k = ", "k = 0.6e9"),
        "contact.k = 600e6: 1.74e+04 times the Hertz stiffness of this impactor on ply 1 (k = \"auto\" gives "
        "34499.6 N/mm^1.5); this looks like N/m^1.5; this deck is in N/mm^1.5 (units = \"mm-N-MPa-tonne\") — "
        "write 18973.7"},
-      {"alpha_cr in mm (1e3)", with(si_deck, "load = ", "load = \"point\"\nalpha_cr = 0.17"),
+      {"alpha_cr in mm (1e3)", with_line(si_deck, "load = ", "load = \"point\"\nalpha_cr = 0.17"),
        "contact.alpha_cr = 0.17: this looks like mm; decks are in m (SI) — write 170e-6"},
       // time
-      {"dt in ms (1e3)", with(si_deck, "dt = ", "dt = 1e-3"),
+      {"dt in ms (1e3)", with_line(si_deck, "dt = ", "dt = 1e-3"),
        "time.dt = 0.001: this looks like ms; decks are in s (SI) — write 1e-6 (a time step of this impact "
        "(Hertz contact time 0.00168258 s) is expected between 16.8258e-9 and 336.515e-6 s)"},
-      {"dt in µs (1e6)", with(si_deck, "dt = ", "dt = 1"),
+      {"dt in µs (1e6)", with_line(si_deck, "dt = ", "dt = 1"),
        "time.dt = 1: this looks like µs; decks are in s (SI) — write 1e-6"},
-      {"end in ms (1e3)", with(si_deck, "end = ", "end = 8.6"),
+      {"end in ms (1e3)", with_line(si_deck, "end = ", "end = 8.6"),
        "time.end = 8.6: this looks like ms; decks are in s (SI) — write 0.0086"},
   };
 }
@@ -203,16 +189,16 @@ TEST(DeckPlausibility, ASlipOfOneQuantityGivesOneWarning) {
                                                         {"mass = 6.14", "mass = 6140"},
                                                         {"velocity = ", "velocity = 2680"},
                                                         {"dt = ", "dt = 1"}})
-    EXPECT_EQ(warnings_of(with(si_deck, from, to)).size(), 1U)
+    EXPECT_EQ(warnings_of(with_line(si_deck, from, to)).size(), 1U)
         << to << "\n"
-        << joined(warnings_of(with(si_deck, from, to)));
+        << joined(warnings_of(with_line(si_deck, from, to)));
 }
 
 TEST(DeckPlausibility, AWholeMaterialInMPaGivesOneWarningPerModulus) {
   std::string deck = si_deck;
   for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{
            {"E1", "129000"}, {"E2", "7500"}, {"G12", "3500"}, {"G13", "3500"}, {"G23", "3500"}})
-    deck = with(deck, key + " = ", key + " = " + value);
+    deck = with_line(deck, key + " = ", key + " = " + value);
   const auto w = warnings_of(deck);
   ASSERT_EQ(w.size(), 5U) << joined(w);
   EXPECT_TRUE(has_warning(w, "materials.thesis_3_6.E1 = 129000: this looks like MPa")) << joined(w);
@@ -220,12 +206,12 @@ TEST(DeckPlausibility, AWholeMaterialInMPaGivesOneWarningPerModulus) {
 
 TEST(DeckPlausibility, ALaminateThickerThanAFifthOfTheSpanIsNoLongerAPlate) {
   // [45/90/-45/0]30s: 240 plies of 0.19375 mm = 46.5 mm on a 76.2 mm wide plate (limit 15.24 mm).
-  const auto w = warnings_of(with(si_deck, "layup = ", "layup = \"[45/90/-45/0]30s\""));
+  const auto w = warnings_of(with_line(si_deck, "layup = ", "layup = \"[45/90/-45/0]30s\""));
   ASSERT_EQ(w.size(), 1U) << joined(w);
   EXPECT_EQ(w[0], "[laminate] is 0.0465 m thick, more than a fifth of the plate's shorter side (0.0762 m): "
                   "plate theory no longer applies (a thick plate or a solid needs a 3-D model); check "
                   "laminate.ply_thickness and the layup");
-  const auto mm = warnings_of(with(mm_deck, "layup = ", "layup = \"[45/90/-45/0]30s\""));
+  const auto mm = warnings_of(with_line(mm_deck, "layup = ", "layup = \"[45/90/-45/0]30s\""));
   ASSERT_EQ(mm.size(), 1U) << joined(mm);
   EXPECT_EQ(
       mm[0].rfind("[laminate] is 46.5 mm thick, more than a fifth of the plate's shorter side (76.2 mm)", 0),
@@ -280,7 +266,7 @@ TEST(DeckPlausibilityCli, StrictRefusesEachSlipWithItsMessage) {
 TEST(DeckPlausibilityCli, StrictRefusesBeforeAnyAnalysisRuns) {
   const fs::path dir = scratch("plausibility-strict-impact");
   const fs::path deck = dir / "deck.toml";
-  std::ofstream(deck) << with(si_deck, "a = ", "a = 127");
+  std::ofstream(deck) << with_line(si_deck, "a = ", "a = 127");
   const auto r = run("impact --strict " + deck.string() + " -o " + (dir / "out").string());
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
@@ -291,8 +277,8 @@ TEST(DeckPlausibilityCli, StrictRefusesBeforeAnyAnalysisRuns) {
 TEST(DeckPlausibilityCli, WarningsAreListedInSummaryJson) {
   const fs::path dir = scratch("plausibility-summary");
   // Annex 2's T300/976 with its density written in g/cm^3.
-  const fs::path deck =
-      test::write(dir, with(test::small_deck("modal", "[modal]\ncount = 2\n"), "rho = ", "rho = 1.3892"));
+  const fs::path deck = test::write(
+      dir, with_line(test::small_deck("modal", "[modal]\ncount = 2\n"), "rho = ", "rho = 1.3892"));
   const auto r = run("modal " + deck.string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = test::read_json(dir / "out" / "summary.json");
@@ -307,7 +293,7 @@ TEST(DeckPlausibilityCli, WarningsAreListedInSummaryJson) {
 TEST(DeckPlausibilityCli, ImpactSummaryListsDeckWarningsBeforeTheGuards) {
   const fs::path dir = scratch("plausibility-impact");
   const fs::path deck = dir / "deck.toml";
-  std::ofstream(deck) << with(si_deck, "load = ", "load = \"point\"\nalpha_cr = 0.17");
+  std::ofstream(deck) << with_line(si_deck, "load = ", "load = \"point\"\nalpha_cr = 0.17");
   const auto r = run("impact " + deck.string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = test::read_json(dir / "out" / "summary.json");

@@ -15,26 +15,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
+using test::with_line;
 
 const fs::path examples = fs::path(PLYIMPACT_SOURCE_DIR) / "examples";
 const std::string si_deck = read_text(examples / "thesis-3.6-v268.toml");
 const std::string mm_deck = read_text(examples / "thesis-3.6-v268-mm.toml");
-
-/// `text` with the line starting with `from` replaced by `to`.
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find("\n" + from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos == std::string::npos) return text;
-  const auto end = text.find('\n', pos + 1);
-  text.replace(pos + 1, end - pos - 1, to);
-  return text;
-}
 
 std::string error_of(const std::string& text) {
   try {
@@ -78,9 +64,10 @@ TEST(DeckUnits, TheMmDeckReadsAsTheSameSiNumbers) {
 }
 
 TEST(DeckUnits, EachQuantityConvertsWithItsFactor) {
-  const Deck d = parse_deck(with(with(with(mm_deck, "k = ", "k = 1.0"), "end = ", "end = 0.004"),
-                                 "load = ", "load = \"point\"\nalpha_cr = 0.17"),
-                            "mm.toml");
+  const Deck d =
+      parse_deck(with_line(with_line(with_line(mm_deck, "k = ", "k = 1.0"), "end = ", "end = 0.004"),
+                           "load = ", "load = \"point\"\nalpha_cr = 0.17"),
+                 "mm.toml");
   EXPECT_DOUBLE_EQ(*d.contact.k, 1e3 * std::sqrt(1e3)); // 1 N/mm^1.5 = 31622.8 N/m^1.5
   EXPECT_DOUBLE_EQ(d.contact.alpha_cr, 0.17e-3);        // mm
   EXPECT_EQ(*d.time.end, 0.004);                        // s in both systems
@@ -90,7 +77,7 @@ Nx = -100.0
 )",
                             "b.toml");
   EXPECT_EQ(b.buckling->Nx, -1e5); // N/mm -> N/m
-  const Deck e = parse_deck(with(mm_deck, "velocity = ", "energy = 22050.0"), "e.toml");
+  const Deck e = parse_deck(with_line(mm_deck, "velocity = ", "energy = 22050.0"), "e.toml");
   EXPECT_EQ(*e.impactor_input.energy, 22.05); // mJ -> J
   EXPECT_DOUBLE_EQ(e.impactor->velocity, std::sqrt(2.0 * 22.05 / 6.14));
 }
@@ -120,9 +107,9 @@ ply = 1
 }
 
 TEST(DeckUnits, MessagesNameTheDecksUnits) {
-  EXPECT_EQ(error_of(with(mm_deck, "E2 = ", "E2 = -7500.0")),
+  EXPECT_EQ(error_of(with_line(mm_deck, "E2 = ", "E2 = -7500.0")),
             "deck.toml:13:6: error: materials.thesis_3_6.E2 must be positive (in MPa), got -7500");
-  EXPECT_NE(error_of(with(mm_deck, "velocity = ", "velocity = \"fast\""))
+  EXPECT_NE(error_of(with_line(mm_deck, "velocity = ", "velocity = \"fast\""))
                 .find("impactor.velocity must be a number in mm/s"),
             std::string::npos);
 }
@@ -140,7 +127,7 @@ TEST(DeckUnits, AnUnknownUnitSystemIsRefusedWithTheAcceptedOnes) {
 }
 
 TEST(DeckEnergy, TheVelocityFollowsFromTheEnergyAndTheMass) {
-  const Deck d = parse_deck(with(si_deck, "velocity = ", "energy = 22.05"), "deck.toml");
+  const Deck d = parse_deck(with_line(si_deck, "velocity = ", "energy = 22.05"), "deck.toml");
   // √(2 · 22.05 / 6.14) = 2.6800019446733185: the thesis's 2.68 m/s rounds ½ m v² = 22.049968 J.
   EXPECT_EQ(d.impactor->velocity, std::sqrt(2.0 * 22.05 / 6.14));
   EXPECT_NEAR(d.impactor->velocity, 2.6800019446733185, 1e-15);
@@ -149,32 +136,32 @@ TEST(DeckEnergy, TheVelocityFollowsFromTheEnergyAndTheMass) {
 }
 
 TEST(DeckEnergy, ExactlyOneOfVelocityAndEnergy) {
-  EXPECT_EQ(error_of(with(si_deck, "velocity = ", "velocity = 2.68\nenergy = 22.05")),
+  EXPECT_EQ(error_of(with_line(si_deck, "velocity = ", "velocity = 2.68\nenergy = 22.05")),
             "deck.toml:46:10: error: give impactor.velocity (m/s) or impactor.energy (J), not both");
   EXPECT_EQ(
-      error_of(with(si_deck, "velocity = ", "")),
+      error_of(with_line(si_deck, "velocity = ", "")),
       "deck.toml:40:1: error: [impactor] needs velocity (m/s, towards the plate) or energy (J, the impact "
       "energy: velocity = sqrt(2 energy / mass))");
-  EXPECT_EQ(error_of(with(si_deck, "velocity = ", "energy = -1.0")),
+  EXPECT_EQ(error_of(with_line(si_deck, "velocity = ", "energy = -1.0")),
             "deck.toml:45:10: error: impactor.energy must be positive (in J), got -1");
 }
 
 TEST(DeckDidYouMean, MisspeltCriterionNamesAndChoices) {
-  const std::string damage = with(si_deck, "[time]", "[damage]\ncriteria = [\"tsai_wu\"]\n[time]");
+  const std::string damage = with_line(si_deck, "[time]", "[damage]\ncriteria = [\"tsai_wu\"]\n[time]");
   EXPECT_NE(
       error_of(damage).find("damage.criteria: unknown criterion \"tsai_wu\" (did you mean \"tsai-wu\"?)"),
       std::string::npos)
       << error_of(damage);
-  const std::string threshold = with(si_deck, "[time]", "[threshold]\ncriterion = \"hashn\"\n[time]");
+  const std::string threshold = with_line(si_deck, "[time]", "[threshold]\ncriterion = \"hashn\"\n[time]");
   EXPECT_NE(
       error_of(threshold).find("threshold.criterion: unknown criterion \"hashn\" (did you mean \"hashin\"?)"),
       std::string::npos)
       << error_of(threshold);
-  EXPECT_NE(error_of(with(si_deck, "unloading = ", "unloading = \"tan_sun\""))
+  EXPECT_NE(error_of(with_line(si_deck, "unloading = ", "unloading = \"tan_sun\""))
                 .find("contact.unloading must be one of tan-sun | elastic, got \"tan_sun\" (did you mean "
                       "\"tan-sun\"?)"),
             std::string::npos);
-  EXPECT_NE(error_of(with(si_deck, "[time]", "[time]\nd_t = 1e-6"))
+  EXPECT_NE(error_of(with_line(si_deck, "[time]", "[time]\nd_t = 1e-6"))
                 .find("unknown key 'd_t' in [time] (did you mean 'dt'?)"),
             std::string::npos);
 }
@@ -233,8 +220,8 @@ TEST(DeckEnergyCli, TheEnergyDeckGivesThe268Result) {
   const fs::path dir = scratch("energy");
   const fs::path energy_deck = dir / "energy.toml";
   const fs::path velocity_deck = dir / "velocity.toml";
-  std::ofstream(energy_deck) << with(si_deck, "velocity = ", "energy = 22.05");
-  std::ofstream(velocity_deck) << with(si_deck, "velocity = ", "velocity = 2.6800019446733185");
+  std::ofstream(energy_deck) << with_line(si_deck, "velocity = ", "energy = 22.05");
+  std::ofstream(velocity_deck) << with_line(si_deck, "velocity = ", "velocity = 2.6800019446733185");
   for (const auto& [deck, out] : {std::pair{energy_deck, "energy"}, {velocity_deck, "velocity"}})
     ASSERT_EQ(run("impact " + deck.string() + " -o " + (dir / out).string()).status, 0) << deck;
   ASSERT_EQ(

@@ -1,5 +1,6 @@
 #pragma once
 // Running the plyimpact executable from tests: command, scratch folders, small decks.
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -91,6 +92,17 @@ inline std::string read_text(const fs::path& p) {
 inline nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
+}
+
+/// `text` with the first line (after the first) that starts with `from` replaced by `to`; a failed
+/// expectation, and `text` unchanged, when there is no such line.
+inline std::string with_line(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find("\n" + from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos == std::string::npos) return text;
+  const auto end = text.find('\n', pos + 1);
+  text.replace(pos + 1, end - pos - 1, to);
+  return text;
 }
 
 } // namespace plyimpact::test
