@@ -59,6 +59,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.max_steps = d.time.max_steps;
   s.rigid_target = d.plate.rigid;
   s.nonlinear = d.nonlinear;
+  s.progressive_damage = d.progressive_damage;
   return s;
 }
 
@@ -103,6 +104,12 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
   check_end_after_first_step(settings_.dt, settings_.end); // before the factorization
   if (!(settings_.impactor.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");
+  if (settings_.progressive_damage && (settings_.rigid_target || settings_.nonlinear))
+    throw std::invalid_argument(
+        settings_.rigid_target
+            ? "progressive damage needs a plate: a rigid target has no plies to crack"
+            : "progressive damage is not available with the geometrically non-linear plate yet: use one or "
+              "the other (docs/progressive_damage.md, limits)");
   if (settings_.rigid_target) {
     if (settings_.nonlinear)
       throw std::invalid_argument(
@@ -115,8 +122,12 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.load = settings_.contact.load;
   options.solver = description_.solver;
   options.memory_limit_bytes = description_.memory_limit_bytes;
-  policy_ = settings_.nonlinear ? newton_step_policy(*model_, options, *settings_.nonlinear)
-                                : linear_step_policy(*model_, options);
+  if (settings_.progressive_damage)
+    policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage);
+  else if (settings_.nonlinear)
+    policy_ = newton_step_policy(*model_, options, *settings_.nonlinear);
+  else
+    policy_ = linear_step_policy(*model_, options);
   if (!settings_.end) fundamental_period_ = fundamental_period(*model_); // for the end-of-event rule
 }
 

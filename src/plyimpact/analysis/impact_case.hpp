@@ -37,6 +37,8 @@ struct ImpactCaseDescription {
   ContactLawParameters contact;
   TimeStepping time;
   std::optional<NonlinearImpactSettings> nonlinear; ///< engaged: the geometrically non-linear plate
+  /// engaged: the plies lose stiffness as they crack (fem/damaged_plate.hpp, docs/progressive_damage.md)
+  std::optional<ProgressiveDamageSettings> progressive_damage;
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
 };
@@ -62,6 +64,7 @@ struct ImpactSettings {
   long max_steps = 2'000'000;
   bool rigid_target = false;
   std::optional<NonlinearImpactSettings> nonlinear;
+  std::optional<ProgressiveDamageSettings> progressive_damage;
 };
 
 /// k (given or the modified Hertz constant of the impactor on the impacted ply at the impact point).

@@ -129,6 +129,8 @@ public:
   }
   [[nodiscard]] double kinetic_energy() const override { return stepper_.kinetic_energy(state_); }
   [[nodiscard]] double strain_energy() const override { return stepper_.strain_energy(state_, force_); }
+  [[nodiscard]] double dissipated_energy() const override { return stepper_.dissipated_energy(); }
+  [[nodiscard]] const DamageField* damage() const override { return stepper_.damage(); }
 
 private:
   const PlateStepper& stepper_;
@@ -146,8 +148,8 @@ private:
 void check_after_run(ImpactResult& r, const StepView& end, double e0, double law_work, const Impactor& imp,
                      double k, const LoopSettings& s) {
   if (e0 > 0.0) {
-    const double total =
-        end.impactor_energy + end.plate_kinetic_energy() + end.plate_strain_energy() + law_work;
+    const double total = end.impactor_energy + end.plate_kinetic_energy() + end.plate_strain_energy() +
+                         end.plate_dissipated_energy() + law_work;
     r.energy_balance_error = std::abs(e0 - total) / e0;
   }
   if (auto why = energy_balance_reason(r.energy_balance_error, e0, imp.mass, imp.velocity, k, s.dt)) {
@@ -184,6 +186,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
   double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0, law_work = 0.0;
   ImpactEvent event(r, s);
+  std::optional<ProgressiveDamageResult> first_damage; ///< when and where the plies first cracked
   PlateAccess plate_access(*plate, state, force);
 
   StepView view;
@@ -248,6 +251,13 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
     // 3. Episodes and peaks, observers, end of the event.
     event.record(t, force, alpha, ws);
+    if (const DamageField* d = plate->damage(); d && d->first_damage() && !first_damage) {
+      first_damage = ProgressiveDamageResult{};
+      first_damage->first_mode = d->first_damage()->mode;
+      first_damage->first_ply = d->first_damage()->ply + 1;
+      first_damage->first_time = t;
+      first_damage->first_force = force;
+    }
     update_view(step, t);
     for (ImpactObserver* o : observers)
       o->on_step(view);
@@ -259,6 +269,15 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   event.finish(ended, step, t, law, impactor, e0, contact_work);
   check_after_run(r, view, e0, law_work, imp, k, s);
   r.newton = plate->statistics();
+  if (const DamageField* d = plate->damage()) {
+    ProgressiveDamageResult pd = first_damage.value_or(ProgressiveDamageResult{});
+    pd.dissipated = d->dissipated();
+    pd.ply_damage_area = d->ply_damage_area();
+    pd.projected_damage_area = d->projected_damage_area();
+    pd.element_ply_damage = d->element_ply_damage();
+    pd.active_elements = d->active_elements();
+    r.progressive = std::move(pd);
+  }
   r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   for (ImpactObserver* o : observers)
     o->on_finish(view, r);

@@ -3,6 +3,7 @@
 // They see a read-only view of each converged step and cannot change the run, except by asking it to
 // stop (a threshold search stops at the first failure).
 #include "plyimpact/analysis/impact_result.hpp"
+#include "plyimpact/fem/damaged_plate.hpp"
 
 #include <Eigen/Core>
 
@@ -18,6 +19,10 @@ public:
   [[nodiscard]] virtual const Eigen::VectorXd& displacement() const = 0;
   [[nodiscard]] virtual double kinetic_energy() const = 0;
   [[nodiscard]] virtual double strain_energy() const = 0;
+  /// Energy dissipated inside the plate (ply damage) [J].
+  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
+  /// The plies' damage (progressive damage only).
+  [[nodiscard]] virtual const DamageField* damage() const { return nullptr; }
 };
 
 /// The state after a converged step (or the initial state, step 0).
@@ -40,6 +45,10 @@ public:
   /// ½ vᵀMv and the plate's elastic energy [J] (0 for a rigid target).
   [[nodiscard]] double plate_kinetic_energy() const { return plate ? plate->kinetic_energy() : 0.0; }
   [[nodiscard]] double plate_strain_energy() const { return plate ? plate->strain_energy() : 0.0; }
+  /// Energy dissipated by ply damage [J] (0 without progressive damage).
+  [[nodiscard]] double plate_dissipated_energy() const { return plate ? plate->dissipated_energy() : 0.0; }
+  /// The plies' damage, or null without progressive damage.
+  [[nodiscard]] const DamageField* damage() const { return plate ? plate->damage() : nullptr; }
 };
 
 /// The history row of a step view.

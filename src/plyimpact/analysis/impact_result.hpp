@@ -1,5 +1,7 @@
 #pragma once
 // What an impact run returns (SPEC §4 "Results of a run", §10 impact keys). SI units.
+#include "plyimpact/fem/damaged_plate.hpp"
+
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -19,6 +21,10 @@ struct ImpactSample {
   double plate_strain = 0.0;    ///< elastic energy of the plate [J]
   double impactor_energy = 0.0; ///< ½ m vi² [J]
   double contact_work = 0.0;    ///< ∫ Fc dα (trapezoidal, as Newmark integrates it) [J]
+  // Progressive damage only (zero / empty otherwise):
+  double damage_dissipation = 0.0;     ///< energy dissipated by ply damage, all modes [J]
+  double damage_area = 0.0;            ///< projected damaged area (union over the plies) [m²]
+  std::vector<double> ply_damage_area; ///< damaged area of each ply [m²]
 };
 
 struct ContactEpisode {
@@ -36,6 +42,19 @@ struct NewtonStatistics {
   long iterations = 0;             ///< linear solves over all steps
   int max_iterations_per_step = 0; ///< most solves in one step
   int factorizations = 0;          ///< of K̄ = K_T + c0 M, including the first
+};
+
+/// The plies' damage at the end of a progressive-damage run (fem/damaged_plate.hpp).
+struct ProgressiveDamageResult {
+  PerDamageMode dissipated;            ///< energy dissipated per mode [J]
+  std::vector<double> ply_damage_area; ///< damaged area of each ply [m²]
+  double projected_damage_area = 0.0;  ///< union over the plies [m²]
+  std::vector<ElementPlyDamage> element_ply_damage; ///< largest d per mode, element and ply
+  std::optional<DamageMode> first_mode;             ///< mode of the first damage (d > 0)
+  int first_ply = 0;                                ///< its ply, 1-based
+  double first_time = 0.0;                          ///< [s]
+  double first_force = 0.0;                         ///< contact force then [N]
+  int active_elements = 0;                          ///< elements that evaluated the law
 };
 
 struct ImpactResult {
@@ -61,7 +80,8 @@ struct ImpactResult {
   bool complete = false;
   std::string stop_reason;       ///< why the run stopped before its end (step limit, interrupt)
   std::string incomplete_reason; ///< why `complete` is false (empty when it is true)
-  /// |½ m v0² − (impactor kinetic + plate kinetic + plate strain + contact work)| at the end, as a
+  /// |½ m v0² − (impactor kinetic + plate kinetic + plate strain + damage dissipation + contact work)| at
+  /// the end, as a
   /// fraction of ½ m v0² (impact_loop.hpp, energy_balance_tolerance).
   double energy_balance_error = 0.0;
   bool suspect = false;              ///< energy_balance_error above energy_balance_tolerance
@@ -70,7 +90,8 @@ struct ImpactResult {
   double wall_time = 0.0;            ///< [s]
   int dofs = 0;                      ///< equations in the time loop
   bool inplane_eliminated = false;
-  std::optional<NewtonStatistics> newton; ///< geometrically non-linear runs only
+  std::optional<NewtonStatistics> newton; ///< geometrically non-linear and progressive-damage runs
+  std::optional<ProgressiveDamageResult> progressive; ///< progressive-damage runs only
 };
 
 } // namespace plyimpact

@@ -16,6 +16,7 @@
 #include "plyimpact/analysis/hertz_contact.hpp"
 #include "plyimpact/analysis/impact_result.hpp"
 #include "plyimpact/analysis/newmark.hpp"
+#include "plyimpact/fem/damaged_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
 #include "plyimpact/fem/plate_model.hpp"
@@ -48,6 +49,10 @@ public:
   [[nodiscard]] virtual double kinetic_energy(const PlateState& s) const = 0;
   /// The plate's elastic energy in state s with contact force F.
   [[nodiscard]] virtual double strain_energy(const PlateState& s, double force) const = 0;
+  /// Energy dissipated inside the plate (ply damage) up to the last accepted step [J].
+  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
+  /// The plies' damage after the last accepted step (progressive damage only).
+  [[nodiscard]] virtual const DamageField* damage() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
   /// u in the model's numbering.
@@ -98,6 +103,11 @@ struct StepPolicyOptions {
 [[nodiscard]] std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options,
                                                              const NonlinearImpactSettings& settings);
+/// The plate whose plies crack (fem/damaged_plate.hpp): implicit Newmark with the secant stiffness,
+/// refactored when the damage has grown by more than the settings' tolerance (damage_step.cpp).
+[[nodiscard]] std::unique_ptr<StepPolicy> damage_step_policy(const PlateModel& model,
+                                                             const StepPolicyOptions& options,
+                                                             const ProgressiveDamageSettings& settings);
 /// A rigid, immovable target: ws = 0.
 [[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
 

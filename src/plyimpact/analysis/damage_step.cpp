@@ -1,0 +1,167 @@
+// The damage step policy: the plate whose plies crack (fem/damaged_plate.hpp), implicit Newmark with the
+// secant stiffness.
+//
+// Step n → n+1, unknowns u and Fc. With a = c0 (u − uₙ) − c2 vₙ − c3 aₙ the plate residual is
+//   r(u, Fc) = Fc s − M a(u) − f_int(u),  f_int(u) = K_s(d(u)) u,  d(u) from the damage committed at n,
+// and the contact law Fc = F(α). Each iteration solves with K̄ = K_s(d*) + c0 M, d* the damage of the last
+// factorization: û = u + K̄⁻¹ g(u), g = −M a(u) − f_int(u), then the scalar contact problem exactly as the
+// linear policy does (SPEC §4). While no point softens, K̄ is the exact secant of the step and one solve
+// gives the answer (the second residual evaluation confirms it). Where damage grows, K̄ is stiffer than
+// the secant and the iterations contract; K̄ is refactored (numeric factorization only: the symbolic
+// analysis of CHOLMOD is kept) when they slow down, and before a step once the damage has grown by more
+// than `refactor_tolerance` since the last factorization. The step is accepted when the residual is
+// small and the damage the law returns at u is the damage that produced f_int (same evaluation).
+#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/nonlinear_static.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace plyimpact {
+
+namespace {
+
+class DamageStepPolicy;
+
+class DamageStepper final : public PlateStepper {
+public:
+  DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor);
+  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+                          Eigen::VectorXd& u_next) override;
+  void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
+  [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
+  [[nodiscard]] double strain_energy(const PlateState& /*s*/, double /*force*/) const override {
+    return field_.stored_energy(); // ½ uᵀ K_s(d) u of the accepted state
+  }
+  [[nodiscard]] double dissipated_energy() const override { return field_.dissipated().sum(); }
+  [[nodiscard]] const DamageField* damage() const override { return &field_; }
+  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override { return sw().dot(u); }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
+  [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
+
+private:
+  [[nodiscard]] const Eigen::VectorXd& sw() const { return loading_.sampler(); }
+  void refactor(const SparseMatrix& K);
+
+  const DamageStepPolicy& p_;
+  ContactLoading loading_;
+  SpdSolver factor_;
+  DamageField field_;
+  Eigen::VectorXd kbar_diagonal_;
+  Eigen::VectorXd f_int_;
+  NewtonStatistics stats_;
+};
+
+class DamageStepPolicy final : public StepPolicy {
+public:
+  DamageStepPolicy(const PlateModel& model, const StepPolicyOptions& options,
+                   const ProgressiveDamageSettings& settings)
+      : model_(model), options_(options), plate_(model, settings), equations_(model.size()),
+        M_(model.mass(), 1e-14) {}
+
+  [[nodiscard]] int equations() const override { return model_.size(); }
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
+    return std::make_unique<DamageStepper>(*this, impactor);
+  }
+
+  const PlateModel& model_;
+  StepPolicyOptions options_;
+  DamagedPlateModel plate_;
+  EquationSubset equations_;
+  MassOperator M_;
+};
+
+DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor)
+    : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
+      factor_(policy.options_.solver), field_(policy.plate_.virgin_field()),
+      f_int_(Eigen::VectorXd::Zero(policy.equations())) {
+  const SparseMatrix& K0 = p_.plate_.undamaged_stiffness();
+  if (policy.options_.memory_limit_bytes)
+    check_factor_memory(estimate_factor_memory(K0 + p_.options_.newmark.c0 * p_.M_.matrix()),
+                        *policy.options_.memory_limit_bytes);
+  refactor(K0);
+}
+
+void DamageStepper::refactor(const SparseMatrix& K) {
+  const SparseMatrix Kbar = K + p_.options_.newmark.c0 * p_.M_.matrix();
+  factor_.factorize(Kbar);
+  kbar_diagonal_ = Kbar.diagonal();
+  loading_.set_solver([this](const Eigen::VectorXd& b) { return factor_.solve(b); });
+  field_.mark_factorized();
+  ++stats_.factorizations;
+}
+
+ContactSolution DamageStepper::advance(long step, double t, const PlateState& s, const ContactStep& contact,
+                                       Eigen::VectorXd& u_next) {
+  const ProgressiveDamageSettings& ds = p_.plate_.settings();
+  const NewmarkCoefficients& nc = p_.options_.newmark;
+  if (field_.growth_since_factorization() > ds.refactor_tolerance)
+    refactor(p_.plate_.secant_stiffness(field_)); // the committed damage's secant (sections of the last trial)
+  Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
+  ContactSolution cs;
+  double previous_correction = INFINITY;
+  int iterations = 0;
+  for (;;) {
+    const Eigen::VectorXd ak = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
+    const Eigen::VectorXd inertia = p_.M_.times(ak);
+    f_int_ = p_.plate_.internal_force(uk, nc.dt, field_);
+    const Eigen::VectorXd g = -inertia - f_int_;
+    if (iterations > 0) {
+      const Eigen::VectorXd s_load = loading_.load(cs.alpha);
+      const Eigen::VectorXd residual = g + cs.force * s_load;
+      const double scale = f_int_.norm() + inertia.norm() + std::abs(cs.force) * s_load.norm();
+      if (residual.norm() <= ds.residual_tolerance * scale &&
+          residual.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm()) {
+        // Equilibrium with the elements evaluated; an element left out that has reached a Hashin
+        // surface at uk joins, and the step iterates on.
+        if (!p_.plate_.activate_reached(uk, field_)) break;
+        continue;
+      }
+    }
+    if (iterations == ds.max_iterations)
+      throw NewtonFailure(fmt::format(
+          "progressive damage: the iterations did not converge in step {} (t = {:.6g} s) after {} solves; "
+          "reduce time.dt or set [damage] viscosity",
+          step, t, ds.max_iterations));
+    const Eigen::VectorXd u_hat = uk + factor_.solve(g);
+    cs = loading_.solve(contact, sw().dot(u_hat));
+    Eigen::VectorXd u_iterate = u_hat;
+    loading_.add_response(cs.alpha, cs.force, u_iterate);
+    const double correction = (u_iterate - uk).norm();
+    ++iterations;
+    if (!std::isfinite(correction) || !std::isfinite(cs.force))
+      throw NewtonFailure(fmt::format(
+          "progressive damage: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
+    const bool slow = iterations > 1 && correction > ds.refresh_ratio * previous_correction;
+    previous_correction = correction;
+    uk.swap(u_iterate);
+    if (slow) {
+      refactor(p_.plate_.secant_stiffness(field_)); // the secant at the last iterate's damage
+      previous_correction = INFINITY;
+    }
+  }
+  stats_.iterations += iterations;
+  stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
+  u_next.swap(uk);
+  return cs;
+}
+
+void DamageStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) {
+  p_.plate_.commit(u_next, f_int_, field_);
+}
+
+double DamageStepper::kinetic_energy(const PlateState& s) const {
+  return p_.M_.kinetic_energy(s.v);
+}
+
+} // namespace
+
+std::unique_ptr<StepPolicy> damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                                               const ProgressiveDamageSettings& settings) {
+  return std::make_unique<DamageStepPolicy>(model, options, settings);
+}
+
+} // namespace plyimpact

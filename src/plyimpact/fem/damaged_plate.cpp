@@ -1,0 +1,384 @@
+#include "plyimpact/fem/damaged_plate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace plyimpact {
+
+namespace {
+
+/// Engineering strain (x, y, xy) in plate axes → (11, 22, 12) in material axes.
+Eigen::Matrix3d strain_to_material(double angle_deg) {
+  const auto [c, s] = cos_sin_degrees(angle_deg);
+  Eigen::Matrix3d T;
+  T << c * c, s * s, c * s, s * s, c * c, -c * s, -2.0 * c * s, 2.0 * c * s, c * c - s * s;
+  return T;
+}
+
+/// Transverse shear strain (yz, xz) in plate axes → (23, 13) in material axes.
+Eigen::Matrix2d shear_to_material(double angle_deg) {
+  const auto [c, s] = cos_sin_degrees(angle_deg);
+  Eigen::Matrix2d T;
+  T << c, -s, s, c;
+  return T;
+}
+
+using Section8 = Eigen::Matrix<double, 8, 8>;
+
+Section8 as_matrix(const SectionStiffness& s) {
+  Section8 C = Section8::Zero();
+  C.topLeftCorner<6, 6>() = s.C_mb;
+  C.bottomRightCorner<2, 2>() = s.F;
+  return C;
+}
+
+} // namespace
+
+/// One ply's data at the points through its thickness.
+struct DamagedPlateModel::PlyPoints {
+  std::size_t material = 0;
+  Eigen::Matrix3d T_strain;
+  Eigen::Matrix2d T_shear;
+  std::array<double, 2> z{};
+  double weight = 0.0; ///< t/2
+};
+
+/// Plies of one section with the same material and angle, and the z range they span: the Hashin indices
+/// are convex in z, so their largest value over the range is at one of its ends (the screening bound).
+struct DamagedPlateModel::Group {
+  std::size_t material = 0;
+  Eigen::Matrix3d T_strain;
+  Eigen::Matrix3d Q; ///< undamaged reduced stiffness, material axes
+  double z_min = 0.0, z_max = 0.0;
+};
+
+/// The strain operators S_p and weights w_p = w det J at the 3×3 Gauss points of one element shape.
+struct DamagedPlateModel::ElementOperators {
+  std::array<StrainOperator, 9> S;
+  std::array<double, 9> w{};
+};
+
+namespace {
+
+std::vector<DamagedPlateModel::PlyPoints> ply_points(const Laminate& lam) {
+  std::vector<DamagedPlateModel::PlyPoints> plies;
+  const double offset = 0.5 / std::sqrt(3.0);
+  for (std::size_t k = 0; k < lam.ply_count(); ++k) {
+    const Ply& ply = lam.plies()[k];
+    const double mid = 0.5 * (lam.z_top(k) + lam.z_bottom(k));
+    const double t = lam.z_bottom(k) - lam.z_top(k);
+    plies.push_back({ply.material, strain_to_material(ply.angle_deg), shear_to_material(ply.angle_deg),
+                     {mid - offset * t, mid + offset * t}, 0.5 * t});
+  }
+  return plies;
+}
+
+} // namespace
+
+DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings)
+    : model_(model), settings_(settings) {
+  if (model.formulation() != ElementFormulation::mitc9)
+    throw std::invalid_argument("progressive damage needs the MITC9 element ([mesh] element = \"mitc9\" or "
+                                "\"auto\"): the q9 element integrates transverse shear at other points than "
+                                "the 3x3 Gauss points where the plies' damage lives");
+  if (!(settings.refactor_tolerance > 0.0))
+    throw std::invalid_argument("progressive damage: refactor_tolerance must be positive");
+  const Mesh& mesh = model.mesh();
+  for (std::size_t s = 0; s < model.laminates().size(); ++s) {
+    const Laminate& lam = model.laminates()[s];
+    if (lam.stiffness_model() != ReducedStiffnessModel::exact)
+      throw std::invalid_argument("progressive damage needs the exact reduced stiffness (1.3) "
+                                  "([laminate] reduced_stiffness = \"exact\"): the damage law degrades it");
+    std::vector<std::unique_ptr<PlyDamageLaw>> laws;
+    for (const Material& m : lam.materials()) {
+      bool used = false;
+      for (const Ply& p : lam.plies())
+        used = used || &lam.materials()[p.material] == &m;
+      if (!used) {
+        laws.emplace_back();
+        continue;
+      }
+      try {
+        laws.push_back(std::make_unique<PlyDamageLaw>(m, settings.law));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format(
+            "{} ([materials.{}]: strengths in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
+            "docs/progressive_damage.md lists published values)",
+            e.what(), m.name));
+      }
+    }
+    laws_.push_back(std::move(laws));
+    std::vector<Group> groups;
+    for (std::size_t k = 0; k < lam.ply_count(); ++k) {
+      const Ply& ply = lam.plies()[k];
+      auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
+        return g.material == ply.material &&
+               g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
+      });
+      if (it == groups.end()) {
+        groups.push_back({ply.material, strain_to_material(ply.angle_deg),
+                          reduced_stiffness(lam.materials()[ply.material]), lam.z_top(k), lam.z_bottom(k)});
+        continue;
+      }
+      it->z_min = std::min(it->z_min, lam.z_top(k));
+      it->z_max = std::max(it->z_max, lam.z_bottom(k));
+    }
+    groups_.push_back(std::move(groups));
+    plies_.push_back(ply_points(lam));
+  }
+  for (int c = 0; c < mesh.shape_class_count(); ++c) {
+    const ElementCoordinates xy = mesh.element_coordinates(mesh.representative(c));
+    ElementOperators ops;
+    for (std::size_t p = 0; p < gauss3x3.size(); ++p) {
+      ops.S[p] = model.element().strain_operator(xy, gauss3x3[p].xi, gauss3x3[p].eta);
+      ops.w[p] = gauss3x3[p].weight * point_kinematics(xy, gauss3x3[p].xi, gauss3x3[p].eta).detJ;
+    }
+    operators_.push_back(ops);
+  }
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    double a = 0.0;
+    for (const double w : operators_of(e).w)
+      a += w;
+    area_.push_back(a);
+    length_.push_back(std::sqrt(a));
+  }
+  K0_ = model.stiffness();
+  const SparseMatrix& pattern = model.pattern();
+  if (K0_.nonZeros() != pattern.nonZeros())
+    throw std::logic_error("damaged plate: the stiffness does not have the model's sparsity pattern");
+  const int* outer = K0_.outerIndexPtr();
+  const int* inner = K0_.innerIndexPtr();
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const ElementEquations& eq = model.element_equations(e);
+    std::array<int, q9_dofs * q9_dofs> slot{};
+    for (int j = 0; j < q9_dofs; ++j)
+      for (int i = 0; i < q9_dofs; ++i) {
+        const int row = eq[static_cast<std::size_t>(i)], col = eq[static_cast<std::size_t>(j)];
+        int s = -1;
+        if (row >= 0 && col >= 0)
+          s = static_cast<int>(std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner);
+        slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)] = s;
+      }
+    slot_.push_back(slot);
+  }
+}
+
+DamagedPlateModel::~DamagedPlateModel() = default;
+
+const DamagedPlateModel::ElementOperators& DamagedPlateModel::operators_of(int e) const {
+  return operators_[static_cast<std::size_t>(model_.mesh().shape_class(e))];
+}
+
+DamageField DamagedPlateModel::virgin_field() const {
+  DamageField f;
+  f.slot_of_element_.assign(static_cast<std::size_t>(model_.mesh().element_count()), -1);
+  f.ply_area_.assign(model_.laminate().ply_count(), 0.0);
+  for (const Laminate& lam : model_.laminates())
+    f.ply_area_.resize(std::max(f.ply_area_.size(), lam.ply_count()), 0.0);
+  return f;
+}
+
+void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double dt,
+                                         DamageField& field) const {
+  DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
+  const int section = model_.section_index(e);
+  const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
+  const std::vector<PlyPoints>& plies = plies_[static_cast<std::size_t>(section)];
+  const auto& laws = laws_[static_cast<std::size_t>(section)];
+  const double root_k = std::sqrt(lam.shear_correction());
+  const double k = lam.shear_correction();
+  const double Lc = characteristic_length(e);
+  const ElementOperators& ops = operators_of(e);
+  const ElementVector ue = model_.element_dofs(u, e);
+  a.trial_dissipation = {};
+  std::size_t index = 0;
+  for (std::size_t p = 0; p < 9; ++p) {
+    const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
+    const Eigen::Vector3d eps0 = strain.head<3>(), kappa = strain.segment<3>(3);
+    const Eigen::Vector2d gamma = strain.tail<2>();
+    SectionStiffness sec;
+    sec.C_mb.setZero();
+    sec.F.setZero();
+    for (const PlyPoints& ply : plies) {
+      const PlyDamageLaw& law = *laws[ply.material];
+      for (const double z : ply.z) {
+        PlyStrain ps;
+        ps.in_plane = ply.T_strain * (eps0 + z * kappa);
+        ps.transverse_shear = root_k * (ply.T_shear * gamma);
+        const PlyDamageResponse r = law.update(a.committed[index], ps, Lc, dt);
+        a.trial[index] = r.state;
+        ++index;
+        const Eigen::Matrix3d Cbar = ply.T_strain.transpose() * r.secant * ply.T_strain; // (DP1)
+        sec.C_mb.topLeftCorner<3, 3>() += ply.weight * Cbar;
+        sec.C_mb.topRightCorner<3, 3>() += (ply.weight * z) * Cbar;
+        sec.C_mb.bottomRightCorner<3, 3>() += (ply.weight * z * z) * Cbar;
+        sec.F += (ply.weight * k) * (ply.T_shear.transpose() * r.transverse_shear_secant * ply.T_shear);
+        for (const DamageMode m : all_damage_modes)
+          a.trial_dissipation[m] += r.dissipation[m] * ply.weight * ops.w[p];
+      }
+    }
+    sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
+    a.sections[p] = sec;
+  }
+  a.evaluated = true;
+  a.has_sections = true;
+}
+
+Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
+                                                  DamageField& field) const {
+  Eigen::VectorXd f = K0_ * u;
+  for (DamageField::ActiveElement& a : field.active_) {
+    const int e = a.element;
+    evaluate_element(e, u, dt, field);
+    const ElementOperators& ops = operators_of(e);
+    const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
+    const ElementVector ue = model_.element_dofs(u, e);
+    ElementVector fe = ElementVector::Zero();
+    for (std::size_t p = 0; p < 9; ++p) {
+      const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
+      fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strain));
+    }
+    scatter_add(f, model_.element_equations(e), fe);
+  }
+  return f;
+}
+
+SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const {
+  SparseMatrix K = K0_;
+  double* values = K.valuePtr();
+  for (const DamageField::ActiveElement& a : field.active_) {
+    if (!a.has_sections) continue;
+    const int e = a.element;
+    const ElementOperators& ops = operators_of(e);
+    const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
+    ElementMatrix dK = ElementMatrix::Zero();
+    for (std::size_t p = 0; p < 9; ++p)
+      dK.noalias() += ops.S[p].transpose() * (ops.w[p] * (as_matrix(a.sections[p]) - C0)) * ops.S[p];
+    const auto& slot = slot_[static_cast<std::size_t>(e)];
+    for (int j = 0; j < q9_dofs; ++j)
+      for (int i = 0; i < q9_dofs; ++i)
+        if (const int s = slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)]; s >= 0)
+          values[s] += dK(i, j);
+  }
+  return K;
+}
+
+bool DamagedPlateModel::near_surface(int e, const Eigen::VectorXd& u, double fraction) const {
+  const int section = model_.section_index(e);
+  const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
+  const ElementOperators& ops = operators_of(e);
+  const ElementVector ue = model_.element_dofs(u, e);
+  const double alpha = settings_.law.alpha;
+  for (std::size_t p = 0; p < 9; ++p) {
+    const Eigen::Matrix<double, 6, 1> strain = ops.S[p].topRows<6>() * ue;
+    for (const Group& g : groups_[static_cast<std::size_t>(section)]) {
+      const Strengths& st = lam.materials()[g.material].strength;
+      for (const double z : {g.z_min, g.z_max}) {
+        const Eigen::Vector3d sigma = g.Q * (g.T_strain * (strain.head<3>() + z * strain.tail<3>()));
+        for (const DamageMode m : all_damage_modes)
+          if (hashin_plane_stress_index(m, sigma, st, alpha) >= fraction) return true;
+      }
+    }
+  }
+  return false;
+}
+
+int DamagedPlateModel::screen(const Eigen::VectorXd& u, DamageField& field) const {
+  int added = 0;
+  for (int e = 0; e < model_.mesh().element_count(); ++e) {
+    if (field.slot_of_element_[static_cast<std::size_t>(e)] >= 0) continue;
+    if (!near_surface(e, u, settings_.screen_fraction)) continue;
+    DamageField::ActiveElement a;
+    a.element = e;
+    const std::size_t n =
+        9 * 2 * model_.laminates()[static_cast<std::size_t>(model_.section_index(e))].ply_count();
+    a.committed.assign(n, PlyDamageState{});
+    for (SectionStiffness& sec : a.sections) {
+      sec.C_mb.setZero();
+      sec.F.setZero();
+    }
+    a.trial = a.committed;
+    field.slot_of_element_[static_cast<std::size_t>(e)] = static_cast<int>(field.active_.size());
+    field.active_.push_back(std::move(a));
+    ++added;
+  }
+  return added;
+}
+
+bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
+  bool reached = false;
+  for (int e = 0; e < model_.mesh().element_count(); ++e)
+    if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0 && near_surface(e, u, 1.0)) {
+      reached = true;
+      break;
+    }
+  if (reached) screen(u, field);
+  return reached;
+}
+
+void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int,
+                               DamageField& field) const {
+  for (const DamageField::ActiveElement& a : field.active_)
+    if (!a.evaluated)
+      throw std::logic_error("damaged plate: commit of an element whose trial state was not evaluated");
+  std::fill(field.ply_area_.begin(), field.ply_area_.end(), 0.0);
+  field.projected_area_ = 0.0;
+  double growth = 0.0;
+  const double threshold = settings_.area_threshold;
+  for (DamageField::ActiveElement& a : field.active_) {
+    const ElementOperators& ops = operators_of(a.element);
+    const std::size_t plies = a.trial.size() / 18;
+    for (std::size_t i = 0; i < a.trial.size(); ++i) {
+      for (const DamageMode m : all_damage_modes) {
+        const double d = a.trial[i].regularised_damage[m];
+        growth = std::max(growth, d - a.committed[i].regularised_damage[m]);
+        if (d > 0.0 && !field.first_)
+          field.first_ = DamageField::FirstDamage{m, a.element, static_cast<int>((i / 2) % plies)};
+      }
+    }
+    for (std::size_t p = 0; p < 9; ++p) {
+      bool any = false;
+      for (std::size_t k = 0; k < plies; ++k) {
+        bool damaged = false;
+        for (std::size_t g = 0; g < 2; ++g) {
+          const PlyDamageState& s = a.trial[(p * plies + k) * 2 + g];
+          for (const DamageMode m : all_damage_modes)
+            damaged = damaged || s.regularised_damage[m] >= threshold;
+        }
+        if (damaged) field.ply_area_[k] += ops.w[p];
+        any = any || damaged;
+      }
+      if (any) field.projected_area_ += ops.w[p];
+    }
+    a.committed.swap(a.trial);
+    for (const DamageMode m : all_damage_modes)
+      field.dissipated_[m] += a.trial_dissipation[m];
+    a.trial_dissipation = {};
+    a.evaluated = false;
+  }
+  field.growth_ += growth;
+  field.stored_energy_ = 0.5 * u.dot(f_int);
+  screen(u, field);
+}
+
+std::vector<ElementPlyDamage> DamageField::element_ply_damage() const {
+  std::vector<ElementPlyDamage> out;
+  for (const ActiveElement& a : active_) {
+    const std::size_t plies = a.committed.size() / 18;
+    for (std::size_t k = 0; k < plies; ++k) {
+      ElementPlyDamage d{a.element, static_cast<int>(k), {}};
+      for (std::size_t p = 0; p < 9; ++p)
+        for (std::size_t g = 0; g < 2; ++g)
+          for (const DamageMode m : all_damage_modes)
+            d.damage[m] = std::max(d.damage[m], a.committed[(p * plies + k) * 2 + g].regularised_damage[m]);
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+} // namespace plyimpact

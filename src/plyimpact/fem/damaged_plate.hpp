@@ -1,0 +1,170 @@
+#pragma once
+// The plate whose plies crack (issue 18): the MITC9 plate of PlateModel with a damage state per element,
+// 3×3 Gauss point, ply and through-thickness point, and the continuum damage law of
+// laminate/ply_damage.hpp at each of them. OOFEM's picture: the element asks its cross-section for
+// stresses at an integration point; the section asks every ply for its secant stiffness.
+//
+//   generalized strains (ε0, κ, γ) = S_p uₑ at Gauss point p (MITC9 strains, plate_element.hpp)
+//   ply strain at z_g:  ε_ply = T_ε(θ) (ε0 + z_g κ),  γ_ply = √K T_s(θ) γ   (material axes)
+//   law:                C(d), G(d) = secant stiffnesses (ply_damage.hpp, PD3–PD5)
+//   section (DP1):      [[A, B], [B, D]](d) = Σ_plies Σ_g w_g t [[1, z_g], [z_g, z_g²]] ⊗ T_εᵀ C(d) T_ε
+//                       F(d) = K Σ_plies Σ_g w_g t T_sᵀ G(d) T_s
+//   internal force:     f = Σₑ Σ_p w_p S_pᵀ [[A, B], [B, D]](d) (ε0, κ) ⊕ F(d) γ = K_s(d) u  (secant)
+//
+// Two Gauss points through each ply (z_g = z_mid ± t/(2√3), w_g = ½) integrate the undamaged A, B, D
+// exactly, so a plate without damage is the elastic plate. √K in the ply's transverse shear strain
+// makes the ply's shear energy the plate's (F carries the shear correction K), so the energy the law
+// reports dissipated is the energy the plate loses.
+//
+// The characteristic length of an element's points (crack band) is √(element area) (Abaqus for shells):
+// a band of damaged points one element wide dissipates G per unit crack area.
+//
+// Cost: only elements that carry damage, or whose strains have come near a Hashin surface ("active"
+// elements), evaluate the law; the others are the elastic element. Each accepted step screens the
+// inactive elements with a bound of the Hashin indices over each ply group's thickness range
+// (docs/progressive_damage.md); an element found beyond the surface asks for the step to be solved again.
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/laminate/ply_damage.hpp"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+/// Settings of the progressive damage of the plies.
+struct ProgressiveDamageSettings {
+  PlyDamageOptions law;             ///< α, viscosity η
+  double refactor_tolerance = 0.05; ///< refactor K̄ when some d has grown by more than this since the last
+  double area_threshold = 0.5;      ///< a ply point counts as damaged when a damage variable reaches this
+  double screen_fraction = 0.6;     ///< elements whose Hashin bound exceeds this fraction of 1 are active
+  int max_iterations = 60;             ///< solves per time step
+  double residual_tolerance = 1e-6;    ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
+  double displacement_tolerance = 1e-8; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖ (estimated with diag K̄)
+  double refresh_ratio = 0.5;          ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+};
+
+/// Per element and ply: the largest damage variable of each mode over the element's points.
+struct ElementPlyDamage {
+  int element = 0;
+  int ply = 0; ///< 0-based
+  PerDamageMode damage;
+};
+
+/// What the law returned at every point of the active elements, for one displacement (the trial state of
+/// a step): kept until the step is accepted.
+class DamageField;
+
+/// The shared, constant part: element operators, laws, undamaged matrices. Built once per case.
+class DamagedPlateModel {
+public:
+  /// Throws std::invalid_argument when the model is not MITC9, a laminate is not `exact`, or a material
+  /// misses a strength or toughness the law needs (the message names them and the deck keys).
+  DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings);
+  ~DamagedPlateModel();
+  DamagedPlateModel(const DamagedPlateModel&) = delete;
+  DamagedPlateModel& operator=(const DamagedPlateModel&) = delete;
+
+  [[nodiscard]] const PlateModel& model() const { return model_; }
+  [[nodiscard]] const ProgressiveDamageSettings& settings() const { return settings_; }
+  [[nodiscard]] int size() const { return model_.size(); }
+  /// The undamaged stiffness K0 over the free DOFs (PlateModel::stiffness()).
+  [[nodiscard]] const SparseMatrix& undamaged_stiffness() const { return K0_; }
+  /// The characteristic length of element e's points, √(area) [m].
+  [[nodiscard]] double characteristic_length(int e) const { return length_[static_cast<std::size_t>(e)]; }
+  /// Area of element e [m²].
+  [[nodiscard]] double element_area(int e) const { return area_[static_cast<std::size_t>(e)]; }
+
+  /// A virgin damage field for one run.
+  [[nodiscard]] DamageField virgin_field() const;
+
+  /// Trial evaluation at u from the committed state of `field` (dt for the viscous regularisation):
+  /// returns f_int = K_s(d(u)) u and keeps the trial responses in `field`. Throws BandLimitError (with
+  /// the element) when a mode initiates at a point whose characteristic length is beyond its band limit.
+  [[nodiscard]] Eigen::VectorXd internal_force(const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  /// K_s with the trial damage of the last internal_force() (K0 where no element is active).
+  [[nodiscard]] SparseMatrix secant_stiffness(const DamageField& field) const;
+  /// Activates the inactive elements that have reached a Hashin surface at u. True when there were any:
+  /// the trial did not evaluate them, and the step must be iterated again.
+  [[nodiscard]] bool activate_reached(const Eigen::VectorXd& u, DamageField& field) const;
+  /// Accepts the trial state of the last internal_force() at u (f_int its result): commits it, adds its
+  /// dissipation, updates the areas and the stored energy, and activates the elements near a surface.
+  void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int, DamageField& field) const;
+
+  /// Activates the elements that the screen finds near a Hashin surface at u (without committing).
+  /// Returns the number of elements newly activated.
+  int screen(const Eigen::VectorXd& u, DamageField& field) const;
+
+  // Implementation types (defined in damaged_plate.cpp).
+  struct Group; ///< plies of one (section, material, angle): the screening bound's unit
+  struct ElementOperators;
+  struct PlyPoints;
+
+private:
+
+  [[nodiscard]] const ElementOperators& operators_of(int e) const;
+  void evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  [[nodiscard]] bool near_surface(int e, const Eigen::VectorXd& u, double fraction) const;
+
+  const PlateModel& model_;
+  ProgressiveDamageSettings settings_;
+  SparseMatrix K0_;
+  std::vector<double> length_, area_;
+  std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>> laws_; ///< [section][material]
+  std::vector<std::vector<Group>> groups_;                       ///< [section]
+  std::vector<std::vector<PlyPoints>> plies_;                    ///< [section][ply]
+  std::vector<ElementOperators> operators_;                      ///< per shape class
+  std::vector<std::array<int, q9_dofs * q9_dofs>> slot_;         ///< (i, j) of Kₑ → index in K0_ values
+};
+
+/// The damage state of one run: committed per-point states of the active elements, their trial
+/// responses, and the energies and areas that follow.
+class DamageField {
+public:
+  /// Energy dissipated by damage up to the last commit, per mode [J].
+  [[nodiscard]] const PerDamageMode& dissipated() const { return dissipated_; }
+  /// Elastic energy stored in the plate at the last commit, ½ uᵀ K_s(d) u [J].
+  [[nodiscard]] double stored_energy() const { return stored_energy_; }
+  /// Damaged area of each ply at the last commit (points with a damage variable ≥ area_threshold) [m²].
+  [[nodiscard]] const std::vector<double>& ply_damage_area() const { return ply_area_; }
+  /// Projected damaged area (union over the plies, what a C-scan of ply damage shows) [m²].
+  [[nodiscard]] double projected_damage_area() const { return projected_area_; }
+  /// Largest growth of any damage variable since the last call of mark_factorized().
+  [[nodiscard]] double growth_since_factorization() const { return growth_; }
+  void mark_factorized() { growth_ = 0.0; }
+  /// Number of elements that evaluate the law.
+  [[nodiscard]] int active_elements() const { return static_cast<int>(active_.size()); }
+  /// Per element and ply, the largest damage of each mode (committed), for maps and ParaView.
+  [[nodiscard]] std::vector<ElementPlyDamage> element_ply_damage() const;
+  /// Mode, element and ply of the first damage (d > 0) and the time it appeared, once it has.
+  struct FirstDamage {
+    DamageMode mode;
+    int element = 0, ply = 0;
+  };
+  [[nodiscard]] const std::optional<FirstDamage>& first_damage() const { return first_; }
+
+private:
+  friend class DamagedPlateModel;
+  struct ActiveElement {
+    int element = 0;
+    std::vector<PlyDamageState> committed; ///< [point][ply][g]
+    std::vector<PlyDamageState> trial;
+    PerDamageMode trial_dissipation;          ///< of the trial increment [J]
+    std::array<SectionStiffness, 9> sections; ///< trial secant sections at the 9 points
+    bool evaluated = false;                   ///< trial responses are those of the last internal_force()
+    bool has_sections = false;                ///< `sections` hold the secant of some evaluation
+  };
+  std::vector<ActiveElement> active_;
+  std::vector<int> slot_of_element_; ///< index into active_, −1 when inactive
+  PerDamageMode dissipated_;
+  double stored_energy_ = 0.0;
+  std::vector<double> ply_area_;
+  double projected_area_ = 0.0;
+  double growth_ = 0.0;
+  std::optional<FirstDamage> first_;
+};
+
+} // namespace plyimpact
