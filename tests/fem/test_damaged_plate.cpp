@@ -395,7 +395,7 @@ StripRun run_strip(int k, double G_weak, const std::vector<double>& path) {
 std::vector<double> monotonic_path(double G_weak) {
   const double u_peak = weak_factor * Yt / t300().E2 * strip_length / (2.0 * G_weak / (weak_factor * Yt));
   std::vector<double> path = ramp(0.0, 0.99 * u_peak, 10);
-  const std::vector<double> softening = ramp(u_peak, 1.05, 100);
+  const std::vector<double> softening = ramp(u_peak, 1.05, 200);
   path.insert(path.end(), softening.begin(), softening.end());
   return path;
 }
