@@ -110,7 +110,7 @@ struct Membrane {
 
 /// Displacement control: the prescribed equations are moved to a value, the others iterate
 /// K_s(d) Δu = −r with the secant of the trial damage until the residual is small, then the step is
-/// committed. The reaction is the sum of f_int over the prescribed equations.
+/// committed. The reaction is the sum of f_int over the prescribed equations, weighted.
 class DisplacementControl {
 public:
   DisplacementControl(const DamagedPlateModel& damaged, const Membrane& membrane)
