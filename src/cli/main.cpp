@@ -220,7 +220,7 @@ int run_impact(const Options& o) {
   options.observers = {&progress};
   const ImpactRunOutcome run = run_impact(deck, impact, options);
   const ImpactResult& r = run.result;
-  if (r.newton)
+  if (r.newton && impact.settings().nonlinear)
     fmt::print("non-linear ({}): {} Newton iterations in {} steps ({:.2f} per step, at most {}), {} "
                "factorizations of K_T + c0 M\n",
                to_string(impact.settings().nonlinear->measure), r.newton->iterations, r.steps,

@@ -99,7 +99,8 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
   const ProgressiveDamageSettings& ds = p_.plate_.settings();
   const NewmarkCoefficients& nc = p_.options_.newmark;
   if (field_.growth_since_factorization() > ds.refactor_tolerance)
-    refactor(p_.plate_.secant_stiffness(field_)); // the committed damage's secant (sections of the last trial)
+    refactor(
+        p_.plate_.secant_stiffness(field_)); // the committed damage's secant (sections of the last trial)
   Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
   ContactSolution cs;
   double previous_correction = INFINITY;

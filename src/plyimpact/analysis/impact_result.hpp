@@ -46,9 +46,9 @@ struct NewtonStatistics {
 
 /// The plies' damage at the end of a progressive-damage run (fem/damaged_plate.hpp).
 struct ProgressiveDamageResult {
-  PerDamageMode dissipated;            ///< energy dissipated per mode [J]
-  std::vector<double> ply_damage_area; ///< damaged area of each ply [m²]
-  double projected_damage_area = 0.0;  ///< union over the plies [m²]
+  PerDamageMode dissipated;                         ///< energy dissipated per mode [J]
+  std::vector<double> ply_damage_area;              ///< damaged area of each ply [m²]
+  double projected_damage_area = 0.0;               ///< union over the plies [m²]
   std::vector<ElementPlyDamage> element_ply_damage; ///< largest d per mode, element and ply
   std::optional<DamageMode> first_mode;             ///< mode of the first damage (d > 0)
   int first_ply = 0;                                ///< its ply, 1-based

@@ -1,5 +1,7 @@
 #pragma once
 // Plain parameter sets of the analyses (SPEC §4, §7, §8, §10). SI units throughout.
+#include "plyimpact/fem/damaged_plate.hpp"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -57,6 +59,9 @@ struct BucklingSettings {
 };
 
 struct DamageSettings {
+  /// [damage] model = "progressive": the plies lose stiffness as they crack (docs/progressive_damage.md);
+  /// empty = "onset" (criteria evaluated on the undamaged plate, today's default).
+  std::optional<ProgressiveDamageSettings> progressive;
   std::vector<std::string> criteria; ///< deck names, e.g. "choi-chang-matrix"
   int every = 1;
   bool delamination_ply_n_lower = false; ///< (2.43): ply k+1 plays "n" (thesis wording) instead of ply k

@@ -54,6 +54,34 @@ struct DamagedPlateModel::Group {
   Eigen::Matrix3d T_strain;
   Eigen::Matrix3d Q; ///< undamaged reduced stiffness, material axes
   double z_min = 0.0, z_max = 0.0;
+  /// Material-axes stress of the undamaged ply at z_min and z_max from (ε0, κ): Q T_ε [I, z I].
+  Eigen::Matrix<double, 3, 6> at_min = Eigen::Matrix<double, 3, 6>::Zero();
+  Eigen::Matrix<double, 3, 6> at_max = Eigen::Matrix<double, 3, 6>::Zero();
+  /// Hashin's coefficients (PD2): 1/Xt², α/S12², 1/Xc², 1/Yt², 1/S12², 1/(2S23)², [(Yc/2S23)² − 1]/Yc.
+  double ft = 0.0, ft_shear = 0.0, fc = 0.0, mt = 0.0, shear = 0.0, mc = 0.0, mc_linear = 0.0;
+
+  void finish(const Strengths& st, double alpha) {
+    for (auto [M, z] : {std::pair{&at_min, z_min}, std::pair{&at_max, z_max}}) {
+      M->leftCols<3>() = Q * T_strain;
+      M->rightCols<3>() = z * (Q * T_strain);
+    }
+    const auto inv2 = [](double x) { return 1.0 / (x * x); };
+    ft = inv2(*st.Xt);
+    fc = inv2(*st.Xc);
+    mt = inv2(*st.Yt);
+    shear = inv2(*st.S12);
+    ft_shear = alpha * shear;
+    mc = inv2(2.0 * *st.S23);
+    mc_linear = (*st.Yc * *st.Yc * mc - 1.0) / *st.Yc;
+  }
+  /// The active Hashin index of the fibre and matrix pairs at stress s (sign conditions applied).
+  [[nodiscard]] double index(const Eigen::Vector3d& s) const {
+    const double t2 = s(2) * s(2);
+    const double fibre = s(0) >= 0.0 ? ft * s(0) * s(0) + ft_shear * t2 : fc * s(0) * s(0);
+    const double matrix =
+        s(1) >= 0.0 ? mt * s(1) * s(1) + shear * t2 : mc * s(1) * s(1) + mc_linear * s(1) + shear * t2;
+    return std::max(fibre, matrix);
+  }
 };
 
 /// The strain operators S_p and weights w_p = w det J at the 3×3 Gauss points of one element shape.
@@ -71,8 +99,11 @@ std::vector<DamagedPlateModel::PlyPoints> ply_points(const Laminate& lam) {
     const Ply& ply = lam.plies()[k];
     const double mid = 0.5 * (lam.z_top(k) + lam.z_bottom(k));
     const double t = lam.z_bottom(k) - lam.z_top(k);
-    plies.push_back({ply.material, strain_to_material(ply.angle_deg), shear_to_material(ply.angle_deg),
-                     {mid - offset * t, mid + offset * t}, 0.5 * t});
+    plies.push_back({ply.material,
+                     strain_to_material(ply.angle_deg),
+                     shear_to_material(ply.angle_deg),
+                     {mid - offset * t, mid + offset * t},
+                     0.5 * t});
   }
   return plies;
 }
@@ -116,17 +147,23 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
     for (std::size_t k = 0; k < lam.ply_count(); ++k) {
       const Ply& ply = lam.plies()[k];
       auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
-        return g.material == ply.material &&
-               g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
+        return g.material == ply.material && g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
       });
       if (it == groups.end()) {
-        groups.push_back({ply.material, strain_to_material(ply.angle_deg),
-                          reduced_stiffness(lam.materials()[ply.material]), lam.z_top(k), lam.z_bottom(k)});
+        Group g;
+        g.material = ply.material;
+        g.T_strain = strain_to_material(ply.angle_deg);
+        g.Q = reduced_stiffness(lam.materials()[ply.material]);
+        g.z_min = lam.z_top(k);
+        g.z_max = lam.z_bottom(k);
+        groups.push_back(g);
         continue;
       }
       it->z_min = std::min(it->z_min, lam.z_top(k));
       it->z_max = std::max(it->z_max, lam.z_bottom(k));
     }
+    for (Group& g : groups)
+      g.finish(lam.materials()[g.material].strength, settings.law.alpha);
     groups_.push_back(std::move(groups));
     plies_.push_back(ply_points(lam));
   }
@@ -177,6 +214,8 @@ DamageField DamagedPlateModel::virgin_field() const {
   DamageField f;
   f.slot_of_element_.assign(static_cast<std::size_t>(model_.mesh().element_count()), -1);
   f.ply_area_.assign(model_.laminate().ply_count(), 0.0);
+  f.bound_.assign(static_cast<std::size_t>(model_.mesh().element_count()), 0.0);
+  f.u_committed_ = Eigen::VectorXd::Zero(model_.size());
   for (const Laminate& lam : model_.laminates())
     f.ply_area_.resize(std::max(f.ply_area_.size(), lam.ply_count()), 0.0);
   return f;
@@ -193,16 +232,41 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
   const double k = lam.shear_correction();
   const double Lc = characteristic_length(e);
   const ElementOperators& ops = operators_of(e);
+  const SectionStiffness& undamaged = model_.section(section).stiffness;
   const ElementVector ue = model_.element_dofs(u, e);
+  const std::size_t per_point = 2 * plies.size();
   a.trial_dissipation = {};
-  std::size_t index = 0;
   for (std::size_t p = 0; p < 9; ++p) {
     const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
+    const std::size_t first = p * per_point;
+    if (a.pristine[p]) {
+      if (hashin_bound(section, strain.head<6>()) < 1.0) {
+        // Undamaged and below every Hashin surface: the elastic section, no law call.
+        if (a.trial_touched[p])
+          std::copy_n(a.committed.begin() + static_cast<std::ptrdiff_t>(first), per_point,
+                      a.trial.begin() + static_cast<std::ptrdiff_t>(first));
+        a.trial_touched[p] = false;
+        a.pristine_trial[p] = true;
+        a.sections[p] = undamaged;
+        continue;
+      }
+      // The law integrates from the strain of the committed state: the point's strain at the last commit.
+      const Eigen::Matrix<double, 8, 1> before = ops.S[p] * model_.element_dofs(field.u_committed_, e);
+      std::size_t index = first;
+      for (const PlyPoints& ply : plies)
+        for (const double z : ply.z) {
+          PlyStrain& ps = a.committed[index++].strain;
+          ps.in_plane = ply.T_strain * (before.head<3>() + z * before.segment<3>(3));
+          ps.transverse_shear = root_k * (ply.T_shear * before.tail<2>());
+        }
+    }
     const Eigen::Vector3d eps0 = strain.head<3>(), kappa = strain.segment<3>(3);
     const Eigen::Vector2d gamma = strain.tail<2>();
     SectionStiffness sec;
     sec.C_mb.setZero();
     sec.F.setZero();
+    bool initiated = false;
+    std::size_t index = first;
     for (const PlyPoints& ply : plies) {
       const PlyDamageLaw& law = *laws[ply.material];
       for (const double z : ply.z) {
@@ -212,6 +276,8 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
         const PlyDamageResponse r = law.update(a.committed[index], ps, Lc, dt);
         a.trial[index] = r.state;
         ++index;
+        for (const DamageMode m : all_damage_modes)
+          initiated = initiated || r.state.initiated(m);
         const Eigen::Matrix3d Cbar = ply.T_strain.transpose() * r.secant * ply.T_strain; // (DP1)
         sec.C_mb.topLeftCorner<3, 3>() += ply.weight * Cbar;
         sec.C_mb.topRightCorner<3, 3>() += (ply.weight * z) * Cbar;
@@ -223,6 +289,8 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
     }
     sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
     a.sections[p] = sec;
+    a.trial_touched[p] = true;
+    a.pristine_trial[p] = !initiated;
   }
   a.evaluated = true;
   a.has_sections = true;
@@ -238,11 +306,14 @@ Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, doub
     const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
     const ElementVector ue = model_.element_dofs(u, e);
     ElementVector fe = ElementVector::Zero();
+    bool changed = false;
     for (std::size_t p = 0; p < 9; ++p) {
+      if (a.pristine_trial[p]) continue; // the undamaged section: K0 u holds it
       const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
       fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strain));
+      changed = true;
     }
-    scatter_add(f, model_.element_equations(e), fe);
+    if (changed) scatter_add(f, model_.element_equations(e), fe);
   }
   return f;
 }
@@ -256,8 +327,13 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
     const ElementOperators& ops = operators_of(e);
     const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
     ElementMatrix dK = ElementMatrix::Zero();
-    for (std::size_t p = 0; p < 9; ++p)
+    bool changed = false;
+    for (std::size_t p = 0; p < 9; ++p) {
+      if (a.pristine_trial[p]) continue;
       dK.noalias() += ops.S[p].transpose() * (ops.w[p] * (as_matrix(a.sections[p]) - C0)) * ops.S[p];
+      changed = true;
+    }
+    if (!changed) continue;
     const auto& slot = slot_[static_cast<std::size_t>(e)];
     for (int j = 0; j < q9_dofs; ++j)
       for (int i = 0; i < q9_dofs; ++i)
@@ -267,56 +343,73 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
   return K;
 }
 
-bool DamagedPlateModel::near_surface(int e, const Eigen::VectorXd& u, double fraction) const {
+double DamagedPlateModel::hashin_bound(int section, const Eigen::Matrix<double, 6, 1>& strain) const {
+  // Each branch of a pair (fibre, matrix) is convex in z and the stress affine: over the range of a group
+  // the largest active index is at an end of the range or where the sign of σ11 (σ22) changes, where
+  // both branches reduce to their shear terms.
+  double bound = 0.0;
+  for (const Group& g : groups_[static_cast<std::size_t>(section)]) {
+    const Eigen::Vector3d s0 = g.at_min * strain, s1 = g.at_max * strain;
+    bound = std::max({bound, g.index(s0), g.index(s1)});
+    for (const int c : {0, 1})
+      if (s0(c) * s1(c) < 0.0) {
+        const double f = s0(c) / (s0(c) - s1(c)); // where σ_cc = 0
+        const double t = s0(2) + f * (s1(2) - s0(2));
+        bound = std::max(bound, (c == 0 ? g.ft_shear : g.shear) * t * t);
+      }
+  }
+  return bound;
+}
+
+double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
   const int section = model_.section_index(e);
-  const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
   const ElementOperators& ops = operators_of(e);
   const ElementVector ue = model_.element_dofs(u, e);
-  const double alpha = settings_.law.alpha;
-  for (std::size_t p = 0; p < 9; ++p) {
-    const Eigen::Matrix<double, 6, 1> strain = ops.S[p].topRows<6>() * ue;
-    for (const Group& g : groups_[static_cast<std::size_t>(section)]) {
-      const Strengths& st = lam.materials()[g.material].strength;
-      for (const double z : {g.z_min, g.z_max}) {
-        const Eigen::Vector3d sigma = g.Q * (g.T_strain * (strain.head<3>() + z * strain.tail<3>()));
-        for (const DamageMode m : all_damage_modes)
-          if (hashin_plane_stress_index(m, sigma, st, alpha) >= fraction) return true;
-      }
-    }
+  double bound = 0.0;
+  for (std::size_t p = 0; p < 9; ++p)
+    bound = std::max(bound, hashin_bound(section, ops.S[p].topRows<6>() * ue));
+  return bound;
+}
+
+void DamagedPlateModel::activate(int e, DamageField& field) const {
+  DamageField::ActiveElement a;
+  a.element = e;
+  const std::size_t n =
+      9 * 2 * model_.laminates()[static_cast<std::size_t>(model_.section_index(e))].ply_count();
+  a.committed.assign(n, PlyDamageState{});
+  a.trial = a.committed;
+  for (SectionStiffness& sec : a.sections) {
+    sec.C_mb.setZero();
+    sec.F.setZero();
   }
-  return false;
+  field.slot_of_element_[static_cast<std::size_t>(e)] = static_cast<int>(field.active_.size());
+  field.active_.push_back(std::move(a));
 }
 
 int DamagedPlateModel::screen(const Eigen::VectorXd& u, DamageField& field) const {
   int added = 0;
   for (int e = 0; e < model_.mesh().element_count(); ++e) {
     if (field.slot_of_element_[static_cast<std::size_t>(e)] >= 0) continue;
-    if (!near_surface(e, u, settings_.screen_fraction)) continue;
-    DamageField::ActiveElement a;
-    a.element = e;
-    const std::size_t n =
-        9 * 2 * model_.laminates()[static_cast<std::size_t>(model_.section_index(e))].ply_count();
-    a.committed.assign(n, PlyDamageState{});
-    for (SectionStiffness& sec : a.sections) {
-      sec.C_mb.setZero();
-      sec.F.setZero();
-    }
-    a.trial = a.committed;
-    field.slot_of_element_[static_cast<std::size_t>(e)] = static_cast<int>(field.active_.size());
-    field.active_.push_back(std::move(a));
+    if (element_bound(e, u) < settings_.screen_fraction) continue;
+    activate(e, field);
     ++added;
   }
   return added;
 }
 
 bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
+  // One pass over the inactive elements per step: their bounds at the converged u serve commit() too.
   bool reached = false;
-  for (int e = 0; e < model_.mesh().element_count(); ++e)
-    if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0 && near_surface(e, u, 1.0)) {
+  for (int e = 0; e < model_.mesh().element_count(); ++e) {
+    if (field.slot_of_element_[static_cast<std::size_t>(e)] >= 0) continue;
+    const double bound = element_bound(e, u);
+    field.bound_[static_cast<std::size_t>(e)] = bound;
+    if (bound >= 1.0) {
+      activate(e, field);
       reached = true;
-      break;
     }
-  if (reached) screen(u, field);
+  }
+  field.bounds_current_ = !reached;
   return reached;
 }
 
@@ -332,22 +425,20 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   for (DamageField::ActiveElement& a : field.active_) {
     const ElementOperators& ops = operators_of(a.element);
     const std::size_t plies = a.trial.size() / 18;
-    for (std::size_t i = 0; i < a.trial.size(); ++i) {
-      for (const DamageMode m : all_damage_modes) {
-        const double d = a.trial[i].regularised_damage[m];
-        growth = std::max(growth, d - a.committed[i].regularised_damage[m]);
-        if (d > 0.0 && !field.first_)
-          field.first_ = DamageField::FirstDamage{m, a.element, static_cast<int>((i / 2) % plies)};
-      }
-    }
     for (std::size_t p = 0; p < 9; ++p) {
+      if (a.pristine_trial[p]) continue; // no damage at this point
       bool any = false;
       for (std::size_t k = 0; k < plies; ++k) {
         bool damaged = false;
         for (std::size_t g = 0; g < 2; ++g) {
-          const PlyDamageState& s = a.trial[(p * plies + k) * 2 + g];
-          for (const DamageMode m : all_damage_modes)
-            damaged = damaged || s.regularised_damage[m] >= threshold;
+          const std::size_t i = (p * plies + k) * 2 + g;
+          for (const DamageMode m : all_damage_modes) {
+            const double d = a.trial[i].regularised_damage[m];
+            growth = std::max(growth, d - a.committed[i].regularised_damage[m]);
+            damaged = damaged || d >= threshold;
+            if (d > 0.0 && !field.first_)
+              field.first_ = DamageField::FirstDamage{m, a.element, static_cast<int>(k)};
+          }
         }
         if (damaged) field.ply_area_[k] += ops.w[p];
         any = any || damaged;
@@ -355,6 +446,10 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
       if (any) field.projected_area_ += ops.w[p];
     }
     a.committed.swap(a.trial);
+    a.pristine = a.pristine_trial;
+    // trial now holds the previous committed states: for the points still pristine those are virgin too
+    // (damage never heals), for the others the next evaluation overwrites them.
+    a.trial_touched.fill(false);
     for (const DamageMode m : all_damage_modes)
       field.dissipated_[m] += a.trial_dissipation[m];
     a.trial_dissipation = {};
@@ -362,7 +457,17 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   }
   field.growth_ += growth;
   field.stored_energy_ = 0.5 * u.dot(f_int);
-  screen(u, field);
+  field.u_committed_ = u;
+  // Elements near a surface join (bounds of activate_reached() at this u when it ran last).
+  if (field.bounds_current_) {
+    for (int e = 0; e < model_.mesh().element_count(); ++e)
+      if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0 &&
+          field.bound_[static_cast<std::size_t>(e)] >= settings_.screen_fraction)
+        activate(e, field);
+  } else {
+    screen(u, field);
+  }
+  field.bounds_current_ = false;
 }
 
 std::vector<ElementPlyDamage> DamageField::element_ply_damage() const {

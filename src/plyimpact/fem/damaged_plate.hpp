@@ -41,10 +41,10 @@ struct ProgressiveDamageSettings {
   double refactor_tolerance = 0.05; ///< refactor K̄ when some d has grown by more than this since the last
   double area_threshold = 0.5;      ///< a ply point counts as damaged when a damage variable reaches this
   double screen_fraction = 0.6;     ///< elements whose Hashin bound exceeds this fraction of 1 are active
-  int max_iterations = 60;             ///< solves per time step
-  double residual_tolerance = 1e-6;    ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
+  int max_iterations = 60;          ///< solves per time step
+  double residual_tolerance = 1e-6; ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
   double displacement_tolerance = 1e-8; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖ (estimated with diag K̄)
-  double refresh_ratio = 0.5;          ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  double refresh_ratio = 0.5; ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
 };
 
 /// Per element and ply: the largest damage variable of each mode over the element's points.
@@ -104,10 +104,14 @@ public:
   struct PlyPoints;
 
 private:
-
   [[nodiscard]] const ElementOperators& operators_of(int e) const;
   void evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
-  [[nodiscard]] bool near_surface(int e, const Eigen::VectorXd& u, double fraction) const;
+  /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
+  /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
+  [[nodiscard]] double hashin_bound(int section, const Eigen::Matrix<double, 6, 1>& strain) const;
+  /// The largest hashin_bound over element e's points at u.
+  [[nodiscard]] double element_bound(int e, const Eigen::VectorXd& u) const;
+  void activate(int e, DamageField& field) const;
 
   const PlateModel& model_;
   ProgressiveDamageSettings settings_;
@@ -156,9 +160,17 @@ private:
     std::array<SectionStiffness, 9> sections; ///< trial secant sections at the 9 points
     bool evaluated = false;                   ///< trial responses are those of the last internal_force()
     bool has_sections = false;                ///< `sections` hold the secant of some evaluation
+    /// Point p has never initiated any mode in any ply (committed): while its Hashin bound stays below
+    /// 1 its section is the undamaged one and the law is not called.
+    std::array<bool, 9> pristine{true, true, true, true, true, true, true, true, true};
+    std::array<bool, 9> pristine_trial{true, true, true, true, true, true, true, true, true};
+    std::array<bool, 9> trial_touched{}; ///< the trial states of point p differ from the committed ones
   };
   std::vector<ActiveElement> active_;
   std::vector<int> slot_of_element_; ///< index into active_, −1 when inactive
+  std::vector<double> bound_;        ///< Hashin bound of each inactive element at the last screen
+  Eigen::VectorXd u_committed_;      ///< displacement of the last commit
+  bool bounds_current_ = false;      ///< bound_ was computed at the u being committed
   PerDamageMode dissipated_;
   double stored_energy_ = 0.0;
   std::vector<double> ply_area_;

@@ -30,6 +30,7 @@ ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) 
     ns.measure = deck.nonlinear_settings.measure;
     d.nonlinear = ns;
   }
+  d.progressive_damage = deck.damage.progressive;
   d.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
   return d;
 }

@@ -75,7 +75,34 @@ BucklingSettings read_buckling(const TableReader& t) {
 
 DamageSettings read_damage(const TableReader& t, const Deck& d) {
   DamageSettings damage;
-  t.only({"criteria", "every", "delamination_ply_n"});
+  t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
+          "area_threshold"});
+  const bool progressive =
+      t.optional_choice<bool>("model", {{"onset", false}, {"progressive", true}}).value_or(false);
+  if (progressive) {
+    ProgressiveDamageSettings p;
+    p.law.viscosity = t.optional_number("viscosity", "s").value_or(0.0);
+    if (p.law.viscosity < 0.0)
+      t.fail_at("viscosity", fmt::format("damage.viscosity is a time constant and must be >= 0 s, got {}",
+                                         p.law.viscosity));
+    p.law.alpha = t.optional_number("alpha", "-").value_or(0.0);
+    if (!(p.law.alpha >= 0.0 && p.law.alpha <= 1.0))
+      t.fail_at("alpha", fmt::format("damage.alpha weighs shear in Hashin's fibre-tension mode and must lie "
+                                     "in [0, 1], got {}",
+                                     p.law.alpha));
+    p.refactor_tolerance = t.optional_positive("refactor_tolerance", "-").value_or(p.refactor_tolerance);
+    p.area_threshold = t.optional_positive("area_threshold", "-").value_or(p.area_threshold);
+    if (p.area_threshold > 1.0)
+      t.fail_at("area_threshold", fmt::format("damage.area_threshold is a damage variable in (0, 1], got {}",
+                                              p.area_threshold));
+    damage.progressive = p;
+  } else {
+    for (const char* key : {"viscosity", "alpha", "refactor_tolerance", "area_threshold"})
+      if (t.node(key) != nullptr)
+        t.fail_at(key, fmt::format("damage.{} belongs to the progressive damage model: add "
+                                   "model = \"progressive\" to [damage]",
+                                   key));
+  }
   if (const toml::node* c = t.node("criteria")) {
     const toml::array* arr = c->as_array();
     if (arr == nullptr) t.fail_at("criteria", "damage.criteria must be an array of criterion names");

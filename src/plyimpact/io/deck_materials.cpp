@@ -5,7 +5,8 @@
 namespace plyimpact::deck_tables {
 
 Material read_material(const TableReader& t, const std::string& name) {
-  t.only({"E1", "E2", "G12", "G13", "G23", "nu12", "rho", "Xt", "Xc", "Yt", "Yc", "S12", "S23", "Zt", "Da"});
+  t.only({"E1", "E2", "G12", "G13", "G23", "nu12", "rho", "Xt", "Xc", "Yt", "Yc", "S12", "S23", "Zt", "Da",
+          "G_ft", "G_fc", "G_mt", "G_mc"});
   Material m;
   m.name = name;
   m.E1 = t.positive("E1", "Pa");
@@ -29,6 +30,11 @@ Material read_material(const TableReader& t, const std::string& name) {
   s.S23 = t.optional_positive("S23", "Pa");
   s.Zt = t.optional_positive("Zt", "Pa");
   s.Da = t.optional_positive("Da", "-");
+  FractureToughness& g = m.toughness; // progressive damage (docs/progressive_damage.md)
+  g.G_ft = t.optional_positive("G_ft", "J/m^2");
+  g.G_fc = t.optional_positive("G_fc", "J/m^2");
+  g.G_mt = t.optional_positive("G_mt", "J/m^2");
+  g.G_mc = t.optional_positive("G_mc", "J/m^2");
   return m;
 }
 

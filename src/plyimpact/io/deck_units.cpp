@@ -16,7 +16,7 @@ struct UnitRow {
 };
 
 // 1 N/mm^1.5 = 1 N / (1e-3 m)^1.5 = 1e3·√1e3 N/m^1.5 (not a power of ten: the only inexact factor).
-const std::array<UnitRow, 11> rows{{
+const std::array<UnitRow, 12> rows{{
     {"-", {1.0, 1.0, "-"}},
     {"m", {1.0, 1e3, "mm"}},
     {"Pa", {1e6, 1.0, "MPa"}},
@@ -26,6 +26,7 @@ const std::array<UnitRow, 11> rows{{
     {"s", {1.0, 1.0, "s"}},
     {"N", {1.0, 1.0, "N"}},
     {"N/m", {1e3, 1.0, "N/mm"}},
+    {"J/m^2", {1e3, 1.0, "N/mm"}}, // fracture toughness: 1 N/mm = 1 kJ/m^2
     {"J", {1.0, 1e3, "mJ"}},
     {"N/m^1.5", {1e3 * std::sqrt(1e3), 1.0, "N/mm^1.5"}},
 }};

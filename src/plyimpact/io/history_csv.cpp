@@ -21,9 +21,15 @@ constexpr auto flush_interval = std::chrono::seconds(1);
 
 } // namespace
 
-std::string history_csv_header() {
-  return "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
-         "plate_strain_J,impactor_energy_J,contact_work_J\n";
+std::string history_csv_header(int damaged_plies) {
+  std::string h = "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
+                  "plate_strain_J,impactor_energy_J,contact_work_J";
+  if (damaged_plies > 0) {
+    h += ",damage_dissipation_J,damage_area_m2";
+    for (int k = 1; k <= damaged_plies; ++k)
+      h += fmt::format(",ply{}_damage_area_m2", k);
+  }
+  return h + "\n";
 }
 
 void append_history_csv_row(std::string& out, const ImpactSample& h) {
@@ -31,6 +37,12 @@ void append_history_csv_row(std::string& out, const ImpactSample& h) {
   fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{}\n", h.t, h.force, h.impactor_w,
                  h.impactor_v, h.plate_w, h.indentation, h.plate_kinetic, h.plate_strain, h.impactor_energy,
                  h.contact_work);
+  if (h.ply_damage_area.empty()) return;
+  out.pop_back(); // the newline: the progressive-damage columns follow
+  fmt::format_to(std::back_inserter(out), ",{},{}", h.damage_dissipation, h.damage_area);
+  for (const double a : h.ply_damage_area)
+    fmt::format_to(std::back_inserter(out), ",{}", a);
+  out.push_back('\n');
 }
 
 std::string history_csv_row(const ImpactSample& h) {
@@ -39,12 +51,12 @@ std::string history_csv_row(const ImpactSample& h) {
   return row;
 }
 
-HistoryCsvWriter::HistoryCsvWriter(std::filesystem::path path, int every)
+HistoryCsvWriter::HistoryCsvWriter(std::filesystem::path path, int every, int damaged_plies)
     : path_(std::move(path)), every_(every < 1 ? 1 : every), last_flush_(std::chrono::steady_clock::now()) {
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw std::runtime_error(fmt::format("{}: cannot write: {}", path_.string(), std::strerror(errno)));
-  buffer_ = history_csv_header();
+  buffer_ = history_csv_header(damaged_plies);
   flush();
 }
 

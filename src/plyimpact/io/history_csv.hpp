@@ -11,7 +11,9 @@
 namespace plyimpact {
 
 /// The header line of history.csv (with its newline); every column name carries its unit.
-[[nodiscard]] std::string history_csv_header();
+/// `damaged_plies` > 0 (progressive damage): the damage dissipation, the projected damaged area and the
+/// damaged area of each ply follow.
+[[nodiscard]] std::string history_csv_header(int damaged_plies = 0);
 /// One row of history.csv (with its newline): the shortest round-trip text of every number.
 [[nodiscard]] std::string history_csv_row(const ImpactSample& sample);
 /// The same row appended to `out`.
@@ -22,7 +24,7 @@ void append_history_csv_row(std::string& out, const ImpactSample& sample);
 class HistoryCsvWriter final : public ImpactObserver {
 public:
   /// Creates (truncates) `path` and writes the header. Throws std::runtime_error naming the file.
-  HistoryCsvWriter(std::filesystem::path path, int every);
+  HistoryCsvWriter(std::filesystem::path path, int every, int damaged_plies = 0);
   ~HistoryCsvWriter() override;
   HistoryCsvWriter(const HistoryCsvWriter&) = delete;
   HistoryCsvWriter& operator=(const HistoryCsvWriter&) = delete;

@@ -75,6 +75,28 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["contact_load"] = to_string(s.contact.load);
   j["inplane_dofs_eliminated"] = r.inplane_eliminated;
   j["newton_iterations_max"] = r.newton_iterations_max;
+  if (r.progressive && r.newton) { // ply damage (docs/progressive_damage.md)
+    const ProgressiveDamageResult& pd = *r.progressive;
+    nlohmann::json d;
+    d["model"] = "progressive";
+    d["dissipated_energy"] = pd.dissipated.sum();
+    for (const DamageMode m : all_damage_modes)
+      d["dissipated_energy_by_mode"][std::string(to_string(m))] = pd.dissipated[m];
+    d["projected_damage_area"] = pd.projected_damage_area;
+    d["ply_damage_area"] = pd.ply_damage_area;
+    d["area_threshold"] = s.progressive_damage->area_threshold;
+    d["first_damage"] = nullptr;
+    if (pd.first_mode)
+      d["first_damage"] = {{"mode", std::string(to_string(*pd.first_mode))},
+                           {"ply", pd.first_ply},
+                           {"time", pd.first_time},
+                           {"contact_force", pd.first_force}};
+    d["active_elements"] = pd.active_elements;
+    d["iterations"] = r.newton->iterations;
+    d["max_iterations_per_step"] = r.newton->max_iterations_per_step;
+    d["factorizations"] = r.newton->factorizations;
+    j["damage"] = d;
+  }
   if (s.nonlinear && r.newton) { // large deflections (docs/nonlinear.md)
     j["nonlinear"] = true;
     j["strain_measure"] = to_string(s.nonlinear->measure);
@@ -115,6 +137,25 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   t += "  absorbed energy         " +
        (r.absorbed_energy ? fmt::format("{:12.4f} J of {:.4f} J", *r.absorbed_energy, e0) : not_given(r)) +
        fmt::format(" (contact dissipation {:.4f} J)\n", r.contact_dissipation);
+  if (r.progressive) {
+    const ProgressiveDamageResult& pd = *r.progressive;
+    t += fmt::format("  ply damage dissipation  {:12.4f} J (fibre tension {:.4f}, fibre compression {:.4f}, "
+                     "matrix tension {:.4f}, matrix compression {:.4f})\n",
+                     pd.dissipated.sum(), pd.dissipated[DamageMode::fibre_tension],
+                     pd.dissipated[DamageMode::fibre_compression], pd.dissipated[DamageMode::matrix_tension],
+                     pd.dissipated[DamageMode::matrix_compression]);
+    t += fmt::format("  projected damage area   {:12.2f} mm^2 (points with d >= {})\n",
+                     pd.projected_damage_area * 1e6, s.progressive_damage->area_threshold);
+    t += pd.first_mode
+             ? fmt::format("  first ply damage        {:>12} in ply {} at {:.2f} us, {:.1f} N\n",
+                           to_string(*pd.first_mode), pd.first_ply, pd.first_time * 1e6, pd.first_force)
+             : std::string("  first ply damage                none\n");
+    if (r.newton)
+      t += fmt::format("  damage iterations       {:12d} solves in {} steps (at most {} in a step), {} "
+                       "factorizations of K_s + c0 M\n",
+                       r.newton->iterations, r.steps, r.newton->max_iterations_per_step,
+                       r.newton->factorizations);
+  }
   t += fmt::format("  energy balance error    {:12.3g} % of {:.4f} J{}\n", 100.0 * r.energy_balance_error, e0,
                    r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,

@@ -98,7 +98,9 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   if (options.output_dir) folder.emplace(*options.output_dir, deck);
   std::optional<HistoryCsvWriter> history;
   if (folder && options.history)
-    run.observers.push_back(&history.emplace(folder->path() / "history.csv", deck.history_every));
+    run.observers.push_back(&history.emplace(
+        folder->path() / "history.csv", deck.history_every,
+        deck.damage.progressive && deck.laminate ? static_cast<int>(deck.laminate->ply_count()) : 0));
   std::optional<VtkFrames> vtk;
   if (folder && deck.vtk.enabled && plate)
     run.observers.push_back(
