@@ -187,21 +187,7 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
   const SparseMatrix& pattern = model.pattern();
   if (K0_.nonZeros() != pattern.nonZeros())
     throw std::logic_error("damaged plate: the stiffness does not have the model's sparsity pattern");
-  const int* outer = K0_.outerIndexPtr();
-  const int* inner = K0_.innerIndexPtr();
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    const ElementEquations& eq = model.element_equations(e);
-    std::array<int, q9_dofs * q9_dofs> slot{};
-    for (int j = 0; j < q9_dofs; ++j)
-      for (int i = 0; i < q9_dofs; ++i) {
-        const int row = eq[static_cast<std::size_t>(i)], col = eq[static_cast<std::size_t>(j)];
-        int s = -1;
-        if (row >= 0 && col >= 0)
-          s = static_cast<int>(std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner);
-        slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)] = s;
-      }
-    slot_.push_back(slot);
-  }
+  slot_ = element_slots(model, K0_);
 }
 
 DamagedPlateModel::~DamagedPlateModel() = default;
@@ -221,8 +207,8 @@ DamageField DamagedPlateModel::virgin_field() const {
   return f;
 }
 
-void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double dt,
-                                         DamageField& field) const {
+DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u,
+                                                                    double dt, DamageField& field) const {
   DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
   const int section = model_.section_index(e);
   const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
@@ -236,8 +222,10 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
   const ElementVector ue = model_.element_dofs(u, e);
   const std::size_t per_point = 2 * plies.size();
   a.trial_dissipation = {};
+  PointStrains strains;
   for (std::size_t p = 0; p < 9; ++p) {
-    const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
+    strains[p] = ops.S[p] * ue;
+    const Eigen::Matrix<double, 8, 1>& strain = strains[p];
     const std::size_t first = p * per_point;
     if (a.pristine[p]) {
       if (hashin_bound(section, strain.head<6>()) < 1.0) {
@@ -294,6 +282,7 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
   }
   a.evaluated = true;
   a.has_sections = true;
+  return strains;
 }
 
 Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
@@ -301,16 +290,14 @@ Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, doub
   Eigen::VectorXd f = K0_ * u;
   for (DamageField::ActiveElement& a : field.active_) {
     const int e = a.element;
-    evaluate_element(e, u, dt, field);
+    const PointStrains strains = evaluate_element(e, u, dt, field);
     const ElementOperators& ops = operators_of(e);
     const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
-    const ElementVector ue = model_.element_dofs(u, e);
     ElementVector fe = ElementVector::Zero();
     bool changed = false;
     for (std::size_t p = 0; p < 9; ++p) {
       if (a.pristine_trial[p]) continue; // the undamaged section: K0 u holds it
-      const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
-      fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strain));
+      fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
       changed = true;
     }
     if (changed) scatter_add(f, model_.element_equations(e), fe);
@@ -334,11 +321,7 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
       changed = true;
     }
     if (!changed) continue;
-    const auto& slot = slot_[static_cast<std::size_t>(e)];
-    for (int j = 0; j < q9_dofs; ++j)
-      for (int i = 0; i < q9_dofs; ++i)
-        if (const int s = slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)]; s >= 0)
-          values[s] += dK(i, j);
+    add_element_values(values, slot_[static_cast<std::size_t>(e)], dK);
   }
   return K;
 }

@@ -105,7 +105,11 @@ public:
 
 private:
   [[nodiscard]] const ElementOperators& operators_of(int e) const;
-  void evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
+  using PointStrains = std::array<Eigen::Matrix<double, 8, 1>, 9>;
+  /// The law at every point of active element e at u (trial states and secant sections into `field`);
+  /// returns the points' strains, from which internal_force() forms the element force.
+  PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
   /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
   /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
   [[nodiscard]] double hashin_bound(int section, const Eigen::Matrix<double, 6, 1>& strain) const;
@@ -121,7 +125,7 @@ private:
   std::vector<std::vector<Group>> groups_;                       ///< [section]
   std::vector<std::vector<PlyPoints>> plies_;                    ///< [section][ply]
   std::vector<ElementOperators> operators_;                      ///< per shape class
-  std::vector<std::array<int, q9_dofs * q9_dofs>> slot_;         ///< (i, j) of Kₑ → index in K0_ values
+  std::vector<ElementSlots> slot_;                               ///< (i, j) of Kₑ → index in K0_ values
 };
 
 /// The damage state of one run: committed per-point states of the active elements, their trial

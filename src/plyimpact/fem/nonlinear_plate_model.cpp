@@ -17,21 +17,7 @@ NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure 
                                             model.section(key.first).stiffness));
     geometry_index_.push_back(it->second);
   }
-  const int* outer = pattern_.outerIndexPtr();
-  const int* inner = pattern_.innerIndexPtr();
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    const ElementEquations& eq = model.element_equations(e);
-    std::array<int, q9_dofs * q9_dofs> slot{};
-    for (int j = 0; j < q9_dofs; ++j)
-      for (int i = 0; i < q9_dofs; ++i) {
-        const int row = eq[static_cast<std::size_t>(i)], col = eq[static_cast<std::size_t>(j)];
-        int s = -1;
-        if (row >= 0 && col >= 0)
-          s = static_cast<int>(std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner);
-        slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)] = s;
-      }
-    slot_.push_back(slot);
-  }
+  slot_ = element_slots(model, pattern_);
 }
 
 Eigen::VectorXd NonlinearPlateModel::internal_force(const Eigen::VectorXd& u) const {
@@ -49,11 +35,7 @@ SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) co
   for (int e = 0; e < model_.mesh().element_count(); ++e) {
     const ElementMatrix Ke =
         element_.tangent_stiffness(geometry_of(e), section_of(e), gather(u, model_.element_equations(e)));
-    const auto& slot = slot_[static_cast<std::size_t>(e)];
-    for (int j = 0; j < q9_dofs; ++j)
-      for (int i = 0; i < q9_dofs; ++i)
-        if (const int s = slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)]; s >= 0)
-          values[s] += Ke(i, j);
+    add_element_values(values, slot_[static_cast<std::size_t>(e)], Ke);
   }
   return K;
 }

@@ -32,10 +32,10 @@ private:
 
   const PlateModel& model_;
   NonlinearMindlinQ9 element_;
-  std::vector<ElementGeometry> geometry_;                ///< one per (element shape, section)
-  std::vector<int> geometry_index_;                      ///< per element
-  SparseMatrix pattern_;                                 ///< structure of K_T, values zero
-  std::vector<std::array<int, q9_dofs * q9_dofs>> slot_; ///< (i, j) of Kₑ → index in pattern_ values
+  std::vector<ElementGeometry> geometry_; ///< one per (element shape, section)
+  std::vector<int> geometry_index_;       ///< per element
+  SparseMatrix pattern_;                  ///< structure of K_T, values zero
+  std::vector<ElementSlots> slot_;        ///< (i, j) of Kₑ → index in pattern_ values
 };
 
 } // namespace plyimpact

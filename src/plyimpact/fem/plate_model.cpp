@@ -238,4 +238,32 @@ std::vector<std::string> unrestrained_rigid_motions(const PlateModel& model) {
   return free;
 }
 
+std::vector<ElementSlots> element_slots(const PlateModel& model, const SparseMatrix& pattern) {
+  const int* outer = pattern.outerIndexPtr();
+  const int* inner = pattern.innerIndexPtr();
+  std::vector<ElementSlots> slots;
+  slots.reserve(static_cast<std::size_t>(model.mesh().element_count()));
+  for (int e = 0; e < model.mesh().element_count(); ++e) {
+    const ElementEquations& eq = model.element_equations(e);
+    ElementSlots slot{};
+    for (int j = 0; j < q9_dofs; ++j)
+      for (int i = 0; i < q9_dofs; ++i) {
+        const int row = eq[static_cast<std::size_t>(i)], col = eq[static_cast<std::size_t>(j)];
+        int s = -1;
+        if (row >= 0 && col >= 0)
+          s = static_cast<int>(std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner);
+        slot[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)] = s;
+      }
+    slots.push_back(slot);
+  }
+  return slots;
+}
+
+void add_element_values(double* values, const ElementSlots& slots, const ElementMatrix& Ke) {
+  for (int j = 0; j < q9_dofs; ++j)
+    for (int i = 0; i < q9_dofs; ++i)
+      if (const int s = slots[static_cast<std::size_t>(j) * q9_dofs + static_cast<std::size_t>(i)]; s >= 0)
+        values[s] += Ke(i, j);
+}
+
 } // namespace plyimpact

@@ -111,6 +111,14 @@ private:
   std::vector<int> first_equation_; ///< first free equation of each node (−1 if none)
 };
 
+/// Where entry (i, j) of element e's matrix lands in the values of a matrix with the model's sparsity
+/// pattern (index j·45 + i; −1 where a DOF is restrained): matrices that change every step (tangent,
+/// secant) are assembled by index into a copy of the pattern, without searching it.
+using ElementSlots = std::array<int, q9_dofs * q9_dofs>;
+[[nodiscard]] std::vector<ElementSlots> element_slots(const PlateModel& model, const SparseMatrix& pattern);
+/// values[slot] += Ke(i, j) for every unrestrained entry.
+void add_element_values(double* values, const ElementSlots& slots, const ElementMatrix& Ke);
+
 /// The formulation actually used: `automatic` becomes mitc9 (no spurious mode; docs/elements.md).
 [[nodiscard]] ElementFormulation resolve_formulation(ElementFormulation requested, const Mesh& mesh,
                                                      const BoundaryConditions& bc);
