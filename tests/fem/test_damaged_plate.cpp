@@ -24,25 +24,13 @@
 namespace plyimpact {
 namespace {
 
-// T300/976: moduli of tests/support/decks.hpp, strengths of SPEC §6, toughnesses of the
-// docs/progressive_damage.md table (the material of tests/laminate/test_ply_damage.cpp).
-constexpr double Xt = 1.5e9, Xc = 1.2e9, Yt = 55.2e6, Yc = 294.0e6, S12 = 101.1e6, S23 = 32.94e6;
-constexpr double G_ft = 91.6e3, G_fc = 79.9e3, G_mt = 277.0, G_mc = 788.0;
+// T300/976 with the strengths and toughnesses of tests/support/decks.hpp (t300_976_damage), the
+// material of tests/laminate/test_ply_damage.cpp.
+using namespace test::t300_976_damage;
 constexpr double ply_thickness = 0.125e-3;
 
 Material t300() {
-  Material m = test::t300_976();
-  m.strength.Xt = Xt;
-  m.strength.Xc = Xc;
-  m.strength.Yt = Yt;
-  m.strength.Yc = Yc;
-  m.strength.S12 = S12;
-  m.strength.S23 = S23;
-  m.toughness.G_ft = G_ft;
-  m.toughness.G_fc = G_fc;
-  m.toughness.G_mt = G_mt;
-  m.toughness.G_mc = G_mc;
-  return m;
+  return test::t300_976_with_damage_data();
 }
 
 // --- a membrane driven by a prescribed displacement ------------------------------------------

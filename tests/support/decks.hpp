@@ -30,6 +30,30 @@ inline Material t300_976() {
   return m;
 }
 
+/// The data progressive-damage tests add to T300/976: strengths of SPEC §6 (thesis Table 4.2; Xt, Xc
+/// as in examples/annex2.toml) and the toughnesses of the docs/progressive_damage.md table.
+namespace t300_976_damage {
+inline constexpr double Xt = 1.5e9, Xc = 1.2e9, Yt = 55.2e6, Yc = 294.0e6, S12 = 101.1e6, S23 = 32.94e6;
+inline constexpr double G_ft = 91.6e3, G_fc = 79.9e3, G_mt = 277.0, G_mc = 788.0;
+} // namespace t300_976_damage
+
+/// T300/976 with everything the progressive damage law needs.
+inline Material t300_976_with_damage_data() {
+  using namespace t300_976_damage;
+  Material m = t300_976();
+  m.strength.Xt = Xt;
+  m.strength.Xc = Xc;
+  m.strength.Yt = Yt;
+  m.strength.Yc = Yc;
+  m.strength.S12 = S12;
+  m.strength.S23 = S23;
+  m.toughness.G_ft = G_ft;
+  m.toughness.G_fc = G_fc;
+  m.toughness.G_mt = G_mt;
+  m.toughness.G_mc = G_mc;
+  return m;
+}
+
 /// §3.6 material of the thesis (Table 3.1): E1 = 129, E2 = 7.5, G12 = 3.5 GPa, ν12 = 0.33, ρ = 1540.
 inline Material thesis_3_6() {
   Material m;
