@@ -140,7 +140,8 @@ public:
   [[nodiscard]] const std::vector<double>& ply_damage_area() const { return ply_area_; }
   /// Projected damaged area (union over the plies, what a C-scan of ply damage shows) [m²].
   [[nodiscard]] double projected_damage_area() const { return projected_area_; }
-  /// Largest growth of any damage variable since the last call of mark_factorized().
+  /// Growth of the damage since the last mark_factorized(): the sum over the accepted steps of the
+  /// largest increment of any damage variable in the step (an upper bound of the largest growth).
   [[nodiscard]] double growth_since_factorization() const { return growth_; }
   void mark_factorized() { growth_ = 0.0; }
   /// Number of elements that evaluate the law.
