@@ -518,5 +518,27 @@ TEST(DamagedPlateSection, WithoutDamageTheSecantIsTheElasticStiffness) {
   EXPECT_NEAR(field.stored_energy(), 0.5 * u.dot(K0u), 1e-12 * std::abs(u.dot(K0u)));
 }
 
+// Elements larger than a band limit: by default the law refuses them when a mode initiates; with
+// reduce_strengths_above_band_limit the plate builds its laws with band_limited_strengths() and says so.
+// 6.7 x 6 mm elements (L_c = 6.3 mm) lie above the matrix-compression limit (0.176 mm): Yc drops most,
+// to √(0.176/6.3) ≈ 0.16 of its value (a little less with the margin and the Poisson bound).
+TEST(DamagedPlateBandLimit, LoweredStrengthsAreReportedWithTheElementsTheyConcern) {
+  const Laminate lam = test::laminate_of(t300(), "[0/90]s", ply_thickness);
+  const PlateModel model(lam, {20e-3, 12e-3}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
+                         BoundaryConditions::on_edges("clamped", "free", "free", "free"));
+  ProgressiveDamageSettings settings;
+  EXPECT_FALSE(DamagedPlateModel(model, settings).strength_reduction_warning().has_value());
+  settings.reduce_strengths_above_band_limit = true;
+  const std::optional<std::string> w = DamagedPlateModel(model, settings).strength_reduction_warning();
+  ASSERT_TRUE(w.has_value());
+  const double Lc = std::sqrt(20e-3 / 3 * 12e-3 / 2);
+  const double lowered = *band_limited_strengths(t300(), Lc, 0.0).Yc;
+  EXPECT_LT(lowered, 0.16 * Yc);
+  char expected[96];
+  std::snprintf(expected, sizeof expected, "(Yc of 'T300_976': %.4g -> %.4g MPa)", Yc * 1e-6, lowered * 1e-6);
+  EXPECT_NE(w->find("6 of 6 elements"), std::string::npos) << *w;
+  EXPECT_NE(w->find(expected), std::string::npos) << *w;
+}
+
 } // namespace
 } // namespace plyimpact

@@ -264,6 +264,29 @@ interface = 7
   EXPECT_THROW((void)parse_deck(no_strength, "deck.toml"), DeckError);
 }
 
+TEST(Deck, OversizeElementsChooseBetweenTheErrorAndLoweredStrengths) {
+  // [damage] oversize: "error" (default) or "reduce-strength"; only with the progressive model.
+  const auto damage = [](const std::string& keys) {
+    return parse_deck(base_deck + "[damage]\n" + keys, "deck.toml");
+  };
+  EXPECT_FALSE(damage("model = \"progressive\"\n").damage.progressive->reduce_strengths_above_band_limit);
+  EXPECT_TRUE(damage("model = \"progressive\"\noversize = \"reduce-strength\"\n")
+                  .damage.progressive->reduce_strengths_above_band_limit);
+  const auto message = [&](const std::string& keys) {
+    try {
+      (void)damage(keys);
+    } catch (const DeckError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string misspelt = message("model = \"progressive\"\noversize = \"reduce\"\n");
+  EXPECT_NE(misspelt.find("reduce-strength"), std::string::npos) << misspelt;
+  const std::string onset = message("oversize = \"reduce-strength\"\n");
+  EXPECT_NE(onset.find("damage.oversize belongs to the progressive damage model"), std::string::npos)
+      << onset;
+}
+
 TEST(Deck, UnreadableFileIsAClearError) {
   try {
     (void)load_deck("/nonexistent/deck.toml");

@@ -577,6 +577,65 @@ TEST(PlyDamageBandLimit, AnElementAboveTheBandLimitIsAClearError) {
   }
 }
 
+TEST(PlyDamageBandLimit, StrengthsBelowTheBandLimitOfTheElementAreKept) {
+  // L_c below every band limit (0.176 mm is the smallest, matrix compression): nothing to lower.
+  const Material m = t300();
+  const Strengths s = band_limited_strengths(m, 0.1e-3, 0.0);
+  EXPECT_EQ(*s.Xt, Xt);
+  EXPECT_EQ(*s.Xc, Xc);
+  EXPECT_EQ(*s.Yt, Yt);
+  EXPECT_EQ(*s.Yc, Yc);
+  EXPECT_EQ(*s.S12, S12);
+  EXPECT_EQ(*s.S23, *m.strength.S23);
+}
+
+TEST(PlyDamageBandLimit, LoweredStrengthsStillDissipateTheToughnessInLargeElements) {
+  // Maimí et al. (2007): an 8 mm element, 4.6 to 46 times the band limits of the matrix modes, with
+  // its strengths lowered: every one-mode test softens without snap-back and dissipates G per unit
+  // area (1 %), starting at the lowered strength.
+  const double Lc = 8e-3;
+  Material m = t300();
+  m.strength = band_limited_strengths(m, Lc, 0.0);
+  const PlyDamageLaw law(m);
+  const double lowered[] = {*m.strength.Xt, *m.strength.Xc, *m.strength.Yt, *m.strength.Yc, *m.strength.S12};
+  std::size_t i = 0;
+  for (UniaxialCase c : uniaxial_cases()) {
+    c.strength = lowered[i++];
+    c.char_length = Lc;
+    const double limit = 2.0 * c.toughness * c.modulus / (c.strength * c.strength);
+    EXPECT_GT(limit, Lc) << c.name << ": the lowered strength must fit the element";
+    const PathResult p = drive(law, c, ramp_through_onset(c, c.sign * 1.2 * final_strain(c), 2000), 0.0);
+    EXPECT_NEAR(p.state.onset_equivalent_stress[c.mode], c.strength, 1e-9 * c.strength) << c.name;
+    EXPECT_EQ(p.state.damage[c.mode], 1.0) << c.name;
+    EXPECT_NEAR(p.dissipation * Lc, c.toughness, 0.01 * c.toughness) << c.name;
+  }
+  EXPECT_LT(*m.strength.Yc, 0.2 * Yc); // matrix compression: limit 0.176 mm, √(0.176/8) = 0.15
+  std::printf("[ measured ] strengths for L_c = 8 mm [MPa]: Xt %.4g, Xc %.4g, Yt %.4g, Yc %.4g, S12 %.4g\n",
+              lowered[0] * 1e-6, lowered[1] * 1e-6, lowered[2] * 1e-6, lowered[3] * 1e-6, lowered[4] * 1e-6);
+}
+
+TEST(PlyDamageBandLimit, LoweredStrengthsCoverTransverseTensionUnderFibreCompression) {
+  // The Poisson coupling: with σ11 near −Xc the transverse strain at the matrix-tension onset exceeds
+  // Yt/E2 and so does σ⁰ε⁰; the lowered strengths include it, so this biaxial path does not snap back.
+  const double Lc = 8e-3;
+  Material m = t300();
+  m.strength = band_limited_strengths(m, Lc, 0.0);
+  const PlyDamageLaw law(m);
+  const Eigen::Matrix3d C = law.update({}, {}, Lc, 0.0).secant;
+  const Eigen::Vector3d fibre_stress(-0.95 * *m.strength.Xc, 0.0, 0.0);
+  PlyStrain e;
+  e.in_plane = C.inverse() * fibre_stress; // σ11 = −0.95 Xc, σ22 = 0
+  PlyDamageState state;
+  const double step = 0.01 * *m.strength.Yt / m.E2;
+  for (int k = 0; k < 2000 && state.damage[DamageMode::matrix_tension] < 1.0; ++k) {
+    e.in_plane(1) += step;
+    PlyDamageResponse r;
+    ASSERT_NO_THROW(r = law.update(state, e, Lc, 0.0)) << "step " << k;
+    state = r.state;
+  }
+  EXPECT_EQ(state.damage[DamageMode::matrix_tension], 1.0);
+}
+
 // --- the tangent --------------------------------------------------------------------------------
 
 /// Central finite differences of the stress (5 components) from a committed state.

@@ -66,6 +66,10 @@ public:
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<DamageStepper>(*this, impactor);
   }
+  [[nodiscard]] std::vector<std::string> warnings() const override {
+    if (auto w = plate_.strength_reduction_warning()) return {std::move(*w)};
+    return {};
+  }
 
   const PlateModel& model_;
   StepPolicyOptions options_;

@@ -161,6 +161,8 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
                                       settings_.contact.load))
       loop.warnings.push_back(std::move(*w));
   }
+  for (std::string& w : policy_->warnings())
+    loop.warnings.push_back(std::move(w));
 
   std::vector<ImpactObserver*> observers = request.observers;
   HistoryRecorder history(request.history_every);

@@ -24,6 +24,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace plyimpact {
 
@@ -74,6 +76,9 @@ public:
   [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor) const = 0;
   /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
   [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
+  /// What the policy changed about the case that the user must know (e.g. strengths lowered to a band
+  /// limit), for the run's warnings.
+  [[nodiscard]] virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 /// Settings of the non-linear (Newton) policy.

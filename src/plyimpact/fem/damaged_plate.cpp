@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 namespace plyimpact {
 
@@ -110,68 +112,79 @@ std::vector<DamagedPlateModel::PlyPoints> ply_points(const Laminate& lam) {
 
 } // namespace
 
-DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings)
-    : model_(model), settings_(settings) {
-  if (model.formulation() != ElementFormulation::mitc9)
-    throw std::invalid_argument("progressive damage needs the MITC9 element ([mesh] element = \"mitc9\" or "
-                                "\"auto\"): the q9 element integrates transverse shear at other points than "
-                                "the 3x3 Gauss points where the plies' damage lives");
-  if (!(settings.refactor_tolerance > 0.0))
-    throw std::invalid_argument("progressive damage: refactor_tolerance must be positive");
-  const Mesh& mesh = model.mesh();
-  for (std::size_t s = 0; s < model.laminates().size(); ++s) {
-    const Laminate& lam = model.laminates()[s];
-    if (lam.stiffness_model() != ReducedStiffnessModel::exact)
-      throw std::invalid_argument("progressive damage needs the exact reduced stiffness (1.3) "
-                                  "([laminate] reduced_stiffness = \"exact\"): the damage law degrades it");
-    std::vector<std::unique_ptr<PlyDamageLaw>> laws;
-    for (const Material& m : lam.materials()) {
-      bool used = false;
-      for (const Ply& p : lam.plies())
-        used = used || &lam.materials()[p.material] == &m;
-      if (!used) {
-        laws.emplace_back();
-        continue;
-      }
-      try {
-        laws.push_back(std::make_unique<PlyDamageLaw>(m, settings.law));
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(fmt::format(
-            "{} ([materials.{}]: strengths in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
-            "docs/progressive_damage.md lists published values)",
-            e.what(), m.name));
-      }
+namespace {
+
+/// The laminate's materials as the law of an element of characteristic length Lc sees them: the data of
+/// the deck, or (Lc > 0) with the strengths lowered to the band limit of Lc (band_limited_strengths).
+std::vector<Material> class_materials(const Laminate& lam, double Lc, double alpha) {
+  std::vector<Material> materials = lam.materials();
+  if (Lc > 0.0)
+    for (Material& m : materials)
+      if (m.toughness.G_ft && m.toughness.G_fc && m.toughness.G_mt && m.toughness.G_mc && m.strength.Xt &&
+          m.strength.Xc && m.strength.Yt && m.strength.Yc && m.strength.S12)
+        m.strength = band_limited_strengths(m, Lc, alpha);
+  return materials;
+}
+
+/// One damage law per material the laminate's plies use (null for the others).
+std::vector<std::unique_ptr<PlyDamageLaw>>
+section_laws(const Laminate& lam, const std::vector<Material>& materials, const PlyDamageOptions& options) {
+  std::vector<std::unique_ptr<PlyDamageLaw>> laws;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    const bool used =
+        std::any_of(lam.plies().begin(), lam.plies().end(), [i](const Ply& p) { return p.material == i; });
+    if (!used) {
+      laws.emplace_back();
+      continue;
     }
-    laws_.push_back(std::move(laws));
-    std::vector<Group> groups;
-    for (std::size_t k = 0; k < lam.ply_count(); ++k) {
-      const Ply& ply = lam.plies()[k];
-      auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
-        return g.material == ply.material && g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
-      });
-      if (it == groups.end()) {
-        Group g;
-        g.material = ply.material;
-        g.T_strain = strain_to_material(ply.angle_deg);
-        g.Q = reduced_stiffness(lam.materials()[ply.material]);
-        g.z_min = lam.z_top(k);
-        g.z_max = lam.z_bottom(k);
-        groups.push_back(g);
-        continue;
-      }
-      it->z_min = std::min(it->z_min, lam.z_top(k));
-      it->z_max = std::max(it->z_max, lam.z_bottom(k));
+    try {
+      laws.push_back(std::make_unique<PlyDamageLaw>(materials[i], options));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format(
+          "{} ([materials.{}]: strengths in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
+          "docs/progressive_damage.md lists published values)",
+          e.what(), materials[i].name));
     }
-    for (Group& g : groups)
-      g.finish(lam.materials()[g.material].strength, settings.law.alpha);
-    groups_.push_back(std::move(groups));
-    plies_.push_back(ply_points(lam));
   }
+  return laws;
+}
+
+/// The laminate's plies grouped by (material, angle), each with the z range it spans: the screening bound.
+std::vector<DamagedPlateModel::Group> section_groups(const Laminate& lam,
+                                                     const std::vector<Material>& materials, double alpha) {
+  std::vector<DamagedPlateModel::Group> groups;
+  for (std::size_t k = 0; k < lam.ply_count(); ++k) {
+    const Ply& ply = lam.plies()[k];
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const DamagedPlateModel::Group& g) {
+      return g.material == ply.material && g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
+    });
+    if (it == groups.end()) {
+      DamagedPlateModel::Group g;
+      g.material = ply.material;
+      g.T_strain = strain_to_material(ply.angle_deg);
+      g.Q = reduced_stiffness(materials[ply.material]);
+      g.z_min = lam.z_top(k);
+      g.z_max = lam.z_bottom(k);
+      groups.push_back(g);
+      continue;
+    }
+    it->z_min = std::min(it->z_min, lam.z_top(k));
+    it->z_max = std::max(it->z_max, lam.z_bottom(k));
+  }
+  for (DamagedPlateModel::Group& g : groups)
+    g.finish(materials[g.material].strength, alpha);
+  return groups;
+}
+
+} // namespace
+
+void DamagedPlateModel::build_element_operators() {
+  const Mesh& mesh = model_.mesh();
   for (int c = 0; c < mesh.shape_class_count(); ++c) {
     const ElementCoordinates xy = mesh.element_coordinates(mesh.representative(c));
     ElementOperators ops;
     for (std::size_t p = 0; p < gauss3x3.size(); ++p) {
-      ops.S[p] = model.element().strain_operator(xy, gauss3x3[p].xi, gauss3x3[p].eta);
+      ops.S[p] = model_.element().strain_operator(xy, gauss3x3[p].xi, gauss3x3[p].eta);
       ops.w[p] = gauss3x3[p].weight * point_kinematics(xy, gauss3x3[p].xi, gauss3x3[p].eta).detJ;
     }
     operators_.push_back(ops);
@@ -183,6 +196,51 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
     area_.push_back(a);
     length_.push_back(std::sqrt(a));
   }
+}
+
+void DamagedPlateModel::build_length_classes() {
+  // Without strength reduction the laws do not depend on L_c: one class (length 0 = the deck's data).
+  class_of_element_.assign(length_.size(), 0);
+  if (!settings_.reduce_strengths_above_band_limit) {
+    class_length_ = {0.0};
+    return;
+  }
+  for (std::size_t e = 0; e < length_.size(); ++e) {
+    const double L = length_[e];
+    const auto same = [L](double c) { return std::abs(c - L) <= 1e-9 * L; };
+    auto it = std::find_if(class_length_.begin(), class_length_.end(), same);
+    if (it == class_length_.end()) it = class_length_.insert(class_length_.end(), L);
+    class_of_element_[e] = static_cast<int>(it - class_length_.begin());
+  }
+}
+
+DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings)
+    : model_(model), settings_(settings) {
+  if (model.formulation() != ElementFormulation::mitc9)
+    throw std::invalid_argument("progressive damage needs the MITC9 element ([mesh] element = \"mitc9\" or "
+                                "\"auto\"): the q9 element integrates transverse shear at other points than "
+                                "the 3x3 Gauss points where the plies' damage lives");
+  if (!(settings.refactor_tolerance > 0.0))
+    throw std::invalid_argument("progressive damage: refactor_tolerance must be positive");
+  for (const Laminate& lam : model.laminates())
+    if (lam.stiffness_model() != ReducedStiffnessModel::exact)
+      throw std::invalid_argument("progressive damage needs the exact reduced stiffness (1.3) "
+                                  "([laminate] reduced_stiffness = \"exact\"): the damage law degrades it");
+  build_element_operators();
+  build_length_classes();
+  for (const double Lc : class_length_) {
+    std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>> laws;
+    std::vector<std::vector<Group>> groups;
+    for (const Laminate& lam : model.laminates()) {
+      const std::vector<Material> materials = class_materials(lam, Lc, settings_.law.alpha);
+      laws.push_back(section_laws(lam, materials, settings_.law));
+      groups.push_back(section_groups(lam, materials, settings_.law.alpha));
+    }
+    laws_.push_back(std::move(laws));
+    groups_.push_back(std::move(groups));
+  }
+  for (const Laminate& lam : model.laminates())
+    plies_.push_back(ply_points(lam));
   K0_ = model.stiffness();
   const SparseMatrix& pattern = model.pattern();
   if (K0_.nonZeros() != pattern.nonZeros())
@@ -194,6 +252,45 @@ DamagedPlateModel::~DamagedPlateModel() = default;
 
 const DamagedPlateModel::ElementOperators& DamagedPlateModel::operators_of(int e) const {
   return operators_[static_cast<std::size_t>(model_.mesh().shape_class(e))];
+}
+
+std::optional<std::string> DamagedPlateModel::strength_reduction_warning() const {
+  struct Largest {
+    double ratio = 1.0;
+    std::string material, strength;
+    double deck = 0.0, used = 0.0;
+  } largest;
+  std::vector<bool> class_reduced(class_length_.size(), false);
+  for (std::size_t c = 0; c < class_length_.size(); ++c)
+    for (std::size_t s = 0; s < laws_[c].size(); ++s)
+      for (std::size_t i = 0; i < laws_[c][s].size(); ++i) {
+        if (!laws_[c][s][i]) continue;
+        const Material& m = laws_[c][s][i]->material();
+        const Material& deck = model_.laminates()[s].materials()[i];
+        const std::tuple<const char*, std::optional<double>, std::optional<double>> pairs[] = {
+            {"Xt", deck.strength.Xt, m.strength.Xt},
+            {"Xc", deck.strength.Xc, m.strength.Xc},
+            {"Yt", deck.strength.Yt, m.strength.Yt},
+            {"Yc", deck.strength.Yc, m.strength.Yc},
+            {"S12", deck.strength.S12, m.strength.S12}};
+        for (const auto& [name, before, after] : pairs) {
+          const double ratio = *after / *before;
+          if (ratio >= 1.0) continue;
+          class_reduced[c] = true;
+          if (ratio < largest.ratio) largest = {ratio, m.name, name, *before, *after};
+        }
+      }
+  int elements = 0;
+  for (const int c : class_of_element_)
+    elements += class_reduced[static_cast<std::size_t>(c)] ? 1 : 0;
+  if (elements == 0) return std::nullopt;
+  return fmt::format(
+      "progressive damage: {} of {} elements are larger than a band limit; their strengths are lowered so "
+      "that each mode still dissipates G (Maimi et al. 2007, [damage] oversize = \"reduce-strength\"), by "
+      "up to {:.0f} % ({} of '{}': {:.4g} -> {:.4g} MPa): damage starts earlier there than the strengths "
+      "say; refine the mesh toward the impact point for onset results",
+      elements, model_.mesh().element_count(), 100.0 * (1.0 - largest.ratio), largest.strength,
+      largest.material, largest.deck * 1e-6, largest.used * 1e-6);
 }
 
 DamageField DamagedPlateModel::virgin_field() const {
@@ -213,7 +310,8 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
   const int section = model_.section_index(e);
   const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
   const std::vector<PlyPoints>& plies = plies_[static_cast<std::size_t>(section)];
-  const auto& laws = laws_[static_cast<std::size_t>(section)];
+  const auto& laws = laws_[class_of(e)][static_cast<std::size_t>(section)];
+  const std::vector<Group>& groups = groups_[class_of(e)][static_cast<std::size_t>(section)];
   const double root_k = std::sqrt(lam.shear_correction());
   const double k = lam.shear_correction();
   const double Lc = characteristic_length(e);
@@ -228,7 +326,7 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
     const Eigen::Matrix<double, 8, 1>& strain = strains[p];
     const std::size_t first = p * per_point;
     if (a.pristine[p]) {
-      if (hashin_bound(section, strain.head<6>()) < 1.0) {
+      if (hashin_bound(groups, strain.head<6>()) < 1.0) {
         // Undamaged and below every Hashin surface: the elastic section, no law call.
         if (a.trial_touched[p])
           std::copy_n(a.committed.begin() + static_cast<std::ptrdiff_t>(first), per_point,
@@ -326,12 +424,13 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
   return K;
 }
 
-double DamagedPlateModel::hashin_bound(int section, const Eigen::Matrix<double, 6, 1>& strain) const {
+double DamagedPlateModel::hashin_bound(const std::vector<Group>& groups,
+                                       const Eigen::Matrix<double, 6, 1>& strain) {
   // Each branch of a pair (fibre, matrix) is convex in z and the stress affine: over the range of a group
   // the largest active index is at an end of the range or where the sign of σ11 (σ22) changes, where
   // both branches reduce to their shear terms.
   double bound = 0.0;
-  for (const Group& g : groups_[static_cast<std::size_t>(section)]) {
+  for (const Group& g : groups) {
     const Eigen::Vector3d s0 = g.at_min * strain, s1 = g.at_max * strain;
     bound = std::max({bound, g.index(s0), g.index(s1)});
     for (const int c : {0, 1})
@@ -345,12 +444,12 @@ double DamagedPlateModel::hashin_bound(int section, const Eigen::Matrix<double, 
 }
 
 double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
-  const int section = model_.section_index(e);
+  const std::vector<Group>& groups = groups_[class_of(e)][static_cast<std::size_t>(model_.section_index(e))];
   const ElementOperators& ops = operators_of(e);
   const ElementVector ue = model_.element_dofs(u, e);
   double bound = 0.0;
   for (std::size_t p = 0; p < 9; ++p)
-    bound = std::max(bound, hashin_bound(section, ops.S[p].topRows<6>() * ue));
+    bound = std::max(bound, hashin_bound(groups, ops.S[p].topRows<6>() * ue));
   return bound;
 }
 

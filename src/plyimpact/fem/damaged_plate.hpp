@@ -45,6 +45,10 @@ struct ProgressiveDamageSettings {
   double residual_tolerance = 1e-6; ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
   double displacement_tolerance = 1e-8; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖ (estimated with diag K̄)
   double refresh_ratio = 0.5; ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  /// Elements larger than a mode's band limit: false (default) = BandLimitError when the mode initiates
+  /// there; true = the strengths of those elements are lowered to their band limit (Maimí et al. 2007,
+  /// band_limited_strengths in ply_damage.hpp) and strength_reduction_warning() says by how much.
+  bool reduce_strengths_above_band_limit = false;
 };
 
 /// Per element and ply: the largest damage variable of each mode over the element's points.
@@ -78,6 +82,10 @@ public:
   /// Area of element e [m²].
   [[nodiscard]] double element_area(int e) const { return area_[static_cast<std::size_t>(e)]; }
 
+  /// With reduce_strengths_above_band_limit: how many elements have lowered strengths and the largest
+  /// reduction (material, strength, deck value → used value), for the run's warnings; nullopt when none.
+  [[nodiscard]] std::optional<std::string> strength_reduction_warning() const;
+
   /// A virgin damage field for one run.
   [[nodiscard]] DamageField virgin_field() const;
 
@@ -104,7 +112,14 @@ public:
   struct PlyPoints;
 
 private:
+  void build_element_operators();
+  /// Elements whose laws coincide: one class per distinct characteristic length when strengths are
+  /// lowered to the band limit, otherwise one class for all.
+  void build_length_classes();
   [[nodiscard]] const ElementOperators& operators_of(int e) const;
+  [[nodiscard]] std::size_t class_of(int e) const {
+    return static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
+  }
   /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
   using PointStrains = std::array<Eigen::Matrix<double, 8, 1>, 9>;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
@@ -112,7 +127,8 @@ private:
   PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
   /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
   /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
-  [[nodiscard]] double hashin_bound(int section, const Eigen::Matrix<double, 6, 1>& strain) const;
+  [[nodiscard]] static double hashin_bound(const std::vector<Group>& groups,
+                                           const Eigen::Matrix<double, 6, 1>& strain);
   /// The largest hashin_bound over element e's points at u.
   [[nodiscard]] double element_bound(int e, const Eigen::VectorXd& u) const;
   void activate(int e, DamageField& field) const;
@@ -121,11 +137,13 @@ private:
   ProgressiveDamageSettings settings_;
   SparseMatrix K0_;
   std::vector<double> length_, area_;
-  std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>> laws_; ///< [section][material]
-  std::vector<std::vector<Group>> groups_;                       ///< [section]
-  std::vector<std::vector<PlyPoints>> plies_;                    ///< [section][ply]
-  std::vector<ElementOperators> operators_;                      ///< per shape class
-  std::vector<ElementSlots> slot_;                               ///< (i, j) of Kₑ → index in K0_ values
+  std::vector<int> class_of_element_; ///< length class of each element
+  std::vector<double> class_length_;  ///< L_c of each class (0: the deck's strengths)
+  std::vector<std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>>> laws_; ///< [class][section][material]
+  std::vector<std::vector<std::vector<Group>>> groups_;                       ///< [class][section]
+  std::vector<std::vector<PlyPoints>> plies_;                                 ///< [section][ply]
+  std::vector<ElementOperators> operators_;                                   ///< per shape class
+  std::vector<ElementSlots> slot_; ///< (i, j) of Kₑ → index in K0_ values
 };
 
 /// The damage state of one run: committed per-point states of the active elements, their trial

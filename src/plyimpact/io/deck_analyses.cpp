@@ -76,7 +76,7 @@ BucklingSettings read_buckling(const TableReader& t) {
 DamageSettings read_damage(const TableReader& t, const Deck& d) {
   DamageSettings damage;
   t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
-          "area_threshold"});
+          "area_threshold", "oversize"});
   const bool progressive =
       t.optional_choice<bool>("model", {{"onset", false}, {"progressive", true}}).value_or(false);
   if (progressive) {
@@ -95,9 +95,11 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
     if (p.area_threshold > 1.0)
       t.fail_at("area_threshold", fmt::format("damage.area_threshold is a damage variable in (0, 1], got {}",
                                               p.area_threshold));
+    p.reduce_strengths_above_band_limit =
+        t.optional_choice<bool>("oversize", {{"error", false}, {"reduce-strength", true}}).value_or(false);
     damage.progressive = p;
   } else {
-    for (const char* key : {"viscosity", "alpha", "refactor_tolerance", "area_threshold"})
+    for (const char* key : {"viscosity", "alpha", "refactor_tolerance", "area_threshold", "oversize"})
       if (t.node(key) != nullptr)
         t.fail_at(key, fmt::format("damage.{} belongs to the progressive damage model: add "
                                    "model = \"progressive\" to [damage]",

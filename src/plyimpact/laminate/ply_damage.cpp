@@ -35,7 +35,8 @@ BandLimitError::BandLimitError(std::string_view material, DamageMode mode, doubl
           "progressive damage of material '{}': the characteristic length L_c = {:.4g} mm exceeds the "
           "band limit of mode {}, 2G/(sigma0_eq * eps0_eq) = {:.4g} mm (linear softening would snap back "
           "and dissipate more than G); refine the mesh to a maximum element size (characteristic length) "
-          "of {:.4g} mm, or check the mode's fracture toughness",
+          "of {:.4g} mm, check the mode's fracture toughness, or accept lowered strengths in the larger "
+          "elements with [damage] oversize = \"reduce-strength\"",
           material, characteristic_length * 1e3, to_string(mode), max_characteristic_length * 1e3,
           max_characteristic_length * 1e3)),
       mode_(mode), characteristic_length_(characteristic_length),
@@ -373,6 +374,35 @@ double hashin_plane_stress_index(DamageMode mode, const Eigen::Vector3d& effecti
                                  const Strengths& strengths, double alpha) {
   const IndexParts p = hashin_parts(mode, effective_stress, strengths, alpha);
   return p.quadratic + p.linear;
+}
+
+Strengths band_limited_strengths(const Material& m, double characteristic_length, double alpha,
+                                 double margin) {
+  // No snap-back (PD10) ⇔ σ⁰ε⁰ ≤ 2G/L_c at every onset. At an onset of the undamaged ply the product of a
+  // fibre mode is σ11ε11 = σ11²/E1 − ν12σ11σ22/E1 ≤ X²/E1 + ν12·X·Ymax/E1; of a matrix mode
+  // σ22ε22 + τ12γ12 ≤ max(Y²/E2, S12²/G12) + ν12·Y·Xmax/E1 (Hashin's index = 1 splits σ22² and τ12²).
+  // Each strength becomes the largest one for which that bound stays below margin²·2G/L_c.
+  const FractureToughness& g = m.toughness;
+  const Strengths& deck = m.strength;
+  const auto budget = [&](double G) { return margin * margin * 2.0 * G / characteristic_length; };
+  // Largest X with X²/E + cross·X ≤ c.
+  const auto largest = [](double modulus, double cross, double c) {
+    return 0.5 * modulus * (-cross + std::sqrt(cross * cross + 4.0 * c / modulus));
+  };
+  Strengths s = deck;
+  const double y_max = std::max(*deck.Yt, *deck.Yc);
+  const double fibre_cross = m.nu12 * y_max / m.E1;
+  s.Xt = std::min(*deck.Xt, largest(m.E1, fibre_cross, budget(*g.G_ft)));
+  s.Xc = std::min(*deck.Xc, largest(m.E1, fibre_cross, budget(*g.G_fc)));
+  const double matrix_cross = m.nu12 * std::max(*s.Xt, *s.Xc) / m.E1;
+  s.Yt = std::min(*deck.Yt, largest(m.E2, matrix_cross, budget(*g.G_mt)));
+  s.Yc = std::min(*deck.Yc, largest(m.E2, matrix_cross, budget(*g.G_mc)));
+  // S12 enters both matrix modes (and fibre tension if α > 0): S12²/G12 ≤ c − cross·Y of each.
+  double shear_budget =
+      std::min(budget(*g.G_mt) - matrix_cross * *s.Yt, budget(*g.G_mc) - matrix_cross * *s.Yc);
+  if (alpha > 0.0) shear_budget = std::min(shear_budget, budget(*g.G_ft) - fibre_cross * *s.Xt);
+  s.S12 = std::min(*deck.S12, std::sqrt(m.G12 * std::max(shear_budget, 0.0)));
+  return s;
 }
 
 PlyDamageLaw::PlyDamageLaw(Material material, PlyDamageOptions options)

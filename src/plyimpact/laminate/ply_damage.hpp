@@ -113,6 +113,15 @@ private:
   double max_characteristic_length_;
 };
 
+/// The strengths of `m` lowered so that a point of characteristic length L_c softens without snap-back
+/// at every onset of the undamaged ply (Maimí et al. 2007, crack band with elements larger than the band
+/// limit): each of Xt, Xc, Yt, Yc, S12 above the limit becomes the largest strength for which the onset's
+/// σ⁰ε⁰, bounded with the Poisson coupling of the other direction, stays below margin²·2G/L_c. The modes
+/// still dissipate G per unit area, at the price of starting earlier than the measured strengths say.
+/// S23 is kept. Precondition: the strengths and toughnesses are present and positive.
+[[nodiscard]] Strengths band_limited_strengths(const Material& m, double characteristic_length, double alpha,
+                                               double margin = 0.95);
+
 /// Hashin (1980) index of one mode, plane stress, on effective stresses σ̂ = (σ̂11, σ̂22, τ̂12),
 /// with the misprints of the thesis fixed (SPEC §6); `alpha` weighs τ̂12 in fibre tension:
 ///  fibre tension:      (σ̂11/Xt)² + α(τ̂12/S12)²
