@@ -7,6 +7,7 @@
 #include "plyimpact/io/history_csv.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_text_report.hpp"
+#include "plyimpact/io/ply_damage_maps.hpp"
 #include "plyimpact/io/results.hpp"
 #include "plyimpact/io/vtk_output.hpp"
 
@@ -137,6 +138,10 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
       if (!maps.warning.empty()) out.notes.push_back(maps.warning);
     }
   }
+  if (out.result.progressive)
+    folder->write_text(
+        damage_elements_file,
+        damage_elements_csv(model, PlyDamageTable(model, out.result.progressive->element_ply_damage)));
   if (probes) folder->write_text("probes.csv", probes_csv(*probes));
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,
