@@ -124,6 +124,38 @@ TEST(CliPlot, SeveralResultsFoldersAreOverlaidWithOneLabelledCurveEach) {
   EXPECT_GT(read_png(dir / "overlay" / "force_time.png").variance, 100.0);
 }
 
+TEST(CliPlot, AProgressiveRunGetsADamageMapPerPlyAndTheProjectedMapBesideTheForcePlots) {
+  // examples/damage-progressive.toml: [0/90]s, 4 plies; the maps are drawn from damage_elements.csv.
+  const fs::path dir = scratch("plot-progressive");
+  const std::string deck = std::string(PLYIMPACT_SOURCE_DIR) + "/examples/damage-progressive.toml";
+  const CommandResult r = run("impact " + deck + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  ASSERT_TRUE(fs::exists(dir / "out" / "damage_elements.csv"));
+  const CommandResult p = run("plot " + (dir / "out").string());
+  ASSERT_EQ(p.status, 0) << p.out;
+  const auto specs = plyimpact::impact_plots({{dir / "out", "run"}});
+  std::vector<std::string> maps;
+  for (const plyimpact::PlotSpec& spec : specs)
+    if (spec.name.starts_with("damage_map_")) maps.push_back(spec.name);
+  EXPECT_EQ(maps, (std::vector<std::string>{"damage_map_ply01", "damage_map_ply02", "damage_map_ply03",
+                                            "damage_map_ply04", "damage_map_projected"}));
+  for (const std::string name :
+       {"damage_map_ply01", "damage_map_ply04", "damage_map_projected", "force_time", "force_displacement"}) {
+    const fs::path png = dir / "out" / "plots" / (name + ".png");
+    ASSERT_TRUE(fs::exists(png)) << name;
+    const Picture pic = read_png(png);
+    EXPECT_EQ(pic.width, plyimpact::plot_width_px) << name;
+    EXPECT_EQ(pic.height, plyimpact::plot_height_px) << name;
+    EXPECT_GT(pic.variance, 100.0) << name;
+    EXPECT_TRUE(svg_parses(dir / "out" / "plots" / (name + ".svg"))) << name;
+  }
+  // The impact point of the folder's deck.toml (plate centre, 6 mm, 6 mm) is marked on the maps.
+  EXPECT_NE(read_text(dir / "out" / "plots" / "damage_map_projected.gp").find("impact point"),
+            std::string::npos);
+  EXPECT_NE(read_text(dir / "out" / "plots" / "damage_map_projected.gp").find("6.000000,6.000000"),
+            std::string::npos);
+}
+
 TEST(CliPlot, PlotOfAFolderWithoutHistoryIsAClearError) {
   const fs::path dir = scratch("plot-bad");
   const CommandResult p = run("plot " + dir.string());

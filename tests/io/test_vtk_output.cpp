@@ -6,6 +6,7 @@
 #include "plyimpact/io/vtk_output.hpp"
 #include "support/decks.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
@@ -19,6 +20,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <regex>
 #include <string>
 
 namespace plyimpact {
@@ -255,6 +257,84 @@ TEST(VtkOutput, SeriesKeepsAValidPvdListingEveryFrameWithItsTime) {
   const Eigen::VectorXd nodal = p.model.to_nodal(p.u);
   const int centre = 3 * 9 + 4; // grid node (4, 3) of the 4 × 3 structured mesh: 9 nodes a row
   EXPECT_EQ(second->GetPointData()->GetArray("w_m")->GetTuple1(centre), 2.0 * nodal(5 * centre + 2));
+}
+
+/// Damage of three element-ply pairs of the 4 × 3 plate (0-based element and ply), as the run lists
+/// them; every other element and ply is undamaged.
+std::vector<ElementPlyDamage> three_damaged() {
+  return {{2, 3, {{0.1, 0.2, 0.7, 0.0}}}, {5, 0, {{0.9, 0.0, 0.0, 0.3}}}, {2, 1, {{0.0, 0.4, 0.0, 0.0}}}};
+}
+
+TEST(VtkOutput, ProgressiveDamageCellDataReadBackEqualsTheListedDamageAndZeroElsewhere) {
+  const PressurePlate p(test::t300_976(), "[0/90]s", 0.25e-3);
+  const fs::path dir = scratch("progressive");
+  const PlyDamageTable table(p.model, three_damaged());
+  write_plate_vtu(dir / "plate.vtu", p.model, p.u, {}, 0.0, VtkOptions{}, &table);
+  const auto grid = read_vtu(dir / "plate.vtu");
+  vtkCellData& cells = *grid->GetCellData();
+  // Expected values by hand from three_damaged(): (ply 1-based, mode name, element) → d.
+  auto expected = [](int ply, const std::string& mode, int e) {
+    if (ply == 4 && e == 2) return mode == "d_ft" ? 0.1 : mode == "d_fc" ? 0.2 : mode == "d_mt" ? 0.7 : 0.0;
+    if (ply == 1 && e == 5) return mode == "d_ft" ? 0.9 : mode == "d_mc" ? 0.3 : 0.0;
+    if (ply == 2 && e == 2) return mode == "d_fc" ? 0.4 : 0.0;
+    return 0.0;
+  };
+  for (int ply = 1; ply <= 4; ++ply)
+    for (const std::string mode : {"d_ft", "d_fc", "d_mt", "d_mc"}) {
+      vtkDataArray* a = cells.GetArray(fmt::format("ply{}_{}", ply, mode).c_str());
+      ASSERT_NE(a, nullptr) << ply << mode;
+      for (int e = 0; e < 12; ++e)
+        EXPECT_EQ(a->GetTuple1(e), expected(ply, mode, e))
+            << "ply " << ply << " " << mode << " element " << e;
+    }
+  // Ply 3 has no damage: every value of its largest-variable array is zero.
+  vtkDataArray* ply3 = cells.GetArray("ply3_d_max");
+  ASSERT_NE(ply3, nullptr);
+  for (int e = 0; e < 12; ++e)
+    EXPECT_EQ(ply3->GetTuple1(e), 0.0);
+  EXPECT_EQ(cells.GetArray("ply4_d_max")->GetTuple1(2), 0.7);
+  // damage_max: the largest over plies and modes (element 2: 0.7 of ply 4 over 0.4 of ply 2; element 5: 0.9).
+  vtkDataArray* projected = cells.GetArray("damage_max");
+  ASSERT_NE(projected, nullptr);
+  for (int e = 0; e < 12; ++e)
+    EXPECT_EQ(projected->GetTuple1(e), e == 2 ? 0.7 : e == 5 ? 0.9 : 0.0) << "element " << e;
+
+  // The layered view: cells ply by ply, element by element, four hexahedra per element.
+  write_layers_vtu(dir / "layers.vtu", p.model, p.u, {}, 0.0, VtkOptions{}, &table);
+  const auto layers = read_vtu(dir / "layers.vtu");
+  vtkDataArray* d_mt = layers->GetCellData()->GetArray("d_mt");
+  vtkDataArray* d_max = layers->GetCellData()->GetArray("d_max");
+  ASSERT_TRUE(d_mt && d_max);
+  for (int k = 0; k < 4; ++k)
+    for (int e = 0; e < 12; ++e)
+      for (int q = 0; q < 4; ++q) {
+        const vtkIdType cell = (k * 12 + e) * 4 + q;
+        EXPECT_EQ(d_mt->GetTuple1(cell), expected(k + 1, "d_mt", e));
+        EXPECT_EQ(d_max->GetTuple1(cell), table.largest(k, e));
+      }
+  EXPECT_EQ(d_max->GetTuple1((0 * 12 + 5) * 4), 0.9); // ply 1, element 5
+}
+
+TEST(VtkOutput, OnsetFramesHaveNoProgressiveDamageArrays) {
+  const PressurePlate p(test::t300_976(), "[0/90]s", 0.25e-3);
+  const fs::path dir = scratch("onset");
+  write_plate_vtu(dir / "plate.vtu", p.model, p.u, {}, 0.0, VtkOptions{});
+  write_layers_vtu(dir / "layers.vtu", p.model, p.u, {}, 0.0, VtkOptions{});
+  for (const char* file : {"plate.vtu", "layers.vtu"}) {
+    const auto grid = read_vtu(dir / file);
+    vtkCellData& cells = *grid->GetCellData();
+    ASSERT_GT(cells.GetNumberOfArrays(), 0);
+    for (int i = 0; i < cells.GetNumberOfArrays(); ++i) {
+      const std::string name = cells.GetArrayName(i);
+      EXPECT_FALSE(std::regex_search(name, std::regex("(^|_)d_(ft|fc|mt|mc|max)$"))) << file << ": " << name;
+      EXPECT_NE(name, "damage_max") << file;
+    }
+  }
+}
+
+TEST(VtkOutput, ADamageEntryOutsideTheModelIsRefused) {
+  EXPECT_THROW(PlyDamageTable(12, 4, {{12, 0, {}}}), std::invalid_argument);
+  EXPECT_THROW(PlyDamageTable(12, 4, {{0, 4, {}}}), std::invalid_argument);
 }
 
 } // namespace

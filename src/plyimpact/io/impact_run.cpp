@@ -7,6 +7,7 @@
 #include "plyimpact/io/history_csv.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_text_report.hpp"
+#include "plyimpact/io/ply_damage_maps.hpp"
 #include "plyimpact/io/results.hpp"
 #include "plyimpact/io/vtk_output.hpp"
 
@@ -17,12 +18,14 @@ namespace plyimpact {
 
 namespace {
 
-/// ParaView frames every `every` steps and at the requested times (docs/deck.md, [output] vtk*).
+/// ParaView frames every `every` steps and at the requested times (docs/deck.md, [output] vtk*), with the
+/// plies' damage in every frame of a progressive-damage run (zero before the first step).
 class VtkFrames final : public ImpactObserver {
 public:
   VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const PlateModel& model,
-            VtkOptions options, const DamageTracker* damage)
-      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage) {
+            VtkOptions options, const DamageTracker* damage, bool progressive)
+      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage),
+        progressive_(progressive) {
     std::sort(at_.begin(), at_.end());
   }
   /// The undeformed plate at t = 0 is the first frame, the last step the last one, whatever `every`.
@@ -42,7 +45,15 @@ public:
 
 private:
   void write(const StepView& v) {
-    series_.write(v.step, v.t, v.plate_displacement(), damage_ != nullptr ? damage_->onsets() : none_);
+    const std::vector<DamageOnset>& onsets = damage_ != nullptr ? damage_->onsets() : none_;
+    if (!progressive_) {
+      series_.write(v.step, v.t, v.plate_displacement(), onsets);
+    } else {
+      const DamageField* field = v.damage();
+      const std::vector<ElementPlyDamage> plies =
+          field != nullptr ? field->element_ply_damage() : std::vector<ElementPlyDamage>{};
+      series_.write(v.step, v.t, v.plate_displacement(), onsets, &plies);
+    }
     last_written_ = v.step;
   }
 
@@ -52,6 +63,7 @@ private:
   std::size_t next_ = 0;
   VtkSeries series_;
   const DamageTracker* damage_;
+  bool progressive_;
   std::vector<DamageOnset> none_;
 };
 
@@ -107,7 +119,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
         &vtk.emplace(deck.vtk, folder->path(), model,
                      VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
                                 damage_options_from_deck(deck).criterion_options},
-                     damage ? &*damage : nullptr));
+                     damage ? &*damage : nullptr, deck.damage.progressive.has_value()));
   std::optional<ReportSnapshot> snapshot;
   if (deck.report_displacements_at && plate)
     run.observers.push_back(&snapshot.emplace(*deck.report_displacements_at));
@@ -126,6 +138,10 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
       if (!maps.warning.empty()) out.notes.push_back(maps.warning);
     }
   }
+  if (out.result.progressive)
+    folder->write_text(
+        damage_elements_file,
+        damage_elements_csv(model, PlyDamageTable(model, out.result.progressive->element_ply_damage)));
   if (probes) folder->write_text("probes.csv", probes_csv(*probes));
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,

@@ -1,6 +1,7 @@
 #include "plyimpact/io/plots.hpp"
 
 #include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/ply_damage_maps.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -274,6 +275,9 @@ std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs) {
       PlotSpec damage = damage_area_plot(area, last_time(h));
       if (!damage.curves.empty() || !damage.panels.empty()) p.push_back(std::move(damage));
     }
+    // Progressive damage: a map per ply and the projected map (io/ply_damage_maps.hpp).
+    for (PlotSpec& map : ply_damage_map_plots(runs.front().dir))
+      p.push_back(std::move(map));
   }
   return p;
 }

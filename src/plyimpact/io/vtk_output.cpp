@@ -22,6 +22,7 @@
 
 #include <array>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -96,10 +97,29 @@ std::array<double, 5> components(const PlyStress& s) {
 }
 constexpr std::array<const char*, 5> stress_names{"s11_Pa", "s22_Pa", "t12_Pa", "t13_Pa", "t23_Pa"};
 
+/// The damage variables' array names, in the order of all_damage_modes.
+constexpr std::array<const char*, 4> damage_names{"d_ft", "d_fc", "d_mt", "d_mc"};
+
+/// Progressive damage of the selected plies: plyN_d_ft … plyN_d_mc and plyN_d_max, then damage_max
+/// (largest over every ply and mode: the projected damage).
+void add_ply_damage(vtkCellData& cells, const PlyDamageTable& table, const std::vector<int>& plies,
+                    vtkIdType elements) {
+  for (const int ply : plies) {
+    const int k = ply - 1;
+    for (std::size_t m = 0; m < damage_names.size(); ++m)
+      add_cell_array(cells, fmt::format("ply{}_{}", ply, damage_names[m]), elements,
+                     [&](int e) { return table.of(k, e).values[m]; });
+    add_cell_array(cells, fmt::format("ply{}_d_max", ply), elements,
+                   [&](int e) { return table.largest(k, e); });
+  }
+  add_cell_array(cells, "damage_max", elements, [&](int e) { return table.projected(e); });
+}
+
 } // namespace
 
 void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
-                     const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options) {
+                     const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
+                     const PlyDamageTable* progressive) {
   const Mesh& mesh = model.mesh();
   const vtkIdType nodes = mesh.node_count(), elements = mesh.element_count();
   vtkNew<vtkPoints> points;
@@ -160,6 +180,7 @@ void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen:
     add_cell_array(cells, fmt::format("interface{}_delaminated", interface), elements,
                    [&](int e) { return damage.of_interface(i, e); });
   }
+  if (progressive != nullptr) add_ply_damage(cells, *progressive, selected(options.plies, f.plies), elements);
   write_grid(file, *grid);
 }
 
@@ -173,7 +194,8 @@ constexpr std::array<std::array<int, 4>, 4> q9_sub_quads{
 } // namespace
 
 void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
-                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options) {
+                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
+                      const PlyDamageTable* progressive) {
   const Mesh& mesh = model.mesh();
   const vtkIdType nodes = mesh.node_count();
   // Surfaces s = 0 (impacted face) … N (back face) of each laminate at heights z_s; point
@@ -223,6 +245,13 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
   for (std::size_t c = 0; c < f.criteria.size(); ++c)
     if (!is_interface_criterion(f.criteria[c]))
       indices.emplace_back(c, double_array(fmt::format("{}_index", to_string(f.criteria[c])), count).Get());
+  // Progressive damage: d_ft, d_fc, d_mt, d_mc and their largest, d_max, of the cell's ply.
+  std::vector<vtkSmartPointer<vtkDoubleArray>> ply_damage;
+  if (progressive != nullptr) {
+    for (const char* name : damage_names)
+      ply_damage.push_back(double_array(name, count).Get());
+    ply_damage.push_back(double_array("d_max", count).Get());
+  }
 
   // Ply by ply (cells of ply 1 first), then element by element.
   vtkIdType cell = 0;
@@ -251,6 +280,11 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
           a->SetValue(cell, f.failure_index(c, k, e));
         damaged->SetValue(cell, damage.of_ply(k, e));
         delaminated->SetValue(cell, k + 1 < plies ? damage.of_interface(k, e) : 0.0);
+        if (progressive != nullptr) {
+          for (std::size_t m = 0; m < damage_names.size(); ++m)
+            ply_damage[m]->SetValue(cell, progressive->of(k, e).values[m]);
+          ply_damage.back()->SetValue(cell, progressive->largest(k, e));
+        }
         ++cell;
       }
     }
@@ -263,6 +297,8 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
     data.AddArray(a);
   data.AddArray(damaged);
   data.AddArray(delaminated);
+  for (const auto& a : ply_damage)
+    data.AddArray(a);
   write_grid(file, *grid);
 }
 
@@ -294,11 +330,15 @@ void write_pvd(const fs::path& file, const std::vector<PvdEntry>& entries) {
 VtkSeries::VtkSeries(fs::path dir, const PlateModel& model, VtkOptions options)
     : dir_(std::move(dir)), model_(model), options_(std::move(options)) {}
 
-void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets) {
+void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets,
+                      const std::vector<ElementPlyDamage>* progressive) {
   const std::string plate = fmt::format("paraview/plate_{:07d}.vtu", step);
   const std::string layers = fmt::format("paraview/layers_{:07d}.vtu", step);
-  write_plate_vtu(dir_ / plate, model_, u, onsets, t, options_);
-  write_layers_vtu(dir_ / layers, model_, u, onsets, t, options_);
+  std::optional<PlyDamageTable> table;
+  if (progressive != nullptr) table.emplace(model_, *progressive);
+  const PlyDamageTable* damage = table ? &*table : nullptr;
+  write_plate_vtu(dir_ / plate, model_, u, onsets, t, options_, damage);
+  write_layers_vtu(dir_ / layers, model_, u, onsets, t, options_, damage);
   plate_.push_back({t, plate});
   layers_.push_back({t, layers});
   write_pvd(dir_ / "plate.pvd", plate_);

@@ -6,9 +6,12 @@
 //               u, v, w, θx, θy and the displacement vector (for "Warp By Vector"); cell data per
 //               selected ply: σ̄11, σ̄22, τ̄12, τ̄13, τ̄23 (material axes), failure indices and the
 //               damaged fraction; per selected interface: (τyz, τxz) and the delaminated fraction.
+//               Progressive damage: per selected ply d_ft, d_fc, d_mt, d_mc and their largest, and the
+//               projected damage_max (largest over all plies and modes).
 //   layers.pvd  the laminate in 3-D, one VTK_HEXAHEDRON layer per ply (each Q9 split into its 2×2
 //               node cells), thickness optionally exaggerated; cell data ply number, angle, stresses,
-//               damaged fraction and the delaminated fraction of the interface below.
+//               damaged fraction and the delaminated fraction of the interface below; progressive damage:
+//               d_ft, d_fc, d_mt, d_mc and d_max of the ply.
 //
 // Coordinates are SPEC §1's: z points in the impact direction (the impacted face is z = −h/2).
 // Cell values are sampled at element centres (analysis/element_fields.hpp). Every file is written to
@@ -16,6 +19,7 @@
 // interrupted run leaves valid `.pvd` files listing every frame already written.
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/io/ply_damage_table.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
 #include <Eigen/Core>
@@ -33,12 +37,15 @@ struct VtkOptions {
   CriterionOptions criterion_options;
 };
 
-/// One frame of plate.pvd: the mid-plane grid with its point and cell data.
+/// One frame of plate.pvd: the mid-plane grid with its point and cell data. `progressive`: the plies'
+/// damage of a progressive-damage run (its arrays are written only when given).
 void write_plate_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
-                     const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options);
+                     const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
+                     const PlyDamageTable* progressive = nullptr);
 /// One frame of layers.pvd: the laminate as hexahedra, one layer per ply.
 void write_layers_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
-                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options);
+                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
+                      const PlyDamageTable* progressive = nullptr);
 
 /// A `.pvd` collection: (time, file relative to the .pvd) pairs.
 struct PvdEntry {
@@ -51,8 +58,10 @@ void write_pvd(const std::filesystem::path& file, const std::vector<PvdEntry>& e
 class VtkSeries {
 public:
   VtkSeries(std::filesystem::path dir, const PlateModel& model, VtkOptions options);
-  /// Writes the frame of `step` at time t (seconds) for the plate state u (free DOFs).
-  void write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets);
+  /// Writes the frame of `step` at time t (seconds) for the plate state u (free DOFs); `progressive`:
+  /// the plies' damage of a progressive-damage run (DamageField::element_ply_damage()), null otherwise.
+  void write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets,
+             const std::vector<ElementPlyDamage>* progressive = nullptr);
   [[nodiscard]] std::size_t frames() const { return plate_.size(); }
 
 private:

@@ -1,0 +1,268 @@
+#include "plyimpact/io/ply_damage_maps.hpp"
+
+#include "plyimpact/io/deck.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace plyimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* header =
+    "element,ply,angle_deg,x_m,y_m,d_ft,d_fc,d_mt,d_mc,x1_m,y1_m,x2_m,y2_m,x3_m,y3_m,"
+    "x4_m,y4_m";
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ','))
+    cells.push_back(cell);
+  return cells;
+}
+
+/// Reads the cells of one row by column name.
+class RowReader {
+public:
+  RowReader(const fs::path& csv, const std::string& header_line) : csv_(csv) {
+    const auto names = split(header_line);
+    for (std::size_t i = 0; i < names.size(); ++i)
+      column_[names[i]] = i;
+  }
+  void start(const std::string& line, int number) {
+    cells_ = split(line);
+    line_ = number;
+  }
+  [[nodiscard]] double number(const std::string& name) const {
+    const auto it = column_.find(name);
+    if (it == column_.end()) throw std::runtime_error(fmt::format("{}: no column {}", csv_.string(), name));
+    try {
+      std::size_t used = 0;
+      const std::string& cell = cells_.at(it->second);
+      const double v = std::stod(cell, &used);
+      if (used != cell.size()) throw std::invalid_argument(cell);
+      return v;
+    } catch (const std::exception&) {
+      throw std::runtime_error(fmt::format("{}:{}: {} is not a number", csv_.string(), line_, name));
+    }
+  }
+
+private:
+  fs::path csv_;
+  std::map<std::string, std::size_t> column_;
+  std::vector<std::string> cells_;
+  int line_ = 0;
+};
+
+/// Palette of the maps (ColorBrewer YlOrRd): white only where d = 0, any damage at least pale yellow,
+/// through orange to dark red at d = 1.
+constexpr const char* palette =
+    "set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', "
+    "0.7 '#e31a1c', 1 '#800026')\n";
+
+/// The gnuplot settings of a map over the rows' elements: every element a polygon filled with its value.
+std::string map_settings(const std::vector<const DamageElementRow*>& elements,
+                         const std::vector<double>& values) {
+  double x0 = elements.front()->corners[0].x(), x1 = x0, y0 = elements.front()->corners[0].y(), y1 = y0;
+  for (const DamageElementRow* r : elements)
+    for (const Eigen::Vector2d& c : r->corners) {
+      x0 = std::min(x0, c.x());
+      x1 = std::max(x1, c.x());
+      y0 = std::min(y0, c.y());
+      y1 = std::max(y1, c.y());
+    }
+  std::string s = "unset grid\nset size ratio -1\n";
+  s += fmt::format("set xrange [{:.6f}:{:.6f}]\nset yrange [{:.6f}:{:.6f}]\n", x0 * 1e3, x1 * 1e3, y0 * 1e3,
+                   y1 * 1e3);
+  s += "set cbrange [0:1]\nset cblabel 'damage variable d (white: 0, intact; 1: fully cracked)' noenhanced\n";
+  s += palette;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const auto& c = elements[i]->corners;
+    s += fmt::format(
+        "set object {} polygon from {:.6f},{:.6f} to {:.6f},{:.6f} to {:.6f},{:.6f} to {:.6f},{:.6f} "
+        "to {:.6f},{:.6f} fc palette cb {:.6g} fs solid 1 border lc rgb '#b0b0b0' lw 0.5 back\n",
+        i + 1, c[0].x() * 1e3, c[0].y() * 1e3, c[1].x() * 1e3, c[1].y() * 1e3, c[2].x() * 1e3, c[2].y() * 1e3,
+        c[3].x() * 1e3, c[3].y() * 1e3, c[0].x() * 1e3, c[0].y() * 1e3, values[i]);
+  }
+  return s;
+}
+
+/// The curves of a map: the element centres in the palette (invisible; they make gnuplot draw the colour
+/// box) and the impact point (a white disc, then the marker).
+std::vector<PlotCurve> map_curves(const std::vector<const DamageElementRow*>& elements,
+                                  const std::vector<double>& values,
+                                  const std::optional<Eigen::Vector2d>& impact_point) {
+  PlotCurve centres;
+  centres.data = "x_mm,y_mm,d\n";
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    centres.data += fmt::format("{:.6f},{:.6f},{:.6g}\n", elements[i]->centre.x() * 1e3,
+                                elements[i]->centre.y() * 1e3, values[i]);
+  centres.using_expr = "1:2:3";
+  centres.style = "points pt 5 ps 0 lc palette";
+  std::vector<PlotCurve> curves{centres};
+  if (impact_point) {
+    // A black × on a white disc: visible on white and on dark red alike.
+    PlotCurve disc;
+    disc.data = fmt::format("x_mm,y_mm\n{:.6f},{:.6f}\n", impact_point->x() * 1e3, impact_point->y() * 1e3);
+    disc.using_expr = "1:2";
+    disc.style = "points pt 7 ps 2.2";
+    disc.colour = "#ffffff";
+    PlotCurve cross = disc;
+    cross.style = "points pt 2 ps 2.6";
+    cross.colour = "#000000";
+    cross.title = "impact point";
+    curves.push_back(disc);
+    curves.push_back(cross);
+  }
+  return curves;
+}
+
+PlotSpec map_spec(std::string name, std::string title, const std::vector<const DamageElementRow*>& elements,
+                  const std::vector<double>& values, const std::optional<Eigen::Vector2d>& impact_point) {
+  PlotSpec spec;
+  spec.name = std::move(name);
+  spec.title = std::move(title);
+  spec.xlabel = "x [mm]";
+  spec.ylabel = "y [mm]";
+  spec.key = "at screen 0.98, 0.02 right bottom"; // bottom right corner, clear of the axes and labels
+  spec.extra = map_settings(elements, values);
+  spec.curves = map_curves(elements, values, impact_point);
+  return spec;
+}
+
+/// The impact point of a results folder's deck.toml, or none when the deck cannot be read.
+std::optional<Eigen::Vector2d> impact_point_of(const fs::path& dir) {
+  std::ifstream in(dir / "deck.toml");
+  if (!in) return std::nullopt;
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    const Deck deck = parse_deck(text.str(), (dir / "deck.toml").string());
+    if (deck.impactor) return Eigen::Vector2d(deck.impactor->x, deck.impactor->y);
+  } catch (const std::exception&) {
+    // A deck that no longer reads (e.g. a mesh file moved): the maps go without the marker.
+  }
+  return std::nullopt;
+}
+
+} // namespace
+
+double DamageElementRow::largest() const {
+  return *std::max_element(damage.values.begin(), damage.values.end());
+}
+
+std::string damage_elements_csv(const PlateModel& model, const PlyDamageTable& table) {
+  const Mesh& mesh = model.mesh();
+  std::string csv = std::string(header) + "\n";
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const Laminate& lam = model.laminate_of(e);
+    const Eigen::Vector2d centre = mesh.map(e, 0.0, 0.0);
+    std::string corners;
+    for (std::size_t a = 0; a < 4; ++a) { // corner nodes 0-3 of the Q9, counter-clockwise
+      const Eigen::Vector2d& c = mesh.node(mesh.element_nodes(e)[a]);
+      corners += fmt::format(",{},{}", c.x(), c.y());
+    }
+    for (int k = 0; k < static_cast<int>(lam.ply_count()); ++k) {
+      const auto& d = table.of(k, e).values;
+      csv +=
+          fmt::format("{},{},{},{},{},{},{},{},{}{}\n", e + 1, k + 1, lam.plies()[std::size_t(k)].angle_deg,
+                      centre.x(), centre.y(), d[0], d[1], d[2], d[3], corners);
+    }
+  }
+  return csv;
+}
+
+std::vector<DamageElementRow> read_damage_elements_csv(const fs::path& csv) {
+  std::ifstream in(csv);
+  if (!in) throw std::runtime_error("cannot read " + csv.string());
+  std::string line;
+  std::getline(in, line);
+  RowReader reader(csv, line);
+  std::vector<DamageElementRow> rows;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    reader.start(line, number);
+    DamageElementRow r;
+    r.element = static_cast<int>(reader.number("element"));
+    r.ply = static_cast<int>(reader.number("ply"));
+    r.angle_deg = reader.number("angle_deg");
+    r.centre = {reader.number("x_m"), reader.number("y_m")};
+    const std::array<const char*, 4> modes{"d_ft", "d_fc", "d_mt", "d_mc"};
+    for (std::size_t m = 0; m < modes.size(); ++m)
+      r.damage.values[m] = reader.number(modes[m]);
+    for (std::size_t a = 0; a < 4; ++a)
+      r.corners[a] = {reader.number(fmt::format("x{}_m", a + 1)), reader.number(fmt::format("y{}_m", a + 1))};
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::vector<std::pair<int, double>> projected_damage(const std::vector<DamageElementRow>& rows) {
+  std::vector<std::pair<int, double>> out;
+  std::map<int, std::size_t> index;
+  for (const DamageElementRow& r : rows) {
+    const auto [it, added] = index.emplace(r.element, out.size());
+    if (added) out.emplace_back(r.element, 0.0);
+    out[it->second].second = std::max(out[it->second].second, r.largest());
+  }
+  return out;
+}
+
+std::vector<PlotSpec> ply_damage_map_plots(const std::vector<DamageElementRow>& rows,
+                                           const std::optional<Eigen::Vector2d>& impact_point) {
+  std::vector<PlotSpec> specs;
+  if (rows.empty()) return specs;
+  std::map<int, std::vector<const DamageElementRow*>> plies;
+  std::map<int, const DamageElementRow*> elements; // one row per element, for its geometry
+  for (const DamageElementRow& r : rows) {
+    plies[r.ply].push_back(&r);
+    elements.emplace(r.element, &r);
+  }
+  const int count = plies.rbegin()->first;
+  for (const auto& [ply, members] : plies) {
+    std::vector<double> values;
+    for (const DamageElementRow* r : members)
+      values.push_back(r->largest());
+    const double top = *std::max_element(values.begin(), values.end());
+    const double angle = members.front()->angle_deg;
+    const bool one_angle = std::all_of(members.begin(), members.end(),
+                                       [&](const DamageElementRow* r) { return r->angle_deg == angle; });
+    const std::string orientation = one_angle ? fmt::format("{:g} deg", angle) : "angle varies by region";
+    specs.push_back(map_spec(fmt::format("damage_map_ply{:02d}", ply),
+                             fmt::format("Ply {} of {} ({}): largest of d_ft, d_fc, d_mt, d_mc per element "
+                                         "(max {:.3g})",
+                                         ply, count, orientation, top),
+                             members, values, impact_point));
+  }
+  std::vector<const DamageElementRow*> geometry;
+  std::vector<double> values;
+  std::map<int, double> projected;
+  for (const auto& [element, value] : projected_damage(rows))
+    projected[element] = value;
+  for (const auto& [element, row] : elements) {
+    geometry.push_back(row);
+    values.push_back(projected[element]);
+  }
+  const double top = *std::max_element(values.begin(), values.end());
+  specs.push_back(map_spec("damage_map_projected",
+                           fmt::format("Projected damage: largest damage variable of any ply per element "
+                                       "(max {:.3g})",
+                                       top),
+                           geometry, values, impact_point));
+  return specs;
+}
+
+std::vector<PlotSpec> ply_damage_map_plots(const fs::path& dir) {
+  const fs::path csv = dir / damage_elements_file;
+  if (!fs::exists(csv)) return {};
+  return ply_damage_map_plots(read_damage_elements_csv(csv), impact_point_of(dir));
+}
+
+} // namespace plyimpact

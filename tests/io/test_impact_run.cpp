@@ -1,0 +1,124 @@
+// The outputs of a progressive-damage impact run (io/impact_run): the ParaView frames and
+// damage_elements.csv hold the plies' damage of the run itself — the last frame and the file equal the
+// result's element_ply_damage value for value, elements the run never lists are zero, and damage_max is
+// the largest over plies and modes — on the shipped example examples/damage-progressive.toml.
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/impact_run.hpp"
+#include "plyimpact/io/ply_damage_maps.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string example_text() {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/damage-progressive.toml");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& file) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+/// The files of a .pvd collection, in order.
+std::vector<std::string> pvd_files(const fs::path& pvd) {
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(pvd.string().c_str());
+  EXPECT_EQ(parser->Parse(), 1);
+  vtkXMLDataElement* collection = parser->GetRootElement()->FindNestedElementWithName("Collection");
+  std::vector<std::string> files;
+  for (int i = 0; collection != nullptr && i < collection->GetNumberOfNestedElements(); ++i)
+    files.emplace_back(collection->GetNestedElement(i)->GetAttribute("file"));
+  return files;
+}
+
+TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamageElementsCsv) {
+  const Deck deck = parse_deck(example_text() + "[output]\nvtk_every = 100\n", "damage-progressive.toml");
+  const ImpactCase impact(impact_case_description(deck));
+  const fs::path dir = fs::temp_directory_path() / "plyimpact-impact-run-progressive";
+  fs::remove_all(dir);
+  ImpactRunOptions options;
+  options.output_dir = dir;
+  options.pictures = false;
+  const ImpactRunOutcome out = run_impact(deck, impact, options);
+  ASSERT_TRUE(out.result.progressive.has_value());
+  const std::vector<ElementPlyDamage>& list = out.result.progressive->element_ply_damage;
+  const int elements = 144, plies = 4; // 12 × 12 mesh, [0/90]s
+  // (element, ply) → damage of the run; the projected value per element.
+  std::map<std::pair<int, int>, PerDamageMode> listed;
+  std::vector<double> projected(elements, 0.0);
+  double largest = 0.0;
+  for (const ElementPlyDamage& d : list) {
+    listed[{d.element, d.ply}] = d.damage;
+    for (const double v : d.damage.values) {
+      projected[std::size_t(d.element)] = std::max(projected[std::size_t(d.element)], v);
+      largest = std::max(largest, v);
+    }
+  }
+  ASSERT_GT(largest, 0.5); // the example cracks ply 4 (projected damage area 12.6 mm²)
+
+  const auto frames = pvd_files(dir / "plate.pvd");
+  ASSERT_GE(frames.size(), 3U); // t = 0, every 100 steps, the last step
+  const auto last = read_vtu(dir / frames.back());
+  vtkCellData& cells = *last->GetCellData();
+  const std::array<const char*, 4> names{"d_ft", "d_fc", "d_mt", "d_mc"};
+  int nonzero = 0;
+  for (int k = 0; k < plies; ++k)
+    for (std::size_t m = 0; m < 4; ++m) {
+      vtkDataArray* a = cells.GetArray(fmt::format("ply{}_{}", k + 1, names[m]).c_str());
+      ASSERT_NE(a, nullptr) << k << names[m];
+      for (int e = 0; e < elements; ++e) {
+        const auto it = listed.find({e, k});
+        const double expected = it == listed.end() ? 0.0 : it->second.values[m];
+        EXPECT_EQ(a->GetTuple1(e), expected) << "ply " << k + 1 << " " << names[m] << " element " << e;
+        nonzero += expected > 0.0 ? 1 : 0;
+      }
+    }
+  EXPECT_GT(nonzero, 0);
+  vtkDataArray* damage_max = cells.GetArray("damage_max");
+  ASSERT_NE(damage_max, nullptr);
+  for (int e = 0; e < elements; ++e)
+    EXPECT_EQ(damage_max->GetTuple1(e), projected[std::size_t(e)]) << "element " << e;
+  // The first frame (t = 0, before any step) has the arrays, all zero.
+  const auto first_frame = read_vtu(dir / frames.front());
+  vtkDataArray* first = first_frame->GetCellData()->GetArray("damage_max");
+  ASSERT_NE(first, nullptr);
+  for (int e = 0; e < elements; ++e)
+    EXPECT_EQ(first->GetTuple1(e), 0.0);
+
+  // damage_elements.csv: one row per element and ply, the run's values (shortest text reads back exactly).
+  const auto rows = read_damage_elements_csv(dir / damage_elements_file);
+  ASSERT_EQ(rows.size(), std::size_t(elements * plies));
+  for (const DamageElementRow& r : rows) {
+    const auto it = listed.find({r.element - 1, r.ply - 1});
+    for (std::size_t m = 0; m < 4; ++m)
+      EXPECT_EQ(r.damage.values[m], it == listed.end() ? 0.0 : it->second.values[m])
+          << "element " << r.element << " ply " << r.ply;
+  }
+}
+
+} // namespace
+} // namespace plyimpact
