@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace plyimpact {
@@ -276,6 +277,23 @@ TEST(SweepSpec, ImpactorOnlyCasesShareThePlateKey) {
       {"laminate.layup=[0/90]s,[0_2/90_4/0_2]", "impactor.velocity=1,2", "impactor.radius=0.005,0.01"});
   EXPECT_EQ(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(3)));
   EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(4)));
+}
+
+/// The text of examples/`name`.
+std::string example_text(const std::string& name) {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/" + name);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(SweepSpec, TheProgressiveDamageModelIsPartOfThePlateKey) {
+  // The progressive model makes the plate's step policy: cases that differ in it cannot share a case.
+  // The onset keys (criteria, every) only watch a run: cases that differ in them can.
+  const Sweep s = Sweep::from_text(example_text("damage-progressive.toml"), "deck.toml",
+                                   {"damage.alpha=0,0.5", "damage.every=1,2"});
+  EXPECT_EQ(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(1)));
+  EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(2)));
 }
 
 fs::path scratch(const std::string& name) {
