@@ -52,6 +52,13 @@ constexpr std::array<Column, 14> result_columns{{
     {"first_failure_interface", "first_failure_interface"},
     {"threshold_velocity_m_per_s", "threshold_velocity"},
 }};
+/// Columns added later, after `error`, so that every earlier column keeps its place (scripts that read
+/// the table by position). Empty where they do not apply: onset damage and threshold runs compute no
+/// dissipation or damaged area.
+constexpr std::array<Column, 2> later_columns{{
+    {"damage_dissipation_J", "damage_dissipation"},
+    {"damage_area_m2", "damage_area"},
+}};
 
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
@@ -250,6 +257,8 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
   for (const Column& c : result_columns)
     add(c.header);
   add("error");
+  for (const Column& c : later_columns)
+    add(c.header);
   csv += '\n';
   for (const nlohmann::json& r : records) {
     csv += fmt::format("{}", r.at("case").get<std::size_t>());
@@ -257,9 +266,14 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
       add(csv_field(v.get<std::string>()));
     add(cell(r.at("status")));
     const nlohmann::json& results = r.at("results");
+    const auto result_cell = [&results](const Column& c) {
+      return cell(results.contains(c.key) ? results.at(c.key) : nlohmann::json(nullptr));
+    };
     for (const Column& c : result_columns)
-      add(cell(results.contains(c.key) ? results.at(c.key) : nlohmann::json(nullptr)));
+      add(result_cell(c));
     add(cell(r.value("error", nlohmann::json(nullptr))));
+    for (const Column& c : later_columns)
+      add(result_cell(c));
     csv += '\n';
   }
   return csv;
@@ -325,6 +339,10 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
   results["contacts"] = r.episodes.size();
   results["steps"] = r.steps;
   results["dt"] = o.settings.dt;
+  if (r.progressive) { // ply damage (docs/progressive_damage.md); absent for onset runs
+    results["damage_dissipation"] = r.progressive->dissipated.sum();
+    results["damage_area"] = r.progressive->projected_damage_area;
+  }
   if (o.damage_tracked)
     put_first_failure(results, o.first_failures.empty()
                                    ? std::nullopt
