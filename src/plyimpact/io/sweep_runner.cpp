@@ -9,6 +9,7 @@
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/results.hpp"
+#include "plyimpact/io/threshold_run.hpp"
 
 #include <fmt/format.h>
 
@@ -98,6 +99,16 @@ void put_first_failure(nlohmann::json& results, const std::optional<DamageOnset>
   results["first_failure_ply"] = f && f->ply > 0 ? nlohmann::json(f->ply) : nlohmann::json(nullptr);
   results["first_failure_interface"] =
       f && f->interface > 0 ? nlohmann::json(f->interface) : nlohmann::json(nullptr);
+}
+
+/// The first_failure_* columns of a damage threshold: the damage found at the threshold velocity
+/// (criterion "matrix-damage", mode "matrix-tension", its ply; no interface).
+void put_damage_reached(nlohmann::json& results, const std::string& criterion, const DamageReached& d) {
+  results["first_failure_time"] = d.time;
+  results["first_failure_criterion"] = criterion;
+  results["first_failure_mode"] = std::string(to_string(d.mode));
+  results["first_failure_ply"] = d.ply;
+  results["first_failure_interface"] = nullptr;
 }
 
 } // namespace
@@ -296,10 +307,9 @@ namespace {
 /// The threshold search of one case (its own ImpactCase: the search shares it between its trials).
 void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::optional<fs::path>& case_dir) {
   nlohmann::json& results = record["results"];
-  std::string name = deck.threshold.criterion;
-  if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
-  if (name.empty())
+  if (deck.threshold.criterion.empty() && deck.damage.criteria.empty())
     throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
+  const ThresholdCriterion criterion = threshold_criterion(deck, "");
   const ImpactCaseDescription description = impact_case_description(deck);
   check_memory_before_assembly(description);
   const ImpactCase impact(description);
@@ -307,19 +317,22 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   to.tolerance = deck.threshold.tolerance;
   to.max_velocity = deck.threshold.max_velocity;
   to.damage = damage_options_from_deck(deck);
-  const ThresholdResult r = find_threshold_velocity(impact, *parse_criterion(name), to);
+  const ThresholdResult r = search_threshold(impact, criterion, to);
   results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
-  results["threshold_criterion"] = name;
-  put_first_failure(results, r.first_failure);
+  results["threshold_criterion"] = criterion.name;
+  if (r.damage)
+    put_damage_reached(results, criterion.name, *r.damage);
+  else
+    put_first_failure(results, r.first_failure);
   record["status"] = r.found ? "ok" : "incomplete";
   if (!r.found)
-    record["error"] = fmt::format("no failure below threshold.max_velocity = {} m/s", to.max_velocity);
+    record["error"] = fmt::format(
+        "no {} below threshold.max_velocity = {} m/s",
+        std::holds_alternative<DamageCriterion>(criterion.criterion) ? "damage" : "failure", to.max_velocity);
   if (case_dir) {
     const ResultsFolder out(*case_dir, deck);
     nlohmann::json j = summary_header(deck, "threshold");
-    j["criterion"] = name;
-    j["threshold_velocity"] = results["threshold_velocity"];
-    j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
+    put_threshold_summary(j, criterion, r);
     out.write_json("summary.json", j);
   }
 }
