@@ -25,6 +25,7 @@
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/progress.hpp"
 #include "plyimpact/io/results.hpp"
+#include "plyimpact/io/threshold_run.hpp"
 #include "plyimpact/io/vtk_output.hpp"
 #include "sweep_command.hpp"
 
@@ -260,13 +261,7 @@ int run_threshold(const Options& o) {
   const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
   check_memory_before_assembly(description); // a graded mesh: its node count
   const OutputLock lock = claim_folder(o, deck);
-  std::string name = !o.criterion.empty() ? o.criterion : deck.threshold.criterion;
-  if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
-  if (name.empty())
-    throw DeckError(fmt::format("{}: error: give --criterion NAME or [threshold] criterion", deck.source));
-  const auto criterion = parse_criterion(name);
-  if (!criterion) throw DeckError(unknown_criterion(deck.source + ": error: --criterion", name));
-  const PlateModel model = plate_model(deck);
+  const ThresholdCriterion criterion = threshold_criterion(deck, o.criterion);
   ThresholdOptions options;
   options.tolerance = o.tolerance > 0.0 ? o.tolerance : deck.threshold.tolerance;
   options.max_velocity = deck.threshold.max_velocity;
@@ -278,19 +273,19 @@ int run_threshold(const Options& o) {
     const ThresholdTrial& t = trials.back();
     progress.update(bracket_progress(trials, options.tolerance),
                     fmt::format("trial {}: v = {:.4g} m/s {}", trials.size(), t.velocity,
-                                t.failed ? "fails" : fmt::format("holds, peak index {:.3f}", t.peak_index)));
+                                t.failed             ? std::string("fails")
+                                : t.peak_index > 0.0 ? fmt::format("holds, peak index {:.3f}", t.peak_index)
+                                                     : std::string("holds")));
   };
-  const ThresholdResult r = find_threshold_velocity(impact, *criterion, options);
+  const ThresholdResult r = search_threshold(impact, criterion, options);
   progress.finish(fmt::format("{} trials", r.trials.size()));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("{}", threshold_text(name, r));
+  fmt::print("{}", threshold_text(criterion.name, r));
   if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = summary_header(deck, "threshold");
-    j["criterion"] = name;
-    j["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
+    put_threshold_summary(j, criterion, r);
     j["lower_velocity"] = r.lower;
     j["tolerance"] = options.tolerance;
-    j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
     j["trials"] = nlohmann::json::array();
     for (const auto& t : r.trials)
       j["trials"].push_back({{"velocity", t.velocity}, {"failed", t.failed}, {"peak_index", t.peak_index}});
@@ -369,7 +364,10 @@ int run(int argc, char** argv) {
   CLI::App* impact =
       add_analysis(app, "impact", "Impact of a rigid sphere: contact force, deflection, energies", o);
   CLI::App* threshold = add_analysis(
-      app, "threshold", "Smallest impact velocity at which a failure criterion first reaches 1", o);
+      app, "threshold",
+      "Smallest impact velocity at which a failure criterion first reaches 1 (or, with progressive "
+      "damage, the plies are damaged)",
+      o);
   threshold->add_option("--criterion", o.criterion,
                         "criterion name (default: [threshold] or the first [damage] one)");
   threshold->add_option("--tolerance", o.tolerance, "bracket width in m/s (default 0.01)");

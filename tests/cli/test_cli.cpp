@@ -164,6 +164,21 @@ TEST(Cli, AMisspeltCriterionOnTheCommandLineGetsADidYouMean) {
       << r.out;
 }
 
+TEST(Cli, ADamageCriterionOnAnOnsetDeckSaysToSetTheProgressiveModel) {
+  const CommandResult r = run("threshold " + std::string(PLYIMPACT_SOURCE_DIR) +
+                              "/examples/thesis-4.3-threshold-0_2-90_2-0_2.toml --criterion matrix-damage");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("criterion \"matrix-damage\" looks for ply damage, which only the progressive damage "
+                       "model computes: set [damage] model = \"progressive\""),
+            std::string::npos)
+      << r.out;
+  const CommandResult area = run("threshold " + std::string(PLYIMPACT_SOURCE_DIR) +
+                                 "/examples/threshold-matrix-damage.toml --criterion damage-area");
+  EXPECT_EQ(area.status, 2);
+  EXPECT_NE(area.out.find("criterion \"damage-area\" needs [threshold] damage_area"), std::string::npos)
+      << area.out;
+}
+
 TEST(Cli, UnrestrainedStaticPlateIsAClearErrorNotNaN) {
   const fs::path dir = scratch("free");
   std::string text = small_deck("static", "[load]\npressure = 1e5\n");

@@ -275,6 +275,36 @@ TEST(SweepCli, ThresholdSweepGivesTheThresholdCommandsVelocityBitForBit) {
   EXPECT_NEAR(v_alone, 6.628, 0.0005); // docs/validation.md §13, "ours, deck"
 }
 
+TEST(SweepCli, ADamageThresholdSweepGivesTheThresholdCommandsVelocityAndTheDamageFound) {
+  // The matrix-damage threshold of examples/threshold-matrix-damage.toml at 0.05 m/s, for 30 g and
+  // 60 g: the 30 g case is the threshold command's search bit for bit, and the first_failure_* columns
+  // say what was found there (matrix tension in the bottom ply 4, as the command's damage_reached).
+  // Twice the mass at the same velocity loads the plate more: its threshold velocity is lower.
+  const fs::path dir = scratch("sweep-damage-threshold");
+  const std::string deck = std::string(PLYIMPACT_SOURCE_DIR) + "/examples/threshold-matrix-damage.toml";
+  const CommandResult alone = shell("timeout 300 " + std::string(PLYIMPACT_EXE) + " threshold " + deck +
+                                    " --tolerance 0.05 -o " + (dir / "alone").string());
+  ASSERT_EQ(alone.status, 0) << alone.out;
+  const CommandResult s = sweep(deck + " -o " + (dir / "sweep").string() +
+                                " --set threshold.tolerance=0.05 --set impactor.mass=0.03,0.06");
+  ASSERT_EQ(s.status, 0) << s.out;
+  const nlohmann::json j = nlohmann::json::parse(read_text(dir / "alone" / "summary.json"));
+  const std::string table = read_text(dir / "sweep" / "sweep.csv");
+  std::printf("  matrix-damage threshold: 30 g %s m/s (threshold command %.17g), 60 g %s m/s\n",
+              field(table, 1, "threshold_velocity_m_per_s").c_str(), j["threshold_velocity"].get<double>(),
+              field(table, 2, "threshold_velocity_m_per_s").c_str());
+  EXPECT_EQ(std::stod(field(table, 1, "threshold_velocity_m_per_s")), j["threshold_velocity"].get<double>());
+  EXPECT_EQ(field(table, 1, "first_failure_criterion"), "matrix-damage");
+  EXPECT_EQ(field(table, 1, "first_failure_mode"), j["damage_reached"]["mode"].get<std::string>());
+  EXPECT_EQ(field(table, 1, "first_failure_mode"), "matrix-tension");
+  EXPECT_EQ(std::stoi(field(table, 1, "first_failure_ply")), j["damage_reached"]["ply"].get<int>());
+  EXPECT_EQ(std::stod(field(table, 1, "first_failure_time_s")), j["damage_reached"]["time"].get<double>());
+  EXPECT_EQ(field(table, 1, "first_failure_interface"), "");
+  EXPECT_EQ(field(table, 1, "damage_dissipation_J"), ""); // a threshold computes no dissipation
+  EXPECT_LT(std::stod(field(table, 2, "threshold_velocity_m_per_s")),
+            std::stod(field(table, 1, "threshold_velocity_m_per_s")));
+}
+
 TEST(SweepCli, CaseFoldersHoldEachCasesOwnResults) {
   const fs::path dir = scratch("sweep-folders");
   const fs::path deck = twelve_case_deck(dir);

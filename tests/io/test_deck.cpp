@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace plyimpact {
@@ -285,6 +288,78 @@ TEST(Deck, OversizeElementsChooseBetweenTheErrorAndLoweredStrengths) {
   const std::string onset = message("oversize = \"reduce-strength\"\n");
   EXPECT_NE(onset.find("damage.oversize belongs to the progressive damage model"), std::string::npos)
       << onset;
+}
+
+std::string threshold_example() {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/threshold-matrix-damage.toml");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The error parse_deck gives for `text`, or "(no error)".
+std::string deck_error(const std::string& text) {
+  try {
+    (void)parse_deck(text, "deck.toml");
+  } catch (const DeckError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+/// "deck.toml:N:" for the 1-based line N of `text` that starts with `start`.
+std::string line_of(const std::string& text, const std::string& start) {
+  const auto at = text.find("\n" + start);
+  EXPECT_NE(at, std::string::npos) << start;
+  return "deck.toml:" +
+         std::to_string(std::count(text.begin(), text.begin() + static_cast<long>(at) + 1, '\n') + 1) + ":";
+}
+
+TEST(Deck, DamageThresholdCriteriaAreReadAndChecked) {
+  const std::string text = threshold_example();
+  EXPECT_EQ(parse_deck(text, "deck.toml").threshold.criterion, "matrix-damage");
+  // With the onset model the plies never crack: an error at the criterion that says what to set.
+  const std::string onset = replace_line(text, "model = \"progressive\"", "model = \"onset\"");
+  const std::string e = deck_error(onset);
+  EXPECT_NE(e.find(line_of(onset, "criterion = ")), std::string::npos) << e;
+  EXPECT_NE(e.find("threshold.criterion = \"matrix-damage\" looks for ply damage, which only the progressive "
+                   "damage model computes: set [damage] model = \"progressive\""),
+            std::string::npos)
+      << e;
+  // "damage-area" needs its limit, and a limit needs "damage-area".
+  const std::string no_limit =
+      replace_line(text, "criterion = \"matrix-damage\"", "criterion = \"damage-area\"");
+  EXPECT_NE(
+      deck_error(no_limit).find("threshold.criterion = \"damage-area\" needs threshold.damage_area, the "
+                                "projected damaged area to exceed (in m^2)"),
+      std::string::npos)
+      << deck_error(no_limit);
+  const std::string limit = no_limit + "damage_area = 5e-6\n";
+  EXPECT_EQ(parse_deck(limit, "deck.toml").threshold.damage_area, 5e-6);
+  const std::string stray = text + "damage_area = 5e-6\n";
+  const std::string s = deck_error(stray);
+  EXPECT_NE(s.find(line_of(stray, "damage_area = ")), std::string::npos) << s;
+  EXPECT_NE(s.find("threshold.damage_area is the limit of criterion = \"damage-area\", but the criterion is "
+                   "\"matrix-damage\""),
+            std::string::npos)
+      << s;
+  // A misspelt name is offered the damage criteria too.
+  const std::string typo = replace_line(text, "\"matrix-damage\"", "\"matrix-damag\"");
+  EXPECT_NE(deck_error(typo).find("unknown criterion \"matrix-damag\" (did you mean \"matrix-damage\"?)"),
+            std::string::npos)
+      << deck_error(typo);
+}
+
+TEST(Deck, TheDamageAreaLimitIsInSquareMillimetresInMillimetreDecks) {
+  const Deck d = parse_deck(R"(units = "mm-N-MPa-tonne"
+[damage]
+model = "progressive"
+[threshold]
+criterion = "damage-area"
+damage_area = 5.0
+)",
+                            "deck.toml");
+  EXPECT_DOUBLE_EQ(d.threshold.damage_area.value(), 5e-6);
 }
 
 TEST(Deck, UnreadableFileIsAClearError) {

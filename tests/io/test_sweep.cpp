@@ -1,6 +1,7 @@
 // Parameter sweeps (docs/sweep.md): the [sweep] table and --set options, case numbering, the
 // documented random sequence, errors before any case runs, and cases computed in-process against
-// the Hertz closed form and against a stand-alone run of the same deck.
+// the Hertz closed form and against a stand-alone run of the same deck; progressive-damage cases
+// (absorbed energy, damage dissipation and damaged area columns) against stand-alone runs.
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
@@ -8,12 +9,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace plyimpact {
 namespace {
@@ -278,6 +282,30 @@ TEST(SweepSpec, ImpactorOnlyCasesShareThePlateKey) {
   EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(4)));
 }
 
+/// The text of examples/`name`.
+std::string example_text(const std::string& name) {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/" + name);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(SweepSpec, TheProgressiveDamageModelIsPartOfThePlateKey) {
+  // The progressive model makes the plate's step policy: cases that differ in it cannot share a case.
+  // The onset keys (criteria, every) only watch a run: cases that differ in them can.
+  const Sweep s = Sweep::from_text(example_text("damage-progressive.toml"), "deck.toml",
+                                   {"damage.alpha=0,0.5", "damage.every=1,2"});
+  EXPECT_EQ(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(1)));
+  EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(2)));
+}
+
+std::string read_text_file(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("plyimpact-sweep-" + name);
   fs::remove_all(dir);
@@ -344,6 +372,83 @@ TEST(SweepRun, SharedFactorizationGivesTheStandAloneNumbersBitForBit) {
   EXPECT_GT(alone.peak_force, 0.0);
   std::printf("  case 5 alone: F_max %.17g N; in the sweep %.17g N\n", alone.peak_force,
               a[5]["results"]["peak_force"].get<double>());
+}
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream l(line);
+    for (std::string c; std::getline(l, c, ',');)
+      cells.push_back(c);
+    if (line.ends_with(',')) cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+std::size_t column(const std::vector<std::string>& header, const std::string& name) {
+  const auto it = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(it, header.end()) << name;
+  return static_cast<std::size_t>(it - header.begin());
+}
+
+TEST(SweepRun, ProgressiveColumnsAreThoseOfStandAloneRuns) {
+  // 16 mJ first, then 4 mJ on the same (shared) case: the damaged run leaves nothing behind, the 4 mJ
+  // case (0.516 m/s, below the matrix-damage threshold 0.5625 m/s of this plate) has no damage. Each
+  // case against a stand-alone run of its deck: absorbed energy = ½ m v0² − ½ m v_rebound², damage
+  // dissipation and projected damaged area the run's own.
+  const Sweep s = Sweep::from_text(example_text("sweep-damage-progressive.toml"), "deck.toml",
+                                   {"impactor.energy=0.016,0.004"});
+  const fs::path dir = scratch("progressive");
+  int factorizations = 0;
+  const auto records = run_in_process(s, dir, 1, true, &factorizations);
+  EXPECT_EQ(factorizations, 1);
+  const auto rows = csv_rows(read_text_file(dir / "sweep.csv"));
+  ASSERT_EQ(rows.size(), 3U);
+  const auto& header = rows[0];
+  // The columns of before keep their places; the damage columns follow `error`.
+  EXPECT_EQ(column(header, "threshold_velocity_m_per_s"), 16U);
+  EXPECT_EQ(column(header, "error"), 17U);
+  EXPECT_EQ(column(header, "damage_dissipation_J"), 18U);
+  EXPECT_EQ(column(header, "damage_area_m2"), 19U);
+  const double m = 0.03;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& row = rows[i + 1];
+    ASSERT_EQ(row.size(), header.size()) << i;
+    const Deck deck = s.deck_for(s.case_at(i));
+    const ImpactResult alone = ImpactCase(impact_case_description(deck)).run();
+    ASSERT_TRUE(alone.rebound_velocity && alone.progressive);
+    const double v0 = std::sqrt(2.0 * std::stod(row[1]) / m), vr = *alone.rebound_velocity;
+    const double absorbed = std::stod(row[column(header, "absorbed_energy_J")]);
+    std::printf("  E = %s J: absorbed %.6g J (1/2 m (v0^2 - vr^2) = %.6g J), dissipation %s J, area %s m^2\n",
+                row[1].c_str(), absorbed, 0.5 * m * v0 * v0 - 0.5 * m * vr * vr,
+                row[column(header, "damage_dissipation_J")].c_str(),
+                row[column(header, "damage_area_m2")].c_str());
+    EXPECT_NEAR(absorbed, 0.5 * m * v0 * v0 - 0.5 * m * vr * vr, 1e-12 * 0.5 * m * v0 * v0);
+    EXPECT_EQ(std::stod(row[column(header, "damage_dissipation_J")]), alone.progressive->dissipated.sum());
+    EXPECT_EQ(std::stod(row[column(header, "damage_area_m2")]), alone.progressive->projected_damage_area);
+  }
+  EXPECT_GT(std::stod(rows[1][column(header, "damage_area_m2")]), 0.0); // 16 mJ cracks the bottom ply
+  EXPECT_EQ(rows[2][column(header, "damage_dissipation_J")], "0");      // 4 mJ does not
+  EXPECT_EQ(rows[2][column(header, "damage_area_m2")], "0");
+}
+
+TEST(SweepRun, OnsetRunsLeaveTheDamageColumnsEmpty) {
+  // An elastic plate computes no dissipation or damaged area: empty, not 0 (which would claim no damage).
+  const Sweep s = Sweep::from_text(rigid_deck(""), "deck.toml", {"impactor.velocity=1,2"});
+  const fs::path dir = scratch("onset-columns");
+  int factorizations = 0;
+  (void)run_in_process(s, dir, 1, true, &factorizations);
+  const auto rows = csv_rows(read_text_file(dir / "sweep.csv"));
+  ASSERT_EQ(rows.size(), 3U);
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), rows[0].size());
+    EXPECT_NE(rows[r][column(rows[0], "absorbed_energy_J")], "");
+    EXPECT_EQ(rows[r][column(rows[0], "damage_dissipation_J")], "");
+    EXPECT_EQ(rows[r][column(rows[0], "damage_area_m2")], "");
+  }
 }
 
 } // namespace

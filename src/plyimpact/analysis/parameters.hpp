@@ -72,6 +72,8 @@ struct ThresholdSettings {
   std::string criterion;     ///< empty: the first of [damage] criteria
   double tolerance = 0.01;   ///< [m/s]
   double max_velocity = 500; ///< [m/s]
+  /// criterion "damage-area": the projected damaged area to exceed [m²]
+  std::optional<double> damage_area;
 };
 
 /// A point where stress histories are written: ply (1-based) at z = top | bottom | average, or an

@@ -75,6 +75,11 @@ std::string threshold_text(const std::string& criterion, const ThresholdResult& 
   if (!r.found) return t + "no failure up to the velocity limit\n";
   t += fmt::format("{:.4f} m/s (no failure at {:.4f} m/s), {} runs\n", r.velocity, r.lower, r.trials.size());
   if (r.first_failure) t += first_failures_text({*r.first_failure});
+  if (r.damage)
+    t += fmt::format("  {} damage in ply {}, element {}, at {:.2f} us, Fc = {:.1f} N; projected damage area "
+                     "{:.3f} mm^2\n",
+                     to_string(r.damage->mode), r.damage->ply, r.damage->element, r.damage->time * 1e6,
+                     r.damage->force, r.damage->projected_area * 1e6);
   return t;
 }
 

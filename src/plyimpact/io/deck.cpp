@@ -141,7 +141,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("modal")) d.modal = read_modal(*t);
   if (const auto t = top.optional_table("buckling")) d.buckling = read_buckling(*t);
   if (const auto t = top.optional_table("damage")) d.damage = read_damage(*t, d);
-  if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t);
+  if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
   d.warnings = plausibility_warnings(d);
   return d;

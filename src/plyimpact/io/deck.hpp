@@ -111,5 +111,7 @@ void require_sections(const Deck& deck, AnalysisKind kind);
 
 /// "WHAT: unknown criterion "NAME" (did you mean "tsai-wu"?)", or with the list of the known names.
 [[nodiscard]] std::string unknown_criterion(std::string_view what, std::string_view name);
+/// The same for a threshold criterion: the failure criteria and the damage criteria ("fibre-damage", …).
+[[nodiscard]] std::string unknown_threshold_criterion(std::string_view what, std::string_view name);
 
 } // namespace plyimpact

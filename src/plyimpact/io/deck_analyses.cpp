@@ -1,21 +1,43 @@
 #include "plyimpact/io/deck_tables.hpp"
 
+#include "plyimpact/analysis/threshold_search.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
 #include <fmt/format.h>
 
 namespace plyimpact {
 
-std::string unknown_criterion(std::string_view what, std::string_view name) {
-  std::vector<std::string> names;
+namespace {
+
+std::string unknown_name(std::string_view what, std::string_view name,
+                         const std::vector<std::string>& names) {
   std::string list;
-  for (const Criterion k : all_criteria()) {
-    names.emplace_back(to_string(k));
-    list += (list.empty() ? "" : " | ") + names.back();
-  }
+  for (const auto& n : names)
+    list += (list.empty() ? "" : " | ") + n;
   if (const auto best = closest_name(name, names))
     return fmt::format("{}: unknown criterion \"{}\" (did you mean \"{}\"?)", what, name, *best);
   return fmt::format("{}: unknown criterion \"{}\": expected one of {}", what, name, list);
+}
+
+std::vector<std::string> failure_criterion_names() {
+  std::vector<std::string> names;
+  for (const Criterion k : all_criteria())
+    names.emplace_back(to_string(k));
+  return names;
+}
+
+} // namespace
+
+std::string unknown_criterion(std::string_view what, std::string_view name) {
+  return unknown_name(what, name, failure_criterion_names());
+}
+
+std::string unknown_threshold_criterion(std::string_view what, std::string_view name) {
+  std::vector<std::string> names = failure_criterion_names();
+  for (const auto k : {DamageCriterion::Kind::fibre_damage, DamageCriterion::Kind::matrix_damage,
+                       DamageCriterion::Kind::damage_area})
+    names.emplace_back(to_string(k));
+  return unknown_name(what, name, names);
 }
 
 } // namespace plyimpact
@@ -135,15 +157,35 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
   return damage;
 }
 
-ThresholdSettings read_threshold(const TableReader& t) {
+ThresholdSettings read_threshold(const TableReader& t, const Deck& d) {
   ThresholdSettings threshold;
-  t.only({"criterion", "tolerance", "max_velocity"});
+  t.only({"criterion", "tolerance", "max_velocity", "damage_area"});
   if (const auto c = t.optional_string("criterion")) {
-    if (!parse_criterion(*c)) t.fail_at("criterion", unknown_criterion("threshold.criterion", *c));
+    const auto damage = parse_damage_criterion(*c);
+    if (!damage && !parse_criterion(*c))
+      t.fail_at("criterion", unknown_threshold_criterion("threshold.criterion", *c));
+    if (damage && !d.damage.progressive)
+      t.fail_at("criterion", fmt::format("threshold.criterion = \"{}\" looks for ply damage, which only the "
+                                         "progressive damage model computes: set [damage] model = "
+                                         "\"progressive\" (and the materials' G_ft, G_fc, G_mt, G_mc)",
+                                         *c));
     threshold.criterion = *c;
   }
   threshold.tolerance = t.optional_positive("tolerance", "m/s").value_or(0.01);
   threshold.max_velocity = t.optional_positive("max_velocity", "m/s").value_or(500.0);
+  threshold.damage_area = t.optional_positive("damage_area", "m^2");
+  const bool area_criterion =
+      parse_damage_criterion(threshold.criterion) == DamageCriterion::Kind::damage_area;
+  if (area_criterion && !threshold.damage_area)
+    t.fail_at("criterion",
+              fmt::format("threshold.criterion = \"damage-area\" needs threshold.damage_area, the "
+                          "projected damaged area to exceed (in {})",
+                          t.deck_unit("m^2")));
+  if (threshold.damage_area && !threshold.criterion.empty() && !area_criterion)
+    t.fail_at("damage_area", fmt::format("threshold.damage_area is the limit of criterion = \"damage-area\", "
+                                         "but the criterion is \"{}\": remove damage_area or set "
+                                         "criterion = \"damage-area\"",
+                                         threshold.criterion));
   return threshold;
 }
 

@@ -45,7 +45,8 @@ void read_nonlinear_keys(const TableReader& top, Deck& d);
 [[nodiscard]] ModalSettings read_modal(const TableReader& t);
 [[nodiscard]] BucklingSettings read_buckling(const TableReader& t);
 [[nodiscard]] DamageSettings read_damage(const TableReader& t, const Deck& d);
-[[nodiscard]] ThresholdSettings read_threshold(const TableReader& t);
+/// [threshold]; `d` has its [damage] already (damage criteria need the progressive model).
+[[nodiscard]] ThresholdSettings read_threshold(const TableReader& t, const Deck& d);
 
 // deck_output.cpp
 void read_output(const TableReader& t, Deck& d);

@@ -16,9 +16,10 @@ struct UnitRow {
 };
 
 // 1 N/mm^1.5 = 1 N / (1e-3 m)^1.5 = 1e3·√1e3 N/m^1.5 (not a power of ten: the only inexact factor).
-const std::array<UnitRow, 12> rows{{
+const std::array<UnitRow, 13> rows{{
     {"-", {1.0, 1.0, "-"}},
     {"m", {1.0, 1e3, "mm"}},
+    {"m^2", {1.0, 1e6, "mm^2"}},
     {"Pa", {1e6, 1.0, "MPa"}},
     {"kg", {1e3, 1.0, "tonne"}},
     {"kg/m^3", {1e12, 1.0, "tonne/mm^3"}},

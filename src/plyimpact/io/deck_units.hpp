@@ -17,7 +17,7 @@ enum class UnitSystem { si, mm_n_mpa_tonne };
 /// "SI, mm-N-MPa-tonne": the names parse_unit_system accepts.
 [[nodiscard]] std::string unit_system_names();
 
-/// How a number written in `units` for a quantity whose SI unit is `si_unit` ("Pa", "m", "kg",
+/// How a number written in `units` for a quantity whose SI unit is `si_unit` ("Pa", "m", "m^2", "kg",
 /// "kg/m^3", "m/s", "N/m^1.5", "s", "N", "N/m", "J" or "-") becomes SI.
 struct UnitConversion {
   double multiply = 1.0; ///< SI value = written · multiply / divide (one of them is 1: no

@@ -9,6 +9,7 @@
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/results.hpp"
+#include "plyimpact/io/threshold_run.hpp"
 
 #include <fmt/format.h>
 
@@ -52,6 +53,13 @@ constexpr std::array<Column, 14> result_columns{{
     {"first_failure_interface", "first_failure_interface"},
     {"threshold_velocity_m_per_s", "threshold_velocity"},
 }};
+/// Columns added later, after `error`, so that every earlier column keeps its place (scripts that read
+/// the table by position). Empty where they do not apply: onset damage and threshold runs compute no
+/// dissipation or damaged area.
+constexpr std::array<Column, 2> later_columns{{
+    {"damage_dissipation_J", "damage_dissipation"},
+    {"damage_area_m2", "damage_area"},
+}};
 
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
@@ -91,6 +99,16 @@ void put_first_failure(nlohmann::json& results, const std::optional<DamageOnset>
   results["first_failure_ply"] = f && f->ply > 0 ? nlohmann::json(f->ply) : nlohmann::json(nullptr);
   results["first_failure_interface"] =
       f && f->interface > 0 ? nlohmann::json(f->interface) : nlohmann::json(nullptr);
+}
+
+/// The first_failure_* columns of a damage threshold: the damage found at the threshold velocity
+/// (criterion "matrix-damage", mode "matrix-tension", its ply; no interface).
+void put_damage_reached(nlohmann::json& results, const std::string& criterion, const DamageReached& d) {
+  results["first_failure_time"] = d.time;
+  results["first_failure_criterion"] = criterion;
+  results["first_failure_mode"] = std::string(to_string(d.mode));
+  results["first_failure_ply"] = d.ply;
+  results["first_failure_interface"] = nullptr;
 }
 
 } // namespace
@@ -250,6 +268,8 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
   for (const Column& c : result_columns)
     add(c.header);
   add("error");
+  for (const Column& c : later_columns)
+    add(c.header);
   csv += '\n';
   for (const nlohmann::json& r : records) {
     csv += fmt::format("{}", r.at("case").get<std::size_t>());
@@ -257,9 +277,14 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
       add(csv_field(v.get<std::string>()));
     add(cell(r.at("status")));
     const nlohmann::json& results = r.at("results");
+    const auto result_cell = [&results](const Column& c) {
+      return cell(results.contains(c.key) ? results.at(c.key) : nlohmann::json(nullptr));
+    };
     for (const Column& c : result_columns)
-      add(cell(results.contains(c.key) ? results.at(c.key) : nlohmann::json(nullptr)));
+      add(result_cell(c));
     add(cell(r.value("error", nlohmann::json(nullptr))));
+    for (const Column& c : later_columns)
+      add(result_cell(c));
     csv += '\n';
   }
   return csv;
@@ -282,10 +307,9 @@ namespace {
 /// The threshold search of one case (its own ImpactCase: the search shares it between its trials).
 void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::optional<fs::path>& case_dir) {
   nlohmann::json& results = record["results"];
-  std::string name = deck.threshold.criterion;
-  if (name.empty() && !deck.damage.criteria.empty()) name = deck.damage.criteria.front();
-  if (name.empty())
+  if (deck.threshold.criterion.empty() && deck.damage.criteria.empty())
     throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
+  const ThresholdCriterion criterion = threshold_criterion(deck, "");
   const ImpactCaseDescription description = impact_case_description(deck);
   check_memory_before_assembly(description);
   const ImpactCase impact(description);
@@ -293,19 +317,22 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   to.tolerance = deck.threshold.tolerance;
   to.max_velocity = deck.threshold.max_velocity;
   to.damage = damage_options_from_deck(deck);
-  const ThresholdResult r = find_threshold_velocity(impact, *parse_criterion(name), to);
+  const ThresholdResult r = search_threshold(impact, criterion, to);
   results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
-  results["threshold_criterion"] = name;
-  put_first_failure(results, r.first_failure);
+  results["threshold_criterion"] = criterion.name;
+  if (r.damage)
+    put_damage_reached(results, criterion.name, *r.damage);
+  else
+    put_first_failure(results, r.first_failure);
   record["status"] = r.found ? "ok" : "incomplete";
   if (!r.found)
-    record["error"] = fmt::format("no failure below threshold.max_velocity = {} m/s", to.max_velocity);
+    record["error"] = fmt::format(
+        "no {} below threshold.max_velocity = {} m/s",
+        std::holds_alternative<DamageCriterion>(criterion.criterion) ? "damage" : "failure", to.max_velocity);
   if (case_dir) {
     const ResultsFolder out(*case_dir, deck);
     nlohmann::json j = summary_header(deck, "threshold");
-    j["criterion"] = name;
-    j["threshold_velocity"] = results["threshold_velocity"];
-    j["first_failure"] = r.first_failure ? onset_json(*r.first_failure) : nlohmann::json(nullptr);
+    put_threshold_summary(j, criterion, r);
     out.write_json("summary.json", j);
   }
 }
@@ -325,6 +352,10 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
   results["contacts"] = r.episodes.size();
   results["steps"] = r.steps;
   results["dt"] = o.settings.dt;
+  if (r.progressive) { // ply damage (docs/progressive_damage.md); absent for onset runs
+    results["damage_dissipation"] = r.progressive->dissipated.sum();
+    results["damage_area"] = r.progressive->projected_damage_area;
+  }
   if (o.damage_tracked)
     put_first_failure(results, o.first_failures.empty()
                                    ? std::nullopt
