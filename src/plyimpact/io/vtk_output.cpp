@@ -249,8 +249,8 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
   std::vector<vtkSmartPointer<vtkDoubleArray>> ply_damage;
   if (progressive != nullptr) {
     for (const char* name : damage_names)
-      ply_damage.push_back(double_array(name, count).Get());
-    ply_damage.push_back(double_array("d_max", count).Get());
+      ply_damage.emplace_back(double_array(name, count).Get());
+    ply_damage.emplace_back(double_array("d_max", count).Get());
   }
 
   // Ply by ply (cells of ply 1 first), then element by element.
