@@ -20,7 +20,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <regex>
 #include <string>
 
 namespace plyimpact {
@@ -326,7 +325,8 @@ TEST(VtkOutput, OnsetFramesHaveNoProgressiveDamageArrays) {
     ASSERT_GT(cells.GetNumberOfArrays(), 0);
     for (int i = 0; i < cells.GetNumberOfArrays(); ++i) {
       const std::string name = cells.GetArrayName(i);
-      EXPECT_FALSE(std::regex_search(name, std::regex("(^|_)d_(ft|fc|mt|mc|max)$"))) << file << ": " << name;
+      for (const std::string suffix : {"d_ft", "d_fc", "d_mt", "d_mc", "d_max"}) // the name or a plyN_ prefix
+        EXPECT_FALSE(name == suffix || name.ends_with("_" + suffix)) << file << ": " << name;
       EXPECT_NE(name, "damage_max") << file;
     }
   }
