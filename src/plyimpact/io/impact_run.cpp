@@ -23,9 +23,8 @@ namespace {
 class VtkFrames final : public ImpactObserver {
 public:
   VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const PlateModel& model,
-            VtkOptions options, const DamageTracker* damage, bool progressive)
-      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage),
-        progressive_(progressive) {
+            VtkOptions options, const DamageTracker* damage)
+      : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage) {
     std::sort(at_.begin(), at_.end());
   }
   /// The undeformed plate at t = 0 is the first frame, the last step the last one, whatever `every`.
@@ -46,13 +45,12 @@ public:
 private:
   void write(const StepView& v) {
     const std::vector<DamageOnset>& onsets = damage_ != nullptr ? damage_->onsets() : none_;
-    if (!progressive_) {
-      series_.write(v.step, v.t, v.plate_displacement(), onsets);
-    } else {
-      const DamageField* field = v.damage();
-      const std::vector<ElementPlyDamage> plies =
-          field != nullptr ? field->element_ply_damage() : std::vector<ElementPlyDamage>{};
+    // A progressive run's plate has a damage field from the first frame on (virgin: all zero).
+    if (const DamageField* field = v.damage()) {
+      const std::vector<ElementPlyDamage> plies = field->element_ply_damage();
       series_.write(v.step, v.t, v.plate_displacement(), onsets, &plies);
+    } else {
+      series_.write(v.step, v.t, v.plate_displacement(), onsets);
     }
     last_written_ = v.step;
   }
@@ -63,7 +61,6 @@ private:
   std::size_t next_ = 0;
   VtkSeries series_;
   const DamageTracker* damage_;
-  bool progressive_;
   std::vector<DamageOnset> none_;
 };
 
@@ -119,7 +116,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
         &vtk.emplace(deck.vtk, folder->path(), model,
                      VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
                                 damage_options_from_deck(deck).criterion_options},
-                     damage ? &*damage : nullptr, deck.damage.progressive.has_value()));
+                     damage ? &*damage : nullptr));
   std::optional<ReportSnapshot> snapshot;
   if (deck.report_displacements_at && plate)
     run.observers.push_back(&snapshot.emplace(*deck.report_displacements_at));
