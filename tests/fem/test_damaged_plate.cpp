@@ -153,6 +153,15 @@ public:
   }
 
   [[nodiscard]] const DamageField& field() const { return field_; }
+  [[nodiscard]] DamageField& field() { return field_; }
+  [[nodiscard]] const Eigen::VectorXd& displacement() const { return u_; }
+  /// Σ weight × f over the prescribed equations.
+  [[nodiscard]] double reaction(const Eigen::VectorXd& f) const {
+    double r = 0.0;
+    for (std::size_t i = 0; i < prescribed_.size(); ++i)
+      r += weights_[i] * f(prescribed_[i]);
+    return r;
+  }
   [[nodiscard]] int iterations() const { return iterations_; }
 
 private:
@@ -482,6 +491,39 @@ TEST(DamagedPlateEnergy, WorkOfTheReactionIsStoredPlusDissipated) {
               b.work, history.back().dissipated, G_mt * h * lam.thickness(), history.back().stored, b.worst);
   EXPECT_LT(b.worst, 0.005);
   EXPECT_EQ(b.dissipated_in_unloading, 0.0);
+}
+
+// The lagged step (DamageIntegration::lagged) solves with the damage of the last commit:
+// frozen_internal_force must be the secant K_s(dₙ) u, the matrix the step factors, with the damage held
+// (at the committed u, where the modes are those of the commit, it is the law's force).
+// In a [90]4 element in homogeneous uniaxial transverse tension (v free) σ22 = (1 − d_mt)E2 ε22 exactly:
+// beyond the committed displacement the frozen reaction grows linearly with it, where the law's
+// reaction (damage growing) falls.
+TEST(DamagedPlateLagged, FrozenForceIsTheCommittedSecantAndHoldsTheDamage) {
+  const double h = 0.5e-3;
+  const Laminate lam = test::laminate_of(t300(), "[90]4", ply_thickness);
+  const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial, true);
+  ProgressiveDamageSettings settings;
+  settings.screen_fraction = 0.0;
+  const DamagedPlateModel damaged(membrane.model, settings);
+  DisplacementControl control(damaged, membrane);
+  const double u0 = Yt / t300().E2 * h, uf = 2.0 * G_mt / Yt;
+  double reaction = 0.0;
+  for (const double u : ramp(0.0, u0 + 0.3 * (uf - u0), 20))
+    reaction = control.step(u);
+  const double d = control.field().element_ply_damage().front().damage[DamageMode::matrix_tension];
+  ASSERT_GT(d, 0.1) << "the ramp must end in the softening branch";
+  const Eigen::VectorXd u = control.displacement();
+  const Eigen::VectorXd frozen = damaged.frozen_internal_force(u, control.field());
+  const Eigen::VectorXd secant = damaged.secant_stiffness(control.field()) * u;
+  EXPECT_LT((frozen - secant).norm(), 1e-12 * secant.norm());
+  EXPECT_NEAR(control.reaction(frozen), reaction, 1e-12 * std::abs(reaction));
+  const double stretched = control.reaction(damaged.frozen_internal_force(1.1 * u, control.field()));
+  const double law = control.reaction(damaged.internal_force(1.1 * u, 0.0, control.field()));
+  std::printf("  d_mt = %.4f: reaction %.6e N; at 1.1 u frozen %.6e N, law %.6e N\n", d, reaction, stretched,
+              law);
+  EXPECT_NEAR(stretched, 1.1 * reaction, 1e-12 * std::abs(reaction));
+  EXPECT_LT(law, reaction);
 }
 
 // --- 3. the undamaged section ------------------------------------------------------------------

@@ -267,6 +267,29 @@ interface = 7
   EXPECT_THROW((void)parse_deck(no_strength, "deck.toml"), DeckError);
 }
 
+TEST(Deck, DamageIntegrationChoosesTheIteratedOrTheLaggedSecant) {
+  // [damage] integration: "implicit" (default) or "lagged"; only with the progressive model.
+  const auto damage = [](const std::string& keys) {
+    return parse_deck(base_deck + "[damage]\n" + keys, "deck.toml");
+  };
+  EXPECT_EQ(damage("model = \"progressive\"\n").damage.progressive->integration, DamageIntegration::implicit);
+  EXPECT_EQ(damage("model = \"progressive\"\nintegration = \"lagged\"\n").damage.progressive->integration,
+            DamageIntegration::lagged);
+  const auto message = [&](const std::string& keys) {
+    try {
+      (void)damage(keys);
+    } catch (const DeckError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string misspelt = message("model = \"progressive\"\nintegration = \"lag\"\n");
+  EXPECT_NE(misspelt.find("lagged"), std::string::npos) << misspelt;
+  const std::string onset = message("integration = \"lagged\"\n");
+  EXPECT_NE(onset.find("damage.integration belongs to the progressive damage model"), std::string::npos)
+      << onset;
+}
+
 TEST(Deck, OversizeElementsChooseBetweenTheErrorAndLoweredStrengths) {
   // [damage] oversize: "error" (default) or "reduce-strength"; only with the progressive model.
   const auto damage = [](const std::string& keys) {

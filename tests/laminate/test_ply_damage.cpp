@@ -17,6 +17,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -316,6 +317,29 @@ TEST(PlyDamageStiffness, ABrokenModeDoesNotActWhenTheLoadReverses) {
   EXPECT_NEAR(c.stress(1), Q(1, 0) * -1e-4 + Q(1, 1) * -1e-4, 1e-12 * Q(0, 0) * 1e-4);
   EXPECT_EQ(c.stress(2), 0.0);
   EXPECT_EQ(c.transverse_shear_stress.norm(), 0.0);
+}
+
+TEST(PlyDamageStiffness, SecantAtAGivenDamageIsTheLawsSecantThere) {
+  // The lagged step asks for C(d) at the committed damage without evolving it: for the four sign pairs
+  // of a damaged state, secant_at must be the secant the law returns when nothing grows, and name the
+  // loaded modes (bit 0 fibre compression, bit 1 matrix compression).
+  const PlyDamageLaw law(t300());
+  const PlyDamageState s = damaged_state(0.3, 0.6, 0.45, 0.2);
+  const std::vector<std::pair<Eigen::Vector3d, unsigned>> cases = {{{1e-5, 2e-5, 1e-5}, 0U},
+                                                                   {{-1e-5, 2e-5, 1e-5}, 1U},
+                                                                   {{1e-5, -2e-5, 1e-5}, 2U},
+                                                                   {{-1e-5, -2e-5, 1e-5}, 3U}};
+  for (const auto& [strain, modes] : cases) {
+    PlyStrain e;
+    e.in_plane = strain;
+    e.transverse_shear << 1e-5, -1e-5;
+    const PlyDamageResponse r = law.update(s, e, 1e-3, 0.0);
+    ASSERT_EQ(r.dissipation.sum(), 0.0) << "the strain must leave the damage as it is";
+    const PlySecant c = law.secant_at(s.regularised_damage, e);
+    EXPECT_EQ(c.in_plane, r.secant) << strain.transpose();
+    EXPECT_EQ(c.transverse_shear, r.transverse_shear_secant);
+    EXPECT_EQ(c.modes, modes) << strain.transpose();
+  }
 }
 
 // --- initiation ----------------------------------------------------------------------------------

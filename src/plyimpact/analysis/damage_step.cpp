@@ -11,6 +11,12 @@
 // analysis of CHOLMOD is kept) when they slow down, and before a step once the damage has grown by more
 // than `refactor_tolerance` since the last factorization. The step is accepted when the residual is
 // small and the damage the law returns at u is the damage that produced f_int (same evaluation).
+//
+// Lagged damage (DamageIntegration::lagged): the same iterations with the damage held at d_n, the value
+// committed by the previous step (DamagedPlateModel::frozen_internal_force), the cracks opening or closing
+// with the iterate's strain. K̄ is refactored with the iterate's secant where a crack opened or closed
+// (semi-smooth Newton on the modes) or the iterations slow down. The law is called once per step, at the
+// accepted u_{n+1}, for d_{n+1} and the dissipation.
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -45,6 +51,7 @@ public:
 private:
   [[nodiscard]] const Eigen::VectorXd& sw() const { return loading_.sampler(); }
   void refactor(const SparseMatrix& K);
+  [[nodiscard]] bool lagged() const;
 
   const DamageStepPolicy& p_;
   ContactLoading loading_;
@@ -78,6 +85,10 @@ public:
   MassOperator M_;
 };
 
+bool DamageStepper::lagged() const {
+  return p_.plate_.settings().integration == DamageIntegration::lagged;
+}
+
 DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor)
     : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
       factor_(policy.options_.solver), field_(policy.plate_.virgin_field()),
@@ -108,11 +119,13 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
   Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
   ContactSolution cs;
   double previous_correction = INFINITY;
+  bool refresh = false;
   int iterations = 0;
   for (;;) {
     const Eigen::VectorXd ak = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
     const Eigen::VectorXd inertia = p_.M_.times(ak);
-    f_int_ = p_.plate_.internal_force(uk, nc.dt, field_);
+    f_int_ =
+        lagged() ? p_.plate_.frozen_internal_force(uk, field_) : p_.plate_.internal_force(uk, nc.dt, field_);
     const Eigen::VectorXd g = -inertia - f_int_;
     if (iterations > 0) {
       const Eigen::VectorXd s_load = loading_.load(cs.alpha);
@@ -122,15 +135,25 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
           residual.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm()) {
         // Equilibrium with the elements evaluated; an element left out that has reached a Hashin
         // surface at uk joins, and the step iterates on.
-        if (!p_.plate_.activate_reached(uk, field_)) break;
+        if (lagged() || !p_.plate_.activate_reached(uk, field_)) break;
         continue;
       }
     }
+    // Lagged: semi-smooth Newton on the crack modes (the secant at the iterate's modes is the tangent of
+    // the frozen-damage problem): refactor where a crack opened or closed, or where the iterations slow.
+    if (lagged() && (field_.take_modes_changed() || refresh)) {
+      refactor(p_.plate_.secant_stiffness(field_));
+      previous_correction = INFINITY;
+    }
+    refresh = false;
     if (iterations == ds.max_iterations)
       throw NewtonFailure(fmt::format(
           "progressive damage: the iterations did not converge in step {} (t = {:.6g} s) after {} solves; "
-          "reduce time.dt or set [damage] viscosity",
-          step, t, ds.max_iterations));
+          "{}",
+          step, t, ds.max_iterations,
+          lagged() ? "reduce time.dt"
+                   : "set [damage] integration = \"lagged\" (no iteration on the damage; its energy balance "
+                     "error shrinks with time.dt), or reduce time.dt"));
     const Eigen::VectorXd u_hat = uk + factor_.solve(g);
     cs = loading_.solve(contact, sw().dot(u_hat));
     Eigen::VectorXd u_iterate = u_hat;
@@ -143,7 +166,9 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
     const bool slow = iterations > 1 && correction > ds.refresh_ratio * previous_correction;
     previous_correction = correction;
     uk.swap(u_iterate);
-    if (slow) {
+    if (slow && lagged()) {
+      refresh = true; // at the next iterate, once its sections are evaluated
+    } else if (slow) {
       refactor(p_.plate_.secant_stiffness(field_)); // the secant at the last iterate's damage
       previous_correction = INFINITY;
     }
@@ -155,6 +180,14 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
 }
 
 void DamageStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) {
+  if (!lagged()) {
+    p_.plate_.commit(u_next, f_int_, field_);
+    return;
+  }
+  // Lagged damage: the law once at u_{n+1} (elements that reached a surface there join first); its
+  // secant sections are those of the next step.
+  (void)p_.plate_.activate_reached(u_next, field_);
+  f_int_ = p_.plate_.internal_force(u_next, p_.options_.newmark.dt, field_);
   p_.plate_.commit(u_next, f_int_, field_);
 }
 

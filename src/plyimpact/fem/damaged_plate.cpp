@@ -304,8 +304,8 @@ DamageField DamagedPlateModel::virgin_field() const {
   return f;
 }
 
-DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u,
-                                                                    double dt, DamageField& field) const {
+void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double dt,
+                                         DamageField& field) const {
   DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
   const int section = model_.section_index(e);
   const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
@@ -320,10 +320,8 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
   const ElementVector ue = model_.element_dofs(u, e);
   const std::size_t per_point = 2 * plies.size();
   a.trial_dissipation = {};
-  PointStrains strains;
   for (std::size_t p = 0; p < 9; ++p) {
-    strains[p] = ops.S[p] * ue;
-    const Eigen::Matrix<double, 8, 1>& strain = strains[p];
+    const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
     const std::size_t first = p * per_point;
     if (a.pristine[p]) {
       if (hashin_bound(groups, strain.head<6>()) < 1.0) {
@@ -380,25 +378,85 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
   }
   a.evaluated = true;
   a.has_sections = true;
-  return strains;
+}
+
+void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t slot,
+                                          const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+  const DamageField::ActiveElement& a = field.active_[slot];
+  const int e = a.element;
+  const ElementOperators& ops = operators_of(e);
+  const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
+  const ElementVector ue = model_.element_dofs(u, e);
+  ElementVector fe = ElementVector::Zero();
+  bool changed = false;
+  for (std::size_t p = 0; p < 9; ++p) {
+    if (a.pristine_trial[p]) continue; // the undamaged section: K0 u holds it
+    fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * (ops.S[p] * ue)));
+    changed = true;
+  }
+  if (changed) scatter_add(f, model_.element_equations(e), fe);
 }
 
 Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
                                                   DamageField& field) const {
   Eigen::VectorXd f = K0_ * u;
-  for (DamageField::ActiveElement& a : field.active_) {
-    const int e = a.element;
-    const PointStrains strains = evaluate_element(e, u, dt, field);
-    const ElementOperators& ops = operators_of(e);
-    const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
-    ElementVector fe = ElementVector::Zero();
-    bool changed = false;
-    for (std::size_t p = 0; p < 9; ++p) {
-      if (a.pristine_trial[p]) continue; // the undamaged section: K0 u holds it
-      fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
-      changed = true;
-    }
-    if (changed) scatter_add(f, model_.element_equations(e), fe);
+  for (std::size_t slot = 0; slot < field.active_.size(); ++slot) {
+    evaluate_element(field.active_[slot].element, u, dt, field);
+    add_section_force(field, slot, u, f);
+  }
+  return f;
+}
+
+void DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
+                                        const Eigen::VectorXd& u) const {
+  DamageField::ActiveElement& a = field.active_[slot];
+  const int e = a.element;
+  const int section = model_.section_index(e);
+  const std::vector<PlyPoints>& plies = plies_[static_cast<std::size_t>(section)];
+  const auto& laws = laws_[class_of(e)][static_cast<std::size_t>(section)];
+  const double root_k = std::sqrt(model_.laminates()[static_cast<std::size_t>(section)].shear_correction());
+  const double k = model_.laminates()[static_cast<std::size_t>(section)].shear_correction();
+  const ElementOperators& ops = operators_of(e);
+  const ElementVector ue = model_.element_dofs(u, e);
+  const std::size_t per_point = 2 * plies.size();
+  for (std::size_t p = 0; p < 9; ++p) {
+    a.pristine_trial[p] = a.pristine[p];
+    if (a.pristine[p]) continue; // never initiated: the undamaged section (K0 u holds it)
+    const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
+    const Eigen::Vector3d eps0 = strain.head<3>(), kappa = strain.segment<3>(3);
+    const Eigen::Vector2d gamma = strain.tail<2>();
+    SectionStiffness sec;
+    sec.C_mb.setZero();
+    sec.F.setZero();
+    std::size_t index = p * per_point;
+    for (const PlyPoints& ply : plies)
+      for (const double z : ply.z) {
+        PlyStrain ps;
+        ps.in_plane = ply.T_strain * (eps0 + z * kappa);
+        ps.transverse_shear = root_k * (ply.T_shear * gamma);
+        const PlySecant c = laws[ply.material]->secant_at(a.committed[index].regularised_damage, ps);
+        if (a.modes[index] != c.modes) {
+          a.modes[index] = static_cast<unsigned char>(c.modes);
+          field.modes_changed_ = true;
+        }
+        ++index;
+        const Eigen::Matrix3d Cbar = ply.T_strain.transpose() * c.in_plane * ply.T_strain; // (DP1)
+        sec.C_mb.topLeftCorner<3, 3>() += ply.weight * Cbar;
+        sec.C_mb.topRightCorner<3, 3>() += (ply.weight * z) * Cbar;
+        sec.C_mb.bottomRightCorner<3, 3>() += (ply.weight * z * z) * Cbar;
+        sec.F += (ply.weight * k) * (ply.T_shear.transpose() * c.transverse_shear * ply.T_shear);
+      }
+    sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
+    a.sections[p] = sec;
+  }
+  a.has_sections = true;
+}
+
+Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const {
+  Eigen::VectorXd f = K0_ * u;
+  for (std::size_t slot = 0; slot < field.active_.size(); ++slot) {
+    frozen_sections(field, slot, u);
+    add_section_force(field, slot, u, f);
   }
   return f;
 }
@@ -460,6 +518,7 @@ void DamagedPlateModel::activate(int e, DamageField& field) const {
       9 * 2 * model_.laminates()[static_cast<std::size_t>(model_.section_index(e))].ply_count();
   a.committed.assign(n, PlyDamageState{});
   a.trial = a.committed;
+  a.modes.assign(n, 0);
   for (SectionStiffness& sec : a.sections) {
     sec.C_mb.setZero();
     sec.F.setZero();

@@ -31,13 +31,30 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
 
+/// How a time step finds the damage it uses.
+enum class DamageIntegration {
+  /// Iterate within the step until the force and the damage the law returns at u_{n+1} agree (secant
+  /// iterations, docs/progressive_damage.md).
+  implicit,
+  /// The step is solved with the damage committed at the end of the previous step, d_n, held fixed; the
+  /// cracks open or close with the step's own strain (the loaded modes of PD7). That problem is convex
+  /// (its stress is continuous and monotone in the strain) and semi-smooth Newton on the modes solves it
+  /// in a few iterations; the law then gives d_{n+1} at u_{n+1} once. No iteration on the damage, so no
+  /// step stalls; the price is a lag of one step in the damage, which dissipates more than the law
+  /// records: O(Δt) while points soften over several steps, more where a point breaks within one step
+  /// (docs/progressive_damage.md, "The lagged step").
+  lagged,
+};
+
 /// Settings of the progressive damage of the plies.
 struct ProgressiveDamageSettings {
-  PlyDamageOptions law;             ///< α, viscosity η
+  PlyDamageOptions law; ///< α, viscosity η
+  DamageIntegration integration = DamageIntegration::implicit;
   double refactor_tolerance = 0.05; ///< refactor K̄ when some d has grown by more than this since the last
   double area_threshold = 0.5;      ///< a ply point counts as damaged when a damage variable reaches this
   double screen_fraction = 0.6;     ///< elements whose Hashin bound exceeds this fraction of 1 are active
@@ -98,6 +115,10 @@ public:
   /// Activates the inactive elements that have reached a Hashin surface at u. True when there were any:
   /// the trial did not evaluate them, and the step must be iterated again.
   [[nodiscard]] bool activate_reached(const Eigen::VectorXd& u, DamageField& field) const;
+  /// The lagged step's force: the damage held at the committed d_n, the loaded modes (open or closed
+  /// cracks) chosen by the strain at u, K_s(d_n, u) u; the sections are kept, so secant_stiffness() is
+  /// the matrix of the last call. No law update.
+  [[nodiscard]] Eigen::VectorXd frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const;
   /// Accepts the trial state of the last internal_force() at u (f_int its result): commits it, adds its
   /// dissipation, updates the areas and the stored energy, and activates the elements near a surface.
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int, DamageField& field) const;
@@ -120,11 +141,14 @@ private:
   [[nodiscard]] std::size_t class_of(int e) const {
     return static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
   }
-  /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
-  using PointStrains = std::array<Eigen::Matrix<double, 8, 1>, 9>;
+  /// The sections of active element `slot` at u with the committed damage (the lagged step).
+  void frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;
+  /// Adds Sᵀ w (C(d) − C0) S uₑ of element a's damaged points (its sections as they stand) to f.
+  void add_section_force(const DamageField& field, std::size_t slot, const Eigen::VectorXd& u,
+                         Eigen::VectorXd& f) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
-  /// returns the points' strains, from which internal_force() forms the element force.
-  PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  /// internal_force() then forms the element force from the sections.
+  void evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
   /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
   /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
   [[nodiscard]] static double hashin_bound(const std::vector<Group>& groups,
@@ -162,6 +186,9 @@ public:
   /// largest increment of any damage variable in the step (an upper bound of the largest growth).
   [[nodiscard]] double growth_since_factorization() const { return growth_; }
   void mark_factorized() { growth_ = 0.0; }
+  /// True when a lagged evaluation (frozen_internal_force) has changed the loaded modes (a crack opened or
+  /// closed) of some point since the last call of this function.
+  [[nodiscard]] bool take_modes_changed() { return std::exchange(modes_changed_, false); }
   /// Number of elements that evaluate the law.
   [[nodiscard]] int active_elements() const { return static_cast<int>(active_.size()); }
   /// Per element and ply, the largest damage of each mode (committed), for maps and ParaView.
@@ -179,7 +206,8 @@ private:
     int element = 0;
     std::vector<PlyDamageState> committed; ///< [point][ply][g]
     std::vector<PlyDamageState> trial;
-    PerDamageMode trial_dissipation;          ///< of the trial increment [J]
+    std::vector<unsigned char> modes; ///< loaded modes of the last lagged evaluation (PlySecant::modes)
+    PerDamageMode trial_dissipation;  ///< of the trial increment [J]
     std::array<SectionStiffness, 9> sections; ///< trial secant sections at the 9 points
     bool evaluated = false;                   ///< trial responses are those of the last internal_force()
     bool has_sections = false;                ///< `sections` hold the secant of some evaluation
@@ -199,6 +227,7 @@ private:
   std::vector<double> ply_area_;
   double projected_area_ = 0.0;
   double growth_ = 0.0;
+  bool modes_changed_ = false;
   std::optional<FirstDamage> first_;
 };
 

@@ -98,7 +98,7 @@ BucklingSettings read_buckling(const TableReader& t) {
 DamageSettings read_damage(const TableReader& t, const Deck& d) {
   DamageSettings damage;
   t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
-          "area_threshold", "oversize"});
+          "area_threshold", "oversize", "integration"});
   const bool progressive =
       t.optional_choice<bool>("model", {{"onset", false}, {"progressive", true}}).value_or(false);
   if (progressive) {
@@ -119,9 +119,14 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
                                               p.area_threshold));
     p.reduce_strengths_above_band_limit =
         t.optional_choice<bool>("oversize", {{"error", false}, {"reduce-strength", true}}).value_or(false);
+    p.integration =
+        t.optional_choice<DamageIntegration>("integration", {{"implicit", DamageIntegration::implicit},
+                                                             {"lagged", DamageIntegration::lagged}})
+            .value_or(p.integration);
     damage.progressive = p;
   } else {
-    for (const char* key : {"viscosity", "alpha", "refactor_tolerance", "area_threshold", "oversize"})
+    for (const char* key :
+         {"viscosity", "alpha", "refactor_tolerance", "area_threshold", "oversize", "integration"})
       if (t.node(key) != nullptr)
         t.fail_at(key, fmt::format("damage.{} belongs to the progressive damage model: add "
                                    "model = \"progressive\" to [damage]",

@@ -438,6 +438,15 @@ PlyDamageResponse PlyDamageLaw::elastic_response(const PlyDamageState& previous,
   return r;
 }
 
+PlySecant PlyDamageLaw::secant_at(const PerDamageMode& damage, const PlyStrain& strain) const {
+  const ActiveModes active = active_modes(material_, damage, strain.in_plane);
+  const StiffnessDamage sd = stiffness_damage(damage, active);
+  return {degraded_reduced_stiffness(material_, sd),
+          degraded_transverse_shear(material_, sd.transverse_shear),
+          (active.fibre == DamageMode::fibre_compression ? 1U : 0U) |
+              (active.matrix == DamageMode::matrix_compression ? 2U : 0U)};
+}
+
 double PlyDamageLaw::max_characteristic_length(DamageMode mode) const {
   const Material& m = material_;
   const Strengths& st = m.strength;

@@ -96,6 +96,14 @@ struct PlyDamageResponse {
   PerDamageMode dissipation; ///< energy dissipated in the increment, per mode [J/m³]
 };
 
+/// The secant stiffnesses of a ply at a given damage, without evolution (the lagged step).
+struct PlySecant {
+  Eigen::Matrix3d in_plane;         ///< C(d), order (11, 22, 12) [Pa]
+  Eigen::Matrix2d transverse_shear; ///< diag((1 − d_t)G23, (1 − d_t)G13) [Pa]
+  /// The loaded modes the strain chose: bit 0 fibre compression, bit 1 matrix compression.
+  unsigned modes = 0;
+};
+
 /// Thrown when the characteristic length is too large for linear softening: δ_f ≤ δ_0, i.e.
 /// L_c ≥ 2G/(σ⁰_eq ε⁰_eq) (= 2GE/σ_0² in a uniaxial state); the law would snap back and dissipate
 /// more than G. The remedy is a finer mesh.
@@ -147,6 +155,10 @@ public:
   /// Throws BandLimitError when a mode initiates with L_c above its band limit.
   [[nodiscard]] PlyDamageResponse update(const PlyDamageState& previous, const PlyStrain& strain,
                                          double characteristic_length, double dt) const;
+
+  /// C(d) and the transverse shear secant at the damage variables `damage` (the stiffness variables d_v),
+  /// the loaded modes chosen by the signs of the effective stress at `strain` (PD3–PD7); no evolution.
+  [[nodiscard]] PlySecant secant_at(const PerDamageMode& damage, const PlyStrain& strain) const;
 
   /// Largest characteristic length for which mode `mode` softens without snap-back, 2GK/σ_0², in the
   /// uniaxial and pure-shear states that initiate it: fibre tension (Xt, E1) and, if α > 0, pure
