@@ -459,18 +459,30 @@ Balance energy_balance(const std::vector<StripPoint>& history) {
   return b;
 }
 
+/// One [90]4 element of 0.5 mm in homogeneous uniaxial transverse tension (matrix tension), every
+/// element active from the start.
+struct TransverseTensionElement {
+  static constexpr double h = 0.5e-3;
+  static ProgressiveDamageSettings all_active() {
+    ProgressiveDamageSettings settings;
+    settings.screen_fraction = 0.0;
+    return settings;
+  }
+  Laminate lam = test::laminate_of(t300(), "[90]4", ply_thickness);
+  Membrane membrane{{h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial, true};
+  DamagedPlateModel damaged{membrane.model, all_active()};
+};
+
 // Energy balance over a tension-softening history with an unloading to a third and a reloading in the
 // middle of the softening: the work of the reaction, ∫F du by the trapezoidal rule, equals the stored
 // energy ½uᵀf_int plus the dissipated energy at every step, and unloading dissipates nothing. One
 // [90]4 element of 0.5 mm in homogeneous transverse tension (matrix tension).
 TEST(DamagedPlateEnergy, WorkOfTheReactionIsStoredPlusDissipated) {
-  const double h = 0.5e-3;
-  const Laminate lam = test::laminate_of(t300(), "[90]4", ply_thickness);
-  const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial, true);
-  ProgressiveDamageSettings settings;
-  settings.screen_fraction = 0.0;
-  const DamagedPlateModel damaged(membrane.model, settings);
-  DisplacementControl control(damaged, membrane);
+  const TransverseTensionElement element;
+  const double h = TransverseTensionElement::h;
+  const Laminate& lam = element.lam;
+  const DamagedPlateModel& damaged = element.damaged;
+  DisplacementControl control(damaged, element.membrane);
   const double u0 = Yt / t300().E2 * h, uf = 2.0 * G_mt / Yt, um = 0.5 * (u0 + uf);
   std::vector<double> path = ramp(0.0, 0.99 * u0, 10);
   for (const std::vector<double>& leg :
@@ -500,13 +512,10 @@ TEST(DamagedPlateEnergy, WorkOfTheReactionIsStoredPlusDissipated) {
 // beyond the committed displacement the frozen reaction grows linearly with it, where the law's
 // reaction (damage growing) falls.
 TEST(DamagedPlateLagged, FrozenForceIsTheCommittedSecantAndHoldsTheDamage) {
-  const double h = 0.5e-3;
-  const Laminate lam = test::laminate_of(t300(), "[90]4", ply_thickness);
-  const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial, true);
-  ProgressiveDamageSettings settings;
-  settings.screen_fraction = 0.0;
-  const DamagedPlateModel damaged(membrane.model, settings);
-  DisplacementControl control(damaged, membrane);
+  const TransverseTensionElement element;
+  const double h = TransverseTensionElement::h;
+  const DamagedPlateModel& damaged = element.damaged;
+  DisplacementControl control(damaged, element.membrane);
   const double u0 = Yt / t300().E2 * h, uf = 2.0 * G_mt / Yt;
   double reaction = 0.0;
   for (const double u : ramp(0.0, u0 + 0.3 * (uf - u0), 20))

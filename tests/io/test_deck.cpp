@@ -267,48 +267,44 @@ interface = 7
   EXPECT_THROW((void)parse_deck(no_strength, "deck.toml"), DeckError);
 }
 
+/// The base deck with a [damage] table of `keys`.
+Deck damage_deck(const std::string& keys) {
+  return parse_deck(base_deck + "[damage]\n" + keys, "deck.toml");
+}
+
+/// The message damage_deck(keys) is refused with ("no error" when it is read).
+std::string damage_deck_error(const std::string& keys) {
+  try {
+    (void)damage_deck(keys);
+  } catch (const DeckError& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
 TEST(Deck, DamageIntegrationChoosesTheIteratedOrTheLaggedSecant) {
   // [damage] integration: "implicit" (default) or "lagged"; only with the progressive model.
-  const auto damage = [](const std::string& keys) {
-    return parse_deck(base_deck + "[damage]\n" + keys, "deck.toml");
-  };
-  EXPECT_EQ(damage("model = \"progressive\"\n").damage.progressive->integration, DamageIntegration::implicit);
-  EXPECT_EQ(damage("model = \"progressive\"\nintegration = \"lagged\"\n").damage.progressive->integration,
-            DamageIntegration::lagged);
-  const auto message = [&](const std::string& keys) {
-    try {
-      (void)damage(keys);
-    } catch (const DeckError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  const std::string misspelt = message("model = \"progressive\"\nintegration = \"lag\"\n");
+  EXPECT_EQ(damage_deck("model = \"progressive\"\n").damage.progressive->integration,
+            DamageIntegration::implicit);
+  EXPECT_EQ(
+      damage_deck("model = \"progressive\"\nintegration = \"lagged\"\n").damage.progressive->integration,
+      DamageIntegration::lagged);
+  const std::string misspelt = damage_deck_error("model = \"progressive\"\nintegration = \"lag\"\n");
   EXPECT_NE(misspelt.find("lagged"), std::string::npos) << misspelt;
-  const std::string onset = message("integration = \"lagged\"\n");
+  const std::string onset = damage_deck_error("integration = \"lagged\"\n");
   EXPECT_NE(onset.find("damage.integration belongs to the progressive damage model"), std::string::npos)
       << onset;
 }
 
 TEST(Deck, OversizeElementsChooseBetweenTheErrorAndLoweredStrengths) {
   // [damage] oversize: "error" (default) or "reduce-strength"; only with the progressive model.
-  const auto damage = [](const std::string& keys) {
-    return parse_deck(base_deck + "[damage]\n" + keys, "deck.toml");
-  };
-  EXPECT_FALSE(damage("model = \"progressive\"\n").damage.progressive->reduce_strengths_above_band_limit);
-  EXPECT_TRUE(damage("model = \"progressive\"\noversize = \"reduce-strength\"\n")
+  EXPECT_FALSE(
+      damage_deck("model = \"progressive\"\n").damage.progressive->reduce_strengths_above_band_limit);
+  EXPECT_TRUE(damage_deck("model = \"progressive\"\noversize = \"reduce-strength\"\n")
                   .damage.progressive->reduce_strengths_above_band_limit);
-  const auto message = [&](const std::string& keys) {
-    try {
-      (void)damage(keys);
-    } catch (const DeckError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  const std::string misspelt = message("model = \"progressive\"\noversize = \"reduce\"\n");
+  const std::string misspelt = damage_deck_error("model = \"progressive\"\noversize = \"reduce\"\n");
   EXPECT_NE(misspelt.find("reduce-strength"), std::string::npos) << misspelt;
-  const std::string onset = message("oversize = \"reduce-strength\"\n");
+  const std::string onset = damage_deck_error("oversize = \"reduce-strength\"\n");
   EXPECT_NE(onset.find("damage.oversize belongs to the progressive damage model"), std::string::npos)
       << onset;
 }
