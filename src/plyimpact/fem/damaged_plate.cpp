@@ -47,7 +47,45 @@ struct DamagedPlateModel::PlyPoints {
   Eigen::Matrix2d T_shear;
   std::array<double, 2> z{};
   double weight = 0.0; ///< t/2
+
+  /// The ply strain in material axes at height z from the generalized strains (ε0, κ, γ) of a point;
+  /// root_k = √K puts the plate's transverse shear energy into the ply.
+  [[nodiscard]] PlyStrain strain_at(double z_point, const Eigen::Matrix<double, 8, 1>& s,
+                                    double root_k) const {
+    PlyStrain ps;
+    ps.in_plane = T_strain * (s.head<3>() + z_point * s.segment<3>(3));
+    ps.transverse_shear = root_k * (T_shear * s.tail<2>());
+    return ps;
+  }
+
+  /// Adds this ply's point at height z, with secant stiffnesses C (in-plane) and G (transverse shear) in
+  /// material axes, to the section (DP1); k is the shear correction. Only the upper triangle of the
+  /// membrane–bending block: symmetric_section() completes it.
+  void add_to(SectionStiffness& sec, double z_point, double k, const Eigen::Matrix3d& C,
+              const Eigen::Matrix2d& G) const {
+    const Eigen::Matrix3d Cbar = T_strain.transpose() * C * T_strain;
+    sec.C_mb.topLeftCorner<3, 3>() += weight * Cbar;
+    sec.C_mb.topRightCorner<3, 3>() += (weight * z_point) * Cbar;
+    sec.C_mb.bottomRightCorner<3, 3>() += (weight * z_point * z_point) * Cbar;
+    sec.F += (weight * k) * (T_shear.transpose() * G * T_shear);
+  }
 };
+
+namespace {
+
+SectionStiffness empty_section() {
+  SectionStiffness sec;
+  sec.C_mb.setZero();
+  sec.F.setZero();
+  return sec;
+}
+
+/// Completes the B block below the diagonal of a section built with PlyPoints::add_to.
+void symmetric_section(SectionStiffness& sec) {
+  sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
+}
+
+} // namespace
 
 /// Plies of one section with the same material and angle, and the z range they span: the Hashin indices
 /// are convex in z, so their largest value over the range is at one of its ends (the screening bound).
@@ -304,8 +342,8 @@ DamageField DamagedPlateModel::virgin_field() const {
   return f;
 }
 
-void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double dt,
-                                         DamageField& field) const {
+DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u,
+                                                                    double dt, DamageField& field) const {
   DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
   const int section = model_.section_index(e);
   const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
@@ -320,8 +358,10 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
   const ElementVector ue = model_.element_dofs(u, e);
   const std::size_t per_point = 2 * plies.size();
   a.trial_dissipation = {};
+  PointStrains strains;
   for (std::size_t p = 0; p < 9; ++p) {
-    const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
+    strains[p] = ops.S[p] * ue;
+    const Eigen::Matrix<double, 8, 1>& strain = strains[p];
     const std::size_t first = p * per_point;
     if (a.pristine[p]) {
       if (hashin_bound(groups, strain.head<6>()) < 1.0) {
@@ -338,60 +378,46 @@ void DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u, double
       const Eigen::Matrix<double, 8, 1> before = ops.S[p] * model_.element_dofs(field.u_committed_, e);
       std::size_t index = first;
       for (const PlyPoints& ply : plies)
-        for (const double z : ply.z) {
-          PlyStrain& ps = a.committed[index++].strain;
-          ps.in_plane = ply.T_strain * (before.head<3>() + z * before.segment<3>(3));
-          ps.transverse_shear = root_k * (ply.T_shear * before.tail<2>());
-        }
+        for (const double z : ply.z)
+          a.committed[index++].strain = ply.strain_at(z, before, root_k);
     }
-    const Eigen::Vector3d eps0 = strain.head<3>(), kappa = strain.segment<3>(3);
-    const Eigen::Vector2d gamma = strain.tail<2>();
-    SectionStiffness sec;
-    sec.C_mb.setZero();
-    sec.F.setZero();
+    SectionStiffness sec = empty_section();
     bool initiated = false;
     std::size_t index = first;
     for (const PlyPoints& ply : plies) {
       const PlyDamageLaw& law = *laws[ply.material];
       for (const double z : ply.z) {
-        PlyStrain ps;
-        ps.in_plane = ply.T_strain * (eps0 + z * kappa);
-        ps.transverse_shear = root_k * (ply.T_shear * gamma);
-        const PlyDamageResponse r = law.update(a.committed[index], ps, Lc, dt);
+        const PlyDamageResponse r = law.update(a.committed[index], ply.strain_at(z, strain, root_k), Lc, dt);
         a.trial[index] = r.state;
         ++index;
         for (const DamageMode m : all_damage_modes)
           initiated = initiated || r.state.initiated(m);
-        const Eigen::Matrix3d Cbar = ply.T_strain.transpose() * r.secant * ply.T_strain; // (DP1)
-        sec.C_mb.topLeftCorner<3, 3>() += ply.weight * Cbar;
-        sec.C_mb.topRightCorner<3, 3>() += (ply.weight * z) * Cbar;
-        sec.C_mb.bottomRightCorner<3, 3>() += (ply.weight * z * z) * Cbar;
-        sec.F += (ply.weight * k) * (ply.T_shear.transpose() * r.transverse_shear_secant * ply.T_shear);
+        ply.add_to(sec, z, k, r.secant, r.transverse_shear_secant); // (DP1)
         for (const DamageMode m : all_damage_modes)
           a.trial_dissipation[m] += r.dissipation[m] * ply.weight * ops.w[p];
       }
     }
-    sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
+    symmetric_section(sec);
     a.sections[p] = sec;
     a.trial_touched[p] = true;
     a.pristine_trial[p] = !initiated;
   }
   a.evaluated = true;
   a.has_sections = true;
+  return strains;
 }
 
 void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t slot,
-                                          const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+                                          const PointStrains& strains, Eigen::VectorXd& f) const {
   const DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
   const ElementOperators& ops = operators_of(e);
   const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
-  const ElementVector ue = model_.element_dofs(u, e);
   ElementVector fe = ElementVector::Zero();
   bool changed = false;
   for (std::size_t p = 0; p < 9; ++p) {
     if (a.pristine_trial[p]) continue; // the undamaged section: K0 u holds it
-    fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * (ops.S[p] * ue)));
+    fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
     changed = true;
   }
   if (changed) scatter_add(f, model_.element_equations(e), fe);
@@ -400,64 +426,51 @@ void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t 
 Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
                                                   DamageField& field) const {
   Eigen::VectorXd f = K0_ * u;
-  for (std::size_t slot = 0; slot < field.active_.size(); ++slot) {
-    evaluate_element(field.active_[slot].element, u, dt, field);
-    add_section_force(field, slot, u, f);
-  }
+  for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
+    add_section_force(field, slot, evaluate_element(field.active_[slot].element, u, dt, field), f);
   return f;
 }
 
-void DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
-                                        const Eigen::VectorXd& u) const {
+DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
+                                                                   const Eigen::VectorXd& u) const {
   DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
   const int section = model_.section_index(e);
   const std::vector<PlyPoints>& plies = plies_[static_cast<std::size_t>(section)];
   const auto& laws = laws_[class_of(e)][static_cast<std::size_t>(section)];
-  const double root_k = std::sqrt(model_.laminates()[static_cast<std::size_t>(section)].shear_correction());
   const double k = model_.laminates()[static_cast<std::size_t>(section)].shear_correction();
+  const double root_k = std::sqrt(k);
   const ElementOperators& ops = operators_of(e);
   const ElementVector ue = model_.element_dofs(u, e);
-  const std::size_t per_point = 2 * plies.size();
+  PointStrains strains;
   for (std::size_t p = 0; p < 9; ++p) {
     a.pristine_trial[p] = a.pristine[p];
     if (a.pristine[p]) continue; // never initiated: the undamaged section (K0 u holds it)
-    const Eigen::Matrix<double, 8, 1> strain = ops.S[p] * ue;
-    const Eigen::Vector3d eps0 = strain.head<3>(), kappa = strain.segment<3>(3);
-    const Eigen::Vector2d gamma = strain.tail<2>();
-    SectionStiffness sec;
-    sec.C_mb.setZero();
-    sec.F.setZero();
-    std::size_t index = p * per_point;
+    strains[p] = ops.S[p] * ue;
+    SectionStiffness sec = empty_section();
+    std::size_t index = p * 2 * plies.size();
     for (const PlyPoints& ply : plies)
       for (const double z : ply.z) {
-        PlyStrain ps;
-        ps.in_plane = ply.T_strain * (eps0 + z * kappa);
-        ps.transverse_shear = root_k * (ply.T_shear * gamma);
-        const PlySecant c = laws[ply.material]->secant_at(a.committed[index].regularised_damage, ps);
+        const PlySecant c = laws[ply.material]->secant_at(a.committed[index].regularised_damage,
+                                                          ply.strain_at(z, strains[p], root_k));
         if (a.modes[index] != c.modes) {
           a.modes[index] = static_cast<unsigned char>(c.modes);
           field.modes_changed_ = true;
         }
         ++index;
-        const Eigen::Matrix3d Cbar = ply.T_strain.transpose() * c.in_plane * ply.T_strain; // (DP1)
-        sec.C_mb.topLeftCorner<3, 3>() += ply.weight * Cbar;
-        sec.C_mb.topRightCorner<3, 3>() += (ply.weight * z) * Cbar;
-        sec.C_mb.bottomRightCorner<3, 3>() += (ply.weight * z * z) * Cbar;
-        sec.F += (ply.weight * k) * (ply.T_shear.transpose() * c.transverse_shear * ply.T_shear);
+        ply.add_to(sec, z, k, c.in_plane, c.transverse_shear); // (DP1)
       }
-    sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
+    symmetric_section(sec);
     a.sections[p] = sec;
   }
   a.has_sections = true;
+  return strains;
 }
 
 Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const {
   Eigen::VectorXd f = K0_ * u;
-  for (std::size_t slot = 0; slot < field.active_.size(); ++slot) {
-    frozen_sections(field, slot, u);
-    add_section_force(field, slot, u, f);
-  }
+  for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
+    add_section_force(field, slot, frozen_sections(field, slot, u), f);
   return f;
 }
 

@@ -141,14 +141,17 @@ private:
   [[nodiscard]] std::size_t class_of(int e) const {
     return static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
   }
-  /// The sections of active element `slot` at u with the committed damage (the lagged step).
-  void frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;
-  /// Adds Sᵀ w (C(d) − C0) S uₑ of element a's damaged points (its sections as they stand) to f.
-  void add_section_force(const DamageField& field, std::size_t slot, const Eigen::VectorXd& u,
+  /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
+  using PointStrains = std::array<Eigen::Matrix<double, 8, 1>, 9>;
+  /// The sections of active element `slot` at u with the committed damage (the lagged step); returns the
+  /// strains of its damaged points (the others are left unset: their section is the undamaged one).
+  PointStrains frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;
+  /// Adds Sᵀ w (C(d) − C0) ε_p of element `slot`'s damaged points (its sections as they stand) to f.
+  void add_section_force(const DamageField& field, std::size_t slot, const PointStrains& strains,
                          Eigen::VectorXd& f) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
-  /// internal_force() then forms the element force from the sections.
-  void evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  /// returns the points' strains, from which internal_force() forms the element force.
+  PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
   /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
   /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
   [[nodiscard]] static double hashin_bound(const std::vector<Group>& groups,
