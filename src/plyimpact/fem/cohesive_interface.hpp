@@ -1,0 +1,95 @@
+#pragma once
+// The cohesive interface between two neighbouring sub-laminates of a stacked plate (issue 19,
+// docs/delamination.md "The stacked plate"). Both sub-laminates are Mindlin plates on the same mesh,
+// each on its own mid-plane; the interface lies at the bottom face of the upper one (local z = +h_u/2)
+// and the top face of the lower one (local z = −h_l/2). With u(z) = u0 + z θx, v(z) = v0 + z θy
+// (plate_element.hpp) the separation of the faces at a point is
+//
+//   δ_s1 = (u_l − ½h_l θx_l) − (u_u + ½h_u θx_u),
+//   δ_s2 = (v_l − ½h_l θy_l) − (v_u + ½h_u θy_u),                       (DL1)
+//   δ_n  = w_l − w_u            (> 0 opens: z points in the impact direction),
+//
+// interpolated with the Q9 shape functions of the element: δ = J (u_e,upper; u_e,lower) with the 3 × 90
+// jump operator J. The interface frame is the plate's (x, y, z). The element's force and tangent are
+//
+//   f_e = Σ_p w_p detJ_p J_pᵀ τ(δ_p),   K_e = Σ_p w_p detJ_p J_pᵀ (∂τ/∂δ)_p J_p,     (DL2)
+//
+// with τ, ∂τ/∂δ from the bilinear mixed-mode law (laminate/cohesive_law.hpp) at each point.
+//
+// Integration: the nodal (Lobatto 3 × 3, Newton–Cotes) rule by default — it uncouples the points of
+// a stiff penalty and avoids the traction oscillations of Gauss integration (Schellekens & de Borst
+// 1993) — or 3 × 3 Gauss.
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/laminate/cohesive_law.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace plyimpact {
+
+/// The integration rule of the interface elements.
+enum class CohesiveIntegration {
+  nodal, ///< Lobatto 3 × 3: the points are the nine nodes (Simpson weights)
+  gauss, ///< Gauss 3 × 3
+};
+
+using JumpOperator = Eigen::Matrix<double, 3, 2 * q9_dofs>;
+
+/// The evaluation of an interface at one displacement.
+struct CohesiveEvaluation {
+  std::vector<CohesiveState> trial; ///< per point, from the committed states
+  double dissipated = 0.0;          ///< energy dissipated from the committed to the trial states [J]
+};
+
+class CohesiveInterface {
+public:
+  /// `upper` and `lower` on the same mesh; their free DOFs start at `upper_offset` and `lower_offset`
+  /// of the stacked vector; h the sub-laminates' thicknesses [m].
+  CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset, int lower_offset,
+                    CohesiveLaw law, CohesiveIntegration rule = CohesiveIntegration::nodal);
+
+  [[nodiscard]] const CohesiveLaw& law() const { return law_; }
+  [[nodiscard]] int points_per_element() const { return static_cast<int>(rule_.size()); }
+  [[nodiscard]] int point_count() const { return element_count_ * points_per_element(); }
+  /// (x, y) of point p (index e · points_per_element() + q).
+  [[nodiscard]] const Eigen::Vector2d& point_position(int p) const { return position_[static_cast<std::size_t>(p)]; }
+  /// Area the point stands for, w_q detJ [m²].
+  [[nodiscard]] double point_area(int p) const { return area_[static_cast<std::size_t>(p)]; }
+
+  /// The separation (DL1) at point p for the stacked displacement u.
+  [[nodiscard]] Eigen::Vector3d separation(int p, const Eigen::VectorXd& u) const;
+
+  /// Adds the interface force (DL2) at u to f and its tangent to `tangent` (triplets over the stacked
+  /// equations), evaluating the law from the `committed` states; returns the trial states.
+  CohesiveEvaluation assemble(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
+                              Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>& tangent) const;
+
+  /// Free energy stored in the interface, Σ_p area_p ψ(δ_p) [J].
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states) const;
+  /// Area of the points whose damage has reached `threshold` [m²] (1: fully delaminated).
+  [[nodiscard]] double damaged_area(std::span<const CohesiveState> states, double threshold) const;
+
+private:
+  struct Point {
+    double xi, eta, weight;
+  };
+  [[nodiscard]] JumpOperator jump(double xi, double eta) const;
+  [[nodiscard]] Eigen::Matrix<double, 2 * q9_dofs, 1> element_dofs(int e, const Eigen::VectorXd& u) const;
+  [[nodiscard]] int equation(int e, int i) const;
+
+  const PlateModel& upper_;
+  const PlateModel& lower_;
+  int upper_offset_, lower_offset_;
+  double half_upper_, half_lower_;
+  CohesiveLaw law_;
+  std::vector<Point> rule_;
+  int element_count_;
+  std::vector<JumpOperator> jump_; ///< per point of the rule (same parent operator for every element)
+  std::vector<Eigen::Vector2d> position_;
+  std::vector<double> area_;
+};
+
+} // namespace plyimpact

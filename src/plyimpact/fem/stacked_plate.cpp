@@ -1,0 +1,108 @@
+#include "plyimpact/fem/stacked_plate.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace plyimpact {
+
+std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector<int>& cuts,
+                                     double shear_correction) {
+  const int plies = static_cast<int>(laminate.ply_count());
+  std::vector<Laminate> parts;
+  int first = 0;
+  auto add_part = [&](int end) { // plies [first, end)
+    std::vector<Ply> sub(laminate.plies().begin() + first, laminate.plies().begin() + end);
+    parts.emplace_back(laminate.materials(), std::move(sub), shear_correction,
+                       laminate.stiffness_model());
+    first = end;
+  };
+  for (const int cut : cuts) {
+    if (cut < first || cut > plies - 2)
+      throw std::invalid_argument(fmt::format(
+          "delamination interface after ply {} (1-based) does not exist or is out of order: a laminate of {} plies "
+          "has interfaces after plies 1 to {}, listed in increasing order",
+          cut + 1, plies, plies - 1));
+    add_part(cut + 1);
+  }
+  add_part(plies);
+  return parts;
+}
+
+std::vector<int> interfaces_between_orientations(const Laminate& laminate) {
+  std::vector<int> cuts;
+  for (std::size_t k = 0; k + 1 < laminate.ply_count(); ++k)
+    if (laminate.plies()[k].angle_deg != laminate.plies()[k + 1].angle_deg) cuts.push_back(static_cast<int>(k));
+  return cuts;
+}
+
+StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
+                                     Discretization discretization,
+                                     const std::function<BoundaryConditions(int sublaminate)>& bc_of) {
+  const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const int kk = static_cast<int>(k);
+    plates_.push_back(std::make_unique<PlateModel>(mesh, PlateSections{{parts[k]}, {}}, discretization, bc_of(kk)));
+    offset_.push_back(size_);
+    size_ += plates_.back()->size();
+  }
+  const CohesiveLaw law(stack.interface);
+  for (std::size_t i = 0; i + 1 < plates_.size(); ++i)
+    interfaces_.push_back(std::make_unique<CohesiveInterface>(*plates_[i], *plates_[i + 1], offset_[i],
+                                                              offset_[i + 1], law, stack.rule));
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (std::size_t k = 0; k < plates_.size(); ++k) {
+    const SparseMatrix K = plates_[k]->stiffness();
+    for (int c = 0; c < K.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(K, c); it; ++it)
+        triplets.emplace_back(offset_[k] + static_cast<int>(it.row()), offset_[k] + static_cast<int>(it.col()),
+                              it.value());
+  }
+  K_plates_.resize(size_, size_);
+  K_plates_.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+StackedPlateState StackedPlateModel::virgin_state() const {
+  StackedPlateState state;
+  for (const auto& i : interfaces_)
+    state.interfaces.emplace_back(static_cast<std::size_t>(i->point_count()));
+  return state;
+}
+
+void StackedPlateModel::crack(StackedPlateState& state, int i,
+                              const std::function<bool(const Eigen::Vector2d&)>& cracked) const {
+  const CohesiveInterface& face = interface(i);
+  auto& points = state.interfaces[static_cast<std::size_t>(i)];
+  for (int p = 0; p < face.point_count(); ++p)
+    if (cracked(face.point_position(p))) points[static_cast<std::size_t>(p)].damage = 1.0;
+}
+
+StackedPlateEvaluation StackedPlateModel::evaluate(const Eigen::VectorXd& u,
+                                                   const StackedPlateState& committed) const {
+  StackedPlateEvaluation out;
+  out.force = K_plates_ * u;
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], out.force, triplets);
+    out.dissipated += e.dissipated;
+    out.trial.interfaces.push_back(std::move(e.trial));
+  }
+  SparseMatrix K_coh(size_, size_);
+  K_coh.setFromTriplets(triplets.begin(), triplets.end());
+  out.tangent = K_plates_ + K_coh;
+  return out;
+}
+
+double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
+  double energy = 0.5 * u.dot(K_plates_ * u);
+  for (std::size_t i = 0; i < interfaces_.size(); ++i)
+    energy += interfaces_[i]->stored_energy(u, state.interfaces[i]);
+  return energy;
+}
+
+int StackedPlateModel::equation(int k, int node, int dof) const {
+  const int eq = sublaminate(k).dofs().equation(node, dof);
+  return eq < 0 ? -1 : offset(k) + eq;
+}
+
+} // namespace plyimpact
