@@ -451,3 +451,43 @@ TEST(CohesiveLawParameters, CohesiveZoneLengthMatchesTuronMeshRule) {
 
 } // namespace
 } // namespace plyimpact
+
+namespace plyimpact {
+namespace {
+
+// The loading band changes the tangent only: just below the envelope (a point about to load, or about to
+// start softening) the tangent is the loading side's derivative of the traction, which central
+// differences taken from above the envelope reproduce; traction, damage and dissipation are the law's.
+TEST(CohesiveLawLoadingBand, ChoosesTheLoadingTangentJustBelowTheEnvelopeAndNothingElse) {
+  const CohesiveLaw law(as4_peek());
+  const Eigen::Vector3d direction = Eigen::Vector3d(0.3, 0.1, 1.0).normalized();
+  const double B = CohesiveLaw::mode_mixity(direction);
+  const double onset = law.onset_separation(B), failure = law.final_separation(B);
+  const CohesiveState softened = law.update({}, 0.5 * (onset + failure) * direction).state;
+  for (const auto& [state, lambda_env] :
+       {std::pair{CohesiveState{}, onset}, std::pair{softened, 0.5 * (onset + failure)}}) {
+    const Eigen::Vector3d below = (1.0 - 1e-3) * lambda_env * direction; // inside a band of 1e-2
+    const CohesiveResponse plain = law.update(state, below);
+    const CohesiveResponse banded = law.update(state, below, 1e-2);
+    EXPECT_EQ(banded.traction, plain.traction);
+    EXPECT_EQ(banded.state.damage, plain.state.damage);
+    EXPECT_EQ(banded.dissipated_energy, 0.0);
+    // The loading tangent: central differences just above the envelope.
+    const Eigen::Vector3d above = (1.0 + 1e-3) * lambda_env * direction;
+    Eigen::Matrix3d fd;
+    for (int j = 0; j < 3; ++j) {
+      const double h = 1e-6 * lambda_env;
+      fd.col(j) = (law.update(state, above + h * Eigen::Vector3d::Unit(j)).traction -
+                   law.update(state, above - h * Eigen::Vector3d::Unit(j)).traction) /
+                  (2.0 * h);
+    }
+    EXPECT_LT((banded.tangent - fd).norm(), 5e-3 * fd.norm()) << "d = " << state.damage;
+    EXPECT_GT((plain.tangent - fd).norm(), 0.1 * fd.norm()); // the secant is not it
+    // Outside the band: the secant again.
+    const Eigen::Vector3d far_below = 0.9 * lambda_env * direction;
+    EXPECT_EQ(law.update(state, far_below, 1e-2).tangent, law.update(state, far_below).tangent);
+  }
+}
+
+} // namespace
+} // namespace plyimpact

@@ -68,24 +68,50 @@ struct StepSolution {
   int iterations = 0;
 };
 
-/// Newton's method on the free DOFs at control displacement `delta`, from the guess `u`.
+/// The residual on the free DOFs at u and the evaluation it came from.
+struct Residual {
+  StackedPlateEvaluation evaluation;
+  Eigen::VectorXd free;
+};
+
+Residual residual_at(const StackedPlateModel& model, const FreePart& free, const StackedPlateState& committed,
+                     const Eigen::VectorXd& u) {
+  StackedPlateEvaluation e = model.evaluate(u, committed);
+  Eigen::VectorXd r = free.restrict(e.force);
+  return {std::move(e), std::move(r)};
+}
+
+/// Newton's method on the free DOFs at control displacement `delta`, from the guess `u`, with a
+/// backtracking line search on ‖r‖: the law is only piecewise smooth (a point leaves or rejoins its
+/// softening envelope), and full Newton steps can cycle between the pieces. When no step length down to
+/// 1/64 lowers ‖r‖ the shortest is taken; an attempt that has not converged after max_iterations is
+/// given up, and the caller halves the step.
 std::optional<StepSolution> solve_step(const StackedPlateModel& model, const ControlledDisplacement& control,
                                        const FreePart& free, const StackedPlateState& committed, Eigen::VectorXd u,
                                        double delta, const DisplacementPathSettings& settings, int& iterations) {
   impose(control, delta, u);
   Eigen::SparseLU<SparseMatrix> lu;
+  Residual r = residual_at(model, free, committed, u);
   for (int k = 0; k < settings.max_iterations; ++k) {
-    StackedPlateEvaluation e = model.evaluate(u, committed);
-    const Eigen::VectorXd r = free.restrict(e.force);
-    const double scale = std::max(std::abs(conjugate_force(control, e.force)), e.force.norm());
-    if (k > 0 && r.norm() <= settings.tolerance * std::max(scale, 1e-300))
-      return StepSolution{std::move(u), std::move(e), k};
-    lu.compute(free.restrict(e.tangent));
+    const double scale = std::max(std::abs(conjugate_force(control, r.evaluation.force)), r.evaluation.force.norm());
+    if (r.free.norm() <= settings.tolerance * std::max(scale, 1e-300))
+      return StepSolution{std::move(u), std::move(r.evaluation), k};
+    lu.compute(free.restrict(r.evaluation.tangent));
     if (lu.info() != Eigen::Success) return std::nullopt;
-    const Eigen::VectorXd du = lu.solve(-r);
+    const Eigen::VectorXd minus_r = -r.free;
+    const Eigen::VectorXd du = lu.solve(minus_r);
     if (!du.allFinite()) return std::nullopt;
-    free.add(u, du);
     ++iterations;
+    for (double alpha = 1.0;; alpha *= 0.5) {
+      Eigen::VectorXd trial = u;
+      free.add(trial, alpha * du);
+      Residual next = residual_at(model, free, committed, trial);
+      if (next.free.norm() < (1.0 - 1e-4 * alpha) * r.free.norm() || alpha < 1.0 / 64.0) {
+        u = std::move(trial);
+        r = std::move(next);
+        break;
+      }
+    }
   }
   return std::nullopt;
 }

@@ -19,10 +19,10 @@ std::vector<QuadraturePoint> rule_points(CohesiveIntegration rule) {
 } // namespace
 
 CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
-                                     int lower_offset, CohesiveLaw law, CohesiveIntegration rule)
+                                     int lower_offset, CohesiveLaw law, CohesiveIntegration rule, double loading_band)
     : upper_(upper), lower_(lower), upper_offset_(upper_offset), lower_offset_(lower_offset),
       half_upper_(0.5 * upper.laminate().thickness()), half_lower_(0.5 * lower.laminate().thickness()),
-      law_(std::move(law)), element_count_(upper.mesh().element_count()) {
+      law_(std::move(law)), loading_band_(loading_band), element_count_(upper.mesh().element_count()) {
   if (lower.mesh().element_count() != element_count_ || lower.mesh().node_count() != upper.mesh().node_count())
     throw std::invalid_argument("cohesive interface: the two sub-laminates must share one mesh");
   for (const QuadraturePoint& q : rule_points(rule)) {
@@ -97,7 +97,7 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u, std::sp
     for (int q = 0; q < n; ++q) {
       const auto p = static_cast<std::size_t>(e * n + q);
       const JumpOperator& J = jump_[static_cast<std::size_t>(q)];
-      const CohesiveResponse r = law_.update(committed[p], J * ue);
+      const CohesiveResponse r = law_.update(committed[p], J * ue, loading_band_);
       out.trial[p] = r.state;
       out.dissipated += area_[p] * r.dissipated_energy;
       fe.noalias() += area_[p] * (J.transpose() * r.traction);

@@ -47,9 +47,10 @@ struct CohesiveEvaluation {
 class CohesiveInterface {
 public:
   /// `upper` and `lower` on the same mesh; their free DOFs start at `upper_offset` and `lower_offset`
-  /// of the stacked vector; h the sub-laminates' thicknesses [m].
+  /// of the stacked vector. `loading_band`: the tangent's choice at the law's kink (CohesiveLaw::update).
   CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset, int lower_offset,
-                    CohesiveLaw law, CohesiveIntegration rule = CohesiveIntegration::nodal);
+                    CohesiveLaw law, CohesiveIntegration rule = CohesiveIntegration::nodal,
+                    double loading_band = 0.0);
 
   [[nodiscard]] const CohesiveLaw& law() const { return law_; }
   [[nodiscard]] int points_per_element() const { return static_cast<int>(rule_.size()); }
@@ -85,6 +86,7 @@ private:
   int upper_offset_, lower_offset_;
   double half_upper_, half_lower_;
   CohesiveLaw law_;
+  double loading_band_;
   std::vector<Point> rule_;
   int element_count_;
   std::vector<JumpOperator> jump_; ///< per point of the rule (same parent operator for every element)

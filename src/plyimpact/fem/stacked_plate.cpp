@@ -49,7 +49,8 @@ StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate,
   const CohesiveLaw law(stack.interface);
   for (std::size_t i = 0; i + 1 < plates_.size(); ++i)
     interfaces_.push_back(std::make_unique<CohesiveInterface>(*plates_[i], *plates_[i + 1], offset_[i],
-                                                              offset_[i + 1], law, stack.rule));
+                                                              offset_[i + 1], law, stack.rule,
+                                                              stack.loading_band));
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     const SparseMatrix K = plates_[k]->stiffness();

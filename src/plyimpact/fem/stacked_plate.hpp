@@ -59,6 +59,9 @@ struct StackSettings {
   CohesiveParameters interface;    ///< the law of every interface
   CohesiveIntegration rule = CohesiveIntegration::nodal;
   double shear_correction = layerwise_shear_correction; ///< of every sub-laminate
+  /// Newton's choice of tangent at the law's kink (CohesiveLaw::update): the loading tangent within
+  /// this relative band below the softening envelope.
+  double loading_band = 1e-2;
 };
 
 class StackedPlateModel {

@@ -146,7 +146,8 @@ double CohesiveLaw::envelope_separation(double d, double B) const {
   return onset * failure / (failure - d * (failure - onset));
 }
 
-CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen::Vector3d& separation) const {
+CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen::Vector3d& separation,
+                                    double loading_band) const {
   const double K = p_.penalty_stiffness;
   const double normal = separation(2);
   // The part of the separation that damage degrades: sliding and opening, not closing.
@@ -162,18 +163,24 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
   r.state.damage = d;
   r.traction = (1.0 - d) * K * degradable;
   r.tangent.diagonal() << (1.0 - d) * K, (1.0 - d) * K, (1.0 - d) * K;
-  if (normal <= 0.0) {
-    r.traction(2) = K * normal; // contact penalty: closing is never softened
+  // Contact penalty: closing is never softened. At δ_n = 0 exactly the tangent is the opening one, so that
+  // an initial crack at rest (d = 1, δ = 0) starts open rather than glued (the traction is 0 either way).
+  if (normal < 0.0) {
+    r.traction(2) = K * normal;
     r.tangent(2, 2) = K;
   }
-  if (!damage_grows) return r; // elastic on the secant (1 − d) K: loading below the envelope, unloading
+  // Within the band just below the envelope the tangent is the loading one (the traction is not).
+  const bool near_envelope = loading_band > 0.0 && d < 1.0 && lambda > 0.0 &&
+                             lambda >= (1.0 - loading_band) * envelope_separation(d, B);
+  if (!damage_grows && !near_envelope) return r; // elastic on the secant (1 − d) K: below the envelope
 
   const double onset = onset_separation(B);
   const double failure = final_separation(B);
-  const double G_c = critical_energy_release_rate(B);
-  // ∫ ½ K λ² dd along the envelope from d_previous to d: linear in the envelope separation.
-  r.dissipated_energy =
-      G_c * (envelope_separation(d, B) - envelope_separation(previous.damage, B)) / (failure - onset);
+  if (damage_grows) {
+    // ∫ ½ K λ² dd along the envelope from d_previous to d: linear in the envelope separation.
+    r.dissipated_energy = critical_energy_release_rate(B) *
+                          (envelope_separation(d, B) - envelope_separation(previous.damage, B)) / (failure - onset);
+  }
   if (d >= 1.0) return r; // past Δᶠ: d is stuck at 1 and does not vary with δ
 
   // Softening: τ = (1 − d(λ, B)) K δ̂ ⇒ ∂τ/∂δ = (1 − d) K I − K δ̂ ⊗ ∂d/∂δ.
@@ -190,7 +197,8 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
     const double eta = p_.bk_exponent;
     const double dGc_dB = (p_.G_IIc - p_.G_Ic) * eta * std::pow(B, eta - 1.0);
     const double donset_dB = onset_separation_slope(B);
-    const double dfailure_dB = 2.0 / K * (dGc_dB / onset - G_c * donset_dB / (onset * onset));
+    const double dfailure_dB =
+        2.0 / K * (dGc_dB / onset - critical_energy_release_rate(B) * donset_dB / (onset * onset));
     // d = Δᶠ (λ − Δ⁰) / (λ (Δᶠ − Δ⁰)): partial derivatives in Δ⁰ and Δᶠ.
     const double dd_donset = failure * (lambda - failure) / (lambda * spread * spread);
     const double dd_dfailure = -onset * (lambda - onset) / (lambda * spread * spread);

@@ -103,8 +103,14 @@ public:
   /// The energy dissipated while d grows from d₀ to d₁ at mixity B is exactly ∫ ½ K λ² dd along the
   /// envelope = G_c(B) (λ(d₁) − λ(d₀)) / (Δᶠ − Δ⁰), with λ(d) the envelope separation of damage d:
   /// exact for a proportional increment, the mixity of the end of the increment otherwise.
-  [[nodiscard]] CohesiveResponse update(const CohesiveState& previous,
-                                        const Eigen::Vector3d& separation) const;
+  ///
+  /// `loading_band` > 0 is for Newton's method on a structure: at a point whose equivalent separation is
+  /// within the relative band below its envelope (λ ≥ (1 − band) λ_env(d)), the tangent is the
+  /// softening one of the envelope instead of the secant, while the traction and state stay exact. The
+  /// law is only piecewise smooth; choosing the loading side at its kink keeps the iterations of a point
+  /// that is about to load (or to start softening) from cycling between the two pieces.
+  [[nodiscard]] CohesiveResponse update(const CohesiveState& previous, const Eigen::Vector3d& separation,
+                                        double loading_band = 0.0) const;
 
   /// Free energy ψ = ½(1 − d) K (δ_sh² + ⟨δ_n⟩²) + ½ K ⟨−δ_n⟩² stored per unit area [J/m²].
   [[nodiscard]] double stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const;
