@@ -215,11 +215,16 @@ end = 2.0
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
 
-  const std::string text = read_text(out / "history.csv");
+  std::string text = read_text(out / "history.csv");
   ASSERT_FALSE(text.empty());
-  EXPECT_EQ(text.back(), '\n'); // complete lines only
+  // A SIGKILL that lands while a block is being written (the kernel copies it page by page and stops
+  // between pages for a fatal signal) cuts that block: every line before the last is complete, the
+  // last may be cut short (docs/output.md). The bytes seen before the kill stay in the file.
+  const bool cut = text.back() != '\n';
+  if (cut) text.erase(text.rfind('\n') + 1);
   const std::vector<std::string> rows = lines_of(text);
-  ASSERT_GE(rows.size(), 1000U);
+  ASSERT_GE(rows.size(), rows_at_kill - 1);
+  ASSERT_GE(rows.size(), 999U);
   EXPECT_EQ(rows[0], "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
                      "plate_strain_J,impactor_energy_J,contact_work_J");
   for (std::size_t i = 1; i < rows.size(); ++i) {
@@ -229,7 +234,8 @@ end = 2.0
         << i;
   }
   EXPECT_FALSE(fs::exists(out / "summary.json")); // visibly not a complete run
-  std::printf("  killed with %zu rows in history.csv\n", rows.size() - 1);
+  std::printf("  killed with %zu complete rows in history.csv%s\n", rows.size() - 1,
+              cut ? " and the last one cut short" : "");
 }
 
 TEST(OutputFolder, AThousandByThousandMeshIsRefusedBeforeAssemblyWithTheEstimate) {

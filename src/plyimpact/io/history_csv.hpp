@@ -1,7 +1,8 @@
 #pragma once
 // history.csv written while the run goes (docs/output.md): the header at once, then complete rows in
 // buffered blocks, flushed every block and at least every second, so a run killed at any moment leaves
-// a valid CSV of the steps done, and memory does not grow with the number of steps.
+// a CSV of the steps done (a kill -9 during a block's write may cut its last line short), and memory
+// does not grow with the number of steps.
 #include "plyimpact/analysis/impact_observer.hpp"
 
 #include <chrono>
