@@ -83,12 +83,14 @@ protected:
   static constexpr double a = 0.04, b = 0.03, h = 1e-3;
   Laminate lam{{as4_peek()}, {{0.0, h, 0}, {90.0, 2.0 * h, 0}}};
   Mesh mesh = structured_rectangle({a, b}, 2, 2);
-  StackedPlateModel stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {},
-                          [](int) { return BoundaryConditions::on_edges("free", "free", "free", "free"); }};
+  StackedPlateModel stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {}, [](int) {
+                            return BoundaryConditions::on_edges("free", "free", "free", "free");
+                          }};
 
   /// A stacked vector from a displacement field u(x, y, z) of the whole laminate that is a Mindlin field
   /// with the same (w, θx, θy) in both sub-laminates: u0_k = u(z_k) at each sub-laminate's mid-plane.
-  Eigen::VectorXd whole_laminate_field(const std::function<std::array<double, 5>(double x, double y)>& mid) const {
+  Eigen::VectorXd
+  whole_laminate_field(const std::function<std::array<double, 5>(double x, double y)>& mid) const {
     Eigen::VectorXd u = Eigen::VectorXd::Zero(stack.size());
     const std::array<double, 2> z_mid{-0.5 * lam.thickness() + 0.5 * h, -0.5 * lam.thickness() + 2.0 * h};
     for (int k = 0; k < 2; ++k)
@@ -157,7 +159,8 @@ TEST_F(TwoSubLaminates, ForceIsTheGradientOfTheStoredEnergy) {
       s.damage = d;
     const StackedPlateEvaluation e = stack.evaluate(u, state);
     const double eps = 1e-3;
-    const double fd = (stack.stored_energy(u + eps * v, state) - stack.stored_energy(u - eps * v, state)) / (2 * eps);
+    const double fd =
+        (stack.stored_energy(u + eps * v, state) - stack.stored_energy(u - eps * v, state)) / (2 * eps);
     EXPECT_NEAR(e.force.dot(v), fd, 1e-7 * std::abs(fd)) << "d = " << d;
   }
 }
@@ -183,7 +186,8 @@ Eigen::VectorXd pressure(const PlateModel& model, double q, int offset, int size
   Eigen::VectorXd f = Eigen::VectorXd::Zero(size);
   Eigen::VectorXd fm = Eigen::VectorXd::Zero(model.size());
   for (int e = 0; e < model.mesh().element_count(); ++e)
-    scatter_add(fm, model.element_equations(e), PlateElement::pressure_load(model.mesh().element_coordinates(e), q));
+    scatter_add(fm, model.element_equations(e),
+                PlateElement::pressure_load(model.mesh().element_coordinates(e), q));
   f.segment(offset, model.size()) = fm;
   return f;
 }
@@ -198,7 +202,9 @@ TEST(StackedPlate, WithInterfacesThatHoldItIsTheSingleLaminate) {
   const double a = 0.1, ply = 0.5e-3, q = 1e4;
   const Laminate lam = cross_ply(ply);
   const Mesh mesh = structured_rectangle({a, a}, 8, 8);
-  const auto clamped = [](int) { return BoundaryConditions::on_edges("clamped", "clamped", "clamped", "clamped"); };
+  const auto clamped = [](int) {
+    return BoundaryConditions::on_edges("clamped", "clamped", "clamped", "clamped");
+  };
   int centre = 0;
   for (int n = 0; n < mesh.node_count(); ++n)
     if ((mesh.node(n) - Eigen::Vector2d(0.5 * a, 0.5 * a)).norm() < 1e-12) centre = n;
@@ -206,13 +212,16 @@ TEST(StackedPlate, WithInterfacesThatHoldItIsTheSingleLaminate) {
 
   const PlateModel single(mesh, PlateSections{{lam}, {}}, {}, clamped(0));
   const Eigen::SimplicialLDLT<SparseMatrix> ldlt(single.stiffness());
-  const double w_single = ldlt.solve(pressure(single, q, 0, single.size()))(single.dofs().equation(centre, 2));
+  const double w_single =
+      ldlt.solve(pressure(single, q, 0, single.size()))(single.dofs().equation(centre, 2));
 
   const auto stacked_deflections = [&](double shear_correction) {
     const StackedPlateModel stack(
-        mesh, lam, StackSettings{interfaces_between_orientations(lam), as4_peek_interface(ply), {}, shear_correction},
+        mesh, lam,
+        StackSettings{interfaces_between_orientations(lam), as4_peek_interface(ply), {}, shear_correction},
         {}, clamped);
-    const StackedPlateEvaluation e = stack.evaluate(Eigen::VectorXd::Zero(stack.size()), stack.virgin_state());
+    const StackedPlateEvaluation e =
+        stack.evaluate(Eigen::VectorXd::Zero(stack.size()), stack.virgin_state());
     const Eigen::SparseLU<SparseMatrix> lu(e.tangent);
     const Eigen::VectorXd us = lu.solve(pressure(stack.sublaminate(0), q, 0, stack.size())); // impacted side
     std::array<double, 3> w{};

@@ -87,13 +87,15 @@ Residual residual_at(const StackedPlateModel& model, const FreePart& free, const
 /// 1/64 lowers ‖r‖ the shortest is taken; an attempt that has not converged after max_iterations is
 /// given up, and the caller halves the step.
 std::optional<StepSolution> solve_step(const StackedPlateModel& model, const ControlledDisplacement& control,
-                                       const FreePart& free, const StackedPlateState& committed, Eigen::VectorXd u,
-                                       double delta, const DisplacementPathSettings& settings, int& iterations) {
+                                       const FreePart& free, const StackedPlateState& committed,
+                                       Eigen::VectorXd u, double delta,
+                                       const DisplacementPathSettings& settings, int& iterations) {
   impose(control, delta, u);
   Eigen::SparseLU<SparseMatrix> lu;
   Residual r = residual_at(model, free, committed, u);
   for (int k = 0; k < settings.max_iterations; ++k) {
-    const double scale = std::max(std::abs(conjugate_force(control, r.evaluation.force)), r.evaluation.force.norm());
+    const double scale =
+        std::max(std::abs(conjugate_force(control, r.evaluation.force)), r.evaluation.force.norm());
     if (r.free.norm() <= settings.tolerance * std::max(scale, 1e-300))
       return StepSolution{std::move(u), std::move(r.evaluation), k};
     lu.compute(free.restrict(r.evaluation.tangent));
@@ -118,8 +120,9 @@ std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Con
 
 } // namespace
 
-DisplacementPath follow_displacement_path(const StackedPlateModel& model, const ControlledDisplacement& control,
-                                          StackedPlateState state, const DisplacementPathSettings& settings,
+DisplacementPath follow_displacement_path(const StackedPlateModel& model,
+                                          const ControlledDisplacement& control, StackedPlateState state,
+                                          const DisplacementPathSettings& settings,
                                           const PathObserver& observe) {
   const FreePart free(model.size(), control);
   DisplacementPath path;
@@ -137,17 +140,18 @@ DisplacementPath follow_displacement_path(const StackedPlateModel& model, const 
     int iterations = 0;
     for (int cut = 0; cut <= settings.max_cuts && !solution; ++cut, increment *= 0.5) {
       // Predictor: the previous step's increment, scaled to this one.
-      const double scale = std::abs(point.displacement - (path.points.size() > 1
-                                                              ? path.points[path.points.size() - 2].displacement
-                                                              : 0.0));
+      const double scale =
+          std::abs(point.displacement -
+                   (path.points.size() > 1 ? path.points[path.points.size() - 2].displacement : 0.0));
       Eigen::VectorXd guess = path.u;
       if (scale > 0.0) guess += previous_increment * (increment / scale);
       solution = solve_step(model, control, free, state, guess, delta + increment, settings, iterations);
     }
     if (!solution)
-      throw std::runtime_error(fmt::format("stacked plate: no equilibrium found at control displacement {:.6g} m "
-                                           "after {} halvings of the step",
-                                           delta + 2.0 * increment, settings.max_cuts));
+      throw std::runtime_error(
+          fmt::format("stacked plate: no equilibrium found at control displacement {:.6g} m "
+                      "after {} halvings of the step",
+                      delta + 2.0 * increment, settings.max_cuts));
     increment *= 2.0; // undo the last halving of the loop
     previous_increment = solution->u - path.u;
     path.u = std::move(solution->u);

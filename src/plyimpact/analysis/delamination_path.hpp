@@ -5,9 +5,10 @@
 //
 // A set of DOFs moves with one control displacement Δ: u_i = c_i Δ. The other DOFs carry no load, so
 // each step solves f_F(u) = 0 on them by Newton's method with the consistent tangent of the stacked
-// model (unsymmetric under mixed mode: Eigen's sparse LU, 3× faster than UMFPACK on the DCB strip), the interface damage evaluated from the state of the
-// last converged step. The conjugate force is P = Σ_i c_i f_i(u) (virtual work: P dΔ = Σ f_i c_i dΔ).
-// A step whose iterations do not converge is halved, up to `max_cuts` times.
+// model (unsymmetric under mixed mode: Eigen's sparse LU, 3× faster than UMFPACK on the DCB strip), the
+// interface damage evaluated from the state of the last converged step. The conjugate force is P = Σ_i c_i
+// f_i(u) (virtual work: P dΔ = Σ f_i c_i dΔ). A step whose iterations do not converge is halved, up to
+// `max_cuts` times.
 //
 // The energy of the path: the work W = ∫ P dΔ (trapezoidal rule), the stored energy of the model and
 // the energy its interfaces dissipated; W = stored + dissipated is the balance a test checks.

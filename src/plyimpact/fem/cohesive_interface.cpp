@@ -4,7 +4,6 @@
 #include "plyimpact/fem/shape_functions.hpp"
 
 #include <stdexcept>
-#include <utility>
 
 namespace plyimpact {
 
@@ -19,11 +18,13 @@ std::vector<QuadraturePoint> rule_points(CohesiveIntegration rule) {
 } // namespace
 
 CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
-                                     int lower_offset, CohesiveLaw law, CohesiveIntegration rule, double loading_band)
+                                     int lower_offset, CohesiveLaw law, CohesiveIntegration rule,
+                                     double loading_band)
     : upper_(upper), lower_(lower), upper_offset_(upper_offset), lower_offset_(lower_offset),
       half_upper_(0.5 * upper.laminate().thickness()), half_lower_(0.5 * lower.laminate().thickness()),
-      law_(std::move(law)), loading_band_(loading_band), element_count_(upper.mesh().element_count()) {
-  if (lower.mesh().element_count() != element_count_ || lower.mesh().node_count() != upper.mesh().node_count())
+      law_(law), loading_band_(loading_band), element_count_(upper.mesh().element_count()) {
+  if (lower.mesh().element_count() != element_count_ ||
+      lower.mesh().node_count() != upper.mesh().node_count())
     throw std::invalid_argument("cohesive interface: the two sub-laminates must share one mesh");
   for (const QuadraturePoint& q : rule_points(rule)) {
     rule_.push_back({q.xi, q.eta, q.weight});
@@ -84,8 +85,8 @@ Eigen::Vector3d CohesiveInterface::separation(int p, const Eigen::VectorXd& u) c
   return jump_[static_cast<std::size_t>(p % n)] * element_dofs(p / n, u);
 }
 
-CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
-                                               Eigen::VectorXd& f,
+CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
+                                               std::span<const CohesiveState> committed, Eigen::VectorXd& f,
                                                std::vector<Eigen::Triplet<double>>& tangent) const {
   CohesiveEvaluation out;
   out.trial.resize(committed.size());
@@ -93,9 +94,11 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u, std::sp
   for (int e = 0; e < element_count_; ++e) {
     const auto ue = element_dofs(e, u);
     Eigen::Matrix<double, 2 * q9_dofs, 1> fe = Eigen::Matrix<double, 2 * q9_dofs, 1>::Zero();
-    Eigen::Matrix<double, 2 * q9_dofs, 2 * q9_dofs> Ke = Eigen::Matrix<double, 2 * q9_dofs, 2 * q9_dofs>::Zero();
+    Eigen::Matrix<double, 2 * q9_dofs, 2 * q9_dofs> Ke =
+        Eigen::Matrix<double, 2 * q9_dofs, 2 * q9_dofs>::Zero();
     for (int q = 0; q < n; ++q) {
-      const auto p = static_cast<std::size_t>(e * n + q);
+      const std::size_t p =
+          static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const JumpOperator& J = jump_[static_cast<std::size_t>(q)];
       const CohesiveResponse r = law_.update(committed[p], J * ue, loading_band_);
       out.trial[p] = r.state;
@@ -116,10 +119,12 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u, std::sp
   return out;
 }
 
-double CohesiveInterface::stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states) const {
+double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,
+                                        std::span<const CohesiveState> states) const {
   double energy = 0.0;
   for (int p = 0; p < point_count(); ++p)
-    energy += area_[static_cast<std::size_t>(p)] * law_.stored_energy(states[static_cast<std::size_t>(p)], separation(p, u));
+    energy += area_[static_cast<std::size_t>(p)] *
+              law_.stored_energy(states[static_cast<std::size_t>(p)], separation(p, u));
   return energy;
 }
 

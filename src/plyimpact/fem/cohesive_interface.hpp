@@ -56,7 +56,9 @@ public:
   [[nodiscard]] int points_per_element() const { return static_cast<int>(rule_.size()); }
   [[nodiscard]] int point_count() const { return element_count_ * points_per_element(); }
   /// (x, y) of point p (index e · points_per_element() + q).
-  [[nodiscard]] const Eigen::Vector2d& point_position(int p) const { return position_[static_cast<std::size_t>(p)]; }
+  [[nodiscard]] const Eigen::Vector2d& point_position(int p) const {
+    return position_[static_cast<std::size_t>(p)];
+  }
   /// Area the point stands for, w_q detJ [m²].
   [[nodiscard]] double point_area(int p) const { return area_[static_cast<std::size_t>(p)]; }
 

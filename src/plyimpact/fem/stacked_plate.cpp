@@ -13,16 +13,16 @@ std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector
   int first = 0;
   auto add_part = [&](int end) { // plies [first, end)
     std::vector<Ply> sub(laminate.plies().begin() + first, laminate.plies().begin() + end);
-    parts.emplace_back(laminate.materials(), std::move(sub), shear_correction,
-                       laminate.stiffness_model());
+    parts.emplace_back(laminate.materials(), std::move(sub), shear_correction, laminate.stiffness_model());
     first = end;
   };
   for (const int cut : cuts) {
     if (cut < first || cut > plies - 2)
-      throw std::invalid_argument(fmt::format(
-          "delamination interface after ply {} (1-based) does not exist or is out of order: a laminate of {} plies "
-          "has interfaces after plies 1 to {}, listed in increasing order",
-          cut + 1, plies, plies - 1));
+      throw std::invalid_argument(
+          fmt::format("delamination interface after ply {} (1-based) does not exist or is out of order: a "
+                      "laminate of {} plies "
+                      "has interfaces after plies 1 to {}, listed in increasing order",
+                      cut + 1, plies, plies - 1));
     add_part(cut + 1);
   }
   add_part(plies);
@@ -32,7 +32,8 @@ std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector
 std::vector<int> interfaces_between_orientations(const Laminate& laminate) {
   std::vector<int> cuts;
   for (std::size_t k = 0; k + 1 < laminate.ply_count(); ++k)
-    if (laminate.plies()[k].angle_deg != laminate.plies()[k + 1].angle_deg) cuts.push_back(static_cast<int>(k));
+    if (laminate.plies()[k].angle_deg != laminate.plies()[k + 1].angle_deg)
+      cuts.push_back(static_cast<int>(k));
   return cuts;
 }
 
@@ -42,22 +43,22 @@ StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate,
   const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const int kk = static_cast<int>(k);
-    plates_.push_back(std::make_unique<PlateModel>(mesh, PlateSections{{parts[k]}, {}}, discretization, bc_of(kk)));
+    plates_.push_back(
+        std::make_unique<PlateModel>(mesh, PlateSections{{parts[k]}, {}}, discretization, bc_of(kk)));
     offset_.push_back(size_);
     size_ += plates_.back()->size();
   }
   const CohesiveLaw law(stack.interface);
   for (std::size_t i = 0; i + 1 < plates_.size(); ++i)
-    interfaces_.push_back(std::make_unique<CohesiveInterface>(*plates_[i], *plates_[i + 1], offset_[i],
-                                                              offset_[i + 1], law, stack.rule,
-                                                              stack.loading_band));
+    interfaces_.push_back(std::make_unique<CohesiveInterface>(
+        *plates_[i], *plates_[i + 1], offset_[i], offset_[i + 1], law, stack.rule, stack.loading_band));
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     const SparseMatrix K = plates_[k]->stiffness();
     for (int c = 0; c < K.outerSize(); ++c)
       for (SparseMatrix::InnerIterator it(K, c); it; ++it)
-        triplets.emplace_back(offset_[k] + static_cast<int>(it.row()), offset_[k] + static_cast<int>(it.col()),
-                              it.value());
+        triplets.emplace_back(offset_[k] + static_cast<int>(it.row()),
+                              offset_[k] + static_cast<int>(it.col()), it.value());
   }
   K_plates_.resize(size_, size_);
   K_plates_.setFromTriplets(triplets.begin(), triplets.end());

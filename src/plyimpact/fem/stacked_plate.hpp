@@ -55,8 +55,8 @@ struct StackedPlateEvaluation {
 
 /// How the laminate is stacked and tied.
 struct StackSettings {
-  std::vector<int> cuts;           ///< split_laminate's cuts
-  CohesiveParameters interface;    ///< the law of every interface
+  std::vector<int> cuts;        ///< split_laminate's cuts
+  CohesiveParameters interface; ///< the law of every interface
   CohesiveIntegration rule = CohesiveIntegration::nodal;
   double shear_correction = layerwise_shear_correction; ///< of every sub-laminate
   /// Newton's choice of tangent at the law's kink (CohesiveLaw::update): the loading tangent within
@@ -78,17 +78,21 @@ public:
   [[nodiscard]] const PlateModel& sublaminate(int k) const { return *plates_[static_cast<std::size_t>(k)]; }
   /// First stacked equation of sub-laminate k.
   [[nodiscard]] int offset(int k) const { return offset_[static_cast<std::size_t>(k)]; }
-  [[nodiscard]] const CohesiveInterface& interface(int i) const { return *interfaces_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] const CohesiveInterface& interface(int i) const {
+    return *interfaces_[static_cast<std::size_t>(i)];
+  }
   /// Block-diagonal stiffness of the sub-laminates.
   [[nodiscard]] const SparseMatrix& plate_stiffness() const { return K_plates_; }
 
   /// No damage anywhere.
   [[nodiscard]] StackedPlateState virgin_state() const;
   /// Marks as cracked (d = 1) the points of interface i where `cracked(x, y)` holds (an initial crack).
-  void crack(StackedPlateState& state, int i, const std::function<bool(const Eigen::Vector2d&)>& cracked) const;
+  void crack(StackedPlateState& state, int i,
+             const std::function<bool(const Eigen::Vector2d&)>& cracked) const;
 
   /// f(u), its tangent and the trial states, from the committed states.
-  [[nodiscard]] StackedPlateEvaluation evaluate(const Eigen::VectorXd& u, const StackedPlateState& committed) const;
+  [[nodiscard]] StackedPlateEvaluation evaluate(const Eigen::VectorXd& u,
+                                                const StackedPlateState& committed) const;
   /// Elastic energy ½ uᵀ K_plates u + the interfaces' stored energy [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
 

@@ -147,7 +147,7 @@ double CohesiveLaw::envelope_separation(double d, double B) const {
 }
 
 CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen::Vector3d& separation,
-                                    double loading_band) const {
+                                     double loading_band) const {
   const double K = p_.penalty_stiffness;
   const double normal = separation(2);
   // The part of the separation that damage degrades: sliding and opening, not closing.
@@ -179,7 +179,8 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
   if (damage_grows) {
     // ∫ ½ K λ² dd along the envelope from d_previous to d: linear in the envelope separation.
     r.dissipated_energy = critical_energy_release_rate(B) *
-                          (envelope_separation(d, B) - envelope_separation(previous.damage, B)) / (failure - onset);
+                          (envelope_separation(d, B) - envelope_separation(previous.damage, B)) /
+                          (failure - onset);
   }
   if (d >= 1.0) return r; // past Δᶠ: d is stuck at 1 and does not vary with δ
 
