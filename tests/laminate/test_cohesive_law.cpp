@@ -244,8 +244,8 @@ TEST(CohesiveLawHistory, ModeChangeDoesNotHealDamage) {
 }
 
 // On a non-proportional path (slide to d ≈ 0.5, then turn the separation towards pure opening and on to
-// failure) the law's dissipation, which freezes the mixity within an increment, still closes the
-// energy balance  ∫ τ·dδ = ψ_end + Σ dissipated  as the steps shrink (first order in the step).
+// failure) the law's dissipation, which follows the mixity along each increment in pieces, closes the
+// energy balance  ∫ τ·dδ = ψ_end + Σ dissipated.
 TEST(CohesiveLawHistory, EnergyBalanceClosesOnNonProportionalPath) {
   const CohesiveLaw law(as4_peek());
   const double lambda_II = 0.5 * (law.onset_separation(1.0) + law.final_separation(1.0));
@@ -263,11 +263,12 @@ TEST(CohesiveLawHistory, EnergyBalanceClosesOnNonProportionalPath) {
     const double stored = law.stored_energy(r.state, path.back());
     errors.push_back(std::abs(r.work - stored - r.dissipated) / r.dissipated);
   }
-  // Measured: 1.12e-4 with 2000 steps per leg, 1.19e-5 with 20000: first order, as the frozen
-  // mixity predicts.
-  EXPECT_LT(errors[1], 2e-5);
-  EXPECT_GT(errors[1] / errors[0], 0.08);
-  EXPECT_LT(errors[1] / errors[0], 0.13);
+  std::printf("[ measured ] |W - psi - D| / D = %.3g (2000 steps per leg), %.3g (20000)\n", errors[0],
+              errors[1]);
+  // Measured: 8.8e-7 and 7.4e-7. Freezing the mixity of the increment's end instead (the law before
+  // the pieces) gave 1.12e-4 and 1.19e-5: first order in the step.
+  EXPECT_LT(errors[0], 5e-6);
+  EXPECT_LT(errors[1], 5e-6);
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -161,6 +161,7 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
 
   CohesiveResponse r;
   r.state.damage = d;
+  r.state.separation = separation;
   r.traction = (1.0 - d) * K * degradable;
   r.tangent.diagonal() << (1.0 - d) * K, (1.0 - d) * K, (1.0 - d) * K;
   // Contact penalty: closing is never softened. At δ_n = 0 exactly the tangent is the opening one, so that
@@ -176,12 +177,7 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
 
   const double onset = onset_separation(B);
   const double failure = final_separation(B);
-  if (damage_grows) {
-    // ∫ ½ K λ² dd along the envelope from d_previous to d: linear in the envelope separation.
-    r.dissipated_energy = critical_energy_release_rate(B) *
-                          (envelope_separation(d, B) - envelope_separation(previous.damage, B)) /
-                          (failure - onset);
-  }
+  if (damage_grows) r.dissipated_energy = dissipation(previous, separation, d);
   if (d >= 1.0) return r; // past Δᶠ: d is stuck at 1 and does not vary with δ
 
   // Softening: τ = (1 − d(λ, B)) K δ̂ ⇒ ∂τ/∂δ = (1 − d) K I − K δ̂ ⊗ ∂d/∂δ.
@@ -207,6 +203,27 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
   }
   r.tangent -= K * degradable * dd.transpose();
   return r;
+}
+
+double CohesiveLaw::dissipation(const CohesiveState& previous, const Eigen::Vector3d& separation,
+                                double d) const {
+  // On each piece, ∫ ½ K λ² dd along the envelope of the piece's mixity B is linear in the envelope
+  // separation: G_c(B) (λ(d₁) − λ(d₀)) / (Δᶠ − Δ⁰). The damage of a piece is capped at the increment's d.
+  double damage = previous.damage;
+  double dissipated = 0.0;
+  for (int k = 1; k <= dissipation_pieces && damage < d; ++k) {
+    const double s = static_cast<double>(k) / dissipation_pieces;
+    const Eigen::Vector3d at = previous.separation + s * (separation - previous.separation);
+    const double B = mode_mixity(at);
+    const double reached =
+        k == dissipation_pieces ? d : std::min(d, envelope_damage(equivalent_separation(at), B));
+    if (reached <= damage) continue;
+    dissipated += critical_energy_release_rate(B) *
+                  (envelope_separation(reached, B) - envelope_separation(damage, B)) /
+                  (final_separation(B) - onset_separation(B));
+    damage = reached;
+  }
+  return dissipated;
 }
 
 double CohesiveLaw::stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const {

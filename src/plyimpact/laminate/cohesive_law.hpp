@@ -36,10 +36,12 @@ struct CohesiveParameters {
   CohesiveOnset onset = CohesiveOnset::turon_bk;
 };
 
-/// The history of one integration point: the damage d ∈ [0, 1], which never decreases.
+/// The history of one integration point: the damage d ∈ [0, 1], which never decreases, and the
+/// separation it was last updated with (where the next increment's path starts, for its dissipation).
 /// A fresh interface has d = 0; an initial crack is d = 1.
 struct CohesiveState {
   double damage = 0.0;
+  Eigen::Vector3d separation = Eigen::Vector3d::Zero(); ///< [m]
 };
 
 /// What one update returns.
@@ -101,8 +103,10 @@ public:
   ///   d = max(d_previous, envelope_damage(λ, B))       (irreversible),
   ///   τ = (1 − d) K (δ_s1, δ_s2, ⟨δ_n⟩) − K ⟨−δ_n⟩ e_n  (contact: σ_n = K δ_n for δ_n ≤ 0, never degraded).
   /// The energy dissipated while d grows from d₀ to d₁ at mixity B is exactly ∫ ½ K λ² dd along the
-  /// envelope = G_c(B) (λ(d₁) − λ(d₀)) / (Δᶠ − Δ⁰), with λ(d) the envelope separation of damage d:
-  /// exact for a proportional increment, the mixity of the end of the increment otherwise.
+  /// envelope = G_c(B) (λ(d₁) − λ(d₀)) / (Δᶠ − Δ⁰), with λ(d) the envelope separation of damage d.
+  /// The increment's separation is taken to move straight from the previous state's to `separation`,
+  /// and the integral is summed over `dissipation_pieces` pieces of that path, each at its own mixity:
+  /// exact for a proportional increment, first order in the piece length where the mixity changes.
   ///
   /// `loading_band` > 0 is for Newton's method on a structure: at a point whose equivalent separation is
   /// within the relative band below its envelope (λ ≥ (1 − band) λ_env(d)), the tangent is the
@@ -115,7 +119,14 @@ public:
   /// Free energy ψ = ½(1 − d) K (δ_sh² + ⟨δ_n⟩²) + ½ K ⟨−δ_n⟩² stored per unit area [J/m²].
   [[nodiscard]] double stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const;
 
+  /// Pieces of an increment's path in the dissipation integral.
+  static constexpr int dissipation_pieces = 16;
+
 private:
+  /// ∫ ½ K λ² dd from `previous` to the damage `d` (≥ previous.damage) along the straight path to
+  /// `separation` (see update).
+  [[nodiscard]] double dissipation(const CohesiveState& previous, const Eigen::Vector3d& separation,
+                                   double d) const;
   /// Derivative of Δ⁰ with respect to B.
   [[nodiscard]] double onset_separation_slope(double B) const;
   /// Envelope separation λ at which the damage is d, for mixity B (inverse of envelope_damage).
