@@ -11,74 +11,100 @@ namespace plyimpact {
 
 namespace {
 
-/// The DOFs that are not controlled: their numbering, and the restriction of vectors and matrices.
-class FreePart {
+/// The loading's parametrization u = t Δ + T y: y holds the free DOFs, then the rig's coordinates.
+class Parametrization {
 public:
-  FreePart(int size, const ControlledDisplacement& control) : index_(static_cast<std::size_t>(size), 0) {
+  Parametrization(int size, const ControlledDisplacement& control)
+      : control_(control), index_(static_cast<std::size_t>(size), 0) {
     for (const auto& [eq, c] : control.dofs)
       index_[static_cast<std::size_t>(eq)] = -1;
+    for (const RigDof& r : control.rig)
+      index_[static_cast<std::size_t>(r.equation)] = -1;
     for (int& i : index_)
-      if (i == 0) i = count_++;
+      if (i == 0) i = free_++;
   }
-  [[nodiscard]] int count() const { return count_; }
-  [[nodiscard]] Eigen::VectorXd restrict(const Eigen::VectorXd& v) const {
-    Eigen::VectorXd r(count_);
+  /// Unknowns: the free DOFs and the rig's coordinates.
+  [[nodiscard]] int count() const { return free_ + control_.rig_coordinates; }
+
+  /// u = t Δ + T y.
+  [[nodiscard]] Eigen::VectorXd displacement(const Eigen::VectorXd& y, double delta) const {
+    Eigen::VectorXd u(static_cast<Eigen::Index>(index_.size()));
     for (std::size_t i = 0; i < index_.size(); ++i)
-      if (index_[i] >= 0) r(index_[i]) = v(static_cast<Eigen::Index>(i));
+      if (index_[i] >= 0) u(static_cast<Eigen::Index>(i)) = y(index_[i]);
+    for (const auto& [eq, c] : control_.dofs)
+      u(eq) = c * delta;
+    for (const RigDof& r : control_.rig)
+      u(r.equation) = r.delta_coefficient * delta + r.coordinate_coefficient * y(free_ + r.coordinate);
+    return u;
+  }
+  /// Tᵀ f.
+  [[nodiscard]] Eigen::VectorXd reduce(const Eigen::VectorXd& f) const {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(count());
+    for (std::size_t i = 0; i < index_.size(); ++i)
+      if (index_[i] >= 0) r(index_[i]) = f(static_cast<Eigen::Index>(i));
+    for (const RigDof& d : control_.rig)
+      r(free_ + d.coordinate) += d.coordinate_coefficient * f(d.equation);
     return r;
   }
-  void add(Eigen::VectorXd& u, const Eigen::VectorXd& du) const {
-    for (std::size_t i = 0; i < index_.size(); ++i)
-      if (index_[i] >= 0) u(static_cast<Eigen::Index>(i)) += du(index_[i]);
-  }
-  [[nodiscard]] SparseMatrix restrict(const SparseMatrix& K) const {
+  /// Tᵀ K T.
+  [[nodiscard]] SparseMatrix reduce(const SparseMatrix& K) const {
+    std::vector<std::vector<std::pair<int, double>>> rig_of(index_.size());
+    for (const RigDof& d : control_.rig)
+      rig_of[static_cast<std::size_t>(d.equation)].emplace_back(free_ + d.coordinate,
+                                                                d.coordinate_coefficient);
+    const auto columns = [&](Eigen::Index i, const auto& each) {
+      const auto k = static_cast<std::size_t>(i);
+      if (index_[k] >= 0) each(index_[k], 1.0);
+      for (const auto& [c, a] : rig_of[k])
+        each(c, a);
+    };
     std::vector<Eigen::Triplet<double>> t;
     t.reserve(static_cast<std::size_t>(K.nonZeros()));
     for (int c = 0; c < K.outerSize(); ++c)
-      for (SparseMatrix::InnerIterator it(K, c); it; ++it) {
-        const int i = index_[static_cast<std::size_t>(it.row())];
-        const int j = index_[static_cast<std::size_t>(it.col())];
-        if (i >= 0 && j >= 0) t.emplace_back(i, j, it.value());
-      }
-    SparseMatrix r(count_, count_);
-    r.setFromTriplets(t.begin(), t.end());
+      for (SparseMatrix::InnerIterator it(K, c); it; ++it)
+        columns(it.row(), [&](int i, double wi) {
+          columns(it.col(), [&](int j, double wj) { t.emplace_back(i, j, wi * wj * it.value()); });
+        });
+    SparseMatrix r(count(), count());
+    r.setFromTriplets(t.begin(), t.end()); // sums the duplicates of the rig's coordinates
     return r;
+  }
+  /// P = tᵀ f.
+  [[nodiscard]] double conjugate_force(const Eigen::VectorXd& f) const {
+    double P = 0.0;
+    for (const auto& [eq, c] : control_.dofs)
+      P += c * f(eq);
+    for (const RigDof& r : control_.rig)
+      P += r.delta_coefficient * f(r.equation);
+    return P;
   }
 
 private:
-  std::vector<int> index_; ///< reduced index, −1 for a controlled DOF
-  int count_ = 0;
+  const ControlledDisplacement& control_;
+  std::vector<int> index_; ///< index in y of a free DOF, −1 for a controlled or rig DOF
+  int free_ = 0;
 };
 
-double conjugate_force(const ControlledDisplacement& control, const Eigen::VectorXd& f) {
-  double P = 0.0;
-  for (const auto& [eq, c] : control.dofs)
-    P += c * f(eq);
-  return P;
-}
-
-void impose(const ControlledDisplacement& control, double delta, Eigen::VectorXd& u) {
-  for (const auto& [eq, c] : control.dofs)
-    u(eq) = c * delta;
-}
-
 struct StepSolution {
+  Eigen::VectorXd y;
   Eigen::VectorXd u;
   StackedPlateEvaluation evaluation;
   int iterations = 0;
 };
 
-/// The residual on the free DOFs at u and the evaluation it came from.
+/// The residual Tᵀ f at (y, Δ), the displacement and the evaluation it came from.
 struct Residual {
+  Eigen::VectorXd u;
   StackedPlateEvaluation evaluation;
   Eigen::VectorXd free;
 };
 
-Residual residual_at(const StackedPlateModel& model, const FreePart& free, const StackedPlateState& committed,
-                     const Eigen::VectorXd& u) {
+Residual residual_at(const StackedPlateModel& model, const Parametrization& loading,
+                     const StackedPlateState& committed, const Eigen::VectorXd& y, double delta) {
+  Eigen::VectorXd u = loading.displacement(y, delta);
   StackedPlateEvaluation e = model.evaluate(u, committed);
-  Eigen::VectorXd r = free.restrict(e.force);
-  return {std::move(e), std::move(r)};
+  Eigen::VectorXd r = loading.reduce(e.force);
+  return {std::move(u), std::move(e), std::move(r)};
 }
 
 /// Newton's method on the free DOFs at control displacement `delta`, from the guess `u`, with a
@@ -86,30 +112,27 @@ Residual residual_at(const StackedPlateModel& model, const FreePart& free, const
 /// softening envelope), and full Newton steps can cycle between the pieces. When no step length down to
 /// 1/64 lowers ‖r‖ the shortest is taken; an attempt that has not converged after max_iterations is
 /// given up, and the caller halves the step.
-std::optional<StepSolution> solve_step(const StackedPlateModel& model, const ControlledDisplacement& control,
-                                       const FreePart& free, const StackedPlateState& committed,
-                                       Eigen::VectorXd u, double delta,
+std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Parametrization& loading,
+                                       const StackedPlateState& committed, Eigen::VectorXd y, double delta,
                                        const DisplacementPathSettings& settings, int& iterations) {
-  impose(control, delta, u);
   Eigen::SparseLU<SparseMatrix> lu;
-  Residual r = residual_at(model, free, committed, u);
+  Residual r = residual_at(model, loading, committed, y, delta);
   for (int k = 0; k < settings.max_iterations; ++k) {
     const double scale =
-        std::max(std::abs(conjugate_force(control, r.evaluation.force)), r.evaluation.force.norm());
+        std::max(std::abs(loading.conjugate_force(r.evaluation.force)), r.evaluation.force.norm());
     if (r.free.norm() <= settings.tolerance * std::max(scale, 1e-300))
-      return StepSolution{std::move(u), std::move(r.evaluation), k};
-    lu.compute(free.restrict(r.evaluation.tangent));
+      return StepSolution{std::move(y), std::move(r.u), std::move(r.evaluation), k};
+    lu.compute(loading.reduce(r.evaluation.tangent));
     if (lu.info() != Eigen::Success) return std::nullopt;
     const Eigen::VectorXd minus_r = -r.free;
-    const Eigen::VectorXd du = lu.solve(minus_r);
-    if (!du.allFinite()) return std::nullopt;
+    const Eigen::VectorXd dy = lu.solve(minus_r);
+    if (!dy.allFinite()) return std::nullopt;
     ++iterations;
     for (double alpha = 1.0;; alpha *= 0.5) {
-      Eigen::VectorXd trial = u;
-      free.add(trial, alpha * du);
-      Residual next = residual_at(model, free, committed, trial);
+      const Eigen::VectorXd trial = y + alpha * dy;
+      Residual next = residual_at(model, loading, committed, trial, delta);
       if (next.free.norm() < (1.0 - 1e-4 * alpha) * r.free.norm() || alpha < 1.0 / 64.0) {
-        u = std::move(trial);
+        y = trial;
         r = std::move(next);
         break;
       }
@@ -124,14 +147,15 @@ DisplacementPath follow_displacement_path(const StackedPlateModel& model,
                                           const ControlledDisplacement& control, StackedPlateState state,
                                           const DisplacementPathSettings& settings,
                                           const PathObserver& observe) {
-  const FreePart free(model.size(), control);
+  const Parametrization loading(model.size(), control);
   DisplacementPath path;
   path.u = Eigen::VectorXd::Zero(model.size());
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(loading.count());
   PathPoint point;
   path.points.push_back(point);
   const double step = settings.final_displacement / settings.steps;
   double delta = 0.0;
-  Eigen::VectorXd previous_increment = Eigen::VectorXd::Zero(model.size());
+  Eigen::VectorXd previous_increment = Eigen::VectorXd::Zero(loading.count());
   while (std::abs(delta) < std::abs(settings.final_displacement) * (1.0 - 1e-12)) {
     double increment = step;
     if (std::abs(delta + increment) > std::abs(settings.final_displacement))
@@ -143,9 +167,9 @@ DisplacementPath follow_displacement_path(const StackedPlateModel& model,
       const double scale =
           std::abs(point.displacement -
                    (path.points.size() > 1 ? path.points[path.points.size() - 2].displacement : 0.0));
-      Eigen::VectorXd guess = path.u;
+      Eigen::VectorXd guess = y;
       if (scale > 0.0) guess += previous_increment * (increment / scale);
-      solution = solve_step(model, control, free, state, guess, delta + increment, settings, iterations);
+      solution = solve_step(model, loading, state, guess, delta + increment, settings, iterations);
     }
     if (!solution)
       throw std::runtime_error(
@@ -153,10 +177,11 @@ DisplacementPath follow_displacement_path(const StackedPlateModel& model,
                       "after {} halvings of the step",
                       delta + 2.0 * increment, settings.max_cuts));
     increment *= 2.0; // undo the last halving of the loop
-    previous_increment = solution->u - path.u;
+    previous_increment = solution->y - y;
+    y = std::move(solution->y);
     path.u = std::move(solution->u);
     state = std::move(solution->evaluation.trial);
-    const double P = conjugate_force(control, solution->evaluation.force);
+    const double P = loading.conjugate_force(solution->evaluation.force);
     point.work += 0.5 * (point.force + P) * increment;
     delta += increment;
     point.displacement = delta;

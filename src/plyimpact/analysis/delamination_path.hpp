@@ -3,12 +3,13 @@
 // specimens of delamination (DCB, ENF, MMB) are loaded by a prescribed displacement, under which the
 // propagation branch of a crack is stable where a prescribed force would run away.
 //
-// A set of DOFs moves with one control displacement Δ: u_i = c_i Δ. The other DOFs carry no load, so
-// each step solves f_F(u) = 0 on them by Newton's method with the consistent tangent of the stacked
+// A set of DOFs moves with one control displacement Δ: u_i = c_i Δ; a loading rig may tie others to Δ
+// and to its own coordinates y (u_i = c_i Δ + a_i y_j). The rest carry no load. With y' = (free DOFs, y)
+// and u = t Δ + T y', each step solves Tᵀ f(u) = 0 by Newton's method with the tangent Tᵀ K T of the stacked
 // model (unsymmetric under mixed mode: Eigen's sparse LU, 3× faster than UMFPACK on the DCB strip), the
-// interface damage evaluated from the state of the last converged step. The conjugate force is P = Σ_i c_i
-// f_i(u) (virtual work: P dΔ = Σ f_i c_i dΔ). A step whose iterations do not converge is halved, up to
-// `max_cuts` times.
+// interface damage evaluated from the state of the last converged step. The conjugate force is P = tᵀ f(u)
+// (virtual work: P dΔ = fᵀ du = fᵀ (t dΔ + T dy') and Tᵀ f = 0). A step whose iterations do not converge
+// is halved, up to `max_cuts` times.
 //
 // The energy of the path: the work W = ∫ P dΔ (trapezoidal rule), the stored energy of the model and
 // the energy its interfaces dissipated; W = stored + dissipated is the balance a test checks.
@@ -21,9 +22,21 @@
 
 namespace plyimpact {
 
-/// u_i = c_i Δ for each (stacked equation i, coefficient c_i).
+/// A DOF moved by a loading rig: u_i = c_i Δ + a_i y_j, with y_j one of the rig's own coordinates, which
+/// are unknowns like the free DOFs (e.g. the MMB lever: the hinge and the saddle follow the lever, whose
+/// load point is at Δ; the lever's rotation is y).
+struct RigDof {
+  int equation = 0;                  ///< stacked equation i
+  double delta_coefficient = 0.0;    ///< c_i
+  int coordinate = 0;                ///< j, 0 ≤ j < ControlledDisplacement::rig_coordinates
+  double coordinate_coefficient = 0; ///< a_i
+};
+
+/// u_i = c_i Δ for each (stacked equation i, coefficient c_i) in `dofs`, and the rig's DOFs.
 struct ControlledDisplacement {
   std::vector<std::pair<int, double>> dofs;
+  std::vector<RigDof> rig;
+  int rig_coordinates = 0;
 };
 
 struct DisplacementPathSettings {
