@@ -3,6 +3,7 @@
 // cantilever beam (DCB, mode I) and the end-notched flexure (ENF, mode II).
 #include "plyimpact/analysis/delamination_path.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
+#include "support/as4_peek.hpp"
 #include "support/beam_fracture.hpp"
 
 #include <gtest/gtest.h>
@@ -17,19 +18,7 @@ namespace {
 
 namespace bf = test::beam_fracture;
 
-// AS4/PEEK (Camanho, Dávila & de Moura 2003, as read in docs/delamination.md).
-Material as4_peek() {
-  Material m;
-  m.name = "AS4_PEEK";
-  m.E1 = 122.7e9;
-  m.E2 = 10.1e9;
-  m.G12 = 5.5e9;
-  m.G13 = 5.5e9;
-  m.G23 = 10.1e9 / (2.0 * 1.45);
-  m.nu12 = 0.25;
-  m.rho = 1600.0;
-  return m;
-}
+using test::as4_peek;
 
 /// The tabulated strengths are N = 80 MPa and S = 100 MPa.
 CohesiveParameters as4_peek_interface(double arm, double N, double S) {
@@ -212,6 +201,24 @@ double branch_force(const Branch& branch, double deflection, double a_lo, double
   return branch(0.5 * (a_lo + a_hi)).force;
 }
 
+/// The peak of a path and the largest |P/P_ref − 1| beyond it, against a propagation branch given as
+/// the force at a deflection; both printed with the LEFM cusp `cusp`.
+template <class Branch>
+const PathPoint& compare_with_branch(const std::vector<PathPoint>& points, const Branch& branch,
+                                     const bf::LoadPoint& cusp, double& worst) {
+  const auto peak = std::max_element(
+      points.begin(), points.end(), [](const PathPoint& p, const PathPoint& q) { return p.force < q.force; });
+  std::printf("[ measured ] peak %.4g N at %.4g mm (CBT branch there %.4g N); CBT %.4g N at %.4g mm\n",
+              peak->force, peak->displacement * 1e3, branch(peak->displacement), cusp.force,
+              cusp.displacement * 1e3);
+  worst = 0.0;
+  for (const PathPoint& p : points)
+    if (p.displacement > peak->displacement)
+      worst = std::max(worst, std::abs(p.force / branch(p.displacement) - 1.0));
+  std::printf("[ measured ] propagation branch: largest |P/P_CBT - 1| = %.4f\n", worst);
+  return *peak;
+}
+
 // ENF (mode II): three-point bending over 2L = 100 mm, the lower arm on the two supports (w = 0; the far
 // one also holds u, v), the upper arm pushed down at mid-span; the crack runs from the support at x = 0
 // to a0 = 0.75 L, beyond the stable length (0.68 L). CBT with Wang & Williams' 0.42 χh: the propagation
@@ -241,21 +248,13 @@ TEST(EndNotchedFlexure, FollowsCorrectedBeamTheoryAndDissipatesTheToughness) {
 
   std::printf("[ measured ] initial compliance %.5g m/N, CBT %.5g\n",
               points[5].displacement / points[5].force, bf::compliance(beam, a0));
-  const auto peak = std::max_element(
-      points.begin(), points.end(), [](const PathPoint& p, const PathPoint& q) { return p.force < q.force; });
-  std::printf("[ measured ] peak %.4g N at %.4g mm (CBT branch there %.4g N); CBT %.4g N at %.4g mm\n",
-              peak->force, peak->displacement * 1e3, cbt_branch(peak->displacement), cbt_peak.force,
-              cbt_peak.displacement * 1e3);
   double worst = 0.0;
-  for (const PathPoint& p : points)
-    if (p.displacement > peak->displacement)
-      worst = std::max(worst, std::abs(p.force / cbt_branch(p.displacement) - 1.0));
-  std::printf("[ measured ] propagation branch: largest |P/P_CBT - 1| = %.4f\n", worst);
+  const PathPoint& peak = compare_with_branch(points, cbt_branch, cbt_peak, worst);
   EXPECT_LT(worst, 0.03);
 
   const PathPoint& last = points.back();
   EXPECT_NEAR(last.work, last.stored + last.dissipated, 1e-3 * last.work);
-  const double slope = dissipation_per_area(r, peak->displacement);
+  const double slope = dissipation_per_area(r, peak.displacement);
   const double grown = (r.delaminated.back() - r.delaminated.front()) / Specimen::b;
   std::printf("[ measured ] crack grown %.3g mm; dD/dA = %.4f G_IIc; W - stored - D = %.3g of W\n",
               grown * 1e3, slope / G, (last.work - last.stored - last.dissipated) / last.work);
@@ -308,21 +307,13 @@ TEST(MixedModeBending, FollowsTheBenzeggaghKenaneBranchAndDissipatesItsToughness
               bf::mode_II_fraction(beam, a0), bf::mode_II_fraction(beam, a_end), a_end * 1e3);
   std::printf("[ measured ] initial compliance %.5g m/N, CBT %.5g\n",
               points[5].displacement / points[5].force, bf::compliance(beam, a0));
-  const auto peak = std::max_element(
-      points.begin(), points.end(), [](const PathPoint& p, const PathPoint& q) { return p.force < q.force; });
   const auto cbt_branch = [&](double deflection) { return branch_force(cbt, deflection, a0, a_end); };
-  std::printf("[ measured ] peak %.4g N at %.4g mm (CBT branch there %.4g N); CBT %.4g N at %.4g mm\n",
-              peak->force, peak->displacement * 1e3, cbt_branch(peak->displacement), cbt(a0).force,
-              cbt(a0).displacement * 1e3);
   double worst = 0.0;
-  for (const PathPoint& p : points)
-    if (p.displacement > peak->displacement)
-      worst = std::max(worst, std::abs(p.force / cbt_branch(p.displacement) - 1.0));
-  std::printf("[ measured ] propagation branch: largest |P/P_CBT - 1| = %.4f\n", worst);
+  const PathPoint& peak = compare_with_branch(points, cbt_branch, cbt(a0), worst);
   EXPECT_LT(worst, 0.03);
 
   const PathPoint& last = points.back();
-  const double slope = dissipation_per_area(r, peak->displacement);
+  const double slope = dissipation_per_area(r, peak.displacement);
   const double grown = (r.delaminated.back() - r.delaminated.front()) / Specimen::b;
   const double m_mid = bf::mode_II_fraction(beam, a0 + 0.5 * grown);
   const double G_c = G_Ic + (G_IIc - G_Ic) * std::pow(m_mid, eta);

@@ -3,6 +3,7 @@
 // single laminate.
 #include "plyimpact/fem/stacked_plate.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
+#include "support/as4_peek.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
@@ -15,19 +16,7 @@
 namespace plyimpact {
 namespace {
 
-// AS4/PEEK (Camanho, Dávila & de Moura 2003, as read in docs/delamination.md).
-Material as4_peek() {
-  Material m;
-  m.name = "AS4_PEEK";
-  m.E1 = 122.7e9;
-  m.E2 = 10.1e9;
-  m.G12 = 5.5e9;
-  m.G13 = 5.5e9;
-  m.G23 = 10.1e9 / (2.0 * 1.45);
-  m.nu12 = 0.25;
-  m.rho = 1600.0;
-  return m;
-}
+using test::as4_peek;
 
 CohesiveParameters as4_peek_interface(double sublaminate_thickness) {
   CohesiveParameters p;
