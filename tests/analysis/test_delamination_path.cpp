@@ -20,17 +20,7 @@ namespace bf = test::beam_fracture;
 
 using test::as4_peek;
 
-/// The tabulated strengths are N = 80 MPa and S = 100 MPa.
-CohesiveParameters as4_peek_interface(double arm, double N, double S) {
-  CohesiveParameters p;
-  p.penalty_stiffness = turon_penalty_stiffness(10.1e9, arm);
-  p.normal_strength = N;
-  p.shear_strength = S;
-  p.G_Ic = 969.0;
-  p.G_IIc = 1719.0;
-  p.bk_exponent = 2.284;
-  return p;
-}
+using test::as4_peek_interface;
 
 /// Element boundaries: `coarse` up to x0, `fine` from x0 to x1, `coarse` to L.
 std::vector<double> strip_lines(double L, double x0, double x1, double coarse, double fine) {

@@ -18,22 +18,10 @@ namespace {
 
 using test::as4_peek;
 
-CohesiveParameters as4_peek_interface(double sublaminate_thickness) {
-  CohesiveParameters p;
-  p.penalty_stiffness = turon_penalty_stiffness(10.1e9, sublaminate_thickness);
-  p.normal_strength = 80e6;
-  p.shear_strength = 100e6;
-  p.G_Ic = 969.0;
-  p.G_IIc = 1719.0;
-  p.bk_exponent = 2.284;
-  return p;
-}
+using test::as4_peek_interface;
 
 Laminate cross_ply(double ply) {
-  std::vector<Ply> plies;
-  for (const double angle : {0.0, 90.0, 90.0, 0.0})
-    plies.push_back({angle, ply, 0});
-  return Laminate({as4_peek()}, plies);
+  return test::as4_peek_cross_ply(ply);
 }
 
 TEST(SplitLaminate, CutsAtOrientationChangesIntoSubLaminatesThatAddUp) {

@@ -52,8 +52,10 @@ double fundamental_period(const PlateModel& model) {
 }
 
 ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {
-  const SparseMatrix K = model.stiffness();
-  const SparseMatrix M = model.mass(mass);
+  return solve_modal(model.stiffness(), model.mass(mass), count);
+}
+
+ModalResult solve_modal(const SparseMatrix& K, const SparseMatrix& M, int count) {
   const auto n = static_cast<int>(K.rows());
   const int nev = std::min(count, n - 2);
   if (nev < 1) throw std::invalid_argument("modal analysis: the plate has too few free DOFs");

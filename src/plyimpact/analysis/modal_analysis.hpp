@@ -16,6 +16,10 @@ struct ModalResult {
 [[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count);
 [[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass);
 
+/// The `count` lowest modes of K φ = ω² M φ for any symmetric K ≥ 0 and M > 0 (e.g. the stacked plate
+/// with its interfaces' elastic stiffness).
+[[nodiscard]] ModalResult solve_modal(const SparseMatrix& K, const SparseMatrix& M, int count);
+
 /// Period of the lowest elastic (non-zero) mode [s].
 [[nodiscard]] double fundamental_period(const PlateModel& model);
 

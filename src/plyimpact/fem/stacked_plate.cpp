@@ -52,16 +52,26 @@ StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate,
   for (std::size_t i = 0; i + 1 < plates_.size(); ++i)
     interfaces_.push_back(std::make_unique<CohesiveInterface>(
         *plates_[i], *plates_[i + 1], offset_[i], offset_[i + 1], law, stack.rule, stack.loading_band));
+  K_plates_ = block_diagonal([](const PlateModel& plate) { return plate.stiffness(); });
+}
+
+SparseMatrix
+StackedPlateModel::block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const {
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t k = 0; k < plates_.size(); ++k) {
-    const SparseMatrix K = plates_[k]->stiffness();
-    for (int c = 0; c < K.outerSize(); ++c)
-      for (SparseMatrix::InnerIterator it(K, c); it; ++it)
+    const SparseMatrix A = of(*plates_[k]);
+    for (int c = 0; c < A.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(A, c); it; ++it)
         triplets.emplace_back(offset_[k] + static_cast<int>(it.row()),
                               offset_[k] + static_cast<int>(it.col()), it.value());
   }
-  K_plates_.resize(size_, size_);
-  K_plates_.setFromTriplets(triplets.begin(), triplets.end());
+  SparseMatrix out(size_, size_);
+  out.setFromTriplets(triplets.begin(), triplets.end());
+  return out;
+}
+
+SparseMatrix StackedPlateModel::mass() const {
+  return block_diagonal([](const PlateModel& plate) { return plate.mass(); });
 }
 
 StackedPlateState StackedPlateModel::virgin_state() const {

@@ -83,6 +83,9 @@ public:
   }
   /// Block-diagonal stiffness of the sub-laminates.
   [[nodiscard]] const SparseMatrix& plate_stiffness() const { return K_plates_; }
+  /// Block-diagonal mass of the sub-laminates (each the discretization's mass matrix about its own
+  /// mid-plane: their sum carries the whole laminate's translational and rotary inertia).
+  [[nodiscard]] SparseMatrix mass() const;
 
   /// No damage anywhere.
   [[nodiscard]] StackedPlateState virgin_state() const;
@@ -100,6 +103,9 @@ public:
   [[nodiscard]] int equation(int k, int node, int dof) const;
 
 private:
+  /// The matrices `of` the sub-laminates placed on the diagonal of the stacked numbering.
+  [[nodiscard]] SparseMatrix block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const;
+
   std::vector<std::unique_ptr<PlateModel>> plates_;
   std::vector<int> offset_;
   int size_ = 0;
