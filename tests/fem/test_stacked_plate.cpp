@@ -192,7 +192,7 @@ TEST(StackedPlate, WithInterfacesThatHoldItIsTheSingleLaminate) {
   const double w_single =
       ldlt.solve(pressure(single, q, 0, single.size()))(single.dofs().equation(centre, 2));
 
-  const auto stacked_deflections = [&](double shear_correction) {
+  const auto stacked_deflections = [&](std::optional<double> shear_correction) {
     const StackedPlateModel stack(
         mesh, lam,
         StackSettings{interfaces_between_orientations(lam), as4_peek_interface(ply), {}, shear_correction},
@@ -206,11 +206,31 @@ TEST(StackedPlate, WithInterfacesThatHoldItIsTheSingleLaminate) {
       w[static_cast<std::size_t>(k)] = us(stack.equation(k, centre, 2)) / w_single;
     return w;
   };
-  const auto layerwise = stacked_deflections(layerwise_shear_correction);
-  for (const double w : layerwise)
+  const auto consistent = stacked_deflections(std::nullopt); // each slice's (DL0)
+  for (const double w : consistent)
     EXPECT_NEAR(w, 1.0, 5e-3);
-  EXPECT_GT(stacked_deflections(5.0 / 6.0)[0], 1.005); // each sub-laminate with 5/6: too soft
-  std::printf("[ measured ] centre deflection stacked/single: %.6f\n", layerwise[0]);
+  const double five_sixths = stacked_deflections(5.0 / 6.0)[0], one = stacked_deflections(1.0)[0];
+  EXPECT_GT(five_sixths, 1.005); // each sub-laminate with 5/6: too soft
+  std::printf("[ measured ] centre deflection stacked/single: %.6f (every sub-laminate 5/6: %.6f, 1: %.6f)\n",
+              consistent[0], five_sixths, one);
+}
+
+TEST(StackedPlate, SliceShearCorrectionsCarryTheParabolicShearEnergyOfTheWholeSection) {
+  // (DL0): the whole section and its halves get 5/6; quarters carry their slice of the parabola, and
+  // the stack's compliance Σ (Q_k/Q)² h/(κ_k h_k) is the section's 1/κ = 6/5 for any cut.
+  EXPECT_NEAR(slice_shear_correction(-0.5, 0.5, 1.0), 5.0 / 6.0, 1e-14);
+  EXPECT_NEAR(slice_shear_correction(-0.5, 0.0, 1.0), 5.0 / 6.0, 1e-14);
+  EXPECT_NEAR(slice_shear_correction(0.0, 0.5, 1.0), 5.0 / 6.0, 1e-14);
+  EXPECT_NEAR(slice_shear_correction(0.0, 0.25, 1.0), 0.993432, 1e-6); // hand: 0.34375² / (¼ · 0.4757813)
+  EXPECT_NEAR(slice_shear_correction(0.25, 0.5, 1.0), 0.786164, 1e-6); // hand: 0.15625² / (¼ · 0.1242188)
+  const std::vector<double> z{-2.0e-3, -1.3e-3, -0.2e-3, 0.9e-3, 2.0e-3}; // uneven cuts of h = 4 mm
+  double compliance = 0.0;
+  for (std::size_t k = 0; k + 1 < z.size(); ++k) {
+    const double s1 = z[k] / 4e-3, s2 = z[k + 1] / 4e-3;
+    const double share = 1.5 * ((s2 - 4.0 * s2 * s2 * s2 / 3.0) - (s1 - 4.0 * s1 * s1 * s1 / 3.0)); // Q_k/Q
+    compliance += share * share / (slice_shear_correction(z[k], z[k + 1], 4e-3) * (s2 - s1));
+  }
+  EXPECT_NEAR(compliance, 6.0 / 5.0, 1e-12);
 }
 
 } // namespace

@@ -227,6 +227,26 @@ TEST(CohesiveLawHistory, UnloadAndReloadFollowTheSecantWithoutDissipation) {
 
 // Damage never heals when the mode changes: after sliding to d ≈ 0.5, an opening whose mode I
 // envelope damage is lower keeps d, and the opening traction is the secant one.
+TEST(CohesiveLawHistory, AtFixedDamageIsTheSecantBeyondTheEnvelopeAndDissipatesNothing) {
+  // The lagged step's law: τ = (1 − d) K δ for opening and sliding, K δ_n when closed, whatever the
+  // separation, the damage of the state kept; below the envelope it is the law's own update.
+  const CohesiveLaw law(as4_peek());
+  const CohesiveState state{0.7, Eigen::Vector3d::Zero()};
+  const Eigen::Vector3d below = 0.2 * law.onset_separation(0.5) * direction(0.5); // inside the secant
+  const CohesiveResponse a = law.at_fixed_damage(state, below), u = law.update(state, below);
+  EXPECT_LT((a.traction - u.traction).norm(), 1e-12 * u.traction.norm());
+  const Eigen::Vector3d beyond = 2.0 * law.final_separation(0.5) * direction(0.5); // past failure
+  const CohesiveResponse f = law.at_fixed_damage(state, beyond);
+  EXPECT_EQ(f.state.damage, 0.7);
+  EXPECT_EQ(f.dissipated_energy, 0.0);
+  EXPECT_LT((f.traction - 0.3 * K * beyond).norm(), 1e-12 * K * beyond.norm());
+  const Eigen::Vector3d closed(1e-6, 0.0, -1e-6);
+  const CohesiveResponse c = law.at_fixed_damage(state, closed);
+  EXPECT_DOUBLE_EQ(c.traction(2), K * -1e-6);
+  EXPECT_DOUBLE_EQ(c.traction(0), 0.3 * K * 1e-6);
+  EXPECT_DOUBLE_EQ(c.tangent(2, 2), K);
+}
+
 TEST(CohesiveLawHistory, ModeChangeDoesNotHealDamage) {
   const CohesiveLaw law(as4_peek());
   const Eigen::Vector3d sliding(1.0, 0.0, 0.0);

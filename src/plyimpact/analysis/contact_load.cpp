@@ -21,9 +21,10 @@ constexpr CircleQuadrature quadrature{16, 8};
 } // namespace
 
 ContactLoading::ContactLoading(const PlateModel& model, const EquationSubset& equations,
-                               const Impactor& impactor, ContactLoad kind)
+                               const Impactor& impactor, ContactLoad kind, int size)
     : model_(model), equations_(equations), impactor_(impactor), kind_(kind),
-      sw_(equations.restrict(model.sampler(impactor.x, impactor.y).as_vector(model.size()))) {
+      size_(std::max(size, equations.size())),
+      sw_(padded(equations.restrict(model.sampler(impactor.x, impactor.y).as_vector(model.size())))) {
   table_.push_back({0.0, sw_, {}, 0.0}); // radius 0: the point load
 }
 
@@ -33,8 +34,16 @@ void ContactLoading::set_solver(Solve solve) {
     e.response.resize(0);
 }
 
+Eigen::VectorXd ContactLoading::padded(Eigen::VectorXd v) const {
+  const Eigen::Index n = v.size();
+  if (n == size_) return v;
+  v.conservativeResize(size_);
+  v.tail(size_ - n).setZero();
+  return v;
+}
+
 Eigen::VectorXd ContactLoading::pressure_load(double radius) const {
-  return equations_.restrict(hertz_pressure_weights(model_, impactor_.x, impactor_.y, radius));
+  return padded(equations_.restrict(hertz_pressure_weights(model_, impactor_.x, impactor_.y, radius)));
 }
 
 const ContactLoading::Entry& ContactLoading::entry(std::size_t j) const {

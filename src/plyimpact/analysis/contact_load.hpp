@@ -29,9 +29,11 @@ public:
   /// x = K̄⁻¹ b with the factor the step uses.
   using Solve = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 
-  /// Vectors in the numbering of `equations` (a subset of the model's).
+  /// Vectors in the numbering of `equations` (a subset of the model's). With `size` larger than the
+  /// subset, they are the leading block of vectors of `size` equations, zero beyond: the impacted
+  /// sub-laminate of a stacked plate comes first (fem/stacked_plate.hpp).
   ContactLoading(const PlateModel& model, const EquationSubset& equations, const Impactor& impactor,
-                 ContactLoad kind);
+                 ContactLoad kind, int size = 0);
 
   [[nodiscard]] const Eigen::VectorXd& sampler() const { return sw_; }
   [[nodiscard]] bool distributed() const { return kind_ == ContactLoad::hertz_pressure; }
@@ -64,11 +66,14 @@ private:
   const Entry& entry(std::size_t j) const;
   [[nodiscard]] double compliance(double alpha) const;
   [[nodiscard]] Eigen::VectorXd pressure_load(double radius) const;
+  /// v (subset numbering) padded with zeros to `size_` equations.
+  [[nodiscard]] Eigen::VectorXd padded(Eigen::VectorXd v) const;
 
   const PlateModel& model_;
   const EquationSubset& equations_;
   Impactor impactor_;
   ContactLoad kind_;
+  int size_;
   Eigen::VectorXd sw_;
   Solve solve_;
   mutable std::vector<Entry> table_; ///< radius 0 (= the point load), then 1 µm · 1.08^(j−1)

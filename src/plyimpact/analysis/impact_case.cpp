@@ -53,6 +53,9 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.k = resolved_contact_stiffness(d);
   s.contact = d.contact;
   s.dt = d.time.dt ? *d.time.dt : automatic_time_step(d.impactor.mass, s.k, d.impactor.velocity);
+  if (d.delamination && !d.time.dt && !d.laminates.empty()) // within the interfaces' limit (DL5)
+    s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
+                                                               d.time.newmark_beta));
   s.end = d.time.end;
   s.newmark_beta = d.time.newmark_beta;
   s.newmark_gamma = d.time.newmark_gamma;
@@ -60,6 +63,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.rigid_target = d.plate.rigid;
   s.nonlinear = d.nonlinear;
   s.progressive_damage = d.progressive_damage;
+  s.delamination = d.delamination;
   return s;
 }
 
@@ -110,6 +114,13 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
             ? "progressive damage needs a plate: a rigid target has no plies to crack"
             : "progressive damage is not available with the geometrically non-linear plate yet: use one or "
               "the other (docs/progressive_damage.md, limits)");
+  if (settings_.delamination &&
+      (settings_.rigid_target || settings_.nonlinear || settings_.progressive_damage))
+    throw std::invalid_argument(
+        settings_.rigid_target ? "delamination needs a plate: a rigid target has no interfaces to open"
+                               : "delamination is not available together with the geometrically non-linear "
+                                 "plate or the progressive ply damage yet: use one at a time "
+                                 "(docs/delamination.md, limits)");
   if (settings_.rigid_target) {
     if (settings_.nonlinear)
       throw std::invalid_argument(
@@ -122,7 +133,9 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.load = settings_.contact.load;
   options.solver = description_.solver;
   options.memory_limit_bytes = description_.memory_limit_bytes;
-  if (settings_.progressive_damage)
+  if (settings_.delamination)
+    policy_ = delamination_step_policy(*model_, options, *settings_.delamination);
+  else if (settings_.progressive_damage)
     policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage);
   else if (settings_.nonlinear)
     policy_ = newton_step_policy(*model_, options, *settings_.nonlinear);

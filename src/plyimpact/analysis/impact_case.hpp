@@ -39,6 +39,9 @@ struct ImpactCaseDescription {
   std::optional<NonlinearImpactSettings> nonlinear; ///< engaged: the geometrically non-linear plate
   /// engaged: the plies lose stiffness as they crack (fem/damaged_plate.hpp, docs/progressive_damage.md)
   std::optional<ProgressiveDamageSettings> progressive_damage;
+  /// engaged: the laminate cut into sub-laminates tied by cohesive interfaces that may delaminate
+  /// (analysis/delamination_step.cpp, docs/delamination.md)
+  std::optional<DelaminationSettings> delamination;
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
 };
@@ -65,6 +68,7 @@ struct ImpactSettings {
   bool rigid_target = false;
   std::optional<NonlinearImpactSettings> nonlinear;
   std::optional<ProgressiveDamageSettings> progressive_damage;
+  std::optional<DelaminationSettings> delamination;
 };
 
 /// k (given or the modified Hertz constant of the impactor on the impacted ply at the impact point).

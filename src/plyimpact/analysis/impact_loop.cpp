@@ -269,6 +269,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   event.finish(ended, step, t, law, impactor, e0, contact_work);
   check_after_run(r, view, e0, law_work, imp, k, s);
   r.newton = plate->statistics();
+  r.delamination = plate->delamination();
   if (const DamageField* d = plate->damage()) {
     ProgressiveDamageResult pd = first_damage.value_or(ProgressiveDamageResult{});
     pd.dissipated = d->dissipated();

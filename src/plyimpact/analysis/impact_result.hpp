@@ -57,6 +57,15 @@ struct ProgressiveDamageResult {
   int active_elements = 0;                          ///< elements that evaluated the law
 };
 
+/// The interfaces at the end of a run on the stacked plate (issue 19, docs/delamination.md).
+struct DelaminationResult {
+  std::vector<int> interface_after_ply;  ///< each interface lies after this ply (1-based, from the top)
+  std::vector<double> delaminated_area;  ///< per interface: points fully cracked (d = 1) [m²]
+  std::vector<double> process_zone_area; ///< per interface: points softening (0 < d < 1) [m²]
+  double projected_area = 0.0;           ///< union over the interfaces of the delaminated points [m²]
+  double dissipated = 0.0;               ///< energy dissipated by the interfaces [J]
+};
+
 struct ImpactResult {
   std::vector<ImpactSample> history; ///< every k-th step (RunRequest::history_every), first and last always
   std::vector<ContactEpisode> episodes;
@@ -92,6 +101,7 @@ struct ImpactResult {
   bool inplane_eliminated = false;
   std::optional<NewtonStatistics> newton; ///< geometrically non-linear and progressive-damage runs
   std::optional<ProgressiveDamageResult> progressive; ///< progressive-damage runs only
+  std::optional<DelaminationResult> delamination;     ///< stacked-plate runs only
 };
 
 } // namespace plyimpact

@@ -7,6 +7,9 @@
 //                      is solved exactly (SPEC §4).
 //   NewtonStepPolicy   geometrically non-linear plate (SPEC §8): Newton iterations on (u, Fc) with the
 //                      tangent K̄ = K_T + c0 M, refreshed when the iterations slow down (modified Newton).
+//   DelaminationStep   the stacked plate whose interfaces delaminate (fem/stacked_plate.hpp): Newton
+//                      iterations on (u, Fc) with the elastic K̄ factored once, the tangent's LU where
+//                      the interfaces soften and the iterations slow down.
 //   RigidTarget        no plate (closed-form checks of the contact law).
 //
 // A policy is built once per case (it owns what does not depend on the impactor: matrices and their
@@ -21,6 +24,7 @@
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
+#include "plyimpact/fem/stacked_plate.hpp"
 
 #include <memory>
 #include <optional>
@@ -60,6 +64,8 @@ public:
   /// u in the model's numbering.
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
   [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
+  /// The interfaces after the last accepted step (stacked plate only).
+  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
 };
 
 class StepPolicy {
@@ -93,6 +99,20 @@ struct NonlinearImpactSettings {
       200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
 };
 
+/// Settings of the stacked plate whose interfaces may delaminate (docs/delamination.md).
+struct DelaminationSettings {
+  StackSettings stack;         ///< the cuts, the interface law, its integration rule
+  bool supports_on_all = true; ///< the supports hold every sub-laminate; false: the bottom one only
+  /// lagged: each step solved with the interfaces' damage of the last accepted step held fixed, then the
+  /// damage updated from the converged separation; implicit: the damage iterated with the step.
+  DamageIntegration integration = DamageIntegration::lagged;
+  int max_iterations = 30;              ///< per time step
+  double residual_tolerance = 1e-5;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
+  double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
+  int refresh_after = 4;                ///< factor the tangent when a step needs more iterations
+  double refresh_ratio = 0.5;           ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+};
+
 /// What the policies need to know of the run besides the plate.
 struct StepPolicyOptions {
   NewmarkCoefficients newmark{1e-6, 0.25, 0.5};
@@ -113,6 +133,26 @@ struct StepPolicyOptions {
 [[nodiscard]] std::unique_ptr<StepPolicy> damage_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options,
                                                              const ProgressiveDamageSettings& settings);
+/// The largest time step for which the step of the stacked plate stays solvable where an interface point
+/// softens (docs/delamination.md, "Impact on the stacked plate"). The step's matrix for the opening of
+/// two neighbouring sub-laminates at a point is c0 m + K_T with c0 = 1/(β Δt²), m = m_u m_l/(m_u + m_l)
+/// their reduced mass per area (I0 of each) and K_T ≥ −k_s, k_s = τ⁰/(Δᶠ − Δ⁰) the softening slope of
+/// the law, steepest of the pure modes: N/(2G_Ic/N − N/K) and S/(2G_IIc/S − S/K). It stays positive,
+/// and the step's solution unique, for
+///
+///   Δt < √(m / (β k_s))   (2 √(m/k_s) for the trapezoidal rule),                              (DL5)
+///
+/// the smallest over the interfaces. Above it a point that starts softening snaps through within one
+/// step and the iterations cannot converge (measured: the §3.6 plate at 1 µs, bound 0.75 µs).
+[[nodiscard]] double largest_delamination_time_step(const Laminate& laminate, const StackSettings& stack,
+                                                    double newmark_beta);
+
+/// The laminate of `model` (one laminate, no regions) cut into sub-laminates tied by cohesive interfaces
+/// (delamination_step.cpp). The supports of `model` hold the sub-laminates that `settings` names. Throws
+/// std::invalid_argument for a plate with regions of other laminates.
+[[nodiscard]] std::unique_ptr<StepPolicy> delamination_step_policy(const PlateModel& model,
+                                                                   const StepPolicyOptions& options,
+                                                                   const DelaminationSettings& settings);
 /// A rigid, immovable target: ws = 0.
 [[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
 

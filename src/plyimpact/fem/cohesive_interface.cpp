@@ -87,7 +87,8 @@ Eigen::Vector3d CohesiveInterface::separation(int p, const Eigen::VectorXd& u) c
 
 CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
                                                std::span<const CohesiveState> committed, Eigen::VectorXd& f,
-                                               std::vector<Eigen::Triplet<double>>& tangent) const {
+                                               std::vector<Eigen::Triplet<double>>* tangent,
+                                               CohesiveDamage damage) const {
   CohesiveEvaluation out;
   out.trial.resize(committed.size());
   const int n = points_per_element();
@@ -100,19 +101,22 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const JumpOperator& J = jump_[static_cast<std::size_t>(q)];
-      const CohesiveResponse r = law_.update(committed[p], J * ue, loading_band_);
+      const CohesiveResponse r = damage == CohesiveDamage::evolve
+                                     ? law_.update(committed[p], J * ue, loading_band_)
+                                     : law_.at_fixed_damage(committed[p], J * ue);
       out.trial[p] = r.state;
       out.dissipated += area_[p] * r.dissipated_energy;
       fe.noalias() += area_[p] * (J.transpose() * r.traction);
-      Ke.noalias() += area_[p] * (J.transpose() * r.tangent * J);
+      if (tangent) Ke.noalias() += area_[p] * (J.transpose() * r.tangent * J);
     }
     for (int i = 0; i < 2 * q9_dofs; ++i) {
       const int ei = equation(e, i);
       if (ei < 0) continue;
       f(ei) += fe(i);
+      if (!tangent) continue;
       for (int j = 0; j < 2 * q9_dofs; ++j) {
         const int ej = equation(e, j);
-        if (ej >= 0 && Ke(i, j) != 0.0) tangent.emplace_back(ei, ej, Ke(i, j));
+        if (ej >= 0 && Ke(i, j) != 0.0) tangent->emplace_back(ei, ej, Ke(i, j));
       }
     }
   }

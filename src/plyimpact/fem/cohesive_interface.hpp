@@ -38,6 +38,12 @@ enum class CohesiveIntegration {
 
 using JumpOperator = Eigen::Matrix<double, 3, 2 * q9_dofs>;
 
+/// How an evaluation treats the damage of the interface points.
+enum class CohesiveDamage {
+  evolve, ///< the law's update from the committed states: the damage grows with the separation
+  frozen, ///< the committed damage held fixed (CohesiveLaw::at_fixed_damage): the lagged step
+};
+
 /// The evaluation of an interface at one displacement.
 struct CohesiveEvaluation {
   std::vector<CohesiveState> trial; ///< per point, from the committed states
@@ -65,10 +71,12 @@ public:
   /// The separation (DL1) at point p for the stacked displacement u.
   [[nodiscard]] Eigen::Vector3d separation(int p, const Eigen::VectorXd& u) const;
 
-  /// Adds the interface force (DL2) at u to f and its tangent to `tangent` (triplets over the stacked
-  /// equations), evaluating the law from the `committed` states; returns the trial states.
+  /// Adds the interface force (DL2) at u to f and, unless `tangent` is null, its tangent to `*tangent`
+  /// (triplets over the stacked equations), evaluating the law from the `committed` states; returns the
+  /// trial states.
   CohesiveEvaluation assemble(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
-                              Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>& tangent) const;
+                              Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
+                              CohesiveDamage damage = CohesiveDamage::evolve) const;
 
   /// Free energy stored in the interface, Σ_p area_p ψ(δ_p) [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states) const;

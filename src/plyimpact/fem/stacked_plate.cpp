@@ -2,18 +2,35 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace plyimpact {
 
+double slice_shear_correction(double z1, double z2, double h) {
+  const auto F1 = [](double s) { return s - 4.0 * s * s * s / 3.0; };                        // ∫ f ds
+  const auto F2 = [](double s) { return s - 8.0 * s * s * s / 3.0 + 3.2 * std::pow(s, 5); }; // ∫ f² ds
+  const double s1 = z1 / h, s2 = z2 / h;
+  const double Q = F1(s2) - F1(s1);
+  return Q * Q / ((s2 - s1) * (F2(s2) - F2(s1)));
+}
+
 std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector<int>& cuts,
-                                     double shear_correction) {
+                                     std::optional<double> shear_correction) {
   const int plies = static_cast<int>(laminate.ply_count());
+  const double h = laminate.thickness();
   std::vector<Laminate> parts;
   int first = 0;
+  double z_top = -0.5 * h;       // of the next part
   auto add_part = [&](int end) { // plies [first, end)
     std::vector<Ply> sub(laminate.plies().begin() + first, laminate.plies().begin() + end);
-    parts.emplace_back(laminate.materials(), std::move(sub), shear_correction, laminate.stiffness_model());
+    double t = 0.0;
+    for (const Ply& p : sub)
+      t += p.thickness;
+    const double kappa = shear_correction.value_or(slice_shear_correction(z_top, z_top + t, h) *
+                                                   laminate.shear_correction() / (5.0 / 6.0));
+    parts.emplace_back(laminate.materials(), std::move(sub), kappa, laminate.stiffness_model());
+    z_top += t;
     first = end;
   };
   for (const int cut : cuts) {
@@ -89,20 +106,35 @@ void StackedPlateModel::crack(StackedPlateState& state, int i,
     if (cracked(face.point_position(p))) points[static_cast<std::size_t>(p)].damage = 1.0;
 }
 
-StackedPlateEvaluation StackedPlateModel::evaluate(const Eigen::VectorXd& u,
-                                                   const StackedPlateState& committed) const {
+StackedPlateEvaluation StackedPlateModel::assemble(const Eigen::VectorXd& u,
+                                                   const StackedPlateState& committed,
+                                                   std::vector<Eigen::Triplet<double>>* tangent,
+                                                   CohesiveDamage damage) const {
   StackedPlateEvaluation out;
   out.force = K_plates_ * u;
-  std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
-    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], out.force, triplets);
+    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], out.force, tangent, damage);
     out.dissipated += e.dissipated;
     out.trial.interfaces.push_back(std::move(e.trial));
   }
+  return out;
+}
+
+StackedPlateEvaluation StackedPlateModel::evaluate(const Eigen::VectorXd& u,
+                                                   const StackedPlateState& committed,
+                                                   CohesiveDamage damage) const {
+  std::vector<Eigen::Triplet<double>> triplets;
+  StackedPlateEvaluation out = assemble(u, committed, &triplets, damage);
   SparseMatrix K_coh(size_, size_);
   K_coh.setFromTriplets(triplets.begin(), triplets.end());
   out.tangent = K_plates_ + K_coh;
   return out;
+}
+
+StackedPlateEvaluation StackedPlateModel::internal_force(const Eigen::VectorXd& u,
+                                                         const StackedPlateState& committed,
+                                                         CohesiveDamage damage) const {
+  return assemble(u, committed, nullptr, damage);
 }
 
 double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {

@@ -19,23 +19,29 @@
 #include <Eigen/SparseCore>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace plyimpact {
 
-/// The transverse shear correction of a sub-laminate tied to its neighbours. The factor 5/6 of a plate
-/// assumes a parabolic shear stress that vanishes on both faces; a bonded sub-laminate carries interface
-/// shear on its faces, and the stack as a whole is a layerwise model whose piecewise-constant shear needs
-/// no correction (Reddy's layerwise theory). With 1, a [0/90]s plate cut in three deflects as the single
-/// laminate within 0.3 % at a/h = 50; with 5/6 it is 1.1 % softer (docs/delamination.md, "Consistency").
-inline constexpr double layerwise_shear_correction = 1.0;
+/// The transverse shear correction of a sub-laminate: the slice [z1, z2] of a laminate of thickness h
+/// (z from its mid-plane) under the laminate's parabolic shear stress τ ∝ 1 − 4z²/h² (the assumption
+/// behind the single laminate's 5/6) carries the shear force Q_k = ∫τ and the energy ∫τ²/G; a Mindlin
+/// sub-laminate with constant shear and correction κ stores Q_k²/(κ G (z2 − z1)). Equal energies give
+///
+///   κ = (∫ f)² / ((z2 − z1) ∫ f²),   f = 1 − 4z²/h²,                                   (DL0)
+///
+/// so that the stack with interfaces that hold has the single laminate's shear compliance: 5/6 for the
+/// whole section and for either half (a DCB arm), 0.9934 for a middle quarter, 0.7862 for an outer one
+/// (docs/delamination.md, "Consistency"). Scaled by the laminate's own correction over 5/6.
+[[nodiscard]] double slice_shear_correction(double z1, double z2, double h);
 
 /// The sub-laminates of `laminate` cut after the plies listed (0-based: a cut after ply k separates
 /// ply k from ply k + 1), in increasing order, each with the transverse shear correction
-/// `shear_correction`. Throws std::invalid_argument for a cut outside [0, ply_count − 2] or cuts out
-/// of order.
+/// `shear_correction`, or (empty) its slice's (DL0) times the laminate's correction over 5/6. Throws
+/// std::invalid_argument for a cut outside [0, ply_count − 2] or cuts out of order.
 [[nodiscard]] std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector<int>& cuts,
-                                                   double shear_correction = layerwise_shear_correction);
+                                                   std::optional<double> shear_correction = {});
 
 /// The default cuts: every interface between plies of different orientation (issue 19).
 [[nodiscard]] std::vector<int> interfaces_between_orientations(const Laminate& laminate);
@@ -58,7 +64,7 @@ struct StackSettings {
   std::vector<int> cuts;        ///< split_laminate's cuts
   CohesiveParameters interface; ///< the law of every interface
   CohesiveIntegration rule = CohesiveIntegration::nodal;
-  double shear_correction = layerwise_shear_correction; ///< of every sub-laminate
+  std::optional<double> shear_correction = std::nullopt; ///< of every sub-laminate; empty: each slice's (DL0)
   /// Newton's choice of tangent at the law's kink (CohesiveLaw::update): the loading tangent within
   /// this relative band below the softening envelope.
   double loading_band = 1e-2;
@@ -93,9 +99,15 @@ public:
   void crack(StackedPlateState& state, int i,
              const std::function<bool(const Eigen::Vector2d&)>& cracked) const;
 
-  /// f(u), its tangent and the trial states, from the committed states.
-  [[nodiscard]] StackedPlateEvaluation evaluate(const Eigen::VectorXd& u,
-                                                const StackedPlateState& committed) const;
+  /// f(u), its tangent and the trial states, from the committed states (their damage held fixed with
+  /// CohesiveDamage::frozen).
+  [[nodiscard]] StackedPlateEvaluation evaluate(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                                CohesiveDamage damage = CohesiveDamage::evolve) const;
+  /// f(u) and the trial states without the tangent (left empty): the iterations of a step that keep
+  /// their factor.
+  [[nodiscard]] StackedPlateEvaluation internal_force(const Eigen::VectorXd& u,
+                                                      const StackedPlateState& committed,
+                                                      CohesiveDamage damage = CohesiveDamage::evolve) const;
   /// Elastic energy ½ uᵀ K_plates u + the interfaces' stored energy [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
 
@@ -103,6 +115,10 @@ public:
   [[nodiscard]] int equation(int k, int node, int dof) const;
 
 private:
+  /// f(u) and the trial states; the tangent's triplets into `tangent` unless it is null.
+  [[nodiscard]] StackedPlateEvaluation assemble(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                                std::vector<Eigen::Triplet<double>>* tangent,
+                                                CohesiveDamage damage) const;
   /// The matrices `of` the sub-laminates placed on the diagonal of the stacked numbering.
   [[nodiscard]] SparseMatrix block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const;
 

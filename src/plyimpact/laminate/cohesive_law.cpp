@@ -146,6 +146,23 @@ double CohesiveLaw::envelope_separation(double d, double B) const {
   return onset * failure / (failure - d * (failure - onset));
 }
 
+CohesiveResponse CohesiveLaw::at_fixed_damage(const CohesiveState& state,
+                                              const Eigen::Vector3d& separation) const {
+  const double K = p_.penalty_stiffness, d = state.damage;
+  const double normal = separation(2);
+  CohesiveResponse r;
+  r.state = {d, separation};
+  r.traction = (1.0 - d) * K * Eigen::Vector3d(separation(0), separation(1), macaulay(normal));
+  r.tangent.diagonal() << (1.0 - d) * K, (1.0 - d) * K, (1.0 - d) * K;
+  // Contact penalty: closing is never softened. At δ_n = 0 exactly the tangent is the opening one, so that
+  // an initial crack at rest (d = 1, δ = 0) starts open rather than glued (the traction is 0 either way).
+  if (normal < 0.0) {
+    r.traction(2) = K * normal;
+    r.tangent(2, 2) = K;
+  }
+  return r;
+}
+
 CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen::Vector3d& separation,
                                      double loading_band) const {
   const double K = p_.penalty_stiffness;
@@ -159,17 +176,7 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
   const bool damage_grows = trial > previous.damage;
   const double d = damage_grows ? trial : previous.damage;
 
-  CohesiveResponse r;
-  r.state.damage = d;
-  r.state.separation = separation;
-  r.traction = (1.0 - d) * K * degradable;
-  r.tangent.diagonal() << (1.0 - d) * K, (1.0 - d) * K, (1.0 - d) * K;
-  // Contact penalty: closing is never softened. At δ_n = 0 exactly the tangent is the opening one, so that
-  // an initial crack at rest (d = 1, δ = 0) starts open rather than glued (the traction is 0 either way).
-  if (normal < 0.0) {
-    r.traction(2) = K * normal;
-    r.tangent(2, 2) = K;
-  }
+  CohesiveResponse r = at_fixed_damage(CohesiveState{d, separation}, separation);
   // Within the band just below the envelope the tangent is the loading one (the traction is not).
   const bool near_envelope = loading_band > 0.0 && d < 1.0 && lambda > 0.0 &&
                              lambda >= (1.0 - loading_band) * envelope_separation(d, B);

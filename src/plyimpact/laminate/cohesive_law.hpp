@@ -116,6 +116,12 @@ public:
   [[nodiscard]] CohesiveResponse update(const CohesiveState& previous, const Eigen::Vector3d& separation,
                                         double loading_band = 0.0) const;
 
+  /// Traction and tangent at the separation `separation` with the damage of `state` held fixed (the
+  /// secant of the law, and the contact penalty in compression); the state's damage is kept, nothing is
+  /// dissipated. The lagged step solves with it (docs/delamination.md, "Impact on the stacked plate").
+  [[nodiscard]] CohesiveResponse at_fixed_damage(const CohesiveState& state,
+                                                 const Eigen::Vector3d& separation) const;
+
   /// Free energy ψ = ½(1 − d) K (δ_sh² + ⟨δ_n⟩²) + ½ K ⟨−δ_n⟩² stored per unit area [J/m²].
   [[nodiscard]] double stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const;
 

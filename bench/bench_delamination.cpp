@@ -1,0 +1,67 @@
+// The stacked plate against the single laminate on the §3.6 case (issue 19 speed: "report the cost of the
+// stacked model against the single-laminate run for the §3.6 plate with 3 interfaces"). Run:
+//   ./build/release/bench/bench_delamination --benchmark_repetitions=3
+//   --benchmark_report_aggregates_only=true
+// The first 500 µs of the event (500 steps at Δt = 1 µs; the whole event is 8626 steps, whose cost is
+// proportional): the single laminate's linear run, and the plate cut after plies 6, 12 and 18 with
+// interfaces that hold, for each sparse solver. Counters: DOFs, µs per step, solves per step.
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/deck.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+namespace {
+
+using namespace plyimpact;
+
+ImpactCaseDescription section36() {
+  ImpactCaseDescription d = impact_case_description(
+      load_deck(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/thesis-3.6-v268.toml"));
+  d.time.end = 500e-6;
+  return d;
+}
+
+void report(benchmark::State& state, const ImpactResult& r) {
+  const auto steps = static_cast<double>(r.steps);
+  state.counters["dofs"] = r.dofs;
+  state.counters["us_per_step"] = r.wall_time / steps * 1e6;
+  if (r.newton) state.counters["solves_per_step"] = static_cast<double>(r.newton->iterations) / steps;
+}
+
+void BM_Section36_SingleLaminate(benchmark::State& state) {
+  const ImpactCase impact(section36());
+  ImpactResult r;
+  for (auto _ : state) {
+    r = impact.run();
+    benchmark::DoNotOptimize(r.peak_force);
+  }
+  report(state, r);
+}
+BENCHMARK(BM_Section36_SingleLaminate)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+/// Arg: SparseSolverKind (0 CHOLMOD supernodal, 1 Eigen SimplicialLDLT, 2 CHOLMOD simplicial).
+void BM_Section36_ThreeInterfaces(benchmark::State& state) {
+  ImpactCaseDescription d = section36();
+  d.solver = static_cast<SparseSolverKind>(state.range(0));
+  DelaminationSettings s;
+  s.stack.cuts = {5, 11, 17};
+  s.stack.interface.penalty_stiffness = turon_penalty_stiffness(7.5e9, 6 * 0.19375e-3);
+  s.stack.interface.normal_strength = s.stack.interface.shear_strength = 1e10; // holds
+  s.stack.interface.G_Ic = s.stack.interface.G_IIc = 1e6;
+  s.stack.interface.bk_exponent = 1.45;
+  d.delamination = s;
+  const ImpactCase impact(d);
+  ImpactResult r;
+  for (auto _ : state) {
+    r = impact.run();
+    benchmark::DoNotOptimize(r.peak_force);
+  }
+  report(state, r);
+}
+BENCHMARK(BM_Section36_ThreeInterfaces)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+} // namespace
+BENCHMARK_MAIN();

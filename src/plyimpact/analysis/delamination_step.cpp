@@ -1,0 +1,384 @@
+// The delamination step policy (issue 19, docs/delamination.md "Impact on the stacked plate"): the
+// laminate cut into sub-laminates tied by cohesive interfaces (fem/stacked_plate.hpp), struck on the top
+// sub-laminate.
+//
+// Step n → n+1, unknowns u (every sub-laminate) and Fc, as in the Newton policy (newton_step.cpp):
+//   r(u, Fc) = Fc s − M a(u) − f(u; d) = 0,   f = K_plates u + Σ f_coh(u; d),   Fc = F(α), α = wᵢ − sᵀu,
+// with s the contact load on the top sub-laminate. Each iteration solves with an iteration matrix K̄:
+// û = u + K̄⁻¹ g(u), g = −M a(u) − f(u), and u' = û + Fc K̄⁻¹ s, so sᵀu' is affine in Fc and the contact
+// law is solved exactly inside every iteration.
+//
+// K̄ is the elastic one, K_plates + K_penalty + c0 M (symmetric positive definite), factored once per
+// case and shared by its runs; while every interface point stays elastic the problem is linear and one
+// iteration solves the step. Where points soften the iterations slow down (the elastic matrix is far
+// stiffer than the softening tangent), and the stepper factors the consistent tangent K_T + c0 M at the
+// iterate (unsymmetric under mixed mode: sparse LU) and keeps it for the following steps, until they
+// slow down again. K_T + c0 M stays positive only for Δt below the limit (DL5) of
+// largest_delamination_time_step, which the policy enforces. (Measured on the §3.6 plate: above it, at
+// 1 µs against 0.75 µs, the tangent's corrections were 1e4 m long; the secant (1 − d) K, positive at any
+// Δt, contracts the error by only 0.99 per iteration at the onset of softening, where it is 50 times
+// stiffer than the tangent.)
+// The damage of the interface points is evaluated from the state of the last accepted step and
+// committed with the step: iterated with it (implicit), or held at the last accepted step's while the
+// step is solved and updated from its converged separation (lagged, the default: each step is then
+// piecewise linear, the kink only where a face closes; the energy the damage releases within a step is
+// counted at its end, an error first order in Δt).
+#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/nonlinear_static.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
+
+#include <Eigen/SparseLU>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace plyimpact {
+
+namespace {
+
+class DelaminationStepPolicy;
+
+/// Halvings of a correction that raised the residual (DelaminationStepper::advance).
+constexpr int max_halvings = 6;
+
+class DelaminationStepper final : public PlateStepper {
+public:
+  DelaminationStepper(const DelaminationStepPolicy& policy, const Impactor& impactor);
+  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+                          Eigen::VectorXd& u_next) override;
+  void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
+  [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
+  [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
+  [[nodiscard]] double dissipated_energy() const override { return dissipated_; }
+  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
+    return loading_.sampler().dot(u);
+  }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
+  [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override;
+
+private:
+  /// x = K̄⁻¹ b with the iteration matrix in use.
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// Factors the tangent K_T + c0 M and iterates with it from now on.
+  void use_tangent(const SparseMatrix& tangent);
+  /// Has the iterate converged: small residual, and a small next correction estimated without a solve.
+  [[nodiscard]] bool converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
+                               const Eigen::VectorXd& force, const ContactSolution& cs,
+                               const Eigen::VectorXd& uk) const;
+
+  const DelaminationStepPolicy& p_;
+  ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and c = swᵀ K̄⁻¹ s_load with the matrix in use
+  Eigen::SparseLU<SparseMatrix> tangent_lu_; ///< implicit: unsymmetric under mixed mode
+  SpdSolver frozen_factor_;                  ///< lagged: the secant at fixed damage, symmetric positive
+  bool tangent_in_use_ = false;
+  Eigen::VectorXd kbar_diagonal_;
+  StackedPlateState committed_, trial_;
+  double trial_dissipated_ = 0.0, dissipated_ = 0.0;
+  NewtonStatistics stats_;
+};
+
+class DelaminationStepPolicy final : public StepPolicy {
+public:
+  DelaminationStepPolicy(const PlateModel& model, const StepPolicyOptions& options,
+                         const DelaminationSettings& settings)
+      : model_(model), options_(options), settings_(settings),
+        stack_(model.mesh(), single_laminate(model), settings.stack,
+               Discretization{model.mass_kind(), model.formulation()}, [&](int k) { return supports_of(k); }),
+        top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14), elastic_(options.solver) {
+    check_time_step();
+    const SparseMatrix Kbar =
+        stack_.evaluate(Eigen::VectorXd::Zero(stack_.size()), stack_.virgin_state()).tangent +
+        options.newmark.c0 * M_.matrix();
+    if (options.memory_limit_bytes)
+      check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);
+    elastic_.factorize(Kbar);
+    elastic_diagonal_ = Kbar.diagonal();
+    map_top_to_model();
+  }
+
+  [[nodiscard]] int equations() const override { return stack_.size(); }
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
+    return std::make_unique<DelaminationStepper>(*this, impactor);
+  }
+  [[nodiscard]] std::vector<std::string> warnings() const override {
+    std::vector<std::string> w;
+    if (auto zone = process_zone_warning()) w.push_back(std::move(*zone));
+    if (auto ratio = strength_ratio_warning(settings_.stack.interface)) w.push_back(std::move(*ratio));
+    return w;
+  }
+
+  const PlateModel& model_;
+  StepPolicyOptions options_;
+  DelaminationSettings settings_;
+  StackedPlateModel stack_;
+  EquationSubset top_equations_; ///< every equation of the top sub-laminate
+  MassOperator M_;
+  SpdSolver elastic_;                ///< K_plates + K_penalty + c0 M, shared by the runs
+  Eigen::VectorXd elastic_diagonal_; ///< its diagonal
+  std::vector<int> model_of_top_;    ///< model equation of each top sub-laminate equation (−1: none)
+
+private:
+  /// The cohesive zone l = E2 G_c / τ² (Hillerborg, M = 1) of the shorter mode against the spacing of the
+  /// interface points (half the largest element side with the nodal rule): fewer than three points in it
+  /// and the onset and growth of a delamination depend on the mesh.
+  [[nodiscard]] std::optional<std::string> process_zone_warning() const {
+    const CohesiveParameters& c = settings_.stack.interface;
+    double E2 = INFINITY;
+    for (const Material& m : model_.laminate().materials())
+      E2 = std::min(E2, m.E2);
+    const double zone = std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
+                                 cohesive_zone_length(E2, c.G_IIc, c.shear_strength));
+    double largest = 0.0;
+    for (int e = 0; e < model_.mesh().element_count(); ++e) {
+      const ElementCoordinates X = model_.mesh().element_coordinates(e);
+      largest = std::max(
+          {largest, X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff()});
+    }
+    const double spacing = settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0;
+    if (zone >= 3.0 * spacing) return std::nullopt;
+    return fmt::format(
+        "delamination: the cohesive zone of the interfaces, E2 G_c / strength^2 = {:.3g} mm in the shorter "
+        "mode, spans {:.2g} interface points ({:.3g} mm apart): fewer than 3, so the onset and growth of "
+        "delaminations depend on the mesh. Refine to elements of {:.3g} mm or less, or lower both "
+        "strengths (Turon et al. 2007: tau = sqrt(9 pi E2 G_c / (32 * 3 * {:.3g} mm))) "
+        "(docs/delamination.md)",
+        zone * 1e3, zone / spacing, spacing * 1e3,
+        2.0 * zone / 3.0 * 1e3 * (settings_.stack.rule == CohesiveIntegration::nodal ? 1.0 : 1.5),
+        spacing * 1e3);
+  }
+  /// Turon et al. (2010): with S/N ≠ √(G_IIc/G_Ic) the mixed-mode law does not dissipate G_c(B) along a
+  /// crack front whose mixity changes (measured: MMB 1.23 G_c with N halved alone).
+  [[nodiscard]] static std::optional<std::string> strength_ratio_warning(const CohesiveParameters& c) {
+    const double ratio = (c.shear_strength / c.normal_strength) / std::sqrt(c.G_IIc / c.G_Ic);
+    if (std::abs(ratio - 1.0) <= 0.1) return std::nullopt;
+    return fmt::format("delamination: shear_strength / normal_strength = {:.3g} while sqrt(G_IIc / G_Ic) = "
+                       "{:.3g}: under mixed mode the interfaces then dissipate more or less than G_c (Turon "
+                       "et al. 2010; docs/delamination.md, MMB); set S = N sqrt(G_IIc / G_Ic) = {:.3g} MPa",
+                       c.shear_strength / c.normal_strength, std::sqrt(c.G_IIc / c.G_Ic),
+                       c.normal_strength * std::sqrt(c.G_IIc / c.G_Ic) * 1e-6);
+  }
+  void check_time_step() const {
+    const double dt = options_.newmark.dt;
+    const double limit =
+        largest_delamination_time_step(model_.laminate(), settings_.stack, options_.newmark.beta);
+    if (dt > limit)
+      throw std::invalid_argument(fmt::format(
+          "delamination: time.dt = {:.4g} s is above {:.4g} s, the largest step at which an interface point "
+          "that starts softening keeps the step solvable (the softening slope of the interface law against "
+          "the inertia of the sub-laminates, docs/delamination.md); set [time] dt <= {:.3g} or \"auto\"",
+          dt, limit, limit));
+  }
+  static const Laminate& single_laminate(const PlateModel& model) {
+    if (!model.single_section())
+      throw std::invalid_argument("delamination: the stacked plate needs one laminate over the whole plate; "
+                                  "[[regions]] with other laminates are not available with [delamination] "
+                                  "yet (docs/delamination.md, limits)");
+    return model.laminate();
+  }
+  [[nodiscard]] BoundaryConditions supports_of(int k) const {
+    const int bottom = static_cast<int>(settings_.stack.cuts.size());
+    return settings_.supports_on_all || k == bottom ? model_.boundary() : BoundaryConditions{};
+  }
+  void map_top_to_model() {
+    const PlateModel& top = stack_.sublaminate(0);
+    model_of_top_.assign(static_cast<std::size_t>(top.size()), -1);
+    for (int n = 0; n < model_.mesh().node_count(); ++n)
+      for (int dof = 0; dof < 5; ++dof)
+        if (const int eq = top.dofs().equation(n, dof); eq >= 0)
+          model_of_top_[static_cast<std::size_t>(eq)] = model_.dofs().equation(n, dof);
+  }
+};
+
+DelaminationStepper::DelaminationStepper(const DelaminationStepPolicy& policy, const Impactor& impactor)
+    : p_(policy), loading_(policy.stack_.sublaminate(0), policy.top_equations_, impactor,
+                           policy.options_.load, policy.stack_.size()),
+      frozen_factor_(policy.options_.solver), kbar_diagonal_(policy.elastic_diagonal_),
+      committed_(policy.stack_.virgin_state()) {
+  loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); });
+  stats_.factorizations = 1; // the policy's elastic factor
+}
+
+Eigen::VectorXd DelaminationStepper::solve(const Eigen::VectorXd& b) const {
+  if (tangent_in_use_)
+    return p_.settings_.integration == DamageIntegration::lagged ? frozen_factor_.solve(b)
+                                                                 : tangent_lu_.solve(b);
+  return p_.elastic_.solve(b);
+}
+
+void DelaminationStepper::use_tangent(const SparseMatrix& tangent) {
+  const SparseMatrix Kbar = tangent + p_.options_.newmark.c0 * p_.M_.matrix();
+  if (p_.settings_.integration == DamageIntegration::lagged) {
+    frozen_factor_.factorize(Kbar);
+  } else {
+    tangent_lu_.compute(Kbar);
+    if (tangent_lu_.info() != Eigen::Success)
+      throw NewtonFailure("delamination: the tangent of the stacked plate is singular; reduce time.dt");
+  }
+  tangent_in_use_ = true;
+  kbar_diagonal_ = Kbar.diagonal();
+  loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); }); // responses recomputed
+  ++stats_.factorizations;
+}
+
+bool DelaminationStepper::converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
+                                    const Eigen::VectorXd& force, const ContactSolution& cs,
+                                    const Eigen::VectorXd& uk) const {
+  const DelaminationSettings& ds = p_.settings_;
+  const Eigen::VectorXd s_load = loading_.load(cs.alpha);
+  const Eigen::VectorXd residual = g + cs.force * s_load;
+  const double scale = force.norm() + inertia.norm() + std::abs(cs.force) * s_load.norm();
+  return residual.norm() <= ds.residual_tolerance * scale &&
+         residual.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm();
+}
+
+ContactSolution DelaminationStepper::advance(long step, double t, const PlateState& s,
+                                             const ContactStep& contact, Eigen::VectorXd& u_next) {
+  const DelaminationSettings& ds = p_.settings_;
+  const NewmarkCoefficients& nc = p_.options_.newmark;
+  // Start from constant acceleration (a_{n+1} = aₙ).
+  Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
+  Eigen::VectorXd u_start; // where the last correction started
+  ContactSolution cs, cs_start;
+  double previous_correction = INFINITY, start_residual = INFINITY;
+  bool refactor = false;
+  int iterations = 0, halvings = 0; // linear solves in this step; halvings of the last correction
+  const bool lagged = ds.integration == DamageIntegration::lagged;
+  const CohesiveDamage damage = lagged ? CohesiveDamage::frozen : CohesiveDamage::evolve;
+  for (;;) {
+    const Eigen::VectorXd inertia = p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
+    StackedPlateEvaluation e = refactor ? p_.stack_.evaluate(uk, committed_, damage)
+                                        : p_.stack_.internal_force(uk, committed_, damage);
+    const Eigen::VectorXd g = -inertia - e.force; // force-free residual
+    if (iterations > 0) {
+      if (converged(g, inertia, e.force, cs, uk)) {
+        // Lagged: the damage follows the converged separation (for the next step).
+        if (lagged) e = p_.stack_.internal_force(uk, committed_, CohesiveDamage::evolve);
+        trial_ = std::move(e.trial);
+        trial_dissipated_ = e.dissipated;
+        break;
+      }
+      // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),
+      // and full corrections can cycle between its pieces; a correction that raised the residual is
+      // halved, up to max_halvings times (the last is kept).
+      const double residual = (g + cs.force * loading_.load(cs.alpha)).norm();
+      if (residual > start_residual && tangent_in_use_ && halvings < max_halvings) {
+        uk = 0.5 * (u_start + uk);
+        cs.force = 0.5 * (cs_start.force + cs.force);
+        cs.alpha = 0.5 * (cs_start.alpha + cs.alpha);
+        ++halvings;
+        continue;
+      }
+      start_residual = residual;
+    }
+    if (refactor) use_tangent(e.tangent);
+    refactor = false;
+    halvings = 0;
+    if (iterations == ds.max_iterations)
+      throw NewtonFailure(fmt::format("delamination: Newton iterations did not converge in step {} (t = "
+                                      "{:.6g} s) after {} iterations; reduce time.dt",
+                                      step, t, ds.max_iterations));
+    // Plate predictor û and the exact scalar contact problem with ws affine in Fc (SPEC §4).
+    u_start = uk;
+    cs_start = cs;
+    const Eigen::VectorXd u_hat = uk + solve(g);
+    cs = loading_.solve(contact, loading_.sampler().dot(u_hat));
+    Eigen::VectorXd u_iterate = u_hat;
+    loading_.add_response(cs.alpha, cs.force, u_iterate);
+    const double correction = (u_iterate - uk).norm();
+    ++iterations;
+    if (!std::isfinite(correction) || !std::isfinite(cs.force))
+      throw NewtonFailure(
+          fmt::format("delamination: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
+    refactor = iterations > 1 &&
+               (correction > ds.refresh_ratio * previous_correction || iterations % ds.refresh_after == 0);
+    previous_correction = refactor ? INFINITY : correction;
+    uk.swap(u_iterate);
+  }
+  stats_.iterations += iterations;
+  stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
+  u_next.swap(uk);
+  return cs;
+}
+
+void DelaminationStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {
+  committed_ = std::move(trial_);
+  trial_ = {};
+  dissipated_ += trial_dissipated_;
+  trial_dissipated_ = 0.0;
+}
+
+double DelaminationStepper::kinetic_energy(const PlateState& s) const {
+  return p_.M_.kinetic_energy(s.v);
+}
+
+double DelaminationStepper::strain_energy(const PlateState& s, double /*force*/) const {
+  return p_.stack_.stored_energy(s.u, committed_);
+}
+
+void DelaminationStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+  out = Eigen::VectorXd::Zero(p_.model_.size());
+  for (std::size_t i = 0; i < p_.model_of_top_.size(); ++i)
+    if (const int eq = p_.model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
+}
+
+std::optional<DelaminationResult> DelaminationStepper::delamination() const {
+  const StackedPlateModel& stack = p_.stack_;
+  DelaminationResult r;
+  r.dissipated = dissipated_;
+  std::vector<bool> delaminated; // per point, in any interface
+  for (int i = 0; i < stack.interface_count(); ++i) {
+    const CohesiveInterface& ci = stack.interface(i);
+    const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
+    r.interface_after_ply.push_back(p_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
+    r.delaminated_area.push_back(ci.damaged_area(states, 1.0));
+    double softening = 0.0;
+    delaminated.resize(states.size(), false);
+    for (std::size_t q = 0; q < states.size(); ++q) {
+      const double d = states[q].damage;
+      if (d > 0.0 && d < 1.0) softening += ci.point_area(static_cast<int>(q));
+      if (d >= 1.0) delaminated[q] = true;
+    }
+    r.process_zone_area.push_back(softening);
+  }
+  // Every interface has the same points (same mesh and rule): the union is taken point by point.
+  if (stack.interface_count() > 0)
+    for (std::size_t q = 0; q < delaminated.size(); ++q)
+      if (delaminated[q]) r.projected_area += stack.interface(0).point_area(static_cast<int>(q));
+  return r;
+}
+
+/// Steepest softening slope of the law over the pure modes [Pa/m] (DL5).
+double softening_slope(const CohesiveParameters& p) {
+  const double K = p.penalty_stiffness;
+  const auto slope = [K](double strength, double G_c) {
+    return strength / (2.0 * G_c / strength - strength / K);
+  };
+  return std::max(slope(p.normal_strength, p.G_Ic), slope(p.shear_strength, p.G_IIc));
+}
+
+} // namespace
+
+double largest_delamination_time_step(const Laminate& laminate, const StackSettings& stack,
+                                      double newmark_beta) {
+  const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
+  const double k_s = softening_slope(stack.interface);
+  double limit = INFINITY;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    const double m_u = parts[i].inertia()[0], m_l = parts[i + 1].inertia()[0];
+    limit = std::min(limit, std::sqrt(m_u * m_l / (m_u + m_l) / (newmark_beta * k_s)));
+  }
+  return limit;
+}
+
+std::unique_ptr<StepPolicy> delamination_step_policy(const PlateModel& model,
+                                                     const StepPolicyOptions& options,
+                                                     const DelaminationSettings& settings) {
+  return std::make_unique<DelaminationStepPolicy>(model, options, settings);
+}
+
+} // namespace plyimpact
