@@ -6,12 +6,8 @@
 //   plyimpact static   examples/static-annex2-loads.toml -o results/static
 //   plyimpact modal    examples/modal-annex2.toml -o results/modal
 //   plyimpact buckling examples/buckling-annex2.toml -o results/buckling
-#include "plyimpact/analysis/buckling_analysis.hpp"
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/analysis/modal_analysis.hpp"
-#include "plyimpact/analysis/nonlinear_static.hpp"
-#include "plyimpact/analysis/static_analysis.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_report.hpp"
@@ -22,11 +18,11 @@
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/output_folder.hpp"
+#include "plyimpact/io/plate_analyses.hpp"
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/progress.hpp"
 #include "plyimpact/io/results.hpp"
 #include "plyimpact/io/threshold_run.hpp"
-#include "plyimpact/io/vtk_output.hpp"
 #include "sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -92,111 +88,34 @@ std::optional<ResultsFolder> results_folder(const OutputLock& lock, const Deck& 
   return ResultsFolder(lock.dir(), deck);
 }
 
-/// ParaView options of the deck's [output] vtk* keys (no failure criteria outside an impact).
-VtkOptions vtk_options(const Deck& deck) {
-  return {deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, {}, {}};
-}
-
 int run_laminate(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::laminate);
   fmt::print("{}", o.json ? laminate_report_json(deck) : laminate_report_text(deck));
   return 0;
 }
 
-int run_static_nonlinear(const Deck& deck, const OutputLock& lock);
+/// Prints what the analysis has to say; the command then exits with 0.
+int finish(const AnalysisOutcome& outcome) {
+  fmt::print("{}", outcome.text);
+  return 0;
+}
 
 int run_static(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::static_);
   const OutputLock lock = claim_folder(o, deck);
-  if (o.nonlinear || deck.nonlinear) return run_static_nonlinear(deck, lock);
-  const PlateModel model = plate_model(deck);
-  const StaticResult r = solve_static(model, *deck.load);
-  fmt::print("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
-  fmt::print("  center_deflection     = {:.6e} m\n", r.center_deflection);
-  fmt::print("  load_point_deflection = {:.6e} m\n", r.load_point_deflection);
-  fmt::print("  max_abs_deflection    = {:.6e} m\n", r.max_abs_deflection);
-  if (const auto out = results_folder(lock, deck)) {
-    nlohmann::json j = summary_header(deck, "static");
-    j["center_deflection"] = r.center_deflection;
-    j["load_point_deflection"] = r.load_point_deflection;
-    j["max_abs_deflection"] = r.max_abs_deflection;
-    j["dofs"] = model.size();
-    out->write_nodal_field("displacements.csv", model, r.u);
-    if (deck.vtk.enabled) write_static_vtk(out->path(), model, r.u, vtk_options(deck));
-    out->write_json("summary.json", j);
-  }
-  return 0;
-}
-
-/// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.
-int run_static_nonlinear(const Deck& deck, const OutputLock& lock) {
-  const PlateModel model = plate_model(deck);
-  const NonlinearStaticResult r = solve_static_nonlinear(model, *deck.load, deck.nonlinear_settings);
-  fmt::print(
-      "static, non-linear ({}): {} elements, {} free DOFs, {} load steps, {} Newton iterations, {} step "
-      "cuts\n",
-      to_string(deck.nonlinear_settings.measure), model.mesh().element_count(), model.size(),
-      r.load_deflection.size() - 1, r.newton_iterations, r.step_cuts);
-  fmt::print("  center_deflection     = {:.6e} m\n", r.state.center_deflection);
-  fmt::print("  load_point_deflection = {:.6e} m\n", r.state.load_point_deflection);
-  fmt::print("  max_abs_deflection    = {:.6e} m\n", r.state.max_abs_deflection);
-  if (const auto out = results_folder(lock, deck)) {
-    nlohmann::json j = summary_header(deck, "static");
-    j["nonlinear"] = true;
-    j["strain_measure"] = to_string(deck.nonlinear_settings.measure);
-    j["center_deflection"] = r.state.center_deflection;
-    j["load_point_deflection"] = r.state.load_point_deflection;
-    j["max_abs_deflection"] = r.state.max_abs_deflection;
-    j["load_deflection"] = r.load_deflection;
-    j["newton_iterations"] = r.newton_iterations;
-    j["step_cuts"] = r.step_cuts;
-    j["dofs"] = model.size();
-    out->write_nodal_field("displacements.csv", model, r.state.u);
-    if (deck.vtk.enabled) write_static_vtk(out->path(), model, r.state.u, vtk_options(deck));
-    out->write_json("summary.json", j);
-  }
-  return 0;
+  return finish(run_static_analysis(deck, o.nonlinear, results_folder(lock, deck)));
 }
 
 int run_modal(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::modal);
   const OutputLock lock = claim_folder(o, deck);
-  const PlateModel model = plate_model(deck);
-  const ModalResult r = solve_modal(model, deck.modal.count);
-  fmt::print("modal: {} elements, {} free DOFs, {} zero-energy modes (rigid-body or spurious)\n",
-             model.mesh().element_count(), model.size(), r.zero_energy_modes);
-  for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k)
-    fmt::print("  mode {:>3}: {:12.4f} Hz\n", k + 1, r.frequencies_hz[k]);
-  if (const auto out = results_folder(lock, deck)) {
-    nlohmann::json j = summary_header(deck, "modal");
-    j["frequencies_hz"] = r.frequencies_hz;
-    j["zero_energy_modes"] = r.zero_energy_modes;
-    out->write_mode_shapes("modes.csv", model, r.modes, "mode");
-    if (deck.vtk.enabled) write_modes_vtk(out->path(), model, r.modes, vtk_options(deck));
-    out->write_json("summary.json", j);
-  }
-  return 0;
+  return finish(run_modal_analysis(deck, results_folder(lock, deck)));
 }
 
 int run_buckling(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::buckling);
   const OutputLock lock = claim_folder(o, deck);
-  const PlateModel model = plate_model(deck);
-  const BucklingResult r = solve_buckling(model, *deck.buckling);
-  const auto& b = *deck.buckling;
-  fmt::print("buckling: reference load Nx = {} N/m, Ny = {} N/m, Nxy = {} N/m\n", b.Nx, b.Ny, b.Nxy);
-  for (std::size_t k = 0; k < r.load_factors.size(); ++k)
-    fmt::print("  mode {:>3}: load factor {:12.6g}  (Nx_cr = {:.6g} N/m)\n", k + 1, r.load_factors[k],
-               r.load_factors[k] * b.Nx);
-  if (const auto out = results_folder(lock, deck)) {
-    nlohmann::json j = summary_header(deck, "buckling");
-    j["load_factors"] = r.load_factors;
-    j["reference_load"] = {{"Nx", b.Nx}, {"Ny", b.Ny}, {"Nxy", b.Nxy}};
-    out->write_mode_shapes("modes.csv", model, r.modes, "buckling");
-    if (deck.vtk.enabled) write_modes_vtk(out->path(), model, r.modes, vtk_options(deck));
-    out->write_json("summary.json", j);
-  }
-  return 0;
+  return finish(run_buckling_analysis(deck, results_folder(lock, deck)));
 }
 
 std::atomic<bool> interrupted{false};
@@ -262,10 +181,7 @@ int run_threshold(const Options& o) {
   check_memory_before_assembly(description); // a graded mesh: its node count
   const OutputLock lock = claim_folder(o, deck);
   const ThresholdCriterion criterion = threshold_criterion(deck, o.criterion);
-  ThresholdOptions options;
-  options.tolerance = o.tolerance > 0.0 ? o.tolerance : deck.threshold.tolerance;
-  options.max_velocity = deck.threshold.max_velocity;
-  options.damage = damage_options_from_deck(deck);
+  ThresholdOptions options = threshold_options(deck, o.tolerance);
   const auto t0 = std::chrono::steady_clock::now();
   const ImpactCase impact(description);
   Progress progress("threshold", 1.0, progress_style(o.progress, stderr), o.progress.line_interval_s);
@@ -282,13 +198,7 @@ int run_threshold(const Options& o) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fmt::print("{}", threshold_text(criterion.name, r));
   if (const auto out = results_folder(lock, deck)) {
-    nlohmann::json j = summary_header(deck, "threshold");
-    put_threshold_summary(j, criterion, r);
-    j["lower_velocity"] = r.lower;
-    j["tolerance"] = options.tolerance;
-    j["trials"] = nlohmann::json::array();
-    for (const auto& t : r.trials)
-      j["trials"].push_back({{"velocity", t.velocity}, {"failed", t.failed}, {"peak_index", t.peak_index}});
+    nlohmann::json j = threshold_summary_json(deck, criterion, options, r);
     j["wall_time"] = wall;
     out->write_json("summary.json", j);
   }

@@ -1,6 +1,7 @@
 // Every command line shown in README.md and docs/*.md runs, as written, on the shipped examples and
 // exits 0. The code blocks are read from the Markdown: ```sh / ```bash blocks run as bash scripts (each
-// block in its own scratch folder holding `examples/` and `build/release/plyimpact`, with `plyimpact` and
+// block in its own scratch folder holding `examples/`, `build/release/plyimpact` and the Python package
+// `build/release/python/`, with `plyimpact` and
 // `mpirun` on the PATH); plain ``` blocks run their `$ ` lines (transcripts). Not run, and why:
 //   - blocks that call ./scripts/ (install, build, test, fuzz): CI runs them itself (.ci/run);
 //   - Slurm job scripts (#SBATCH, srun): they need a Slurm cluster.
@@ -104,6 +105,9 @@ TEST_P(DocCommands, RunAsWrittenOnTheShippedExamples) {
   fs::create_symlink(fs::path(PLYIMPACT_SOURCE_DIR) / "examples", dir / "examples");
   fs::create_symlink(PLYIMPACT_EXE, dir / "build" / "release" / "plyimpact");
   fs::create_symlink(PLYIMPACT_EXE, dir / "bin" / "plyimpact");
+  // The Python package of the same build (docs/python.md: PYTHONPATH=build/release/python).
+  if (const fs::path python = fs::path(PLYIMPACT_EXE).parent_path() / "python"; fs::exists(python))
+    fs::create_symlink(python, dir / "build" / "release" / "python");
   std::ofstream(dir / "block.sh") << block.script;
   const CommandResult r =
       shell("cd '" + dir.string() + "' && env PATH=\"" + (dir / "bin").string() +

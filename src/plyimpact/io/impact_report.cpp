@@ -165,15 +165,12 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   return t;
 }
 
-void write_impact_results(const ResultsFolder& folder, const Deck& deck, const PlateModel* model,
-                          const ImpactSettings& s, const ImpactResult& r,
-                          const std::function<void(nlohmann::json&)>& extend) {
+void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& r,
+                          const nlohmann::json& summary) {
   if (model != nullptr)
     for (const auto& f : r.fields)
       folder.write_nodal_field(fmt::format("field_t{:.6e}.csv", f.t), *model, f.u);
-  nlohmann::json j = impact_summary_json(deck, s, r);
-  if (extend) extend(j);
-  folder.write_json("summary.json", j); // last: its presence marks a finished write
+  folder.write_json("summary.json", summary); // last: its presence marks a finished write
 }
 
 } // namespace plyimpact

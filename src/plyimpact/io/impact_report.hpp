@@ -5,7 +5,6 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/results.hpp"
 
-#include <functional>
 #include <string>
 
 namespace plyimpact {
@@ -14,10 +13,9 @@ namespace plyimpact {
                                                  const ImpactResult& result);
 [[nodiscard]] std::string impact_history_csv(const ImpactResult& result);
 [[nodiscard]] std::string impact_summary_text(const ImpactSettings& settings, const ImpactResult& result);
-/// field_<t>.csv for every snapshot and, last, summary.json (`extend` may add keys); history.csv is
-/// streamed during the run (io/history_csv.hpp).
-void write_impact_results(const ResultsFolder& folder, const Deck& deck, const PlateModel* model,
-                          const ImpactSettings& settings, const ImpactResult& result,
-                          const std::function<void(nlohmann::json&)>& extend = {});
+/// field_<t>.csv for every snapshot and, last, summary.json (`summary`, from impact_summary_json);
+/// history.csv is streamed during the run (io/history_csv.hpp).
+void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& result,
+                          const nlohmann::json& summary);
 
 } // namespace plyimpact

@@ -124,6 +124,13 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   out.result = impact.run(run);
   out.damage_tracked = damage.has_value();
   if (damage) out.first_failures = damage->first_onsets();
+  out.summary = impact_summary_json(deck, out.settings, out.result);
+  if (vtk) out.summary["vtk_frames"] = vtk->frames();
+  if (damage) {
+    out.summary["first_failures"] = nlohmann::json::array();
+    for (const auto& f : out.first_failures)
+      out.summary["first_failures"].push_back(onset_json(f));
+  }
   if (!folder) return out;
 
   if (damage) {
@@ -143,13 +150,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,
                                         snapshot ? snapshot->snapshot : std::nullopt));
-  write_impact_results(*folder, deck, &model, out.settings, out.result, [&](nlohmann::json& j) {
-    if (vtk) j["vtk_frames"] = vtk->frames();
-    if (!damage) return;
-    j["first_failures"] = nlohmann::json::array();
-    for (const auto& f : out.first_failures)
-      j["first_failures"].push_back(onset_json(f));
-  });
+  write_impact_results(*folder, &model, out.result, out.summary);
   return out;
 }
 

@@ -6,6 +6,8 @@
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/io/deck.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <atomic>
 #include <filesystem>
 #include <optional>
@@ -25,12 +27,15 @@ struct ImpactRunOptions {
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
 };
 
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json moves without throwing; the check flags its assertion
 struct ImpactRunOutcome {
   ImpactSettings settings; ///< of the deck's own case: its impactor, k, Δt
   ImpactResult result;
   bool damage_tracked = false;
   std::vector<DamageOnset> first_failures; ///< per criterion, mode and ply or interface, in order of onset
   std::vector<std::string> notes;          ///< things the run could not do (e.g. no gnuplot for maps)
+  /// What summary.json holds, also when no folder is written (the Python module returns it).
+  nlohmann::json summary;
 };
 
 /// Runs the impact of `deck` on `impact`, which was built from this deck or from one with the same

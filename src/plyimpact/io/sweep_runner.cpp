@@ -313,10 +313,7 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   const ImpactCaseDescription description = impact_case_description(deck);
   check_memory_before_assembly(description);
   const ImpactCase impact(description);
-  ThresholdOptions to;
-  to.tolerance = deck.threshold.tolerance;
-  to.max_velocity = deck.threshold.max_velocity;
-  to.damage = damage_options_from_deck(deck);
+  const ThresholdOptions to = threshold_options(deck);
   const ThresholdResult r = search_threshold(impact, criterion, to);
   results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
   results["threshold_criterion"] = criterion.name;

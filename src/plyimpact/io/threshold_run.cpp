@@ -1,7 +1,9 @@
 #include "plyimpact/io/threshold_run.hpp"
 
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck_error.hpp"
+#include "plyimpact/io/results.hpp"
 
 #include <fmt/format.h>
 
@@ -58,6 +60,26 @@ void put_threshold_summary(nlohmann::json& j, const ThresholdCriterion& criterio
   if (damage == nullptr) return;
   j["damage_reached"] = r.damage ? damage_reached_json(*r.damage) : nlohmann::json(nullptr);
   if (damage->kind == DamageCriterion::Kind::damage_area) j["damage_area"] = damage->area;
+}
+
+ThresholdOptions threshold_options(const Deck& deck, double tolerance) {
+  ThresholdOptions options;
+  options.tolerance = tolerance > 0.0 ? tolerance : deck.threshold.tolerance;
+  options.max_velocity = deck.threshold.max_velocity;
+  options.damage = damage_options_from_deck(deck);
+  return options;
+}
+
+nlohmann::json threshold_summary_json(const Deck& deck, const ThresholdCriterion& criterion,
+                                      const ThresholdOptions& options, const ThresholdResult& r) {
+  nlohmann::json j = summary_header(deck, "threshold");
+  put_threshold_summary(j, criterion, r);
+  j["lower_velocity"] = r.lower;
+  j["tolerance"] = options.tolerance;
+  j["trials"] = nlohmann::json::array();
+  for (const auto& t : r.trials)
+    j["trials"].push_back({{"velocity", t.velocity}, {"failed", t.failed}, {"peak_index", t.peak_index}});
+  return j;
 }
 
 } // namespace plyimpact

@@ -35,4 +35,14 @@ struct ThresholdCriterion {
 /// projected_damage_area} (null when not found), and damage_area (the limit) for "damage-area".
 void put_threshold_summary(nlohmann::json& j, const ThresholdCriterion& criterion, const ThresholdResult& r);
 
+/// The search options of the deck ([threshold] tolerance and max_velocity, the [damage] settings);
+/// `tolerance` > 0 (the command line's --tolerance) replaces the deck's.
+[[nodiscard]] ThresholdOptions threshold_options(const Deck& deck, double tolerance = 0.0);
+
+/// summary.json of `plyimpact threshold` (the wall time, which the caller measures, aside): the header,
+/// put_threshold_summary, lower_velocity, tolerance and every trial.
+[[nodiscard]] nlohmann::json threshold_summary_json(const Deck& deck, const ThresholdCriterion& criterion,
+                                                    const ThresholdOptions& options,
+                                                    const ThresholdResult& r);
+
 } // namespace plyimpact

@@ -1,0 +1,274 @@
+// plyimpact._core: the library's facade for Python (pybind11). The Pythonic layer,
+// python/plyimpact/__init__.py, builds on these few functions; nothing here re-implements the engine:
+// a deck is parsed by the deck parser, an impact runs through io/impact_run.hpp exactly as the
+// `impact` command runs it, and the summary is the JSON of summary.json.
+//
+// The GIL is released while the C++ engine runs, so Python threads can run cases side by side.
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/analysis/recorders.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/history_csv.hpp"
+#include "plyimpact/io/impact_run.hpp"
+#include "plyimpact/io/laminate_report.hpp"
+#include "plyimpact/io/memory_estimate.hpp"
+#include "plyimpact/io/output_folder.hpp"
+#include "plyimpact/io/plate_analyses.hpp"
+#include "plyimpact/io/sweep_runner.hpp"
+#include "plyimpact/io/sweep_spec.hpp"
+#include "plyimpact/io/threshold_run.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <atomic>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+using plyimpact::Deck;
+
+/// The column names of history.csv (units in the names), in order.
+std::vector<std::string> history_columns(int damaged_plies) {
+  std::vector<std::string> names;
+  std::istringstream header(plyimpact::history_csv_header(damaged_plies));
+  std::string line;
+  std::getline(header, line);
+  std::istringstream fields(line);
+  for (std::string name; std::getline(fields, name, ',');)
+    names.push_back(name);
+  return names;
+}
+
+/// One row per recorded step, the columns of history.csv.
+py::array_t<double> history_array(const std::vector<plyimpact::ImpactSample>& samples, std::size_t columns) {
+  py::array_t<double> a({samples.size(), columns});
+  auto m = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const plyimpact::ImpactSample& h = samples[i];
+    const double fixed[] = {
+        h.t,           h.force,         h.impactor_w,   h.impactor_v,      h.plate_w,
+        h.indentation, h.plate_kinetic, h.plate_strain, h.impactor_energy, h.contact_work};
+    std::size_t j = 0;
+    for (const double v : fixed)
+      m(i, j++) = v;
+    if (j == columns) continue;
+    m(i, j++) = h.damage_dissipation;
+    m(i, j++) = h.damage_area;
+    for (const double v : h.ply_damage_area)
+      m(i, j++) = v;
+  }
+  return a;
+}
+
+struct ImpactRunOutput {
+  std::string summary_json;
+  std::vector<std::string> notes;
+  std::vector<plyimpact::ImpactSample> samples;
+  int damaged_plies = 0;
+};
+
+/// An impact run of `deck`, as `plyimpact impact DECK [-o DIR]` runs it (without the progress display).
+ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem::path>& output_dir,
+                           bool overwrite, bool nonlinear, bool keep_history) {
+  plyimpact::require_sections(deck, plyimpact::AnalysisKind::impact);
+  plyimpact::check_memory_before_assembly(deck);
+  const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
+  plyimpact::check_memory_before_assembly(description);
+  std::optional<plyimpact::OutputLock> lock;
+  if (output_dir)
+    lock.emplace(plyimpact::claim_output_folder(*output_dir, "python: plyimpact.impact",
+                                                plyimpact::ClaimOptions{overwrite, {}}));
+  const plyimpact::ImpactCase impact(description);
+  plyimpact::HistoryRecorder history(deck.history_every);
+  plyimpact::ImpactRunOptions options;
+  if (lock) options.output_dir = lock->dir();
+  if (keep_history) options.observers.push_back(&history);
+  plyimpact::ImpactRunOutcome run = plyimpact::run_impact(deck, impact, options);
+  ImpactRunOutput out;
+  out.summary_json = run.summary.dump();
+  out.notes = std::move(run.notes);
+  out.samples = std::move(history.samples());
+  out.damaged_plies =
+      deck.damage.progressive && deck.laminate ? static_cast<int>(deck.laminate->ply_count()) : 0;
+  return out;
+}
+
+/// The threshold search of `plyimpact threshold DECK [--criterion C] [--tolerance T]`: its summary.json
+/// (without the wall time).
+std::string run_threshold(const Deck& deck, const std::string& criterion_name, double tolerance,
+                          bool nonlinear) {
+  plyimpact::require_sections(deck, plyimpact::AnalysisKind::threshold);
+  plyimpact::check_memory_before_assembly(deck);
+  const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
+  plyimpact::check_memory_before_assembly(description);
+  const plyimpact::ThresholdCriterion criterion =
+      plyimpact::threshold_criterion(deck, criterion_name, "criterion");
+  const plyimpact::ThresholdOptions options = plyimpact::threshold_options(deck, tolerance);
+  const plyimpact::ImpactCase impact(description);
+  const plyimpact::ThresholdResult r = plyimpact::search_threshold(impact, criterion, options);
+  return plyimpact::threshold_summary_json(deck, criterion, options, r).dump();
+}
+
+/// `plyimpact static|modal|buckling DECK [-o DIR]`: (what the command prints, summary.json text).
+std::pair<std::string, std::string> run_plate_analysis(const Deck& deck, const std::string& kind,
+                                                       const std::optional<std::filesystem::path>& output_dir,
+                                                       bool overwrite, bool nonlinear) {
+  const auto analysis = plyimpact::parse_analysis_kind(kind);
+  if (!analysis ||
+      (*analysis != plyimpact::AnalysisKind::static_ && *analysis != plyimpact::AnalysisKind::modal &&
+       *analysis != plyimpact::AnalysisKind::buckling))
+    throw std::invalid_argument("analysis '" + kind + "': expected 'static', 'modal' or 'buckling'");
+  plyimpact::require_sections(deck, *analysis);
+  plyimpact::check_memory_before_assembly(deck);
+  std::optional<plyimpact::OutputLock> lock;
+  std::optional<plyimpact::ResultsFolder> folder;
+  if (output_dir) {
+    lock.emplace(plyimpact::claim_output_folder(*output_dir, "python: plyimpact." + kind,
+                                                plyimpact::ClaimOptions{overwrite, {}}));
+    folder.emplace(lock->dir(), deck);
+  }
+  const plyimpact::AnalysisOutcome out =
+      *analysis == plyimpact::AnalysisKind::static_ ? plyimpact::run_static_analysis(deck, nonlinear, folder)
+      : *analysis == plyimpact::AnalysisKind::modal ? plyimpact::run_modal_analysis(deck, folder)
+                                                    : plyimpact::run_buckling_analysis(deck, folder);
+  return {out.text, out.summary.dump()};
+}
+
+struct SweepOutput {
+  std::string table_csv; ///< sweep.csv (empty when cases are missing)
+  int factorizations = 0;
+  std::size_t missing = 0, failed = 0;
+};
+
+/// `plyimpact sweep DECK --set … -o DIR --jobs N` on threads (MPI stays with the command line): the same
+/// folder, records and table.
+SweepOutput run_sweep(const Deck& deck, const std::vector<std::string>& set_options, const std::string& mode,
+                      const std::filesystem::path& dir, int jobs, bool overwrite) {
+  const plyimpact::Sweep sweep = plyimpact::Sweep::from_text(
+      deck.text, deck.source, set_options,
+      mode.empty()
+          ? std::nullopt
+          : std::optional(mode == "zip" ? plyimpact::SweepMode::zip : plyimpact::SweepMode::product));
+  const plyimpact::SweepFolder folder(dir, sweep);
+  plyimpact::ClaimOptions claim{overwrite, {}};
+  if (!overwrite) claim.keep = {"sweep.json", "sweep.csv", "cases"};
+  const plyimpact::OutputLock lock = plyimpact::claim_output_folder(dir, "python: plyimpact.sweep", claim);
+  (void)folder.check(/*resume=*/true);
+  folder.write_manifest();
+  const std::vector<std::size_t> pending = folder.pending();
+  std::atomic<std::size_t> position{0};
+  const plyimpact::NextCase next = [&]() -> std::optional<std::size_t> {
+    const std::size_t i = position++;
+    return i < pending.size() ? std::optional(i) : std::nullopt;
+  };
+  SweepOutput out;
+  out.factorizations =
+      plyimpact::run_sweep_cases(sweep, folder, pending, jobs, next, plyimpact::SweepOptions{});
+  const plyimpact::SweepFolder::TableStatus status = folder.write_table();
+  out.missing = status.missing;
+  out.failed = status.failed;
+  if (status.missing == 0) {
+    std::ifstream table(dir / "sweep.csv");
+    out.table_csv.assign(std::istreambuf_iterator<char>(table), std::istreambuf_iterator<char>());
+  }
+  return out;
+}
+
+} // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "plyimpact's C++ engine (use the plyimpact package, not this module)";
+  m.attr("__version__") = PLYIMPACT_VERSION;
+  py::register_exception<plyimpact::DeckError>(m, "DeckError", PyExc_ValueError);
+  py::register_exception<plyimpact::FolderInUse>(m, "FolderInUse", PyExc_RuntimeError);
+  py::register_exception<plyimpact::FolderHoldsResults>(m, "FolderHoldsResults", PyExc_FileExistsError);
+
+  py::class_<Deck, std::shared_ptr<Deck>>(m, "Deck", "A parsed, validated deck (SI inside)")
+      .def_property_readonly("source", [](const Deck& d) { return d.source; })
+      .def_property_readonly("text", [](const Deck& d) { return d.text; })
+      .def_property_readonly("title", [](const Deck& d) { return d.title; })
+      .def_property_readonly("analysis",
+                             [](const Deck& d) { return std::string(plyimpact::to_string(d.analysis)); })
+      .def_property_readonly("warnings", [](const Deck& d) { return d.warnings; })
+      .def_property_readonly("nonlinear", [](const Deck& d) { return d.nonlinear; });
+
+  m.def(
+      "load_deck",
+      [](const std::filesystem::path& path) { return std::make_shared<Deck>(plyimpact::load_deck(path)); },
+      py::arg("path"), "Reads and validates a deck file; raises DeckError with file:line:column.");
+  m.def(
+      "parse_deck",
+      [](const std::string& text, const std::string& source) {
+        return std::make_shared<Deck>(plyimpact::parse_deck(text, source));
+      },
+      py::arg("text"), py::arg("source"), "Validates deck text; `source` names it in messages.");
+  m.def(
+      "laminate_json",
+      [](const Deck& deck) {
+        plyimpact::require_sections(deck, plyimpact::AnalysisKind::laminate);
+        return plyimpact::laminate_report_json(deck);
+      },
+      py::arg("deck"), "The JSON of `plyimpact laminate DECK --json`.");
+  m.def(
+      "run_impact",
+      [](const Deck& deck, const std::optional<std::filesystem::path>& output_dir, bool overwrite,
+         bool nonlinear, bool keep_history) {
+        ImpactRunOutput out;
+        {
+          const py::gil_scoped_release release;
+          out = run_impact(deck, output_dir, overwrite, nonlinear, keep_history);
+        }
+        const std::vector<std::string> columns = history_columns(out.damaged_plies);
+        return py::make_tuple(out.summary_json, out.notes, columns,
+                              history_array(out.samples, columns.size()));
+      },
+      py::arg("deck"), py::arg("output_dir") = py::none(), py::arg("overwrite") = false,
+      py::arg("nonlinear") = false, py::arg("history") = true,
+      "Runs the deck's impact; returns (summary JSON text, notes, history column names, history rows).");
+  m.def(
+      "run_plate_analysis",
+      [](const Deck& deck, const std::string& kind, const std::optional<std::filesystem::path>& output_dir,
+         bool overwrite, bool nonlinear) {
+        const py::gil_scoped_release release;
+        return run_plate_analysis(deck, kind, output_dir, overwrite, nonlinear);
+      },
+      py::arg("deck"), py::arg("kind"), py::arg("output_dir") = py::none(), py::arg("overwrite") = false,
+      py::arg("nonlinear") = false,
+      "A static, modal or buckling analysis; returns (the command's printed text, summary.json text).");
+  m.def(
+      "run_threshold",
+      [](const Deck& deck, const std::string& criterion, double tolerance, bool nonlinear) {
+        const py::gil_scoped_release release;
+        return run_threshold(deck, criterion, tolerance, nonlinear);
+      },
+      py::arg("deck"), py::arg("criterion") = "", py::arg("tolerance") = 0.0, py::arg("nonlinear") = false,
+      "The threshold search of the deck; returns its summary.json text (without wall_time).");
+  m.def(
+      "run_sweep",
+      [](const Deck& deck, const std::vector<std::string>& set_options, const std::string& mode,
+         const std::filesystem::path& dir, int jobs, bool overwrite) {
+        SweepOutput out;
+        {
+          const py::gil_scoped_release release;
+          out = run_sweep(deck, set_options, mode, dir, jobs, overwrite);
+        }
+        return py::make_tuple(out.table_csv, out.factorizations, out.missing, out.failed);
+      },
+      py::arg("deck"), py::arg("set_options"), py::arg("mode"), py::arg("output_dir"), py::arg("jobs"),
+      py::arg("overwrite") = false,
+      "Runs a sweep on threads into output_dir (resuming its records); returns (sweep.csv text, "
+      "factorizations, cases without a record, failed cases).");
+}
