@@ -27,7 +27,7 @@ struct ImpactRunOptions {
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
 };
 
-// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json moves without throwing; the check flags its assertion
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's move does not throw
 struct ImpactRunOutcome {
   ImpactSettings settings; ///< of the deck's own case: its impactor, k, Δt
   ImpactResult result;

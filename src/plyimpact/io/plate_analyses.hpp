@@ -12,7 +12,7 @@
 
 namespace plyimpact {
 
-// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json moves without throwing; the check flags its assertion
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's move does not throw
 struct AnalysisOutcome {
   std::string text;       ///< what the command prints on stdout
   nlohmann::json summary; ///< summary.json
