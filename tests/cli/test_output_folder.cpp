@@ -131,7 +131,7 @@ TEST(OutputFolder, AReusedFolderIsRefusedWithoutOverwriteAndClearedWithIt) {
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.out.find(out.string() +
                              " holds the results of another run (damage_area.csv, damage_maps, "
-                             "damage_onsets.csv, deck.toml and 4 more): add --overwrite to "
+                             "damage_onsets.csv, deck.toml and 5 more): add --overwrite to "
                              "replace them, or give another folder with -o"),
             std::string::npos)
       << refused.out;

@@ -1,10 +1,12 @@
 #include "plyimpact/io/impact_run.hpp"
 
+#include "plyimpact/analysis/recorders.hpp"
 #include "plyimpact/analysis/stress_probe.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_maps.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/history_csv.hpp"
+#include "plyimpact/io/html_report.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_text_report.hpp"
 #include "plyimpact/io/ply_damage_maps.hpp"
@@ -117,6 +119,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
                      VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
                                 damage_options_from_deck(deck).criterion_options},
                      damage ? &*damage : nullptr));
+  std::optional<ThinnedHistory> curves; // report.html
+  if (folder) run.observers.push_back(&curves.emplace());
   std::optional<ReportSnapshot> snapshot;
   if (deck.report_displacements_at && plate)
     run.observers.push_back(&snapshot.emplace(*deck.report_displacements_at));
@@ -150,6 +154,15 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,
                                         snapshot ? snapshot->snapshot : std::nullopt));
+  const ImpactReportInput report{deck,
+                                 out.settings,
+                                 out.summary,
+                                 curves->samples(),
+                                 plate ? &model.mesh() : nullptr,
+                                 damage ? &damage->onsets() : nullptr,
+                                 damage ? &out.first_failures : nullptr,
+                                 out.notes};
+  folder->write_text("report.html", impact_report_html(report));
   write_impact_results(*folder, &model, out.result, out.summary);
   return out;
 }

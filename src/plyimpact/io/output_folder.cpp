@@ -20,12 +20,12 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Files every kind of run writes (impact, static, modal, buckling, threshold, sweep).
-constexpr std::array<std::string_view, 18> result_files{
-    "deck.toml",  "provenance.json",    "summary.json",      "history.csv",
-    "report.txt", "probes.csv",         "damage_onsets.csv", "damage_area.csv",
-    "plate.pvd",  "layers.pvd",         "displacements.csv", "modes.csv",
-    "sweep.json", "sweep.csv",          "damage_maps",       "paraview",
-    "plots",      "damage_elements.csv"};
+constexpr std::array<std::string_view, 19> result_files{
+    "deck.toml",  "provenance.json",     "summary.json",      "history.csv",
+    "report.txt", "probes.csv",          "damage_onsets.csv", "damage_area.csv",
+    "plate.pvd",  "layers.pvd",          "displacements.csv", "modes.csv",
+    "sweep.json", "sweep.csv",           "damage_maps",       "paraview",
+    "plots",      "damage_elements.csv", "report.html"};
 constexpr std::string_view cases_folder = "cases";
 /// Written first by every run (impact, static, modal, buckling, threshold: provenance.json; a sweep:
 /// sweep.json, cases/) or last (summary.json): a folder holds results only when one of them is there.

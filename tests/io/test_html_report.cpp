@@ -1,0 +1,144 @@
+// report.html (io/html_report.hpp, io/svg_plot.hpp): the tick rule, the thinned history behind the
+// curves, and the report of the §4.3 run (damage tracked) — self-contained, complete, and rendered by
+// headless Chromium without console errors (the screenshot is docs/images/report-html.png).
+#include "plyimpact/analysis/recorders.hpp"
+#include "plyimpact/io/svg_plot.hpp"
+#include "support/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace plyimpact;
+using namespace plyimpact::test;
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
+    ++n;
+  return n;
+}
+
+TEST(SvgPlot, TicksAreOneTwoFiveStepsThatEncloseTheRange) {
+  // 12 661.7 N over about 5 intervals: raw step 2532 rounds up to 5000; 0 … 15 000 encloses it.
+  EXPECT_EQ(nice_ticks(0.0, 12661.7), (std::vector<double>{0.0, 5000.0, 10000.0, 15000.0}));
+  // 0 … 4.312 ms: raw 0.86 → 1.
+  EXPECT_EQ(nice_ticks(0.0, 4.312), (std::vector<double>{0.0, 1.0, 2.0, 3.0, 4.0, 5.0}));
+  // A negative range and a zero-width one.
+  EXPECT_EQ(nice_ticks(-0.3, 0.1), (std::vector<double>{-0.3, -0.2, -0.1, 0.0, 0.1}));
+  const std::vector<double> flat = nice_ticks(2.0, 2.0);
+  EXPECT_LE(flat.front(), 2.0);
+  EXPECT_GE(flat.back(), 2.0);
+  EXPECT_GE(flat.size(), 2U);
+}
+
+TEST(SvgPlot, TextIsEscapedAndEveryPointIsInsideThePicture) {
+  EXPECT_EQ(xml_escaped("a < b & \"c\" > d"), "a &lt; b &amp; &quot;c&quot; &gt; d");
+  const std::string svg =
+      svg_line_plot({"F <t>", "t [ms]", "F [kN]", {{"", {0.0, 1.0, 2.0}, {0.0, 5.0, 1.0}}}});
+  EXPECT_NE(svg.find("F &lt;t&gt;"), std::string::npos);
+  const std::regex point(R"((-?[0-9.]+),(-?[0-9.]+) )");
+  int points = 0;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), point); it != std::sregex_iterator();
+       ++it, ++points) {
+    const double x = std::stod((*it)[1]), y = std::stod((*it)[2]);
+    EXPECT_GE(x, 0.0);
+    EXPECT_LE(x, 640.0);
+    EXPECT_GE(y, 0.0);
+    EXPECT_LE(y, 360.0);
+  }
+  EXPECT_EQ(points, 3);
+}
+
+TEST(ThinnedHistory, KeepsABoundedEvenlySpacedSubsetOfTheSteps) {
+  // 10 000 steps into 64 samples: the stride doubles to 256, every kept step is a multiple of it, and the
+  // last step is always there.
+  ThinnedHistory h(64);
+  StepView v;
+  v.step = 0;
+  h.on_start(v);
+  for (long s = 1; s <= 10000; ++s) {
+    v.step = s;
+    v.t = static_cast<double>(s);
+    h.on_step(v);
+  }
+  h.on_finish(v, ImpactResult{});
+  ASSERT_LT(h.samples().size(), 64U);
+  ASSERT_GE(h.samples().size(), 32U);
+  for (std::size_t i = 0; i + 1 < h.samples().size(); ++i)
+    EXPECT_EQ(static_cast<long>(h.samples()[i].t) % 256, 0) << i;
+  EXPECT_EQ(h.samples().back().t, 10000.0);
+}
+
+/// The §4.3 example (damage tracked) run into a folder of its own for each test (ctest runs the tests
+/// of this file side by side).
+fs::path thesis_4_3_results(const std::string& test) {
+  const fs::path dir = scratch("html-report-" + test) / "thesis-4.3";
+  const CommandResult r =
+      run(std::string("impact ") + PLYIMPACT_SOURCE_DIR + "/examples/thesis-4.3.toml -q -o " + dir.string());
+  EXPECT_EQ(r.status, 0) << r.out;
+  return dir;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
+  const fs::path dir = thesis_4_3_results("content");
+  const std::string html = read(dir / "report.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(count(html, "<svg"), 5U) << "three curves, the ply stack and the onset map";
+  EXPECT_EQ(count(html, "class=\"plot\""), 3U);
+  EXPECT_EQ(count(html, "class=\"plies\""), 1U);
+  EXPECT_EQ(count(html, "class=\"map\""), 1U);
+  EXPECT_EQ(count(html, "<table class=\"summary\">"), 1U);
+  EXPECT_EQ(count(html, "<table class=\"onsets\">"), 1U);
+  // No script and nothing fetched: the only URL is the SVG namespace.
+  EXPECT_EQ(count(html, "<script"), 0U);
+  EXPECT_EQ(count(html, "http"), count(html, "xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_EQ(count(html, "src="), 0U);
+  // The numbers are summary.json's: the peak force to 5 digits.
+  const nlohmann::json summary = nlohmann::json::parse(read(dir / "summary.json"));
+  EXPECT_NE(html.find(fmt::format("{:.5g} N", summary["peak_force"].get<double>())), std::string::npos);
+  EXPECT_NE(html.find("[0_2/90_4/0_2]"), std::string::npos);
+}
+
+TEST(HtmlReport, OpensInHeadlessChromiumWithoutConsoleErrors) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "the browser check runs in the release build";
+#endif
+  ASSERT_EQ(shell("command -v chromium").status, 0)
+      << "chromium is missing: scripts/install-deps installs it";
+  const fs::path dir = thesis_4_3_results("chromium");
+  const fs::path report = dir / "report.html";
+  const fs::path png = dir / "report.png";
+  const std::string browser =
+      "timeout 120 chromium --headless --no-sandbox --disable-gpu --enable-logging=stderr "
+      "--v=0 --user-data-dir=" +
+      (dir / "chromium-profile").string() + " --window-size=1100,3700 ";
+  const CommandResult shot = shell(browser + "--screenshot=" + png.string() + " file://" + report.string());
+  ASSERT_EQ(shot.status, 0) << shot.out;
+  EXPECT_EQ(shot.out.find("CONSOLE"), std::string::npos) << shot.out;
+  EXPECT_EQ(shot.out.find("Uncaught"), std::string::npos) << shot.out;
+  ASSERT_TRUE(fs::exists(png)) << shot.out;
+  EXPECT_GT(fs::file_size(png), 50'000U);
+  // The DOM the browser built holds every plot and table.
+  const CommandResult dom = shell(browser + "--dump-dom file://" + report.string());
+  ASSERT_EQ(dom.status, 0) << dom.out;
+  EXPECT_EQ(count(dom.out, "class=\"plot\""), 3U);
+  EXPECT_EQ(count(dom.out, "<table class=\"summary\">"), 1U);
+  EXPECT_EQ(count(dom.out, "<table class=\"onsets\">"), 1U);
+  if (const char* keep = std::getenv("PLYIMPACT_KEEP_REPORT_PNG"))
+    fs::copy_file(png, keep, fs::copy_options::overwrite_existing);
+}
+
+} // namespace
