@@ -164,7 +164,7 @@ SweepOutput run_sweep(const Deck& deck, const std::vector<std::string>& set_opti
           : std::optional(mode == "zip" ? plyimpact::SweepMode::zip : plyimpact::SweepMode::product));
   const plyimpact::SweepFolder folder(dir, sweep);
   plyimpact::ClaimOptions claim{overwrite, {}};
-  if (!overwrite) claim.keep = {"sweep.json", "sweep.csv", "cases"};
+  if (!overwrite) claim.keep = plyimpact::SweepFolder::resumable_results();
   const plyimpact::OutputLock lock = plyimpact::claim_output_folder(dir, "python: plyimpact.sweep", claim);
   (void)folder.check(/*resume=*/true);
   folder.write_manifest();

@@ -164,14 +164,17 @@ def test_threshold_search_equals_the_command_line(examples):
 
 
 def test_a_threaded_sweep_gives_the_command_lines_table(examples):
-    """Eight velocities on two Python-side threads give `plyimpact sweep`'s sweep.csv byte for byte."""
+    """Eight velocities on two Python-side threads give `plyimpact sweep`'s sweep.csv byte for byte, and
+    the folder gets the sweep's report.html (peak force and absorbed energy against the velocity)."""
     deck_path = "examples/thesis-4.2-velocity-2.92.toml"
     done = cli("sweep", deck_path, "--set", "impactor.velocity=0.5:3.0:8", "--jobs", "1", "-o", "cli", "--quiet",
                cwd=examples)
     assert done.returncode == 0, done.stderr
-    table = plyimpact.sweep(deck_path, {"impactor.velocity": "0.5:3.0:8"}, jobs=2)
+    table = plyimpact.sweep(deck_path, {"impactor.velocity": "0.5:3.0:8"}, jobs=2, output_dir=examples / "py")
     assert table.text == (examples / "cli/sweep.csv").read_text()
     assert len(table) == 8
+    report = (examples / "py/report.html").read_text()  # the sweep's report, as the command writes it
+    assert report.count("<td>ok</td>") == 8 and report.count('class="plot"') == 2
     listed = plyimpact.sweep(deck_path, {"impactor.velocity": [0.5, 3.0]}, jobs=1)
     assert list(listed["impactor.velocity"]) == [0.5, 3.0]
 

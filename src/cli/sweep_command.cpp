@@ -224,7 +224,7 @@ int run_sweep(Ranks& ranks, const SweepCommandOptions& o, const std::atomic<bool
   std::string refusal;
   if (root) try {
       ClaimOptions claim{o.overwrite, {}};
-      if (!o.overwrite) claim.keep = {"sweep.json", "sweep.csv", "cases"};
+      if (!o.overwrite) claim.keep = SweepFolder::resumable_results();
       lock.emplace(claim_output_folder(dir, o.command, claim));
       fmt::print("results: {}\n", dir.string());
       if (const auto warning = folder.check(o.resume))

@@ -6,6 +6,7 @@
 #include "plyimpact/analysis/threshold_search.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 

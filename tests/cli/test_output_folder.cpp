@@ -367,7 +367,7 @@ TEST(OutputFolder, ASecondDifferentSweepIntoTheFolderIsRefused) {
   EXPECT_NE(other.status, 0);
   EXPECT_NE(other.out.find("holds another sweep"), std::string::npos) << other.out;
   const CommandResult impact = run("impact " + deck.string() + " -o " + out.string());
-  EXPECT_NE(impact.out.find("holds the results of another run (cases, sweep.csv, sweep.json)"),
+  EXPECT_NE(impact.out.find("holds the results of another run (cases, report.html, sweep.csv, sweep.json)"),
             std::string::npos)
       << impact.out;
   const CommandResult replaced =

@@ -2,6 +2,7 @@
 // in the ordinary test suite, so the release and ASan/UBSan builds check them too.
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/laminate/layup.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // the expected form.
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/table_reader.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 

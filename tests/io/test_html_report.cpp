@@ -1,8 +1,10 @@
 // report.html (io/html_report.hpp, io/svg_plot.hpp): the tick rule, the thinned history behind the
 // curves, and the report of the §4.3 run (damage tracked) — self-contained, complete, and rendered by
-// headless Chromium without console errors (the screenshot is docs/images/report-html.png).
+// headless Chromium without console errors (the screenshot is docs/images/report-html.png); a sweep's
+// report opened the same way (docs/images/sweep-report-html.png).
 #include "plyimpact/analysis/recorders.hpp"
 #include "plyimpact/io/svg_plot.hpp"
+#include "support/browser.hpp"
 #include "support/cli.hpp"
 
 #include <gtest/gtest.h>
@@ -122,25 +124,45 @@ TEST(HtmlReport, OpensInHeadlessChromiumWithoutConsoleErrors) {
   ASSERT_EQ(shell("command -v chromium").status, 0)
       << "chromium is missing: scripts/install-deps installs it";
   const fs::path dir = thesis_4_3_results("chromium");
-  const fs::path report = dir / "report.html";
   const fs::path png = dir / "report.png";
-  const std::string browser =
-      "timeout 120 chromium --headless --no-sandbox --disable-gpu --enable-logging=stderr "
-      "--v=0 --user-data-dir=" +
-      (dir / "chromium-profile").string() + " --window-size=1100,3700 ";
-  const CommandResult shot = shell(browser + "--screenshot=" + png.string() + " file://" + report.string());
-  ASSERT_EQ(shot.status, 0) << shot.out;
-  EXPECT_EQ(shot.out.find("CONSOLE"), std::string::npos) << shot.out;
-  EXPECT_EQ(shot.out.find("Uncaught"), std::string::npos) << shot.out;
-  ASSERT_TRUE(fs::exists(png)) << shot.out;
+  const BrowserView view = open_in_headless_chromium(dir / "report.html", png, 1100, 3700);
+  ASSERT_EQ(view.screenshot.status, 0) << view.screenshot.out;
+  expect_no_console_errors(view.screenshot);
+  ASSERT_TRUE(fs::exists(png)) << view.screenshot.out;
   EXPECT_GT(fs::file_size(png), 50'000U);
   // The DOM the browser built holds every plot and table.
-  const CommandResult dom = shell(browser + "--dump-dom file://" + report.string());
-  ASSERT_EQ(dom.status, 0) << dom.out;
-  EXPECT_EQ(count(dom.out, "class=\"plot\""), 3U);
-  EXPECT_EQ(count(dom.out, "<table class=\"summary\">"), 1U);
-  EXPECT_EQ(count(dom.out, "<table class=\"onsets\">"), 1U);
+  ASSERT_EQ(view.dom.status, 0) << view.dom.out;
+  expect_no_console_errors(view.dom);
+  EXPECT_EQ(count(view.dom.out, "class=\"plot\""), 3U);
+  EXPECT_EQ(count(view.dom.out, "<table class=\"summary\">"), 1U);
+  EXPECT_EQ(count(view.dom.out, "<table class=\"onsets\">"), 1U);
   if (const char* keep = std::getenv("PLYIMPACT_KEEP_REPORT_PNG"))
+    fs::copy_file(png, keep, fs::copy_options::overwrite_existing);
+}
+
+TEST(HtmlReport, SweepReportOpensInHeadlessChromiumWithEveryPlotAndCase) {
+  // examples/sweep-4.2-table4.1.toml: three plate widths x two masses. Its report.html, as the browser
+  // builds it: peak force and absorbed energy against both swept keys, and the six cases in the table.
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "the browser check runs in the release build";
+#endif
+  ASSERT_EQ(shell("command -v chromium").status, 0)
+      << "chromium is missing: scripts/install-deps installs it";
+  const fs::path dir = scratch("html-report-sweep") / "table4.1";
+  const CommandResult r = run(std::string("sweep ") + PLYIMPACT_SOURCE_DIR +
+                              "/examples/sweep-4.2-table4.1.toml -q --jobs 2 -o " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const fs::path png = dir / "report.png";
+  const BrowserView view = open_in_headless_chromium(dir / "report.html", png, 1100, 1320);
+  ASSERT_EQ(view.screenshot.status, 0) << view.screenshot.out;
+  expect_no_console_errors(view.screenshot);
+  EXPECT_GT(fs::file_size(png), 50'000U);
+  ASSERT_EQ(view.dom.status, 0) << view.dom.out;
+  expect_no_console_errors(view.dom);
+  EXPECT_EQ(count(view.dom.out, "class=\"plot\""), 4U);
+  EXPECT_EQ(count(view.dom.out, "<table class=\"cases\">"), 1U);
+  EXPECT_EQ(count(view.dom.out, "<td>ok</td>"), 6U);
+  if (const char* keep = std::getenv("PLYIMPACT_KEEP_SWEEP_REPORT_PNG"))
     fs::copy_file(png, keep, fs::copy_options::overwrite_existing);
 }
 

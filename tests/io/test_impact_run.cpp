@@ -6,6 +6,7 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/ply_damage_maps.hpp"
+#include "test_paths.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -1,11 +1,13 @@
 // Parameter sweeps (docs/sweep.md): the [sweep] table and --set options, case numbering, the
 // documented random sequence, errors before any case runs, and cases computed in-process against
 // the Hertz closed form and against a stand-alone run of the same deck; progressive-damage cases
-// (absorbed energy, damage dissipation and damaged area columns) against stand-alone runs.
+// (absorbed energy, damage dissipation and damaged area columns) against stand-alone runs; the sweep's
+// report.html (its table against the closed form, its plots, failed cases, Monte Carlo scatter).
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/sweep_runner.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -449,6 +451,93 @@ TEST(SweepRun, OnsetRunsLeaveTheDamageColumnsEmpty) {
     EXPECT_EQ(rows[r][column(rows[0], "damage_dissipation_J")], "");
     EXPECT_EQ(rows[r][column(rows[0], "damage_area_m2")], "");
   }
+}
+
+// --- report.html (io/sweep_report.hpp) -----------------------------------------------------------
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
+    ++n;
+  return n;
+}
+
+/// The cells of the report's case table, row by row (tags stripped).
+std::vector<std::vector<std::string>> case_table(const std::string& html) {
+  std::vector<std::vector<std::string>> rows;
+  const std::size_t from = html.find("<table class=\"cases\">"), to = html.find("</table>", from);
+  std::istringstream lines(html.substr(from, to - from));
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with("<tr")) continue;
+    std::vector<std::string> cells;
+    for (std::size_t at = line.find("<t"); at != std::string::npos; at = line.find("<t", at + 1)) {
+      if (line.compare(at, 3, "<tr") == 0) continue;
+      const std::size_t open = line.find('>', at) + 1;
+      cells.push_back(line.substr(open, line.find('<', open) - open));
+    }
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST(SweepReport, TabulatesEveryCaseAndPlotsEachResultAgainstEachSweptKey) {
+  // Two masses x three velocities on a rigid target: the report's table holds the six cases, each peak
+  // force that of the Hertz closed form F = k^(2/5) (5 m v0²/4)^(3/5) to the 5 digits shown; peak force
+  // and absorbed energy are plotted against both keys, one line per value of the other key.
+  const Sweep s = Sweep::from_text(rigid_deck(""), "deck.toml",
+                                   {"impactor.mass=0.314,1.2", "impactor.velocity=1,2,2.92"});
+  const fs::path dir = scratch("report");
+  int factorizations = 0;
+  (void)run_in_process(s, dir, 2, true, &factorizations);
+  const std::string html = read_text_file(dir / "report.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(count(html, "class=\"plot\""), 4U) << "peak force and absorbed energy against mass and velocity";
+  EXPECT_EQ(count(html, "<polyline"), 2U * 3U + 2U * 2U) << "3 velocity lines against the mass, 2 mass lines";
+  EXPECT_EQ(count(html, "<circle"), 4U * 6U) << "every case a dot in every plot";
+  EXPECT_EQ(count(html, ">impactor.velocity = 2.92<"), 2U);
+  EXPECT_EQ(count(html, ">impactor.mass = 1.2<"), 2U);
+  EXPECT_EQ(count(html, "<script"), 0U);
+  EXPECT_EQ(count(html, "http"), count(html, "xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_EQ(html.find("did not complete"), std::string::npos);
+  const auto rows = case_table(html);
+  ASSERT_EQ(rows.size(), 7U);
+  EXPECT_EQ(rows[0][1], "impactor.mass");
+  EXPECT_EQ(rows[0][2], "impactor.velocity");
+  EXPECT_EQ(rows[0][4], "peak force [N]");
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const double m = std::stod(rows[r][1]), v0 = std::stod(rows[r][2]);
+    const double F_max = std::pow(0.6e9, 0.4) * std::pow(1.25 * m * v0 * v0, 0.6);
+    EXPECT_EQ(rows[r][3], "ok");
+    EXPECT_NEAR(std::stod(rows[r][4]) / F_max, 1.0, 1e-4) << rows[r][4]; // 5 digits shown
+  }
+}
+
+TEST(SweepReport, ACaseThatFailedIsListedWithItsError) {
+  const Sweep s = Sweep::from_text(rigid_deck(""), "deck.toml", {"impactor.velocity=1.0,-1.0"});
+  const fs::path dir = scratch("report-failed");
+  int factorizations = 0;
+  (void)run_in_process(s, dir, 1, true, &factorizations);
+  const std::string html = read_text_file(dir / "report.html");
+  EXPECT_NE(html.find("<li>case 1: failed: "), std::string::npos) << html;
+  EXPECT_NE(html.find("impactor.velocity must be positive"), std::string::npos);
+  EXPECT_EQ(count(html, "<tr class=\"failed\">"), 1U);
+  EXPECT_NE(html.find("2 (1 failed, 1 ok)"), std::string::npos);
+}
+
+TEST(SweepReport, MonteCarloSamplesAreDotsNotLines) {
+  // A randomly drawn mass: the peak force against it is a scatter (no line through unordered draws).
+  const Sweep s = Sweep::from_text(
+      rigid_deck("[sweep.random]\nsamples = 5\nseed = 7\n\"impactor.mass\" = { uniform = [0.2, 1.2] }\n"),
+      "deck.toml");
+  const fs::path dir = scratch("report-random");
+  int factorizations = 0;
+  (void)run_in_process(s, dir, 1, true, &factorizations);
+  const std::string html = read_text_file(dir / "report.html");
+  EXPECT_EQ(count(html, "class=\"plot\""), 2U);
+  EXPECT_EQ(count(html, "<polyline"), 0U);
+  EXPECT_EQ(count(html, "<circle"), 2U * 5U);
+  EXPECT_NE(html.find("uniform on [0.2, 1.2]"), std::string::npos);
+  EXPECT_NE(html.find("5 per grid point, seed 7"), std::string::npos);
 }
 
 } // namespace

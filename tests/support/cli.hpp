@@ -1,5 +1,7 @@
 #pragma once
 // Running the plyimpact executable from tests: command, scratch folders, small decks.
+#include "test_paths.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 

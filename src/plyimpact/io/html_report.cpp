@@ -1,5 +1,6 @@
 #include "plyimpact/io/html_report.hpp"
 
+#include "plyimpact/io/html_page.hpp"
 #include "plyimpact/io/svg_plot.hpp"
 
 #include <fmt/format.h>
@@ -12,41 +13,12 @@ namespace plyimpact {
 
 namespace {
 
-constexpr std::string_view style = R"(
-body { font-family: "DejaVu Sans", Arial, sans-serif; margin: 24px auto; max-width: 1040px; color: #222; }
-h1 { font-size: 1.5em; margin-bottom: 0.2em; } h2 { font-size: 1.2em; border-bottom: 1px solid #ccc; }
-p.meta { color: #666; margin-top: 0; }
-div.case { display: flex; gap: 32px; align-items: flex-start; flex-wrap: wrap; }
-dl { display: grid; grid-template-columns: max-content auto; gap: 4px 16px; margin: 0; }
-dt { font-weight: bold; } dd { margin: 0; }
-table { border-collapse: collapse; margin: 8px 0; } td, th { border: 1px solid #ccc; padding: 3px 10px; }
-th { background: #f2f2f2; text-align: left; } td.number { text-align: right; font-variant-numeric: tabular-nums; }
-ul.warnings li { color: #8a4b00; margin-bottom: 4px; }
-svg { display: block; margin: 8px 0; font-size: 12px; } figure { margin: 0; }
-svg .grid { stroke: #e5e5e5; } svg .frame { fill: none; stroke: #444; } svg .title { font-size: 14px; font-weight: bold; }
-svg .label { font-size: 13px; } svg .ply { stroke: #fff; stroke-width: 0.5; }
-svg .element { fill: #f7f7f7; stroke: #bbb; stroke-width: 0.6; } svg .impact { stroke: #d62728; stroke-width: 2.5; }
-)";
-
-std::string number(double v, std::string_view unit, double scale = 1.0, int digits = 5) {
-  if (!std::isfinite(v)) return "—";
-  return fmt::format("{:.{}g}{}{}", v * scale, digits, unit.empty() ? "" : " ", unit);
-}
-
 /// A summary value by key: "—" for null or missing.
 std::string value(const nlohmann::json& j, const char* key, std::string_view unit, double scale = 1.0) {
   if (!j.contains(key) || j[key].is_null()) return "—";
   if (j[key].is_boolean()) return j[key].get<bool>() ? "yes" : "no";
   if (j[key].is_string()) return xml_escaped(j[key].get<std::string>());
-  return number(j[key].get<double>(), unit, scale);
-}
-
-void row(std::string& h, std::string_view name, const std::string& v) {
-  fmt::format_to(std::back_inserter(h), "<tr><th>{}</th><td class=\"number\">{}</td></tr>\n", name, v);
-}
-
-void item(std::string& h, std::string_view name, const std::string& v) {
-  fmt::format_to(std::back_inserter(h), "<dt>{}</dt><dd>{}</dd>\n", name, v);
+  return html_number(j[key].get<double>(), unit, scale);
 }
 
 std::string supports(const Deck& deck) {
@@ -64,34 +36,37 @@ void case_section(std::string& h, const ImpactReportInput& in) {
   h += "<section id=\"case\"><h2>The case</h2><div class=\"case\"><dl>\n";
   if (d.plate) {
     const double thickness = d.laminate ? d.laminate->thickness() : 0.0;
-    item(h, "plate",
-         fmt::format("{:.4g} × {:.4g} × {:.4g} mm", d.plate->a * 1e3, d.plate->b * 1e3, thickness * 1e3));
+    html_item(
+        h, "plate",
+        fmt::format("{:.4g} × {:.4g} × {:.4g} mm", d.plate->a * 1e3, d.plate->b * 1e3, thickness * 1e3));
   }
   if (d.laminate_spec)
-    item(h, "laminate",
-         fmt::format("{} of {}, {:.4g} mm plies ({} plies)", xml_escaped(d.laminate_spec->layup),
-                     xml_escaped(d.laminate_spec->material), d.laminate_spec->ply_thickness * 1e3,
-                     d.laminate ? d.laminate->ply_count() : 0));
-  item(h, "mesh",
-       fmt::format("{} {} elements{}, {:.3g} to {:.3g} mm", s.mesh.elements, to_string(s.mesh.element),
-                   s.mesh.graded ? " graded toward the impact point" : "", s.mesh.smallest_element * 1e3,
-                   s.mesh.largest_element * 1e3));
-  item(h, "supports", supports(d));
+    html_item(h, "laminate",
+              fmt::format("{} of {}, {:.4g} mm plies ({} plies)", xml_escaped(d.laminate_spec->layup),
+                          xml_escaped(d.laminate_spec->material), d.laminate_spec->ply_thickness * 1e3,
+                          d.laminate ? d.laminate->ply_count() : 0));
+  html_item(h, "mesh",
+            fmt::format("{} {} elements{}, {:.3g} to {:.3g} mm", s.mesh.elements, to_string(s.mesh.element),
+                        s.mesh.graded ? " graded toward the impact point" : "", s.mesh.smallest_element * 1e3,
+                        s.mesh.largest_element * 1e3));
+  html_item(h, "supports", supports(d));
   const Impactor& i = s.impactor;
-  item(h, "impactor",
-       fmt::format("{:.4g} kg sphere, R = {:.4g} mm, E = {:.4g} GPa, at ({:.4g}, {:.4g}) mm", i.mass,
-                   i.radius * 1e3, i.E * 1e-9, i.x * 1e3, i.y * 1e3));
-  item(h, "impact", fmt::format("{:.4g} m/s, {:.4g} J", i.velocity, 0.5 * i.mass * i.velocity * i.velocity));
-  item(h, "contact",
-       fmt::format("k = {:.4g} N/m<sup>1.5</sup>, unloading {}, load {}", s.k,
-                   s.contact.unloading == UnloadingLaw::tan_sun ? "Tan–Sun" : "elastic",
-                   to_string(s.contact.load)));
-  item(h, "time",
-       fmt::format("Δt = {:.4g} µs, end {}", s.dt * 1e6,
-                   s.end ? fmt::format("{:.4g} µs", *s.end * 1e6) : std::string("at the end of the event")));
-  item(h, "plate model",
-       fmt::format("{}{}", s.nonlinear ? "large deflections (non-linear)" : "linear",
-                   s.progressive_damage ? ", progressive ply damage" : ""));
+  html_item(h, "impactor",
+            fmt::format("{:.4g} kg sphere, R = {:.4g} mm, E = {:.4g} GPa, at ({:.4g}, {:.4g}) mm", i.mass,
+                        i.radius * 1e3, i.E * 1e-9, i.x * 1e3, i.y * 1e3));
+  html_item(h, "impact",
+            fmt::format("{:.4g} m/s, {:.4g} J", i.velocity, 0.5 * i.mass * i.velocity * i.velocity));
+  html_item(h, "contact",
+            fmt::format("k = {:.4g} N/m<sup>1.5</sup>, unloading {}, load {}", s.k,
+                        s.contact.unloading == UnloadingLaw::tan_sun ? "Tan–Sun" : "elastic",
+                        to_string(s.contact.load)));
+  html_item(
+      h, "time",
+      fmt::format("Δt = {:.4g} µs, end {}", s.dt * 1e6,
+                  s.end ? fmt::format("{:.4g} µs", *s.end * 1e6) : std::string("at the end of the event")));
+  html_item(h, "plate model",
+            fmt::format("{}{}", s.nonlinear ? "large deflections (non-linear)" : "linear",
+                        s.progressive_damage ? ", progressive ply damage" : ""));
   h += "</dl>\n";
   if (d.laminate) h += "<figure>" + svg_ply_stack(*d.laminate) + "</figure>\n";
   h += "</div></section>\n";
@@ -112,22 +87,22 @@ void warnings_section(std::string& h, const ImpactReportInput& in) {
 
 void results_section(std::string& h, const nlohmann::json& j) {
   h += "<section id=\"results\"><h2>Results</h2><table class=\"summary\">\n";
-  row(h, "peak contact force", value(j, "peak_force", "N"));
-  row(h, "time of peak force", value(j, "time_of_peak_force", "µs", 1e6));
-  row(h, "contact duration (first contact)", value(j, "contact_duration", "µs", 1e6));
-  row(h, "contacts", value(j, "contacts", ""));
-  row(h, "peak plate deflection at the contact point", value(j, "peak_contact_deflection", "mm", 1e3));
-  row(h, "largest indentation", value(j, "max_indentation", "mm", 1e3));
-  row(h, "permanent indentation", value(j, "permanent_indentation", "mm", 1e3));
-  row(h, "impact energy", value(j, "initial_energy", "J"));
-  row(h, "rebound velocity", value(j, "rebound_velocity", "m/s"));
-  row(h, "absorbed energy", value(j, "absorbed_energy", "J"));
-  row(h, "contact dissipation", value(j, "contact_dissipation", "J"));
-  row(h, "energy balance error", value(j, "energy_balance_error", "% of the impact energy", 100.0));
-  row(h, "steps", value(j, "steps", ""));
-  row(h, "end time", value(j, "end_time", "µs", 1e6));
-  row(h, "complete", value(j, "complete", ""));
-  row(h, "suspect", value(j, "suspect", ""));
+  html_row(h, "peak contact force", value(j, "peak_force", "N"));
+  html_row(h, "time of peak force", value(j, "time_of_peak_force", "µs", 1e6));
+  html_row(h, "contact duration (first contact)", value(j, "contact_duration", "µs", 1e6));
+  html_row(h, "contacts", value(j, "contacts", ""));
+  html_row(h, "peak plate deflection at the contact point", value(j, "peak_contact_deflection", "mm", 1e3));
+  html_row(h, "largest indentation", value(j, "max_indentation", "mm", 1e3));
+  html_row(h, "permanent indentation", value(j, "permanent_indentation", "mm", 1e3));
+  html_row(h, "impact energy", value(j, "initial_energy", "J"));
+  html_row(h, "rebound velocity", value(j, "rebound_velocity", "m/s"));
+  html_row(h, "absorbed energy", value(j, "absorbed_energy", "J"));
+  html_row(h, "contact dissipation", value(j, "contact_dissipation", "J"));
+  html_row(h, "energy balance error", value(j, "energy_balance_error", "% of the impact energy", 100.0));
+  html_row(h, "steps", value(j, "steps", ""));
+  html_row(h, "end time", value(j, "end_time", "µs", 1e6));
+  html_row(h, "complete", value(j, "complete", ""));
+  html_row(h, "suspect", value(j, "suspect", ""));
   h += "</table></section>\n";
 }
 
@@ -199,17 +174,14 @@ void damage_section(std::string& h, const ImpactReportInput& in) {
 
 std::string impact_report_html(const ImpactReportInput& in) {
   const std::string title = in.deck.title.empty() ? in.deck.source : in.deck.title;
-  std::string h =
-      fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                  "<title>plyimpact: {0}</title>\n<style>{1}</style>\n</head>\n<body>\n<h1>{0}</h1>\n"
-                  "<p class=\"meta\">impact analysis of {2}, plyimpact {3}</p>\n",
-                  xml_escaped(title), style, xml_escaped(in.deck.source), PLYIMPACT_VERSION);
+  std::string h = html_page_start(title, fmt::format("impact analysis of {}, plyimpact {}",
+                                                     xml_escaped(in.deck.source), PLYIMPACT_VERSION));
   case_section(h, in);
   warnings_section(h, in);
   results_section(h, in.summary);
   curves_section(h, in.history, in.settings.progressive_damage.has_value());
   damage_section(h, in);
-  return h + "</body>\n</html>\n";
+  return h.append(html_page_end());
 }
 
 } // namespace plyimpact

@@ -68,13 +68,22 @@ void axes(std::string& s, const Frame& f, const std::vector<double>& xt, const s
 
 void polyline(std::string& s, const Frame& f, const PlotSeries& series) {
   auto out = std::back_inserter(s);
-  fmt::format_to(out, "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\"{} points=\"", series.color,
-                 series.dashed ? " stroke-dasharray=\"6 4\"" : "");
   const std::size_t n = std::min(series.x.size(), series.y.size());
-  for (std::size_t i = 0; i < n; ++i)
-    if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
-      fmt::format_to(out, "{:.1f},{:.1f} ", f.px(series.x[i]), f.py(series.y[i]));
-  s += "\"/>\n";
+  const auto shown = [&series](std::size_t i) {
+    return std::isfinite(series.x[i]) && std::isfinite(series.y[i]);
+  };
+  if (series.line) {
+    fmt::format_to(out, "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\"{} points=\"",
+                   series.color, series.dashed ? " stroke-dasharray=\"6 4\"" : "");
+    for (std::size_t i = 0; i < n; ++i)
+      if (shown(i)) fmt::format_to(out, "{:.1f},{:.1f} ", f.px(series.x[i]), f.py(series.y[i]));
+    s += "\"/>\n";
+  }
+  if (series.markers)
+    for (std::size_t i = 0; i < n; ++i)
+      if (shown(i))
+        fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>\n",
+                       f.px(series.x[i]), f.py(series.y[i]), series.color);
 }
 
 void legend(std::string& s, const Frame& f, const std::vector<PlotSeries>& series) {

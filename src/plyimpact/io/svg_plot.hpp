@@ -17,6 +17,8 @@ struct PlotSeries {
   std::vector<double> x, y;
   std::string color = "#1f77b4";
   bool dashed = false;
+  bool line = true;     ///< join the points
+  bool markers = false; ///< a dot at every point (a sweep's cases)
 };
 
 struct LinePlot {

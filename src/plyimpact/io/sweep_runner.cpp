@@ -9,6 +9,7 @@
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/results.hpp"
+#include "plyimpact/io/sweep_report.hpp"
 #include "plyimpact/io/threshold_run.hpp"
 
 #include <fmt/format.h>
@@ -252,7 +253,10 @@ SweepFolder::TableStatus SweepFolder::write_table() const {
     if (r->value("status", std::string()) != "ok") ++status.failed;
     records.push_back(std::move(*r));
   }
-  if (status.missing == 0) write_file_atomically(dir_ / "sweep.csv", sweep_table_csv(sweep_, records));
+  if (status.missing == 0) {
+    write_file_atomically(dir_ / "sweep.csv", sweep_table_csv(sweep_, records));
+    write_file_atomically(dir_ / "report.html", sweep_report_html(sweep_, records));
+  }
   return status;
 }
 

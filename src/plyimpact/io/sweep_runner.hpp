@@ -1,6 +1,7 @@
 #pragma once
 // Running a sweep (docs/sweep.md): cases on worker threads, each finished case recorded atomically in
-// DIR/cases/NNNNNN.json, and DIR/sweep.csv rebuilt from the records, one row per case in case order.
+// DIR/cases/NNNNNN.json, and DIR/sweep.csv rebuilt from the records, one row per case in case order
+// (with DIR/report.html, io/sweep_report.hpp).
 // Each case is computed from its own deck alone, so the table does not depend on how many threads or
 // MPI ranks ran it, nor in which order; the numbers are written with the shortest text that reads back
 // to the same double, so equal runs give byte-identical tables.
@@ -60,8 +61,12 @@ public:
     std::size_t missing = 0; ///< cases without a record (the table is not written)
     std::size_t failed = 0;  ///< cases recorded with an error
   };
-  /// Writes sweep.csv (atomically) when every case has a record.
+  /// Writes sweep.csv and report.html (each atomically) when every case has a record.
   TableStatus write_table() const;
+  /// What a resumed sweep finds in its folder and keeps: sweep.json, cases/ and the last table and report.
+  [[nodiscard]] static std::vector<std::string> resumable_results() {
+    return {"sweep.json", "sweep.csv", "report.html", "cases"};
+  }
 
   [[nodiscard]] const std::filesystem::path& path() const { return dir_; }
 

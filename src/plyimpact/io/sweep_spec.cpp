@@ -500,6 +500,10 @@ const std::string& Sweep::source() const {
   return impl_->source;
 }
 
+std::string Sweep::title() const {
+  return impl_->base["title"].value<std::string>().value_or("");
+}
+
 const std::string& Sweep::fingerprint() const {
   return impl_->fingerprint;
 }

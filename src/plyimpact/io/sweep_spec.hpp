@@ -87,6 +87,8 @@ public:
 
   [[nodiscard]] const SweepSpec& spec() const;
   [[nodiscard]] const std::string& source() const;
+  /// The base deck's `title` (empty when it has none).
+  [[nodiscard]] std::string title() const;
   /// Swept keys in table order: the axes, then the random keys.
   [[nodiscard]] std::vector<std::string> keys() const;
   [[nodiscard]] std::size_t size() const;
