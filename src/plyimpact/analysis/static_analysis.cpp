@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 namespace plyimpact {
 
@@ -48,7 +49,10 @@ StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eige
   StaticResult r;
   r.u = std::move(u);
   const Eigen::Vector2d centre = model.mesh().bounds().centre();
-  r.center_deflection = model.sampler(centre.x(), centre.y()).value(r.u);
+  // The centre of the mesh's bounding box; not a number where it is not on the plate (an annulus).
+  r.center_deflection = model.mesh().locate(centre.x(), centre.y())
+                            ? model.sampler(centre.x(), centre.y()).value(r.u)
+                            : std::numeric_limits<double>::quiet_NaN();
   if (load.point)
     r.load_point_deflection = model.sampler(load.point->x, load.point->y).value(r.u);
   else if (load.patch)

@@ -7,7 +7,7 @@ namespace plyimpact {
 
 PlateModel plate_model(const Deck& deck) {
   const MeshSpec spec = deck.mesh.value_or(MeshSpec{}); // static, modal, buckling: nx × ny (15 × 11)
-  Mesh mesh = structured_rectangle(*deck.plate, spec.nx, spec.ny);
+  Mesh mesh = deck.file_mesh ? *deck.file_mesh : structured_rectangle(*deck.plate, spec.nx, spec.ny);
   std::vector<int> of_element = element_laminates(mesh, deck.regions);
   return {std::move(mesh), PlateSections{all_laminates(deck), std::move(of_element)},
           Discretization{spec.mass, spec.element}, *deck.boundary};

@@ -4,6 +4,7 @@
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/boundary.hpp"
 #include "plyimpact/fem/loads.hpp"
+#include "plyimpact/fem/mesh.hpp"
 #include "plyimpact/fem/mesh_spec.hpp"
 #include "plyimpact/fem/regions.hpp"
 #include "plyimpact/io/deck_error.hpp"
@@ -11,6 +12,7 @@
 #include "plyimpact/laminate/laminate.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -72,6 +74,8 @@ struct Deck {
   std::vector<Region> regions;          ///< [[region]]: Region::laminate indexes 1 + laminates
   std::optional<PlateGeometry> plate;
   std::optional<MeshSpec> mesh;
+  std::string mesh_file;                 ///< [mesh] file as written ("" for the structured rectangle)
+  std::shared_ptr<const Mesh> file_mesh; ///< the mesh read from mesh_file (io/gmsh_mesh.hpp)
   std::optional<BoundaryConditions> boundary;
   std::optional<Impactor> impactor;
   ImpactorInput impactor_input;

@@ -44,7 +44,7 @@ std::string unknown_threshold_criterion(std::string_view what, std::string_view 
 
 namespace plyimpact::deck_tables {
 
-StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate) {
+StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate, const Mesh* file_mesh) {
   t.only({"pressure", "point", "patch"});
   StaticLoad l;
   l.pressure = t.optional_number("pressure", "Pa").value_or(0.0);
@@ -52,6 +52,13 @@ StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& p
     if (plate && !(x >= 0.0 && x <= plate->a && y >= 0.0 && y <= plate->b))
       r.fail_at("x", fmt::format("load point ({}, {}) m lies outside the plate {} x {} m", x, y, plate->a,
                                  plate->b));
+    if (file_mesh != nullptr && !file_mesh->locate(x, y)) {
+      const BoundingBox& box = file_mesh->bounds();
+      r.fail_at("x",
+                fmt::format("load point ({}, {}) m lies outside the mesh (x from {} to {} m, y from {} to "
+                            "{} m)",
+                            x, y, box.x_min, box.x_max, box.y_min, box.y_max));
+    }
   };
   if (const auto p = t.optional_table("point")) {
     p->only({"x", "y", "force"});

@@ -1,6 +1,11 @@
 #include "plyimpact/io/deck_tables.hpp"
 
+#include "plyimpact/io/gmsh_mesh.hpp"
+
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
 
 namespace plyimpact::deck_tables {
 
@@ -37,8 +42,16 @@ std::array<double, 2> read_impact_offset(const TableReader& t) {
 } // namespace
 
 MeshSpec read_mesh(const TableReader& t) {
-  t.only({"nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size", "impact_offset"});
+  t.only({"file", "nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size",
+          "impact_offset"});
   MeshSpec m;
+  if (t.has("file")) {
+    for (const char* key : {"nx", "ny", "grading", "size_at_impact", "growth", "max_size", "impact_offset"})
+      if (t.has(key))
+        t.fail_at(key, fmt::format("mesh.{} shapes the structured rectangle, but mesh.file gives the mesh: "
+                                   "leave out mesh.{} (refine in gmsh)",
+                                   key, key));
+  }
   bool counts = false;
   for (const auto* key : {"nx", "ny"}) {
     const auto v = t.optional_integer(key);
@@ -60,7 +73,8 @@ MeshSpec read_mesh(const TableReader& t) {
                                                                 {"mitc9", ElementFormulation::mitc9}})
                   .value_or(ElementFormulation::automatic);
   // Graded toward the impact point unless the element counts are given (docs/deck.md).
-  const bool graded = t.optional_choice<bool>("grading", {{"auto", true}, {"none", false}}).value_or(!counts);
+  const bool graded = t.optional_choice<bool>("grading", {{"auto", true}, {"none", false}})
+                          .value_or(!counts && !t.has("file"));
   if (graded && counts)
     t.fail_at("grading", "mesh.grading = \"auto\" grades the mesh toward the impact point: leave out mesh.nx "
                          "and mesh.ny, or set grading = \"none\" for a uniform nx x ny mesh");
@@ -89,7 +103,25 @@ MeshSpec read_mesh(const TableReader& t) {
   return m;
 }
 
-BoundaryConditions read_boundary(const TableReader& t) {
+std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written) {
+  const auto name = t.optional_string("file");
+  if (!name) return nullptr;
+  written = *name;
+  std::filesystem::path path(*name);
+  if (path.is_relative()) path = std::filesystem::path(t.file()).parent_path() / path; // beside the deck
+  if (path.extension() != ".msh")
+    t.fail_at("file", fmt::format("mesh.file must be a gmsh mesh (.msh), got \"{}\"", *name));
+  try {
+    return std::make_shared<const Mesh>(read_gmsh_mesh(path));
+  } catch (const MeshFileError& e) {
+    t.fail_at("file", fmt::format("mesh.file = \"{}\": {}", *name, e.what()));
+  }
+}
+
+namespace {
+
+/// [boundary] of the structured rectangle: x0, xa, y0, yb (ss unless given) and corners.
+BoundaryConditions read_rectangle_boundary(const TableReader& t) {
   t.only({"x0", "xa", "y0", "yb", "corners"});
   BoundaryConditions bc;
   for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb}) {
@@ -113,6 +145,44 @@ BoundaryConditions read_boundary(const TableReader& t) {
     bc.corners = r;
   }
   return bc;
+}
+
+/// [boundary] of a mesh from a file: one key per named set of the mesh (gmsh's physical groups); the
+/// sets left out are free.
+BoundaryConditions read_mesh_boundary(const TableReader& t, const Mesh& mesh) {
+  const std::vector<std::string> names = mesh.node_set_names();
+  BoundaryConditions bc;
+  for (auto&& [key, node] : t.table()) {
+    const std::string name(key.str());
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      const auto best = closest_name(name, names);
+      std::string known;
+      for (const std::string& n : names)
+        known += (known.empty() ? "" : ", ") + n;
+      t.fail_at(name,
+                fmt::format("boundary.{}: the mesh has no physical group \"{}\"{} (its groups: {})", name,
+                            name, best ? fmt::format(" (did you mean \"{}\"?)", *best) : "", known));
+    }
+    const auto text = t.optional_string(name);
+    if (!is_restraint_type(*text))
+      t.fail_at(name,
+                fmt::format("boundary.{} must be ss | ss-soft | clamped | free or a 5-character code of 0/1 "
+                            "for (u, v, w, θx, θy), got \"{}\"",
+                            name, *text));
+    try {
+      (void)resolve_restraint(mesh, SetRestraint{name, *text});
+    } catch (const std::exception& e) {
+      t.fail_at(name, fmt::format("boundary.{} = \"{}\": {}", name, *text, e.what()));
+    }
+    bc.set(name, *text);
+  }
+  return bc;
+}
+
+} // namespace
+
+BoundaryConditions read_boundary(const TableReader& t, const Mesh* file_mesh) {
+  return file_mesh != nullptr ? read_mesh_boundary(t, *file_mesh) : read_rectangle_boundary(t);
 }
 
 } // namespace plyimpact::deck_tables

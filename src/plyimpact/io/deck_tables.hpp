@@ -29,7 +29,11 @@ inline constexpr long max_step_cap = 100'000'000;
 // deck_plate.cpp
 [[nodiscard]] PlateGeometry read_plate(const TableReader& t);
 [[nodiscard]] MeshSpec read_mesh(const TableReader& t);
-[[nodiscard]] BoundaryConditions read_boundary(const TableReader& t);
+/// [mesh] file: the gmsh mesh it names (relative to the deck's folder), read and checked; nullptr without
+/// the key.
+[[nodiscard]] std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written);
+/// [boundary] of the structured rectangle (x0, xa, y0, yb, corners), or of `file_mesh`: its named sets.
+[[nodiscard]] BoundaryConditions read_boundary(const TableReader& t, const Mesh* file_mesh);
 
 // deck_impact.cpp
 /// [impactor]; `input` receives the density and energy when the deck gives them.
@@ -41,7 +45,9 @@ inline constexpr long max_step_cap = 100'000'000;
 void read_nonlinear_keys(const TableReader& top, Deck& d);
 
 // deck_analyses.cpp
-[[nodiscard]] StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate);
+/// [load]; its points must lie on the plate (the rectangle, or `file_mesh` when the mesh came from a file).
+[[nodiscard]] StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate,
+                                   const Mesh* file_mesh);
 [[nodiscard]] ModalSettings read_modal(const TableReader& t);
 [[nodiscard]] BucklingSettings read_buckling(const TableReader& t);
 [[nodiscard]] DamageSettings read_damage(const TableReader& t, const Deck& d);

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iterator>
 
 namespace plyimpact {
@@ -20,17 +21,27 @@ VtkOptions vtk_options(const Deck& deck) {
   return {deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, {}, {}};
 }
 
+/// A deflection in metres, or what it is when the point is not on the plate (the centre of an annulus).
+std::string deflection_text(double w) {
+  return std::isfinite(w) ? fmt::format("{:.6e} m", w) : "none (the point is not on the plate)";
+}
+
 void print_deflections(std::string& text, double center, double load_point, double max_abs) {
   auto out = std::back_inserter(text);
-  fmt::format_to(out, "  center_deflection     = {:.6e} m\n", center);
-  fmt::format_to(out, "  load_point_deflection = {:.6e} m\n", load_point);
-  fmt::format_to(out, "  max_abs_deflection    = {:.6e} m\n", max_abs);
+  fmt::format_to(out, "  center_deflection     = {}\n", deflection_text(center));
+  fmt::format_to(out, "  load_point_deflection = {}\n", deflection_text(load_point));
+  fmt::format_to(out, "  max_abs_deflection    = {}\n", deflection_text(max_abs));
+}
+
+/// null where the point is not on the plate.
+nlohmann::json deflection_value(double w) {
+  return std::isfinite(w) ? nlohmann::json(w) : nlohmann::json(nullptr);
 }
 
 void put_deflections(nlohmann::json& j, double center, double load_point, double max_abs) {
-  j["center_deflection"] = center;
-  j["load_point_deflection"] = load_point;
-  j["max_abs_deflection"] = max_abs;
+  j["center_deflection"] = deflection_value(center);
+  j["load_point_deflection"] = deflection_value(load_point);
+  j["max_abs_deflection"] = deflection_value(max_abs);
 }
 
 /// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.

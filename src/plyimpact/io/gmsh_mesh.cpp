@@ -1,0 +1,259 @@
+#include "plyimpact/io/gmsh_mesh.hpp"
+
+#include "plyimpact/fem/shape_functions.hpp"
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace plyimpact {
+
+namespace {
+
+constexpr int gmsh_line3 = 8;  ///< 3-node line: end, end, middle
+constexpr int gmsh_quad9 = 10; ///< 9-node quadrilateral, nodes in the order of shape_functions.hpp
+
+/// How to get QUAD9 elements out of gmsh (for the messages).
+constexpr const char* how_to_quad9 =
+    "mesh the plate with 9-node quadrilaterals: in gmsh recombine the surface mesh into quadrilaterals "
+    "(Mesh.RecombineAll = 1, or Recombine Surface{...}), make it second order (Mesh.ElementOrder = 2) with "
+    "complete elements (Mesh.SecondOrderIncomplete = 0), then save it as .msh";
+
+/// gmsh's names of the element types a plate mesh file may hold instead.
+std::string element_type_name(int type) {
+  switch (type) {
+  case 2:
+    return "3-node triangles (gmsh type 2)";
+  case 3:
+    return "4-node quadrilaterals (gmsh type 3)";
+  case 9:
+    return "6-node triangles (gmsh type 9)";
+  case 10:
+    return "9-node quadrilaterals (gmsh type 10)";
+  case 16:
+    return "8-node quadrilaterals (gmsh type 16)";
+  default:
+    return fmt::format("elements of gmsh type {}", type);
+  }
+}
+
+/// The gmsh library is one global model: one reader at a time, initialised and finalised around it.
+class GmshSession {
+public:
+  GmshSession() : lock_(mutex()) {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.Verbosity", 0);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  std::lock_guard<std::mutex> lock_;
+};
+
+/// A .msh file starts with $MeshFormat: anything else (a .geo script, a text file) is not handed to
+/// gmsh, which would run a script.
+void require_msh_header(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw MeshFileError(fmt::format("{}: error: cannot open the mesh file", file.string()));
+  std::string word;
+  in >> word;
+  if (word != "$MeshFormat")
+    throw MeshFileError(fmt::format("{}: error: not a gmsh mesh file (a .msh file starts with $MeshFormat); "
+                                    "mesh the geometry in gmsh and save the mesh as .msh",
+                                    file.string()));
+}
+
+struct RawMesh {
+  std::vector<Eigen::Vector2d> nodes;
+  std::vector<ElementNodes> elements;
+  std::vector<std::size_t> element_tags; ///< gmsh's tag of each element (messages)
+  std::map<std::string, std::vector<EdgeSegment>> edge_sets;
+  std::map<std::string, std::vector<int>> node_sets;
+};
+
+/// Only QUAD9 elements on surfaces; anything else on a surface is named in the error.
+void require_quad9_only(const std::filesystem::path& file) {
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2);
+  std::vector<int> others;
+  std::copy_if(types.begin(), types.end(), std::back_inserter(others), [](int t) { return t != gmsh_quad9; });
+  if (others.empty() && !types.empty()) return;
+  std::string found;
+  for (const int t : others)
+    found += (found.empty() ? "" : ", ") + element_type_name(t);
+  throw MeshFileError(fmt::format("{}: error: the mesh holds {}: {}", file.string(),
+                                  types.empty() ? "no surface elements" : found, how_to_quad9));
+}
+
+/// The QUAD9 elements and the nodes they use, numbered from 0 in the order met.
+void read_elements(const std::filesystem::path& file, RawMesh& m,
+                   std::unordered_map<std::size_t, int>& index) {
+  std::vector<std::size_t> tags, node_tags, all_nodes;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(all_nodes, coords, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::size_t> where; // gmsh node tag → position in coords
+  for (std::size_t i = 0; i < all_nodes.size(); ++i)
+    where[all_nodes[i]] = i;
+  gmsh::model::mesh::getElementsByType(gmsh_quad9, tags, node_tags);
+  double size = 0.0;
+  for (const double c : coords)
+    size = std::max(size, std::abs(c));
+  for (std::size_t e = 0; e < tags.size(); ++e) {
+    ElementNodes element{};
+    for (std::size_t a = 0; a < 9; ++a) {
+      const std::size_t tag = node_tags[9 * e + a];
+      auto [it, added] = index.try_emplace(tag, static_cast<int>(m.nodes.size()));
+      if (added) {
+        const std::size_t p = where.at(tag);
+        const double z = coords[3 * p + 2];
+        if (std::abs(z) > 1e-9 * std::max(size, 1e-300))
+          throw MeshFileError(
+              fmt::format("{}: error: node {} lies at z = {:g}, off the plate's mid-plane z = 0: "
+                          "draw the plate in the x-y plane",
+                          file.string(), tag, z));
+        m.nodes.emplace_back(coords[3 * p], coords[3 * p + 1]);
+      }
+      element[a] = it->second;
+    }
+    m.elements.push_back(element);
+    m.element_tags.push_back(tags[e]);
+  }
+}
+
+/// det J at the nine nodes of every element: positive everywhere, else the element is inverted
+/// (nodes clockwise: all negative) or degenerate/distorted (mixed signs or zero).
+void require_valid_elements(const std::filesystem::path& file, const RawMesh& m) {
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, scale = 0.0;
+    for (const auto& [xi, eta] : q9_node_coordinates) {
+      const Q9Shape s = q9_shape(xi, eta);
+      Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+      for (std::size_t a = 0; a < 9; ++a) {
+        const Eigen::Vector2d& x = m.nodes[static_cast<std::size_t>(m.elements[e][a])];
+        J.col(0) += s.dN_dxi(static_cast<Eigen::Index>(a)) * x;
+        J.col(1) += s.dN_deta(static_cast<Eigen::Index>(a)) * x;
+      }
+      lo = std::min(lo, J.determinant());
+      hi = std::max(hi, J.determinant());
+      scale = std::max(scale, J.squaredNorm());
+    }
+    if (lo > 1e-12 * scale) continue;
+    if (hi < 0.0)
+      throw MeshFileError(
+          fmt::format("{}: error: element {} is inverted (its nodes run clockwise seen from "
+                      "+z): orient the surface's normal along +z in gmsh (Reverse Surface{{...}})",
+                      file.string(), m.element_tags[e]));
+    throw MeshFileError(
+        fmt::format("{}: error: element {} is degenerate or folded (its Jacobian changes sign "
+                    "or vanishes): remesh or move its nodes",
+                    file.string(), m.element_tags[e]));
+  }
+}
+
+std::string group_name(int dim, int tag) {
+  std::string name;
+  gmsh::model::getPhysicalName(dim, tag, name);
+  return name.empty() ? std::to_string(tag) : name;
+}
+
+/// Physical curves → edge sets (their 3-node lines), physical points → node sets.
+void read_groups(const std::filesystem::path& file, RawMesh& m,
+                 const std::unordered_map<std::size_t, int>& index) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  if (groups.empty())
+    throw MeshFileError(
+        fmt::format("{}: error: the mesh has no physical groups: supports and loads refer to "
+                    "edges and points by name, so name them in gmsh (Physical Curve(\"clamp\") "
+                    "= {{...}}; Physical Surface(\"plate\") = {{...}})",
+                    file.string()));
+  const auto node_of = [&](std::size_t tag, const std::string& set) {
+    const auto it = index.find(tag);
+    if (it == index.end())
+      throw MeshFileError(fmt::format("{}: error: physical group \"{}\" holds node {}, which no 9-node "
+                                      "quadrilateral of the plate uses",
+                                      file.string(), set, tag));
+    return it->second;
+  };
+  for (const auto& [dim, tag] : groups) {
+    const std::string name = group_name(dim, tag);
+    if (dim == 1) {
+      std::vector<int> curves;
+      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, curves);
+      std::vector<EdgeSegment>& edges = m.edge_sets[name];
+      for (const int curve : curves) {
+        std::vector<int> types;
+        gmsh::model::mesh::getElementTypes(types, 1, curve);
+        if (std::any_of(types.begin(), types.end(), [](int t) { return t != gmsh_line3; }))
+          throw MeshFileError(
+              fmt::format("{}: error: physical curve \"{}\" is not meshed with 3-node lines: {}",
+                          file.string(), name, how_to_quad9));
+        std::vector<std::size_t> tags, nodes;
+        gmsh::model::mesh::getElementsByType(gmsh_line3, tags, nodes, curve);
+        for (std::size_t s = 0; s < tags.size(); ++s) // gmsh: end, end, middle; ours: end, middle, end
+          edges.push_back({node_of(nodes[3 * s], name), node_of(nodes[3 * s + 2], name),
+                           node_of(nodes[3 * s + 1], name)});
+      }
+    } else if (dim == 0) {
+      std::vector<std::size_t> tags;
+      std::vector<double> coords;
+      gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, coords);
+      std::vector<int>& nodes = m.node_sets[name];
+      for (const std::size_t t : tags)
+        nodes.push_back(node_of(t, name));
+    }
+  }
+}
+
+RawMesh read_raw(const std::filesystem::path& file) {
+  const GmshSession session;
+  try {
+    gmsh::open(file.string());
+    require_quad9_only(file);
+    RawMesh m;
+    std::unordered_map<std::size_t, int> index;
+    read_elements(file, m, index);
+    require_valid_elements(file, m);
+    read_groups(file, m, index);
+    return m;
+  } catch (const MeshFileError&) {
+    throw;
+  } catch (...) { // gmsh's own errors (the type depends on its version): say what gmsh said last
+    std::string last;
+    gmsh::logger::getLastError(last);
+    throw MeshFileError(fmt::format("{}: error: gmsh could not read the mesh{}", file.string(),
+                                    last.empty() ? "" : ": " + last));
+  }
+}
+
+} // namespace
+
+Mesh read_gmsh_mesh(const std::filesystem::path& file) {
+  require_msh_header(file);
+  RawMesh raw = read_raw(file);
+  Mesh mesh(std::move(raw.nodes), std::move(raw.elements));
+  for (auto& [name, edges] : raw.edge_sets)
+    mesh.add_edge_set(name, std::move(edges));
+  for (auto& [name, nodes] : raw.node_sets)
+    if (!mesh.has_node_set(name)) mesh.add_node_set(name, std::move(nodes));
+  return mesh;
+}
+
+} // namespace plyimpact
