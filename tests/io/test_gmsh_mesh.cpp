@@ -3,7 +3,11 @@
 // under uniform pressure (Mindlin: Kirchhoff plus the shear term) and under a central point load, its
 // fundamental frequency (λ² = 10.2158), the annular plate simply supported outside and free inside
 // (Kirchhoff's axisymmetric solution) —, the thesis rectangle meshed by gmsh against the structured
-// factory, and every kind of mesh file that must be refused with a message that says why.
+// factory (static and the thesis impact), the §3.6 impact on an unstructured mesh refined at the impact
+// point against the graded structured mesh, and every kind of mesh file that must be refused with a
+// message that says why.
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/gmsh_mesh.hpp"
 #include "plyimpact/io/plate_analyses.hpp"
@@ -310,6 +314,93 @@ TEST(GmshMesh, FilesThatAreNotGmshMeshesAreRefused) {
                   std::string("[mesh]\nfile = \"") + (dir / "disk.msh").string() + "\"\nnx = 4\n", "d.toml");
             }).find("mesh.nx shapes the structured rectangle"),
             std::string::npos);
+}
+
+/// The thesis §3.6 impact (examples/thesis-3.6-v268.toml) without its [plate], [mesh], [contact] and
+/// [time], which each test adds.
+const std::string thesis_3_6_impact = R"(analysis = "impact"
+[materials.thesis_3_6]
+E1 = 129.0e9
+E2 = 7.5e9
+G12 = 3.5e9
+G13 = 3.5e9
+G23 = 3.5e9
+nu12 = 0.33
+rho = 1540.0
+[laminate]
+material = "thesis_3_6"
+layup = "[45/90/-45/0]3s"
+ply_thickness = 0.19375e-3
+[boundary]
+x0 = "ss"
+xa = "ss"
+y0 = "ss"
+yb = "ss"
+[impactor]
+mass = 6.14
+radius = 12.7e-3
+E = 207e9
+nu = 0.3
+velocity = 2.68
+)";
+
+ImpactResult impact_of(const std::string& text) {
+  return ImpactCase(impact_case_description(parse_deck(text, "deck.toml"))).run();
+}
+
+TEST(GmshMesh, TheThesisImpactOnTheGmshRectangleIsTheStructuredMeshs) {
+  // The thesis configuration (15 × 11 q9, lumped mass, point load, Δt = 1 µs): the same event on the
+  // rectangle meshed by gmsh with transfinite lines as on the structured factory's.
+  const fs::path dir = scratch("thesis-impact");
+  test::write_rectangle_mesh(dir / "thesis.msh", 0.127, 0.0762, 15, 11);
+  const std::string thesis = "[contact]\nk = 0.6e9\nload = \"point\"\n[time]\ndt = 1.0e-6\n";
+  const ImpactResult structured = impact_of(
+      thesis_3_6_impact + thesis +
+      "[plate]\na = 0.127\nb = 0.0762\n[mesh]\nnx = 15\nny = 11\nmass = \"lumped\"\nelement = \"q9\"\n");
+  const ImpactResult meshed =
+      impact_of(thesis_3_6_impact + thesis +
+                fmt::format("[mesh]\nfile = \"{}\"\nmass = \"lumped\"\nelement = \"q9\"\n",
+                            (dir / "thesis.msh").string()));
+  std::printf("  peak force: structured %.17g N, gmsh %.17g N\n", structured.peak_force, meshed.peak_force);
+  EXPECT_NEAR(meshed.peak_force / structured.peak_force, 1.0, 1e-10);
+  EXPECT_NEAR(meshed.peak_contact_deflection / structured.peak_contact_deflection, 1.0, 1e-10);
+  EXPECT_EQ(meshed.time_of_peak_force, structured.time_of_peak_force);
+  EXPECT_EQ(meshed.contact_duration, structured.contact_duration);
+  EXPECT_NEAR(structured.peak_force, 12661.70, 0.01) << "README's number for the thesis configuration";
+}
+
+TEST(GmshMesh, TheThesisImpactOnAnUnstructuredMeshRefinedAtTheImpactPointIsWithinOnePercent) {
+  // The default settings (MITC9, the Hertz pressure over the contact circle, automatic Δt) on an
+  // unstructured gmsh mesh, 10 mm elements at the corners and 2 mm at the impact point, against the
+  // structured mesh graded toward the impact point (12859.68 N; converged 12878.0 N, docs/validation.md §19).
+  const fs::path dir = scratch("thesis-unstructured");
+  test::write_refined_rectangle_mesh(dir / "refined.msh", 0.127, 0.0762, 0.010, 0.002);
+  const std::string contact = "[contact]\nk = 0.6e9\n"; // the thesis's contact stiffness, as the example
+  const ImpactResult graded = impact_of(thesis_3_6_impact + contact + "[plate]\na = 0.127\nb = 0.0762\n");
+  const Deck deck = parse_deck(thesis_3_6_impact + contact +
+                                   fmt::format("[mesh]\nfile = \"{}\"\n", (dir / "refined.msh").string()),
+                               "deck.toml");
+  const ImpactResult meshed = ImpactCase(impact_case_description(deck)).run();
+  std::printf("  peak force: graded structured %.2f N, unstructured gmsh (%d elements) %.2f N (%+.3f %%)\n",
+              graded.peak_force, deck.file_mesh->element_count(), meshed.peak_force,
+              100.0 * (meshed.peak_force / graded.peak_force - 1.0));
+  EXPECT_NEAR(meshed.peak_force / graded.peak_force, 1.0, 0.01);
+  EXPECT_NEAR(meshed.peak_force / 12878.0, 1.0, 0.01);
+}
+
+TEST(GmshMesh, AnImpactPointOffTheMeshIsRefused) {
+  const fs::path file = scratch("impact-off") / "annulus.msh";
+  test::write_annulus_mesh(file, 0.1, 0.03, 0.02);
+  const std::string impactor = "[impactor]\nmass = 1.0\nradius = 0.01\nE = 207e9\nvelocity = 1.0\n";
+  const std::string in_hole = deck_error(
+      [&] { return isotropic_deck("impact", file, 0.002, "[boundary]\nouter = \"clamped\"\n" + impactor); });
+  EXPECT_NE(in_hole.find("which is not on the plate: give impactor.x and impactor.y"), std::string::npos)
+      << in_hole;
+  const std::string outside = deck_error([&] {
+    return isotropic_deck("impact", file, 0.002,
+                          "[boundary]\nouter = \"clamped\"\n" + impactor + "x = 0.2\ny = 0.0\n");
+  });
+  EXPECT_NE(outside.find("impact point (0.2, 0) m lies outside the mesh"), std::string::npos) << outside;
 }
 
 } // namespace

@@ -116,4 +116,26 @@ void write_rectangle_mesh(const std::filesystem::path& file, double a, double b,
   });
 }
 
+void write_refined_rectangle_mesh(const std::filesystem::path& file, double a, double b, double size,
+                                  double centre_size) {
+  write_mesh(file, GmshMeshOptions{}, [&] {
+    const int p0 = gmsh::model::geo::addPoint(0.0, 0.0, 0.0, size),
+              p1 = gmsh::model::geo::addPoint(a, 0.0, 0.0, size),
+              p2 = gmsh::model::geo::addPoint(a, b, 0.0, size),
+              p3 = gmsh::model::geo::addPoint(0.0, b, 0.0, size);
+    const int centre = gmsh::model::geo::addPoint(0.5 * a, 0.5 * b, 0.0, centre_size);
+    const int y0 = gmsh::model::geo::addLine(p0, p1), xa = gmsh::model::geo::addLine(p1, p2),
+              yb = gmsh::model::geo::addLine(p2, p3), x0 = gmsh::model::geo::addLine(p3, p0);
+    const int surface = gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop({y0, xa, yb, x0})});
+    gmsh::model::geo::synchronize();
+    gmsh::model::mesh::embed(0, {centre}, 2, surface);
+    name(1, {x0}, "x0");
+    name(1, {xa}, "xa");
+    name(1, {y0}, "y0");
+    name(1, {yb}, "yb");
+    name(0, {p0, p1, p2, p3}, "corners");
+    name(2, {surface}, "plate");
+  });
+}
+
 } // namespace plyimpact::test

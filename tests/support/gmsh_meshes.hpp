@@ -30,4 +30,9 @@ void write_annulus_mesh(const std::filesystem::path& file, double outer, double 
 void write_rectangle_mesh(const std::filesystem::path& file, double a, double b, int nx, int ny,
                           const GmshMeshOptions& options = {});
 
+/// The same rectangle and named sets, meshed unstructured: elements of about `size` at the corners,
+/// `centre_size` at the centre (a mesh node), graded between by gmsh.
+void write_refined_rectangle_mesh(const std::filesystem::path& file, double a, double b, double size,
+                                  double centre_size);
+
 } // namespace plyimpact::test

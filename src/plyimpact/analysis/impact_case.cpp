@@ -82,6 +82,7 @@ double size_at_impact(const ImpactCaseDescription& d) {
 }
 
 Mesh impact_mesh(const ImpactCaseDescription& d) {
+  if (d.mesh_from_file) return *d.mesh_from_file;
   if (!d.mesh.grading) return structured_rectangle(d.plate, d.mesh.nx, d.mesh.ny);
   const MeshGrading& g = *d.mesh.grading;
   const double h0 = size_at_impact(d);

@@ -28,8 +28,11 @@ namespace plyimpact {
 
 /// A whole impact case (SI; "auto" where the deck says so).
 struct ImpactCaseDescription {
-  PlateGeometry plate;
+  PlateGeometry plate; ///< the rectangle of the structured mesh (unused with mesh_from_file)
   MeshSpec mesh;
+  /// a mesh read from a file (io/gmsh_mesh.hpp): the plate's shape and elements, instead of the
+  /// rectangle and MeshSpec's counts and grading
+  std::shared_ptr<const Mesh> mesh_from_file;
   std::vector<Laminate> laminates; ///< [0] is the plate's own; regions refer to the others
   std::vector<Region> regions;
   BoundaryConditions boundary;

@@ -15,7 +15,8 @@ PlateModel plate_model(const Deck& deck) {
 
 ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) {
   ImpactCaseDescription d;
-  d.plate = *deck.plate;
+  d.plate = deck.plate.value_or(PlateGeometry{});
+  d.mesh_from_file = deck.file_mesh;
   MeshSpec graded; // no [mesh] table: graded toward the impact point
   graded.grading = MeshGrading{};
   d.mesh = deck.mesh.value_or(graded);

@@ -141,7 +141,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
                 "(its size comes from the mesh)");
   if (const auto t = top.optional_table("boundary")) d.boundary = read_boundary(*t, d.file_mesh.get());
   if (const auto t = top.optional_table("impactor"))
-    d.impactor = read_impactor(*t, d.plate, d.impactor_input);
+    d.impactor = read_impactor(*t, d.plate, d.file_mesh.get(), d.impactor_input);
   if (const auto t = top.optional_table("contact")) d.contact = read_contact(*t);
   if (const auto t = top.optional_table("time")) d.time = read_time(*t);
   if (const auto t = top.optional_table("load")) d.load = read_load(*t, d.plate, d.file_mesh.get());
@@ -177,12 +177,6 @@ void require_sections(const Deck& d, AnalysisKind kind) {
   if (kind != AnalysisKind::laminate) {
     need(d.plate.has_value() || d.file_mesh != nullptr, "[plate] (or [mesh] file)");
     need(d.boundary.has_value() || (d.plate && d.plate->rigid), "[boundary]");
-    if (d.file_mesh && (kind == AnalysisKind::impact || kind == AnalysisKind::threshold))
-      throw DeckError(
-          fmt::format("{}: error: the {} analysis runs on the structured rectangle of [plate] for "
-                      "now: a mesh from a file ([mesh] file = \"{}\") serves the static, modal and "
-                      "buckling analyses (docs/mesh.md)",
-                      d.source, to_string(kind), d.mesh_file));
   }
   if (kind == AnalysisKind::static_) need(d.load.has_value(), "[load]");
   if (kind == AnalysisKind::buckling) need(d.buckling.has_value(), "[buckling]");

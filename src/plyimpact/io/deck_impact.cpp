@@ -27,7 +27,7 @@ double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& in
 
 } // namespace
 
-Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
+Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate, const Mesh* file_mesh,
                        ImpactorInput& input) {
   t.only({"mass", "density", "radius", "E", "nu", "velocity", "energy", "x", "y"});
   Impactor imp;
@@ -59,6 +59,18 @@ Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>&
       t.fail_at(y ? "y" : "radius",
                 fmt::format("impact point y = {} m lies outside the plate: expected 0 < y < b = {} m", imp.y,
                             plate->b));
+  }
+  if (file_mesh != nullptr) {
+    const Eigen::Vector2d centre = file_mesh->bounds().centre();
+    imp.x = x.value_or(centre.x());
+    imp.y = y.value_or(centre.y());
+    if (!file_mesh->locate(imp.x, imp.y))
+      t.fail_at(
+          x ? "x" : "radius",
+          x || y ? fmt::format("impact point ({}, {}) m lies outside the mesh", imp.x, imp.y)
+                 : fmt::format("the impact point defaults to the centre of the mesh's bounding box, ({}, {}) "
+                               "m, which is not on the plate: give impactor.x and impactor.y",
+                               imp.x, imp.y));
   }
   return imp;
 }

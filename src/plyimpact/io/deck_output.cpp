@@ -95,7 +95,8 @@ void read_output(const TableReader& t, Deck& d) {
           (spec.ply > plies || spec.interface > plies - 1 || spec.ply < 0 || spec.interface < 0))
         p.fail_here(
             fmt::format("output.probe: the laminate has {} plies and {} interfaces", plies, plies - 1));
-      if (d.plate && !(spec.x >= 0 && spec.x <= d.plate->a && spec.y >= 0 && spec.y <= d.plate->b))
+      if ((d.plate && !(spec.x >= 0 && spec.x <= d.plate->a && spec.y >= 0 && spec.y <= d.plate->b)) ||
+          (d.file_mesh && !d.file_mesh->locate(spec.x, spec.y)))
         p.fail_at("x", fmt::format("output.probe point ({}, {}) m lies outside the plate", spec.x, spec.y));
       spec.name =
           p.optional_string("name").value_or(spec.ply > 0 ? fmt::format("ply{}_{}", spec.ply, spec.position)

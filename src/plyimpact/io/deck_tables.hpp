@@ -37,8 +37,9 @@ inline constexpr long max_step_cap = 100'000'000;
 
 // deck_impact.cpp
 /// [impactor]; `input` receives the density and energy when the deck gives them.
+/// With `file_mesh`, the impact point defaults to the centre of its bounding box and must lie on it.
 [[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
-                                     ImpactorInput& input);
+                                     const Mesh* file_mesh, ImpactorInput& input);
 [[nodiscard]] ContactLawParameters read_contact(const TableReader& t);
 [[nodiscard]] TimeStepping read_time(const TableReader& t);
 /// Top-level `nonlinear`, `strain_measure`, `load_steps`.
