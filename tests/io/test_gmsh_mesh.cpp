@@ -176,13 +176,8 @@ TEST(GmshMesh, AnnularPlateSimplySupportedOutsideMatchesKirchhoffsSolution) {
   EXPECT_TRUE(s.at("center_deflection").is_null()) << "the centre is in the hole";
 }
 
-TEST(GmshMesh, TheThesisPlateMeshedByGmshGivesTheStructuredMeshsAnswer) {
-  // §3.6 plate, 15 × 11 elements by transfinite lines, Annex 2's restraint codes on the named edges:
-  // the same static deflections as the structured factory, up to the order of the operations.
-  const fs::path dir = scratch("thesis");
-  test::write_rectangle_mesh(dir / "thesis.msh", 0.127, 0.0762, 15, 11);
-  const std::string plate = R"(analysis = "static"
-[materials.thesis_3_6]
+/// The thesis §3.6 material and laminate (Table 3.1; examples/thesis-3.6-v268.toml).
+const std::string thesis_3_6_laminate = R"([materials.thesis_3_6]
 E1 = 129.0e9
 E2 = 7.5e9
 G12 = 3.5e9
@@ -194,7 +189,14 @@ rho = 1540.0
 material = "thesis_3_6"
 layup = "[45/90/-45/0]3s"
 ply_thickness = 0.19375e-3
-[load]
+)";
+
+TEST(GmshMesh, TheThesisPlateMeshedByGmshGivesTheStructuredMeshsAnswer) {
+  // §3.6 plate, 15 × 11 elements by transfinite lines, Annex 2's restraint codes on the named edges:
+  // the same static deflections as the structured factory, up to the order of the operations.
+  const fs::path dir = scratch("thesis");
+  test::write_rectangle_mesh(dir / "thesis.msh", 0.127, 0.0762, 15, 11);
+  const std::string plate = "analysis = \"static\"\n" + thesis_3_6_laminate + R"([load]
 pressure = 1e5
 )";
   const Deck structured = parse_deck(plate + R"([plate]
@@ -318,20 +320,7 @@ TEST(GmshMesh, FilesThatAreNotGmshMeshesAreRefused) {
 
 /// The thesis §3.6 impact (examples/thesis-3.6-v268.toml) without its [plate], [mesh], [contact] and
 /// [time], which each test adds.
-const std::string thesis_3_6_impact = R"(analysis = "impact"
-[materials.thesis_3_6]
-E1 = 129.0e9
-E2 = 7.5e9
-G12 = 3.5e9
-G13 = 3.5e9
-G23 = 3.5e9
-nu12 = 0.33
-rho = 1540.0
-[laminate]
-material = "thesis_3_6"
-layup = "[45/90/-45/0]3s"
-ply_thickness = 0.19375e-3
-[boundary]
+const std::string thesis_3_6_impact = "analysis = \"impact\"\n" + thesis_3_6_laminate + R"([boundary]
 x0 = "ss"
 xa = "ss"
 y0 = "ss"
