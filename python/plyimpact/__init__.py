@@ -149,6 +149,7 @@ class Deck:
                     raise DeckError(f"{self.source}: cannot set '{key}': '{part}' is a value, not a table")
             node[parts[-1]] = value
         edited = ", ".join(f"{k} = {v!r}" for k, v in changed.items())
+        _anchor_mesh_file(tree, self.source)
         return parse(_toml_text(tree), source=f"{self.source} (with {edited})")
 
     def __repr__(self) -> str:
@@ -156,6 +157,14 @@ class Deck:
 
 
 _missing = object()
+
+
+def _anchor_mesh_file(tree: dict[str, Any], source: str) -> None:
+    """A deck's ``[mesh] file`` is relative to the deck's folder; an edited deck is named after its edits,
+    not a file, so the path is made absolute from the folder of the deck it came from."""
+    mesh = tree.get("mesh")
+    if isinstance(mesh, dict) and isinstance(mesh.get("file"), str) and not os.path.isabs(mesh["file"]):
+        mesh["file"] = os.path.abspath(os.path.join(os.path.dirname(source), mesh["file"]))
 
 
 def load(path: str | os.PathLike[str]) -> Deck:

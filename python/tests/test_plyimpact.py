@@ -204,3 +204,14 @@ def test_static_modal_and_buckling_equal_the_command_line(examples, kind, name):
     assert getattr(plyimpact, kind)(deck_path) == expected
     assert getattr(plyimpact, kind)(deck_path, examples / "py") == expected
     assert json.loads((examples / "py/summary.json").read_text()) == expected
+
+
+def test_an_edited_deck_keeps_its_gmsh_mesh_file(examples):
+    """[mesh] file is relative to the deck's folder, also after replace() (whose deck is named after the
+    edit, here with a '/' in it): doubling the laminate (8 to 16 plies) stiffens the clamped circular plate,
+    the deflection under the same loads falling by about 2^3 (bending) to 0.2 or less of the thin plate's."""
+    base = plyimpact.load("examples/static-circular-clamped.toml")
+    thick = base.replace({"laminate.layup": "[0/45/-45/90]2s"})
+    thin_w = plyimpact.static(base)["center_deflection"]
+    thick_w = plyimpact.static(thick)["center_deflection"]
+    assert 0.1 < thick_w / thin_w < 0.2
