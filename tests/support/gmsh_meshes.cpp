@@ -55,6 +55,16 @@ void name(int dim, const std::vector<int>& tags, const std::string& group) {
   gmsh::model::setPhysicalName(dim, g, group);
 }
 
+/// The sets structured_rectangle makes (edges x0, xa, y0, yb; node set "corners") and the surface.
+void name_rectangle_sets(const std::vector<int>& corners, int y0, int xa, int yb, int x0, int surface) {
+  name(1, {x0}, "x0");
+  name(1, {xa}, "xa");
+  name(1, {y0}, "y0");
+  name(1, {yb}, "yb");
+  name(0, corners, "corners");
+  name(2, {surface}, "plate");
+}
+
 } // namespace
 
 void write_disk_mesh(const std::filesystem::path& file, double radius, double size,
@@ -107,12 +117,7 @@ void write_rectangle_mesh(const std::filesystem::path& file, double a, double b,
     gmsh::model::geo::mesh::setTransfiniteSurface(surface);
     gmsh::model::geo::synchronize();
     if (!o.physical_groups) return;
-    name(1, {x0}, "x0");
-    name(1, {xa}, "xa");
-    name(1, {y0}, "y0");
-    name(1, {yb}, "yb");
-    name(0, {p0, p1, p2, p3}, "corners");
-    name(2, {surface}, "plate");
+    name_rectangle_sets({p0, p1, p2, p3}, y0, xa, yb, x0, surface);
   });
 }
 
@@ -129,12 +134,7 @@ void write_refined_rectangle_mesh(const std::filesystem::path& file, double a, d
     const int surface = gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop({y0, xa, yb, x0})});
     gmsh::model::geo::synchronize();
     gmsh::model::mesh::embed(0, {centre}, 2, surface);
-    name(1, {x0}, "x0");
-    name(1, {xa}, "xa");
-    name(1, {y0}, "y0");
-    name(1, {yb}, "yb");
-    name(0, {p0, p1, p2, p3}, "corners");
-    name(2, {surface}, "plate");
+    name_rectangle_sets({p0, p1, p2, p3}, y0, xa, yb, x0, surface);
   });
 }
 
