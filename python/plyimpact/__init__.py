@@ -160,11 +160,12 @@ _missing = object()
 
 
 def _anchor_mesh_file(tree: dict[str, Any], source: str) -> None:
-    """A deck's ``[mesh] file`` is relative to the deck's folder; an edited deck is named after its edits,
-    not a file, so the path is made absolute from the folder of the deck it came from."""
+    """A deck's ``[mesh] file`` (or ``geo``) is relative to the deck's folder; an edited deck is named after
+    its edits, not a file, so the path is made absolute from the folder of the deck it came from."""
     mesh = tree.get("mesh")
-    if isinstance(mesh, dict) and isinstance(mesh.get("file"), str) and not os.path.isabs(mesh["file"]):
-        mesh["file"] = os.path.abspath(os.path.join(os.path.dirname(source), mesh["file"]))
+    for key in ("file", "geo"):
+        if isinstance(mesh, dict) and isinstance(mesh.get(key), str) and not os.path.isabs(mesh[key]):
+            mesh[key] = os.path.abspath(os.path.join(os.path.dirname(source), mesh[key]))
 
 
 def load(path: str | os.PathLike[str]) -> Deck:

@@ -157,9 +157,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadDeck{"FractionalElements", "nx = 15", "nx = 15.5", "mesh.nx must be an integer, got a number"},
         BadDeck{"AbsurdMesh", "nx = 15", "nx = 1000000000",
                 "mesh.nx must be an element count from 1 to 2000"},
-        BadDeck{
-            "BadEdge", "x0 = \"ss\"", "x0 = \"simply\"",
-            "deck.toml:20:6: error: boundary.x0 must be ss | ss-soft | clamped | free or a 5-character code"},
+        BadDeck{"BadEdge", "x0 = \"ss\"", "x0 = \"simply\"",
+                "deck.toml:20:6: error: boundary.x0 must be ss | ss-soft | clamped | free | unilateral or a "
+                "5-character code"},
         BadDeck{"BadEdgeCode", "yb = \"10101\"", "yb = \"10201\"", "boundary.yb must be"},
         BadDeck{"NegativeMass", "mass = 6.14", "mass = -6.14",
                 "deck.toml:25:8: error: impactor.mass must be positive"},

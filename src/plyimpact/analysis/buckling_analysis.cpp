@@ -12,6 +12,7 @@
 namespace plyimpact {
 
 BucklingResult solve_buckling(const PlateModel& model, const BucklingSettings& settings) {
+  require_bilateral(model.boundary(), "the buckling analysis");
   const SparseMatrix K = model.stiffness();
   (void)factor_stiffness(model, K); // clear message when the plate is not restrained enough
   Eigen::Matrix2d N;

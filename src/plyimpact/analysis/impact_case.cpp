@@ -105,6 +105,7 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(std::move(description)), settings_(resolved_settings(description_)),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
+  require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
   check_end_after_first_step(settings_.dt, settings_.end); // before the factorization

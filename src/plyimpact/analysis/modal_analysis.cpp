@@ -52,6 +52,7 @@ double fundamental_period(const PlateModel& model) {
 }
 
 ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {
+  require_bilateral(model.boundary(), "the modal analysis");
   return solve_modal(model.stiffness(), model.mass(mass), count);
 }
 

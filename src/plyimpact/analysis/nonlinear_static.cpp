@@ -77,6 +77,7 @@ std::vector<double> load_milestones(const NonlinearSettings& s) {
 
 NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const StaticLoad& load,
                                              const NonlinearSettings& s) {
+  require_bilateral(model.boundary(), "the non-linear static analysis");
   const std::vector<double> milestones = load_milestones(s);
   (void)factor_stiffness(model, model.stiffness()); // restraint check with advice (InsufficientRestraint)
   const NonlinearPlateModel plate(model, s.measure);

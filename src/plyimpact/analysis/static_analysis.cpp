@@ -66,6 +66,13 @@ StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eige
 }
 
 StaticResult solve_static(const PlateModel& model, const StaticLoad& load) {
+  if (model.boundary().has_unilateral()) {
+    UnilateralSolution s = solve_unilateral_static(model, load);
+    StaticResult r = static_result(model, load, std::move(s.u));
+    r.support_contacts = std::move(s.contacts);
+    r.contact_set_solves = s.iterations;
+    return r;
+  }
   const SparseMatrix K = model.stiffness();
   const SpdSolver solver = factor_stiffness(model, K);
   Eigen::VectorXd u = solver.solve(static_load_vector(model, load));

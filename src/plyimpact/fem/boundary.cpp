@@ -1,5 +1,6 @@
 #include "plyimpact/fem/boundary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -28,7 +29,7 @@ std::string_view to_string(Edge e) {
 
 std::optional<Restraint> parse_restraint(std::string_view text, EdgeDirection direction) {
   std::string_view code;
-  if (text == "free")
+  if (text == "free" || text == unilateral_support) // unilateral: held by the static analysis's contact set
     code = "00000";
   else if (text == "clamped")
     code = "11111";
@@ -81,6 +82,22 @@ void BoundaryConditions::set(std::string_view name, std::string_view type) {
   sets.push_back({std::string(name), std::string(type)});
 }
 
+bool BoundaryConditions::has_unilateral() const {
+  for (const SetRestraint& s : sets)
+    if (s.type == unilateral_support) return true;
+  return false;
+}
+
+void require_bilateral(const BoundaryConditions& bc, std::string_view analysis) {
+  for (const SetRestraint& s : bc.sets)
+    if (s.type == unilateral_support)
+      throw std::invalid_argument("boundary." + s.set +
+                                  " = \"unilateral\": a support the plate may lift off "
+                                  "is solved by the linear static analysis only, not by " +
+                                  std::string(analysis) +
+                                  "; give \"ss-soft\" (the set held in w both ways) for this analysis");
+}
+
 namespace {
 
 /// The direction of a straight edge set; nullopt when its segments are neither all along x nor all
@@ -102,9 +119,10 @@ std::optional<EdgeDirection> direction_of(const Mesh& mesh, const std::vector<Ed
 
 Restraint resolve_restraint(const Mesh& mesh, const SetRestraint& s) {
   if (!is_restraint_type(s.type))
-    throw std::invalid_argument("boundary." + s.set + " = \"" + s.type +
-                                "\": expected ss | ss-soft | clamped | free or a 5-character code of 0/1 for "
-                                "(u, v, w, θx, θy)");
+    throw std::invalid_argument(
+        "boundary." + s.set + " = \"" + s.type +
+        "\": expected ss | ss-soft | clamped | free | unilateral or a 5-character code of 0/1 for "
+        "(u, v, w, θx, θy)");
   (void)mesh.node_set(s.set); // throws std::out_of_range naming the sets that exist
   if (s.type != "ss") return *parse_restraint(s.type, EdgeDirection::along_x);
   if (!mesh.has_edge_set(s.set))
@@ -117,6 +135,18 @@ Restraint resolve_restraint(const Mesh& mesh, const SetRestraint& s) {
                                 " = \"ss\": the edge is not straight along x or y, so its tangential "
                                 "rotation is not a nodal DOF; use \"ss-soft\" (w only) or a code");
   return *parse_restraint(s.type, *direction);
+}
+
+std::vector<int> unilateral_nodes(const Mesh& mesh, const BoundaryConditions& bc) {
+  const std::vector<Restraint> held = node_restraints(mesh, bc);
+  std::vector<int> nodes;
+  for (const SetRestraint& s : bc.sets)
+    if (s.type == unilateral_support)
+      for (const int n : mesh.node_set(s.set))
+        if (!held[static_cast<std::size_t>(n)].fixed[2]) nodes.push_back(n);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
 }
 
 std::vector<Restraint> node_restraints(const Mesh& mesh, const BoundaryConditions& bc) {

@@ -4,6 +4,8 @@
 // Each set gets a type: free = 00000; clamped = 11111; ss (hard simple support: w, the tangential
 // in-plane displacement and the tangential rotation) = 01101 on an edge along y (x = const), 10110 on an
 // edge along x; ss-soft = 00100; or an explicit 5-character code of 0/1 for (u, v, w, θx, θy).
+// "unilateral" is a support the plate rests on and may lift off (w ≤ 0 with w positive in the impact
+// direction, SPEC §1): no bilateral restraint here; the static analysis solves its contact set.
 // A node on several sets gets the union of their restraints; `corners`, when given, replaces it on the
 // mesh's "corners" node set (Annex 2 fixes its corners fully while the edges carry 10101).
 #include "plyimpact/fem/mesh.hpp"
@@ -34,8 +36,11 @@ struct Restraint {
 [[nodiscard]] std::optional<Restraint> parse_restraint(std::string_view text, EdgeDirection direction);
 /// The same for an edge of the structured rectangle (x0, xa run along y; y0, yb along x).
 [[nodiscard]] std::optional<Restraint> parse_restraint(std::string_view text, Edge edge);
-/// True for free | clamped | ss | ss-soft | a 5-character code of 0/1.
+/// True for free | clamped | ss | ss-soft | unilateral | a 5-character code of 0/1.
 [[nodiscard]] bool is_restraint_type(std::string_view text);
+
+/// The type of a support that only pushes: the plate rests on it and may lift off.
+inline constexpr std::string_view unilateral_support = "unilateral";
 
 /// The type given to one named set of the mesh (an edge set, or a node set for types other than ss).
 struct SetRestraint {
@@ -54,11 +59,20 @@ struct BoundaryConditions {
   [[nodiscard]] const SetRestraint* find(std::string_view set) const;
   /// Gives `set` the type `type` (replacing an earlier one).
   void set(std::string_view set, std::string_view type);
+  /// True when a set rests on a unilateral support.
+  [[nodiscard]] bool has_unilateral() const;
 };
+
+/// Throws std::invalid_argument when `bc` has a unilateral support, which only the linear static analysis
+/// solves; the message names the set and the bilateral stand-in ("ss-soft") for `analysis`.
+void require_bilateral(const BoundaryConditions& bc, std::string_view analysis);
 
 /// The restraint of one set on `mesh`. Throws std::invalid_argument for an unknown set, an invalid type,
 /// or ss on a set that is not a straight edge along x or y (curved edges need rotated DOFs).
 [[nodiscard]] Restraint resolve_restraint(const Mesh& mesh, const SetRestraint& s);
+
+/// The nodes of the unilateral sets whose w no bilateral set holds, in increasing order.
+[[nodiscard]] std::vector<int> unilateral_nodes(const Mesh& mesh, const BoundaryConditions& bc);
 
 /// The restraint of every node of `mesh` (index = node).
 [[nodiscard]] std::vector<Restraint> node_restraints(const Mesh& mesh, const BoundaryConditions& bc);

@@ -105,6 +105,24 @@ UnitSystem read_units(const toml::table& root, const std::string& source) {
                           best ? fmt::format(" (did you mean \"{}\"?)", *best) : "", unit_system_names()));
 }
 
+/// Where a geometry meshed on the fly is refined: the impact point, else the point or patch load's
+/// centre, when the deck gives one (peeked at before those tables are read).
+std::optional<Eigen::Vector2d> refinement_point(const TableReader& top) {
+  const auto point_of = [](const std::optional<TableReader>& t) -> std::optional<Eigen::Vector2d> {
+    if (!t) return std::nullopt;
+    const auto x = t->optional_number("x", "m");
+    const auto y = t->optional_number("y", "m");
+    if (!x || !y) return std::nullopt;
+    return Eigen::Vector2d(*x, *y);
+  };
+  if (auto p = point_of(top.optional_table("impactor"))) return p;
+  if (const auto load = top.optional_table("load")) {
+    if (auto p = point_of(load->optional_table("point"))) return p;
+    return point_of(load->optional_table("patch"));
+  }
+  return std::nullopt;
+}
+
 } // namespace
 
 Deck parse_deck_table(const toml::table& root, std::string_view text, const std::string& source) {
@@ -133,12 +151,13 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   read_laminates(top, d);
   if (const auto t = top.optional_table("mesh")) {
     d.mesh = read_mesh(*t);
-    d.file_mesh = read_mesh_file(*t, d.mesh_file);
+    d.file_mesh = read_mesh_file(*t, d.mesh_file, refinement_point(top));
   }
   if (d.file_mesh && d.plate)
-    top.fail_at("plate",
-                "[plate] gives a rectangle, but mesh.file gives the plate's shape: leave out [plate] "
-                "(its size comes from the mesh)");
+    top.fail_at(
+        "plate",
+        "[plate] gives a rectangle, but mesh.file or mesh.geo gives the plate's shape: leave out [plate] "
+        "(its size comes from the mesh)");
   if (const auto t = top.optional_table("boundary")) d.boundary = read_boundary(*t, d.file_mesh.get());
   if (const auto t = top.optional_table("impactor"))
     d.impactor = read_impactor(*t, d.plate, d.file_mesh.get(), d.impactor_input);

@@ -42,15 +42,26 @@ std::array<double, 2> read_impact_offset(const TableReader& t) {
 } // namespace
 
 MeshSpec read_mesh(const TableReader& t) {
-  t.only({"file", "nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size",
+  t.only({"file", "geo", "nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size",
           "impact_offset"});
   MeshSpec m;
+  if (t.has("file") && t.has("geo"))
+    t.fail_at("geo", "give mesh.file (a mesh made by gmsh) or mesh.geo (a geometry to mesh), not both");
   if (t.has("file")) {
     for (const char* key : {"nx", "ny", "grading", "size_at_impact", "growth", "max_size", "impact_offset"})
       if (t.has(key))
         t.fail_at(key, fmt::format("mesh.{} shapes the structured rectangle, but mesh.file gives the mesh: "
                                    "leave out mesh.{} (refine in gmsh)",
                                    key, key));
+  }
+  if (t.has("geo")) {
+    for (const char* key : {"nx", "ny", "grading", "impact_offset"})
+      if (t.has(key))
+        t.fail_at(key, fmt::format("mesh.{} shapes the structured rectangle, but mesh.geo gives the plate: "
+                                   "leave out mesh.{} (size the elements with mesh.size_at_impact, growth "
+                                   "and max_size)",
+                                   key, key));
+    return m; // the size keys are read with the geometry (read_mesh_file)
   }
   bool counts = false;
   for (const auto* key : {"nx", "ny"}) {
@@ -103,18 +114,47 @@ MeshSpec read_mesh(const TableReader& t) {
   return m;
 }
 
-std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written) {
-  const auto name = t.optional_string("file");
+namespace {
+
+/// mesh.size_at_impact, growth and max_size of a geometry meshed on the fly, toward `refine_at`.
+GeometryMeshing read_geometry_meshing(const TableReader& t, const std::optional<Eigen::Vector2d>& refine_at) {
+  GeometryMeshing how;
+  how.refine_at = refine_at;
+  how.size_at_point = t.optional_positive("size_at_impact", "m");
+  how.max_size = t.optional_positive("max_size", "m");
+  if (const auto r = t.optional_number("growth", "-")) {
+    if (!(*r >= 1.0 && *r <= 3.0))
+      t.fail_at("growth", fmt::format("mesh.growth must lie between 1 and 3 (size ratio of neighbouring "
+                                      "elements), got {}",
+                                      *r));
+    if (!how.size_at_point)
+      t.fail_at("growth", "mesh.growth grades the elements away from mesh.size_at_impact: give it too");
+    how.growth = *r;
+  }
+  if (how.size_at_point && how.max_size && *how.max_size < *how.size_at_point)
+    t.fail_at("max_size", "mesh.max_size must not be smaller than mesh.size_at_impact");
+  return how;
+}
+
+} // namespace
+
+std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written,
+                                           const std::optional<Eigen::Vector2d>& refine_at) {
+  const bool geo = t.has("geo");
+  const std::string_view key = geo ? "geo" : "file";
+  const auto name = t.optional_string(key);
   if (!name) return nullptr;
   written = *name;
   std::filesystem::path path(*name);
   if (path.is_relative()) path = std::filesystem::path(t.file()).parent_path() / path; // beside the deck
-  if (path.extension() != ".msh")
-    t.fail_at("file", fmt::format("mesh.file must be a gmsh mesh (.msh), got \"{}\"", *name));
+  if (path.extension() != (geo ? ".geo" : ".msh"))
+    t.fail_at(key, geo ? fmt::format("mesh.geo must be a gmsh geometry script (.geo), got \"{}\"", *name)
+                       : fmt::format("mesh.file must be a gmsh mesh (.msh), got \"{}\"", *name));
   try {
-    return std::make_shared<const Mesh>(read_gmsh_mesh(path));
+    return std::make_shared<const Mesh>(geo ? mesh_gmsh_geometry(path, read_geometry_meshing(t, refine_at))
+                                            : read_gmsh_mesh(path));
   } catch (const MeshFileError& e) {
-    t.fail_at("file", fmt::format("mesh.file = \"{}\": {}", *name, e.what()));
+    t.fail_at(key, fmt::format("mesh.{} = \"{}\": {}", key, *name, e.what()));
   }
 }
 
@@ -130,8 +170,8 @@ BoundaryConditions read_rectangle_boundary(const TableReader& t) {
     const auto r = parse_restraint(text, e);
     if (!r)
       t.fail_at(key,
-                fmt::format("boundary.{} must be ss | ss-soft | clamped | free or a 5-character code of 0/1 "
-                            "for (u, v, w, θx, θy) such as \"01101\", got \"{}\"",
+                fmt::format("boundary.{} must be ss | ss-soft | clamped | free | unilateral or a 5-character "
+                            "code of 0/1 for (u, v, w, θx, θy) such as \"01101\", got \"{}\"",
                             key, text));
     bc.set(key, text);
   }
@@ -166,8 +206,8 @@ BoundaryConditions read_mesh_boundary(const TableReader& t, const Mesh& mesh) {
     const auto text = t.optional_string(name);
     if (!is_restraint_type(*text))
       t.fail_at(name,
-                fmt::format("boundary.{} must be ss | ss-soft | clamped | free or a 5-character code of 0/1 "
-                            "for (u, v, w, θx, θy), got \"{}\"",
+                fmt::format("boundary.{} must be ss | ss-soft | clamped | free | unilateral or a 5-character "
+                            "code of 0/1 for (u, v, w, θx, θy), got \"{}\"",
                             name, *text));
     try {
       (void)resolve_restraint(mesh, SetRestraint{name, *text});

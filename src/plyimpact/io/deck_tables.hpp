@@ -30,8 +30,10 @@ inline constexpr long max_step_cap = 100'000'000;
 [[nodiscard]] PlateGeometry read_plate(const TableReader& t);
 [[nodiscard]] MeshSpec read_mesh(const TableReader& t);
 /// [mesh] file: the gmsh mesh it names (relative to the deck's folder), read and checked; nullptr without
-/// the key.
-[[nodiscard]] std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written);
+/// the key. mesh.geo: the gmsh geometry it names, meshed by gmsh, graded toward `refine_at` (the impact or
+/// load point, when the deck gives one).
+[[nodiscard]] std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written,
+                                                         const std::optional<Eigen::Vector2d>& refine_at);
 /// [boundary] of the structured rectangle (x0, xa, y0, yb, corners), or of `file_mesh`: its named sets.
 [[nodiscard]] BoundaryConditions read_boundary(const TableReader& t, const Mesh* file_mesh);
 

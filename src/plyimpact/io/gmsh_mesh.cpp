@@ -211,7 +211,7 @@ void read_groups(const std::filesystem::path& file, RawMesh& m,
           edges.push_back({node_of(nodes[3 * s], name), node_of(nodes[3 * s + 2], name),
                            node_of(nodes[3 * s + 1], name)});
       }
-    } else if (dim == 0) {
+    } else if (dim == 0 || dim == 2) {
       std::vector<std::size_t> tags;
       std::vector<double> coords;
       gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, coords);
@@ -222,10 +222,41 @@ void read_groups(const std::filesystem::path& file, RawMesh& m,
   }
 }
 
-RawMesh read_raw(const std::filesystem::path& file) {
+/// Meshes the geometry gmsh has open, in QUAD9, with the size field of `how`.
+void generate_quad9(const GeometryMeshing& how) {
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  gmsh::option::setNumber("Mesh.ElementOrder", 2);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0);
+  if (how.max_size) gmsh::option::setNumber("Mesh.MeshSizeMax", *how.max_size);
+  if (how.size_at_point) {
+    Eigen::Vector2d at;
+    if (how.refine_at) {
+      at = *how.refine_at;
+    } else {
+      double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+      gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+      at = {(x0 + x1) / 2.0, (y0 + y1) / 2.0};
+    }
+    // h(d) = min(max_size, size_at_point + (growth − 1) d), as gmsh's MathEval of the distance.
+    const int field = gmsh::model::mesh::field::add("MathEval");
+    std::string h = fmt::format("{:.17g} + {:.17g} * Sqrt((x - {:.17g})^2 + (y - {:.17g})^2)",
+                                *how.size_at_point, how.growth - 1.0, at.x(), at.y());
+    if (how.max_size) h = fmt::format("Min({:.17g}, {})", *how.max_size, h);
+    gmsh::model::mesh::field::setString(field, "F", h);
+    gmsh::model::mesh::field::setAsBackgroundMesh(field);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  }
+  gmsh::model::mesh::generate(2);
+}
+
+/// Reads the mesh gmsh holds after `load` (opening a .msh, or meshing a .geo).
+template <class Load>
+RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
   const GmshSession session;
   try {
-    gmsh::open(file.string());
+    load();
     require_quad9_only(file);
     RawMesh m;
     std::unordered_map<std::size_t, int> index;
@@ -238,22 +269,40 @@ RawMesh read_raw(const std::filesystem::path& file) {
   } catch (...) { // gmsh's own errors (the type depends on its version): say what gmsh said last
     std::string last;
     gmsh::logger::getLastError(last);
-    throw MeshFileError(fmt::format("{}: error: gmsh could not read the mesh{}", file.string(),
+    throw MeshFileError(fmt::format("{}: error: gmsh could not read or mesh it{}", file.string(),
                                     last.empty() ? "" : ": " + last));
   }
 }
 
-} // namespace
-
-Mesh read_gmsh_mesh(const std::filesystem::path& file) {
-  require_msh_header(file);
-  RawMesh raw = read_raw(file);
+Mesh to_mesh(RawMesh raw) {
   Mesh mesh(std::move(raw.nodes), std::move(raw.elements));
   for (auto& [name, edges] : raw.edge_sets)
     mesh.add_edge_set(name, std::move(edges));
   for (auto& [name, nodes] : raw.node_sets)
     if (!mesh.has_node_set(name)) mesh.add_node_set(name, std::move(nodes));
   return mesh;
+}
+
+} // namespace
+
+Mesh read_gmsh_mesh(const std::filesystem::path& file) {
+  require_msh_header(file);
+  return to_mesh(read_raw(file, [&] { gmsh::open(file.string()); }));
+}
+
+double graded_size(const GeometryMeshing& how, double d) {
+  const double h = how.size_at_point.value_or(0.0) + (how.growth - 1.0) * d;
+  return how.max_size ? std::min(*how.max_size, h) : h;
+}
+
+Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing& how) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(geo, ec))
+    throw MeshFileError(fmt::format("{}: error: cannot open the geometry file", geo.string()));
+  return to_mesh(read_raw(geo, [&] {
+    gmsh::open(geo.string());
+    generate_quad9(how);
+  }));
 }
 
 } // namespace plyimpact

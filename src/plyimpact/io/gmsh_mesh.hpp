@@ -4,13 +4,16 @@
 // element type 10) in the z = 0 plane; gmsh's physical groups become the mesh's named sets, so that
 // boundary conditions refer to them by name:
 //   - a physical curve (dimension 1, meshed with 3-node lines) → an edge set and its node set;
-//   - a physical point (dimension 0) → a node set.
+//   - a physical point (dimension 0) → a node set;
+//   - a physical surface (dimension 2) → the node set of its elements' nodes (a clamp's patch).
 // A group without a name is named by its number. Anything else — other element types, no QUAD9,
 // nodes off the z = 0 plane, an inverted (clockwise) or degenerate element, a file that is not a gmsh
 // mesh — is refused with a message that says what is wrong and how to fix it in gmsh.
 #include "plyimpact/fem/mesh.hpp"
 
+#include <Eigen/Core>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace plyimpact {
@@ -24,5 +27,23 @@ public:
 /// Reads a gmsh mesh file (.msh, format 2 or 4, ASCII or binary). Safe to call from several threads
 /// (gmsh holds one model: the calls are serialised). Throws MeshFileError.
 [[nodiscard]] Mesh read_gmsh_mesh(const std::filesystem::path& file);
+
+/// How to mesh a gmsh geometry (.geo): with a size field graded toward a point, or with the sizes the
+/// geometry sets itself when `size_at_point` is empty.
+struct GeometryMeshing {
+  std::optional<Eigen::Vector2d> refine_at; ///< [m]; empty: the centre of the geometry's bounding box
+  std::optional<double> size_at_point;      ///< element size at `refine_at` [m]
+  std::optional<double> max_size;           ///< largest element size [m]; empty: no cap
+  double growth = 1.25;                     ///< size ratio of neighbouring elements (≥ 1)
+};
+
+/// The element size at distance d from the refinement point: min(max_size, size_at_point + (growth − 1) d),
+/// the continuous form of sizes that grow by `growth` from one element to the next.
+[[nodiscard]] double graded_size(const GeometryMeshing& how, double d);
+
+/// Meshes a gmsh geometry script with 9-node quadrilaterals (recombined, second order, complete
+/// elements: these options are set whatever the script says) and reads it as read_gmsh_mesh does.
+/// Throws MeshFileError.
+[[nodiscard]] Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing& how);
 
 } // namespace plyimpact

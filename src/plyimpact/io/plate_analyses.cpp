@@ -44,6 +44,34 @@ void put_deflections(nlohmann::json& j, double center, double load_point, double
   j["max_abs_deflection"] = deflection_value(max_abs);
 }
 
+/// The unilateral supports at the solution: how many nodes touch, how far the plate lifts off, the force.
+void report_support_contacts(std::string& text, nlohmann::json& j, const StaticResult& r) {
+  if (r.support_contacts.empty()) return;
+  const int touching = touching_count(r.support_contacts);
+  const auto nodes = static_cast<int>(r.support_contacts.size());
+  fmt::format_to(std::back_inserter(text),
+                 "  unilateral support: {} of {} nodes touch, {} lifted off (largest lift-off {:.6e} m), "
+                 "support force {:.6e} N, {} solves\n",
+                 touching, nodes, nodes - touching, largest_lift_off(r.support_contacts),
+                 total_reaction(r.support_contacts), r.contact_set_solves);
+  j["support_nodes"] = nodes;
+  j["support_touching_nodes"] = touching;
+  j["support_max_lift_off"] = largest_lift_off(r.support_contacts);
+  j["support_reaction"] = total_reaction(r.support_contacts);
+  j["contact_set_solves"] = r.contact_set_solves;
+}
+
+/// support_contacts.csv: one row per node of the unilateral supports.
+std::string support_contacts_csv(const PlateModel& model, const std::vector<SupportContact>& contacts) {
+  std::string csv = "node,x_m,y_m,touching,reaction_N,w_m\n";
+  for (const SupportContact& c : contacts) {
+    const Eigen::Vector2d p = model.mesh().node(c.node);
+    fmt::format_to(std::back_inserter(csv), "{},{:.9e},{:.9e},{},{:.9e},{:.9e}\n", c.node, p.x(), p.y(),
+                   c.touching ? 1 : 0, c.reaction, c.w);
+  }
+  return csv;
+}
+
 /// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.
 AnalysisOutcome run_static_nonlinear(const Deck& deck, const std::optional<ResultsFolder>& folder) {
   const PlateModel model = plate_model(deck);
@@ -84,9 +112,12 @@ AnalysisOutcome run_static_analysis(const Deck& deck, bool nonlinear,
   print_deflections(out.text, r.center_deflection, r.load_point_deflection, r.max_abs_deflection);
   nlohmann::json& j = out.summary = summary_header(deck, "static");
   put_deflections(j, r.center_deflection, r.load_point_deflection, r.max_abs_deflection);
+  report_support_contacts(out.text, j, r);
   j["dofs"] = model.size();
   if (folder) {
     folder->write_nodal_field("displacements.csv", model, r.u);
+    if (!r.support_contacts.empty())
+      folder->write_text("support_contacts.csv", support_contacts_csv(model, r.support_contacts));
     if (deck.vtk.enabled) write_static_vtk(folder->path(), model, r.u, vtk_options(deck));
     folder->write_json("summary.json", j);
   }
