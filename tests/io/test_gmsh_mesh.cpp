@@ -262,6 +262,12 @@ TEST(GmshMesh, BadMeshesAreRefusedWithWhatIsWrong) {
   clockwise.clockwise = true;
   const std::string inverted = mesh_error(clockwise, "inverted");
   EXPECT_NE(inverted.find("is inverted (its nodes run clockwise"), std::string::npos) << inverted;
+  GmshMeshOptions folded;
+  folded.degenerate = true;
+  const std::string degenerate = mesh_error(folded, "degenerate");
+  EXPECT_NE(degenerate.find("is degenerate or folded (its Jacobian changes sign or vanishes)"),
+            std::string::npos)
+      << degenerate;
   // A set the mesh does not have, with the groups it has.
   const fs::path file = scratch("no-set") / "disk.msh";
   test::write_disk_mesh(file, 0.1, 0.03);

@@ -26,6 +26,13 @@ void write_mesh(const std::filesystem::path& file, const GmshMeshOptions& o,
   gmsh::option::setNumber("Mesh.SecondOrderIncomplete", o.incomplete ? 1 : 0);
   gmsh::model::mesh::generate(2);
   gmsh::model::mesh::setOrder(o.order);
+  if (o.degenerate) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(10, tags, nodes); // QUAD9: corners, mid-sides, centre
+    std::vector<double> corner, parametric;
+    gmsh::model::mesh::getNode(nodes[0], corner, parametric);
+    gmsh::model::mesh::setNode(nodes[8], corner, {});
+  }
   gmsh::write(file.string());
   gmsh::finalize();
 }

@@ -14,6 +14,7 @@ struct GmshMeshOptions {
   bool physical_groups = true; ///< name the edges (and the surface)
   double z = 0.0;              ///< the plane of the plate
   bool clockwise = false;      ///< the surface's boundary run clockwise: elements inverted
+  bool degenerate = false; ///< the first element's centre node moved onto its first corner (det J = 0 there)
 };
 
 /// A disk of radius `radius` centred at the origin, elements of about `size`; its centre is a mesh
