@@ -146,6 +146,7 @@ int run_impact(const Options& o) {
                to_string(impact.settings().nonlinear->measure), r.newton->iterations, r.steps,
                static_cast<double>(r.newton->iterations) / static_cast<double>(std::max(1L, r.steps)),
                r.newton->max_iterations_per_step, r.newton->factorizations);
+  if (!deck.rig_description.empty()) fmt::print("rig: {}\n", deck.rig_description);
   fmt::print("{}", impact_summary_text(run.settings, r));
   for (const std::string& w : r.warnings) // also in summary.json "warnings" (docs/robustness.md)
     fmt::print(stderr, "plyimpact: warning: {}\n", w);

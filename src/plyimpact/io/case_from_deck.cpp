@@ -17,8 +17,8 @@ ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) 
   ImpactCaseDescription d;
   d.plate = deck.plate.value_or(PlateGeometry{});
   d.mesh_from_file = deck.file_mesh;
-  MeshSpec graded; // no [mesh] table: graded toward the impact point
-  graded.grading = MeshGrading{};
+  MeshSpec graded; // no [mesh] table: graded toward the impact point (a mesh from gmsh is used as it is)
+  if (!deck.file_mesh) graded.grading = MeshGrading{};
   d.mesh = deck.mesh.value_or(graded);
   d.laminates = all_laminates(deck);
   d.regions = deck.regions;

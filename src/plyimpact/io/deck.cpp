@@ -134,7 +134,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   top.only({"units",  "analysis",  "title",          "materials",  "laminate", "laminates",
             "region", "plate",     "mesh",           "boundary",   "impactor", "contact",
             "time",   "load",      "modal",          "buckling",   "damage",   "threshold",
-            "output", "nonlinear", "strain_measure", "load_steps", "sweep"});
+            "output", "nonlinear", "strain_measure", "load_steps", "sweep",    "rig"});
   d.title = top.optional_string("title").value_or("");
   read_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {
@@ -149,18 +149,21 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   read_materials(top, d);
   if (const auto p = top.optional_table("plate")) d.plate = read_plate(*p);
   read_laminates(top, d);
-  if (const auto t = top.optional_table("mesh")) {
-    d.mesh = read_mesh(*t);
-    d.file_mesh = read_mesh_file(*t, d.mesh_file, refinement_point(top));
+  const auto mesh_table = top.optional_table("mesh");
+  if (mesh_table) {
+    d.mesh = read_mesh(*mesh_table);
+    d.file_mesh = read_mesh_file(*mesh_table, d.mesh_file, refinement_point(top));
   }
+  if (const auto t = top.optional_table("rig")) read_rig(top, *t, mesh_table, refinement_point(top), d);
   if (d.file_mesh && d.plate)
     top.fail_at(
         "plate",
         "[plate] gives a rectangle, but mesh.file or mesh.geo gives the plate's shape: leave out [plate] "
         "(its size comes from the mesh)");
-  if (const auto t = top.optional_table("boundary")) d.boundary = read_boundary(*t, d.file_mesh.get());
+  if (const auto t = top.optional_table("boundary"); t && !d.rig)
+    d.boundary = read_boundary(*t, d.file_mesh.get());
   if (const auto t = top.optional_table("impactor"))
-    d.impactor = read_impactor(*t, d.plate, d.file_mesh.get(), d.impactor_input);
+    d.impactor = read_impactor(*t, d.plate, d.file_mesh.get(), d.impactor_input, d.impactor_defaults);
   if (const auto t = top.optional_table("contact")) d.contact = read_contact(*t);
   if (const auto t = top.optional_table("time")) d.time = read_time(*t);
   if (const auto t = top.optional_table("load")) d.load = read_load(*t, d.plate, d.file_mesh.get());
@@ -194,7 +197,7 @@ void require_sections(const Deck& d, AnalysisKind kind) {
   };
   need(d.laminate.has_value(), "[laminate] (with [materials.NAME])");
   if (kind != AnalysisKind::laminate) {
-    need(d.plate.has_value() || d.file_mesh != nullptr, "[plate] (or [mesh] file)");
+    need(d.plate.has_value() || d.file_mesh != nullptr, "[plate] (or [mesh] file, geo or [rig])");
     need(d.boundary.has_value() || (d.plate && d.plate->rigid), "[boundary]");
   }
   if (kind == AnalysisKind::static_) need(d.load.has_value(), "[load]");

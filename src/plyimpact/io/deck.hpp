@@ -9,6 +9,7 @@
 #include "plyimpact/fem/regions.hpp"
 #include "plyimpact/io/deck_error.hpp"
 #include "plyimpact/io/deck_units.hpp"
+#include "plyimpact/io/test_rigs.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 
 #include <filesystem>
@@ -59,7 +60,13 @@ struct VtkOutputSettings {
 /// [impactor] as written where Impactor keeps only what follows from it (for plausibility checks).
 struct ImpactorInput {
   std::optional<double> density; ///< [kg/m^3] when the mass was given as a density
-  std::optional<double> energy;  ///< [J] when the velocity was given as an impact energy
+  std::optional<double> energy;  ///< [J] when the velocity was given as an impact energy (or the rig's rule)
+};
+
+/// What a [rig] preset lets [impactor] leave out.
+struct ImpactorDefaults {
+  std::optional<double> radius; ///< [m]
+  std::optional<double> energy; ///< [J]
 };
 
 struct Deck {
@@ -75,7 +82,10 @@ struct Deck {
   std::optional<PlateGeometry> plate;
   std::optional<MeshSpec> mesh;
   std::string mesh_file;                 ///< [mesh] file as written ("" for the structured rectangle)
-  std::shared_ptr<const Mesh> file_mesh; ///< the mesh read from mesh_file (io/gmsh_mesh.hpp)
+  std::shared_ptr<const Mesh> file_mesh; ///< the mesh read from mesh_file (io/gmsh_mesh.hpp) or the rig's
+  std::optional<RigSpec> rig;            ///< [rig] preset (io/test_rigs.hpp)
+  std::string rig_description;           ///< what the preset built, for the reports ("" without [rig])
+  ImpactorDefaults impactor_defaults;    ///< what the rig lets [impactor] leave out
   std::optional<BoundaryConditions> boundary;
   std::optional<Impactor> impactor;
   ImpactorInput impactor_input;

@@ -10,9 +10,14 @@ namespace plyimpact::deck_tables {
 namespace {
 
 /// impactor.velocity, or the velocity √(2E/m) of the impact energy impactor.energy: exactly one.
-double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& input) {
+double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& input,
+                            const std::optional<double>& default_energy) {
   const bool velocity = t.has("velocity");
   const bool energy = t.has("energy");
+  if (!velocity && !energy && default_energy) { // the rig's rule
+    input.energy = default_energy;
+    return std::sqrt(2.0 * *default_energy / mass);
+  }
   if (velocity && energy)
     t.fail_at("energy", fmt::format("give impactor.velocity ({}) or impactor.energy ({}), not both",
                                     t.deck_unit("m/s"), t.deck_unit("J")));
@@ -28,10 +33,11 @@ double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& in
 } // namespace
 
 Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate, const Mesh* file_mesh,
-                       ImpactorInput& input) {
+                       ImpactorInput& input, const ImpactorDefaults& defaults) {
   t.only({"mass", "density", "radius", "E", "nu", "velocity", "energy", "x", "y"});
   Impactor imp;
-  imp.radius = t.positive("radius", "m");
+  imp.radius = defaults.radius ? t.optional_positive("radius", "m").value_or(*defaults.radius)
+                               : t.positive("radius", "m");
   const auto mass = t.optional_positive("mass", "kg");
   const auto density = t.optional_positive("density", "kg/m^3");
   if (mass && density) t.fail_at("density", "give impactor.mass or impactor.density, not both");
@@ -45,7 +51,7 @@ Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>&
   imp.nu = t.optional_number("nu", "-").value_or(0.3);
   if (!(imp.nu > -1.0 && imp.nu < 0.5))
     t.fail_at("nu", fmt::format("impactor.nu must lie in (-1, 0.5), got {}", imp.nu));
-  imp.velocity = read_impact_velocity(t, imp.mass, input);
+  imp.velocity = read_impact_velocity(t, imp.mass, input, defaults.energy);
   const auto x = t.optional_number("x", "m");
   const auto y = t.optional_number("y", "m");
   if (plate) {

@@ -114,9 +114,6 @@ MeshSpec read_mesh(const TableReader& t) {
   return m;
 }
 
-namespace {
-
-/// mesh.size_at_impact, growth and max_size of a geometry meshed on the fly, toward `refine_at`.
 GeometryMeshing read_geometry_meshing(const TableReader& t, const std::optional<Eigen::Vector2d>& refine_at) {
   GeometryMeshing how;
   how.refine_at = refine_at;
@@ -136,7 +133,56 @@ GeometryMeshing read_geometry_meshing(const TableReader& t, const std::optional<
   return how;
 }
 
-} // namespace
+void read_rig(const TableReader& top, const TableReader& t, const std::optional<TableReader>& mesh,
+              const std::optional<Eigen::Vector2d>& refine_at, Deck& d) {
+  t.only({"preset", "diameter"});
+  RigSpec spec;
+  const auto kind = t.optional_choice<RigKind>(
+      "preset", {{"astm-d7136", RigKind::astm_d7136}, {"circular", RigKind::circular}});
+  if (!kind) t.fail_here("[rig] needs preset = \"astm-d7136\" or \"circular\"");
+  spec.kind = *kind;
+  if (spec.kind == RigKind::circular) {
+    spec.diameter = t.positive("diameter", "m");
+  } else if (t.has("diameter")) {
+    t.fail_at("diameter", "rig.diameter sizes the circular rig; the astm-d7136 rig's window is 125 x 75 mm");
+  }
+  if (d.plate) top.fail_at("plate", "[rig] gives the plate: leave out [plate]");
+  if (d.file_mesh) t.fail_at("preset", "[rig] meshes its plate: leave out mesh.file and mesh.geo");
+  if (top.has("boundary"))
+    top.fail_at("boundary", "[rig] sets the supports (docs/mesh.md, test rigs): leave out [boundary]");
+  spec.meshing = rig_meshing(spec);
+  if (mesh) {
+    for (const char* key : {"nx", "ny", "grading", "impact_offset"})
+      if (mesh->has(key))
+        mesh->fail_at(key, fmt::format("mesh.{} shapes the structured rectangle, but [rig] gives the plate: "
+                                       "leave out mesh.{} (size the elements with mesh.size_at_impact, "
+                                       "growth and max_size)",
+                                       key, key));
+    if (mesh->has("size_at_impact"))
+      spec.meshing = read_geometry_meshing(*mesh, std::nullopt);
+    else if (mesh->has("max_size") || mesh->has("growth"))
+      mesh->fail_here("[rig] with mesh.max_size or growth needs mesh.size_at_impact too");
+  }
+  spec.meshing.refine_at = refine_at;
+  if (d.mesh) d.mesh->grading.reset(); // the size keys grade gmsh's mesh, not a structured one
+  try {
+    Rig rig = build_rig(spec, d.analysis == AnalysisKind::static_);
+    d.file_mesh = std::make_shared<const Mesh>(std::move(rig.mesh));
+    d.boundary = std::move(rig.boundary);
+    d.rig_description = std::move(rig.description);
+    if (rig.impactor_radius > 0.0) d.impactor_defaults.radius = rig.impactor_radius;
+    if (rig.energy_per_thickness && d.laminate) {
+      d.impactor_defaults.energy = *rig.energy_per_thickness * d.laminate->thickness();
+      d.rig_description += fmt::format("; impact energy {:.4g} J/mm x {:.4g} mm = {:.4g} J unless [impactor] "
+                                       "gives one",
+                                       *rig.energy_per_thickness * 1e-3, d.laminate->thickness() * 1e3,
+                                       *d.impactor_defaults.energy);
+    }
+  } catch (const MeshFileError& e) {
+    t.fail_at("preset", fmt::format("rig.preset: gmsh could not mesh the rig: {}", e.what()));
+  }
+  d.rig = spec;
+}
 
 std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written,
                                            const std::optional<Eigen::Vector2d>& refine_at) {

@@ -29,6 +29,13 @@ inline constexpr long max_step_cap = 100'000'000;
 // deck_plate.cpp
 [[nodiscard]] PlateGeometry read_plate(const TableReader& t);
 [[nodiscard]] MeshSpec read_mesh(const TableReader& t);
+/// mesh.size_at_impact, growth and max_size for a plate that gmsh meshes, graded toward `refine_at`.
+[[nodiscard]] GeometryMeshing read_geometry_meshing(const TableReader& t,
+                                                    const std::optional<Eigen::Vector2d>& refine_at);
+/// [rig]: the preset's plate, mesh and supports into `d` (with [mesh] `mesh`'s sizes, when given).
+/// The preset's mesh is graded toward `refine_at` (the impact or load point), else the rig's centre.
+void read_rig(const TableReader& top, const TableReader& t, const std::optional<TableReader>& mesh,
+              const std::optional<Eigen::Vector2d>& refine_at, Deck& d);
 /// [mesh] file: the gmsh mesh it names (relative to the deck's folder), read and checked; nullptr without
 /// the key. mesh.geo: the gmsh geometry it names, meshed by gmsh, graded toward `refine_at` (the impact or
 /// load point, when the deck gives one).
@@ -41,7 +48,8 @@ inline constexpr long max_step_cap = 100'000'000;
 /// [impactor]; `input` receives the density and energy when the deck gives them.
 /// With `file_mesh`, the impact point defaults to the centre of its bounding box and must lie on it.
 [[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
-                                     const Mesh* file_mesh, ImpactorInput& input);
+                                     const Mesh* file_mesh, ImpactorInput& input,
+                                     const ImpactorDefaults& defaults = {});
 [[nodiscard]] ContactLawParameters read_contact(const TableReader& t);
 [[nodiscard]] TimeStepping read_time(const TableReader& t);
 /// Top-level `nonlinear`, `strain_measure`, `load_steps`.

@@ -305,4 +305,13 @@ Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing&
   }));
 }
 
+Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build,
+                     const GeometryMeshing& how) {
+  return to_mesh(read_raw(name, [&] {
+    gmsh::model::add(name);
+    build();
+    generate_quad9(how);
+  }));
+}
+
 } // namespace plyimpact

@@ -13,8 +13,10 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace plyimpact {
 
@@ -45,5 +47,10 @@ struct GeometryMeshing {
 /// elements: these options are set whatever the script says) and reads it as read_gmsh_mesh does.
 /// Throws MeshFileError.
 [[nodiscard]] Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing& how);
+
+/// Meshes the geometry that `build` adds to an empty gmsh model (built-in kernel, synchronised by
+/// `build`) as mesh_gmsh_geometry does; `name` stands for the file in messages. Throws MeshFileError.
+[[nodiscard]] Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build,
+                                   const GeometryMeshing& how);
 
 } // namespace plyimpact

@@ -34,12 +34,14 @@ void case_section(std::string& h, const ImpactReportInput& in) {
   const Deck& d = in.deck;
   const ImpactSettings& s = in.settings;
   h += "<section id=\"case\"><h2>The case</h2><div class=\"case\"><dl>\n";
+  if (!d.rig_description.empty()) html_item(h, "rig", xml_escaped(d.rig_description));
   if (d.file_mesh) {
     const BoundingBox& box = d.file_mesh->bounds();
     html_item(h, "plate",
               fmt::format("meshed in gmsh ({}), {:.4g} × {:.4g} mm overall, {:.4g} mm thick",
-                          xml_escaped(d.mesh_file), (box.x_max - box.x_min) * 1e3,
-                          (box.y_max - box.y_min) * 1e3, d.laminate ? d.laminate->thickness() * 1e3 : 0.0));
+                          xml_escaped(d.mesh_file.empty() ? "the rig preset" : d.mesh_file),
+                          (box.x_max - box.x_min) * 1e3, (box.y_max - box.y_min) * 1e3,
+                          d.laminate ? d.laminate->thickness() * 1e3 : 0.0));
   } else if (d.plate) {
     const double thickness = d.laminate ? d.laminate->thickness() : 0.0;
     html_item(

@@ -95,6 +95,7 @@ std::string impact_report_text(const Deck& deck, const PlateModel& model, const 
   std::string s =
       fmt::format("***** plyimpact {}: IMPACT ANALYSIS OF A LAMINATED PLATE *****\n", PLYIMPACT_VERSION);
   s += fmt::format("deck: {}\n", deck.source);
+  if (!deck.rig_description.empty()) s += fmt::format("rig: {}\n", deck.rig_description);
   s += heading("MATERIALS AND LAMINATE") + laminate_report_text(deck);
   s += mesh_section(model);
   s += impactor_section(settings);

@@ -109,6 +109,7 @@ AnalysisOutcome run_static_analysis(const Deck& deck, bool nonlinear,
   const StaticResult r = solve_static(model, *deck.load);
   AnalysisOutcome out;
   out.text = fmt::format("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
+  if (!deck.rig_description.empty()) out.text += fmt::format("  rig: {}\n", deck.rig_description);
   print_deflections(out.text, r.center_deflection, r.load_point_deflection, r.max_abs_deflection);
   nlohmann::json& j = out.summary = summary_header(deck, "static");
   put_deflections(j, r.center_deflection, r.load_point_deflection, r.max_abs_deflection);

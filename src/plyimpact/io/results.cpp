@@ -12,7 +12,8 @@ nlohmann::json summary_header(const Deck& deck, const std::string& analysis) {
                       {"program", "plyimpact"},
                       {"version", PLYIMPACT_VERSION},
                       {"deck", deck.source}};
-  if (!deck.warnings.empty()) j["warnings"] = deck.warnings; // plausibility (deck_plausibility.hpp)
+  if (!deck.rig_description.empty()) j["rig"] = deck.rig_description; // what [rig] built
+  if (!deck.warnings.empty()) j["warnings"] = deck.warnings;          // plausibility (deck_plausibility.hpp)
   return j;
 }
 

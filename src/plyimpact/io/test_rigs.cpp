@@ -1,0 +1,111 @@
+#include "plyimpact/io/test_rigs.hpp"
+
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace plyimpact {
+
+namespace {
+
+namespace geo = gmsh::model::geo;
+
+// ASTM D7136 coupon (the same geometry as examples/meshes/astm-d7136-coupon.geo) [m].
+constexpr double coupon_a = 0.150, coupon_b = 0.100, window_a = 0.125, window_b = 0.075;
+constexpr double clamp_dx = 0.050, clamp_dy = 0.04375; // clamp tips from the centre (R. Kok's model)
+
+void name_group(int dim, const std::vector<int>& tags, const std::string& name) {
+  gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, tags), name);
+}
+
+/// A closed polygon of lines through the points; returns the lines.
+std::vector<int> polygon(const std::vector<int>& points) {
+  std::vector<int> lines;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    lines.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
+  return lines;
+}
+
+/// The coupon with the window's edge and the clamp tips as lines and points of its mesh.
+void add_astm_coupon() {
+  const double x0 = (coupon_a - window_a) / 2, y0 = (coupon_b - window_b) / 2;
+  const double cx = coupon_a / 2, cy = coupon_b / 2;
+  const std::vector<int> edges =
+      polygon({geo::addPoint(0, 0, 0), geo::addPoint(coupon_a, 0, 0), geo::addPoint(coupon_a, coupon_b, 0),
+               geo::addPoint(0, coupon_b, 0)});
+  const int plate = geo::addPlaneSurface({geo::addCurveLoop(edges)});
+  const std::vector<int> window =
+      polygon({geo::addPoint(x0, y0, 0), geo::addPoint(x0 + window_a, y0, 0),
+               geo::addPoint(x0 + window_a, y0 + window_b, 0), geo::addPoint(x0, y0 + window_b, 0)});
+  const std::vector<int> clamps{
+      geo::addPoint(cx - clamp_dx, cy - clamp_dy, 0), geo::addPoint(cx + clamp_dx, cy - clamp_dy, 0),
+      geo::addPoint(cx + clamp_dx, cy + clamp_dy, 0), geo::addPoint(cx - clamp_dx, cy + clamp_dy, 0)};
+  const int centre = geo::addPoint(cx, cy, 0);
+  geo::synchronize();
+  gmsh::model::mesh::embed(1, window, 2, plate);
+  std::vector<int> points = clamps;
+  points.push_back(centre);
+  gmsh::model::mesh::embed(0, points, 2, plate);
+  name_group(1, edges, "edges");
+  name_group(1, window, "window");
+  name_group(0, clamps, "clamps");
+  name_group(0, {centre}, "centre");
+  name_group(2, {plate}, "plate");
+}
+
+/// The disk of diameter `d` centred at the origin, with its centre a node.
+void add_disk(double d) {
+  const double r = d / 2;
+  const int c = geo::addPoint(0, 0, 0);
+  const std::vector<int> rim_points{geo::addPoint(r, 0, 0), geo::addPoint(0, r, 0), geo::addPoint(-r, 0, 0),
+                                    geo::addPoint(0, -r, 0)};
+  std::vector<int> rim;
+  for (std::size_t i = 0; i < rim_points.size(); ++i)
+    rim.push_back(geo::addCircleArc(rim_points[i], c, rim_points[(i + 1) % rim_points.size()]));
+  const int plate = geo::addPlaneSurface({geo::addCurveLoop(rim)});
+  geo::synchronize();
+  gmsh::model::mesh::embed(0, {c}, 2, plate);
+  name_group(1, rim, "rim");
+  name_group(0, {c}, "centre");
+  name_group(2, {plate}, "plate");
+}
+
+} // namespace
+
+std::string_view to_string(RigKind kind) {
+  return kind == RigKind::astm_d7136 ? "astm-d7136" : "circular";
+}
+
+GeometryMeshing rig_meshing(const RigSpec& spec) {
+  GeometryMeshing how;
+  how.size_at_point = 2e-3;
+  how.max_size = spec.kind == RigKind::astm_d7136 ? 5e-3 : std::max(2e-3, spec.diameter / 20.0);
+  return how;
+}
+
+Rig build_rig(const RigSpec& spec, bool static_analysis) {
+  if (spec.kind == RigKind::circular) {
+    Mesh mesh = mesh_gmsh_model(
+        "circular rig", [&] { add_disk(spec.diameter); }, spec.meshing);
+    BoundaryConditions bc;
+    bc.set("rim", "clamped");
+    std::string description =
+        fmt::format("circular rig: plate clamped on a circle of {:g} mm diameter; {} elements",
+                    spec.diameter * 1e3, mesh.element_count());
+    return {std::move(mesh), std::move(bc), 0.0, std::nullopt, std::move(description)};
+  }
+  Mesh mesh = mesh_gmsh_model("astm-d7136 rig", add_astm_coupon, spec.meshing);
+  BoundaryConditions bc;
+  bc.set("window", static_analysis ? unilateral_support : "ss-soft");
+  bc.set("clamps", "11100");
+  std::string description = fmt::format(
+      "ASTM D7136 rig: 150 x 100 mm plate on a 125 x 75 mm window ({}), four clamp tips at (75 +/- 50, "
+      "50 +/- 43.75) mm holding u, v, w; 16 mm hemispherical impactor; {} elements",
+      static_analysis ? "unilateral: the plate may lift off" : "held in w both ways: lift-off not modelled",
+      mesh.element_count());
+  return {std::move(mesh), std::move(bc), 0.008, astm_d7136_energy_per_thickness, std::move(description)};
+}
+
+} // namespace plyimpact

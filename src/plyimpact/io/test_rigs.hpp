@@ -1,0 +1,53 @@
+#pragma once
+// Standard drop-weight set-ups ([rig] preset, docs/mesh.md "Test rigs"): the plate, its mesh, its
+// supports and the impactor's nose that a test lab's rig gives, built from a few numbers.
+//
+//   astm-d7136  the 150 × 100 mm coupon on a 125 × 75 mm window (ASTM D7136/D7136M, Airbus AITM 1-0010),
+//               held by four clamp tips at (75 ± 50, 50 ± 43.75) mm; a 16 mm hemispherical impactor;
+//               the impact energy C_E · h with C_E = 6.7 J/mm unless the deck gives one.
+//   circular    a plate clamped between rings with a circular opening of the given diameter: the disk
+//               of the opening, clamped at its rim.
+// Sources and what could not be checked are in docs/mesh.md.
+#include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/mesh.hpp"
+#include "plyimpact/io/gmsh_mesh.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace plyimpact {
+
+enum class RigKind { astm_d7136, circular };
+
+struct RigSpec {
+  RigKind kind = RigKind::astm_d7136;
+  double diameter = 0.0;   ///< circular: the clamped opening [m]
+  GeometryMeshing meshing; ///< sizes toward the impact point (defaults: rig_meshing)
+};
+
+/// What a rig builds.
+struct Rig {
+  Mesh mesh;
+  /// The supports by the mesh's named sets. The ASTM window is "unilateral" for a static analysis and
+  /// "ss-soft" (held both ways) for the others, which do not solve lift-off (docs/mesh.md).
+  BoundaryConditions boundary;
+  double impactor_radius = 0.0;               ///< the rig's nose [m]
+  std::optional<double> energy_per_thickness; ///< the standard's impact energy rule [J/m]
+  std::string description;                    ///< what was built, for the reports
+};
+
+/// C_E of ASTM D7136 (6.7 J/mm, docs/mesh.md for the source) [J/m].
+inline constexpr double astm_d7136_energy_per_thickness = 6.7e3;
+
+/// The rig's default mesh sizes when the deck gives none: 2 mm at the impact point, growing by 1.25
+/// per element to 5 mm (ASTM), or to a twentieth of the opening's diameter (circular).
+[[nodiscard]] GeometryMeshing rig_meshing(const RigSpec& spec);
+
+/// Builds the rig's plate (meshed by gmsh) and supports; `static_analysis` chooses the window's
+/// support as above. Throws MeshFileError when gmsh fails.
+[[nodiscard]] Rig build_rig(const RigSpec& spec, bool static_analysis);
+
+[[nodiscard]] std::string_view to_string(RigKind kind);
+
+} // namespace plyimpact

@@ -1,0 +1,159 @@
+// The drop-weight rig presets ([rig], io/test_rigs.hpp): the ASTM D7136 coupon the preset builds is
+// the coupon of examples/meshes/astm-d7136-coupon.geo (same nodes, same static answer), the impactor's
+// radius and energy follow the standard (16 mm nose, 6.7 J/mm × h), and the circular rig is the clamped
+// disk of its opening (Kirchhoff's centre deflection P a²/(16 π D)). A deck that gives what the preset
+// builds is refused with the key named.
+#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/plate_analyses.hpp"
+#include "plyimpact/io/test_rigs.hpp"
+#include "test_paths.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path examples = fs::path(PLYIMPACT_SOURCE_DIR) / "examples";
+
+/// A T300/976 [45/0/-45/90]2s (4 mm) deck on the rig, with `rest` appended.
+Deck rig_deck(const std::string& analysis, const std::string& rig, const std::string& rest) {
+  return parse_deck(fmt::format(R"(analysis = "{}"
+[materials.T300_976]
+E1 = 144.8e9
+E2 = 9.65e9
+G12 = 7.10e9
+G13 = 7.10e9
+G23 = 5.92e9
+nu12 = 0.30
+rho = 1389.2
+[laminate]
+material = "T300_976"
+layup = "[45/0/-45/90]2s"
+ply_thickness = 0.25e-3
+[rig]
+{}
+{})",
+                                analysis, rig, rest),
+                    (examples / "rig-test.toml").string());
+}
+
+const std::string central_load = "[load.point]\nx = 0.075\ny = 0.050\nforce = 1000.0\n";
+
+TEST(TestRigs, TheAstmPresetBuildsTheCouponOfTheExampleGeometry) {
+  const Rig rig = build_rig(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})}, true);
+  const Mesh from_file = mesh_gmsh_geometry(examples / "meshes/astm-d7136-coupon.geo", rig_meshing({}));
+  ASSERT_EQ(rig.mesh.node_count(), from_file.node_count());
+  ASSERT_EQ(rig.mesh.element_count(), from_file.element_count());
+  double largest_gap = 0.0;
+  for (int n = 0; n < rig.mesh.node_count(); ++n)
+    largest_gap = std::max(largest_gap, (rig.mesh.node(n) - from_file.node(n)).norm());
+  EXPECT_LT(largest_gap, 1e-12);
+  for (const char* set : {"edges", "window", "clamps", "centre", "plate"})
+    EXPECT_EQ(rig.mesh.node_set(set), from_file.node_set(set)) << set;
+  EXPECT_EQ(rig.boundary.find("window")->type, "unilateral");
+  EXPECT_EQ(
+      build_rig(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})}, false).boundary.find("window")->type,
+      "ss-soft")
+      << "the impact holds the window both ways (lift-off is solved by the static analysis only)";
+}
+
+TEST(TestRigs, TheAstmStaticDeckGivesTheAnswerOfTheExampleThatSpellsTheRigOut) {
+  const Deck preset = rig_deck("static", "preset = \"astm-d7136\"", central_load);
+  const Deck spelled = load_deck(examples / "static-astm-d7136-window.toml");
+  const auto a = run_static_analysis(preset, false, std::nullopt).summary;
+  const auto b = run_static_analysis(spelled, false, std::nullopt).summary;
+  EXPECT_NEAR(a.at("center_deflection").get<double>(), b.at("center_deflection").get<double>(),
+              1e-12 * b.at("center_deflection").get<double>());
+  EXPECT_EQ(a.at("support_touching_nodes"), b.at("support_touching_nodes"));
+  EXPECT_NE(a.at("rig").get<std::string>().find("unilateral: the plate may lift off"), std::string::npos);
+}
+
+TEST(TestRigs, TheAstmImpactorHasTheStandardsNoseAndEnergyUnlessTheDeckGivesThem) {
+  const std::string impactor = "[impactor]\nmass = 5.5\nE = 210e9\n";
+  const Deck d = rig_deck("impact", "preset = \"astm-d7136\"", impactor);
+  ASSERT_TRUE(d.impactor);
+  EXPECT_DOUBLE_EQ(d.impactor->radius, 0.008);
+  const double energy = 6.7e3 * 4e-3; // C_E = 6.7 J/mm, h = 4 mm
+  EXPECT_NEAR(0.5 * 5.5 * d.impactor->velocity * d.impactor->velocity, energy, 1e-12 * energy);
+  EXPECT_NE(d.rig_description.find("6.7 J/mm x 4 mm = 26.8 J"), std::string::npos) << d.rig_description;
+  EXPECT_NEAR(d.impactor->x, 0.075, 1e-12);
+  EXPECT_NEAR(d.impactor->y, 0.050, 1e-12);
+  const Deck given =
+      rig_deck("impact", "preset = \"astm-d7136\"", impactor + "radius = 0.00635\nenergy = 10.0\n");
+  EXPECT_DOUBLE_EQ(given.impactor->radius, 0.00635);
+  EXPECT_NEAR(0.5 * 5.5 * given.impactor->velocity * given.impactor->velocity, 10.0, 1e-12);
+}
+
+TEST(TestRigs, TheCircularRigIsTheClampedDiskOfItsOpening) {
+  // Isotropic, h/a = 0.01: Kirchhoff's w0 = P a² / (16 π D), a the opening's radius.
+  constexpr double E = 70e9, nu = 0.3, a = 0.05, h = 0.0005, P = 10.0;
+  const Deck d = parse_deck(fmt::format(R"(analysis = "static"
+[materials.iso]
+E1 = {0}
+E2 = {0}
+G12 = {1}
+G13 = {1}
+G23 = {1}
+nu12 = {2}
+rho = 2700.0
+[laminate]
+material = "iso"
+layup = "[0]"
+ply_thickness = {3}
+[rig]
+preset = "circular"
+diameter = {4}
+[mesh]
+size_at_impact = 2.5e-3
+max_size = 5e-3
+[load.point]
+x = 0.0
+y = 0.0
+force = {5}
+)",
+                                        E, E / (2 * (1 + nu)), nu, h, 2 * a, P),
+                            (examples / "rig-test.toml").string());
+  const double D = E * h * h * h / (12 * (1 - nu * nu));
+  const double exact = P * a * a / (16 * std::numbers::pi * D);
+  const double w = run_static_analysis(d, false, std::nullopt).summary.at("center_deflection").get<double>();
+  std::printf("  circular rig: w0 = %.6e m, P a^2/(16 pi D) = %.6e m\n", w, exact);
+  EXPECT_NEAR(w / exact, 1.0, 0.01);
+  EXPECT_NE(d.rig_description.find("clamped on a circle of 100 mm diameter"), std::string::npos);
+}
+
+/// The message of the DeckError that parsing the rig deck throws.
+std::string rig_error(const std::string& rig, const std::string& rest) {
+  try {
+    (void)rig_deck("static", rig, rest);
+  } catch (const DeckError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(TestRigs, WhatThePresetBuildsCannotAlsoBeGiven) {
+  const std::string astm = "preset = \"astm-d7136\"";
+  EXPECT_NE(rig_error(astm, "[plate]\na = 0.15\nb = 0.1\n" + central_load).find("leave out [plate]"),
+            std::string::npos);
+  EXPECT_NE(rig_error(astm, "[boundary]\nwindow = \"ss\"\n" + central_load).find("leave out [boundary]"),
+            std::string::npos);
+  EXPECT_NE(rig_error(astm, "[mesh]\nnx = 10\n" + central_load).find("[rig] gives the plate"),
+            std::string::npos);
+  EXPECT_NE(rig_error("preset = \"astm-d7163\"", central_load).find("(did you mean \"astm-d7136\"?)"),
+            std::string::npos);
+  EXPECT_NE(rig_error("preset = \"circular\"", central_load).find("rig.diameter"), std::string::npos);
+  EXPECT_NE(rig_error(astm + "\ndiameter = 0.1", central_load).find("125 x 75 mm"), std::string::npos);
+  EXPECT_NE(rig_error("diameter = 0.1", central_load).find("[rig] needs preset"), std::string::npos);
+}
+
+} // namespace
+} // namespace plyimpact
