@@ -11,7 +11,10 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/gmsh_mesh.hpp"
 #include "plyimpact/io/plate_analyses.hpp"
+#include "support/decks.hpp"
 #include "support/gmsh_meshes.hpp"
+#include "support/navier.hpp"
+#include "support/navier_plies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -104,6 +107,48 @@ TEST(GmshMesh, ClampedCircularPlateUnderPressureHasMindlinsCentreDeflection) {
   std::printf("  w0 = %.6e m, Mindlin %.6e m (Kirchhoff alone %.6e m)\n", w, bending + shear, bending);
   EXPECT_NEAR(std::abs(w) / (bending + shear), 1.0, 0.01);
   EXPECT_GT(std::abs(w) / bending, 1.03) << "the shear term is there";
+}
+
+TEST(GmshMesh, ClampedOrthotropicCircularPlateUnderPressureHasLekhnitskiisCentreDeflection) {
+  // A plate with rectilinear orthotropy (D16 = D26 = 0) clamped on an ellipse deflects exactly as
+  // w = w0 (1 − x²/a² − y²/b²)² under uniform q (Lekhnitskii, Anisotropic Plates, 1968: the clamped
+  // elliptical plate; Kirchhoff); on a circle w0 = q a⁴ / (8 (3 D11 + 2 (D12 + 2 D66) + 3 D22)) (64 D when
+  // isotropic). T300/976 [0/90]s, h/a = 0.005 so that the transverse shear adds little; D from the
+  // plies' textbook formulas (tests/support/navier_plies.hpp), not from src/.
+  const double a = 0.1, t = 0.125e-3, q = 100.0;
+  const fs::path file = scratch("clamped-orthotropic") / "disk.msh";
+  test::write_disk_mesh(file, a, a / 8.0);
+  const Material m = test::t300_976();
+  const Eigen::Matrix3d D =
+      test::navier::plate_from_plies(1.0, 1.0, test::navier_cross_ply(m, {0, 90, 90, 0}, t)).D;
+  const Deck deck =
+      parse_deck(fmt::format(R"(analysis = "static"
+[materials.T300_976]
+E1 = {}
+E2 = {}
+G12 = {}
+G13 = {}
+G23 = {}
+nu12 = {}
+rho = {}
+[laminate]
+material = "T300_976"
+layup = "[0/90]s"
+ply_thickness = {}
+[mesh]
+file = "{}"
+[boundary]
+rim = "clamped"
+[load]
+pressure = {}
+)",
+                             m.E1, m.E2, m.G12, m.G13, m.G23, m.nu12, m.rho, t, file.string(), q),
+                 "deck.toml");
+  const double expected =
+      q * std::pow(a, 4) / (8.0 * (3.0 * D(0, 0) + 2.0 * (D(0, 1) + 2.0 * D(2, 2)) + 3.0 * D(1, 1)));
+  const double w = static_value(deck, "center_deflection");
+  std::printf("  orthotropic w0 = %.6e m, Lekhnitskii %.6e m\n", w, expected);
+  EXPECT_NEAR(w / expected, 1.0, 0.01);
 }
 
 TEST(GmshMesh, ClampedCircularPlateUnderCentralLoadHasTheClosedFormDeflection) {
