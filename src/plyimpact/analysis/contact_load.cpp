@@ -1,5 +1,6 @@
 #include "plyimpact/analysis/contact_load.hpp"
 
+#include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/fem/circle_load.hpp"
 
 #include <algorithm>
@@ -26,6 +27,19 @@ ContactLoading::ContactLoading(const PlateModel& model, const EquationSubset& eq
       size_(std::max(size, equations.size())),
       sw_(padded(equations.restrict(model.sampler(impactor.x, impactor.y).as_vector(model.size())))) {
   table_.push_back({0.0, sw_, {}, 0.0}); // radius 0: the point load
+  if (flat_punch()) {
+    // One load shape, the punch's pressure over its end; the punch's indentation is measured with the
+    // same weights (the plate's deflection under a rigid punch, by reciprocity), which keeps the
+    // contact work-conjugate: with the centre's deflection instead, the stiff linear law and the
+    // spread load exchange energy and the run blows up.
+    table_.push_back({impactor_.radius, pressure_load(impactor_.radius), {}, 0.0});
+    sw_ = table_.back().load;
+    table_.front().load = sw_;
+  }
+}
+
+bool ContactLoading::flat_punch() const {
+  return distributed() && impactor_.nose == NoseShape::flat;
 }
 
 void ContactLoading::set_solver(Solve solve) {
@@ -43,7 +57,8 @@ Eigen::VectorXd ContactLoading::padded(Eigen::VectorXd v) const {
 }
 
 Eigen::VectorXd ContactLoading::pressure_load(double radius) const {
-  return padded(equations_.restrict(hertz_pressure_weights(model_, impactor_.x, impactor_.y, radius)));
+  return padded(
+      equations_.restrict(hertz_pressure_weights(model_, impactor_.x, impactor_.y, radius, impactor_.nose)));
 }
 
 const ContactLoading::Entry& ContactLoading::entry(std::size_t j) const {
@@ -62,7 +77,8 @@ const ContactLoading::Entry& ContactLoading::entry(std::size_t j) const {
 
 ContactLoading::Bracket ContactLoading::bracket(double alpha) const {
   if (!distributed()) return {0, 0.0};
-  const double radius = std::sqrt(impactor_.radius * std::max(alpha, 0.0));
+  if (flat_punch()) return {1, 0.0};
+  const double radius = contact_radius(impactor_, alpha);
   if (radius <= 0.0) return {0, 0.0};
   if (radius < smallest_radius) return {0, radius / smallest_radius};
   // a_j = a_1 · ratio^(j−1) ≤ radius < a_{j+1}
@@ -112,10 +128,13 @@ Eigen::VectorXd ContactLoading::load(double alpha) const {
   return (1.0 - b.weight) * entry(b.j).load + b.weight * entry(b.j + 1).load;
 }
 
-Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a) {
+Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a,
+                                       NoseShape nose) {
   const Mesh& mesh = model.mesh();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
-  const CircularPressure p = hertz_pressure({x, y}, a, 1.0);
+  const CircularPressure p = nose == NoseShape::hemisphere ? hertz_pressure({x, y}, a, 1.0)
+                             : nose == NoseShape::flat     ? flat_punch_pressure({x, y}, a, 1.0)
+                                                           : cone_pressure({x, y}, a, 1.0);
   double total = 0.0;
   for (int e = 0; e < mesh.element_count(); ++e) {
     const ElementCoordinates xy = mesh.element_coordinates(e);

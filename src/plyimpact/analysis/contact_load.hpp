@@ -1,7 +1,7 @@
 #pragma once
 // Where the contact force acts on the plate (SPEC §4). The deflection under the impactor is sampled at
-// the impact point, ws = swᵀu, by the shape functions of the element holding it. The force loads the
-// plate with Fc s_load:
+// the impact point, ws = swᵀu, by the shape functions of the element holding it (under a flat-ended
+// impactor, by the weights of its pressure: flat_punch()). The force loads the plate with Fc s_load:
 //   point            s_load = sw (the thesis; a point force on a Mindlin plate has no converged
 //                    answer: w under it is logarithmically singular, docs/validation.md);
 //   hertz-pressure   the Hertz pressure p = 3Fc/(2πa²) √(1 − r²/a²) over the contact circle of radius
@@ -37,6 +37,9 @@ public:
 
   [[nodiscard]] const Eigen::VectorXd& sampler() const { return sw_; }
   [[nodiscard]] bool distributed() const { return kind_ == ContactLoad::hertz_pressure; }
+  /// A flat-ended impactor with the distributed load: one pressure over its end, and the deflection
+  /// under it sampled with the same weights (sampler() is that load).
+  [[nodiscard]] bool flat_punch() const;
 
   /// The factor changed: responses are recomputed with `solve` when next needed.
   void set_solver(Solve solve);
@@ -79,8 +82,10 @@ private:
   mutable std::vector<Entry> table_; ///< radius 0 (= the point load), then 1 µm · 1.08^(j−1)
 };
 
-/// Unit-force Hertz pressure over the contact circle of radius a centred at (x, y), as consistent nodal
-/// forces on w (model numbering), renormalised to a total of 1 where the circle leaves the plate.
-[[nodiscard]] Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a);
+/// Unit-force contact pressure over the contact circle of radius a centred at (x, y) — Hertz's for the
+/// hemisphere, the flat punch's or the cone's (fem/circle_load.hpp) —, as consistent nodal forces on w
+/// (model numbering), renormalised to a total of 1 where the circle leaves the plate.
+[[nodiscard]] Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a,
+                                                     NoseShape nose = NoseShape::hemisphere);
 
 } // namespace plyimpact

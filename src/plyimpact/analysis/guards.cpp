@@ -28,8 +28,9 @@ void check_finite_vector(long step, double t, std::string_view name, const Eigen
                       name, step, t, i, v.size(), v(i)));
 }
 
-std::optional<std::string> time_step_warning(double mass, double velocity, double k, double dt) {
-  const double t_c = hertz_contact_time(mass, velocity, k);
+std::optional<std::string> time_step_warning(double mass, double velocity, double k, double dt,
+                                             double exponent) {
+  const double t_c = hertz_contact_time(mass, velocity, k, exponent);
   const double steps = t_c / dt;
   if (steps >= min_steps_per_contact) return std::nullopt;
   // One decimal, or three digits below one step (0.0168, not 0.0).
@@ -82,9 +83,9 @@ void check_end_after_first_step(double dt, const std::optional<double>& end) {
 }
 
 std::optional<std::string> energy_balance_reason(double energy_error, double initial_energy, double mass,
-                                                 double velocity, double k, double dt) {
+                                                 double velocity, double k, double dt, double exponent) {
   if (!(energy_error > energy_balance_tolerance)) return std::nullopt;
-  const double t_c = hertz_contact_time(mass, velocity, k);
+  const double t_c = hertz_contact_time(mass, velocity, k, exponent);
   return fmt::format("energy balance error {:.3g} J, {:.3g} % of the initial kinetic energy {:.4g} J "
                      "(tolerance {:.3g} %): the time integration created or lost energy and the results "
                      "are not trustworthy. The Hertz contact time estimate is t_c = {:.4g} s, {:.3g} steps "

@@ -46,7 +46,8 @@ void check_finite_vector(long step, double t, std::string_view name, const Eigen
 constexpr double min_steps_per_contact = 50.0;
 
 /// A warning with the suggested Δt when Δt > t_c / 50 (t_c = hertz_contact_time).
-[[nodiscard]] std::optional<std::string> time_step_warning(double mass, double velocity, double k, double dt);
+[[nodiscard]] std::optional<std::string> time_step_warning(double mass, double velocity, double k, double dt,
+                                                           double exponent = 1.5);
 
 /// A warning when the impact point lies on an element edge or node (|ξ| or |η| = 1): the contact
 /// force and ws then sit on an element boundary, where the mesh cannot place the point inside an
@@ -79,7 +80,7 @@ constexpr double energy_balance_tolerance = 0.01;
 /// the error, the energies, and the Δt to use against the Hertz contact time t_c.
 [[nodiscard]] std::optional<std::string> energy_balance_reason(double energy_error, double initial_energy,
                                                                double mass, double velocity, double k,
-                                                               double dt);
+                                                               double dt, double exponent = 1.5);
 
 /// Peak deflection, in laminate thicknesses h, beyond which a linear plate overestimates the deflection
 /// (membrane stretching stiffens it): the usual small-deflection limit of plate theory, about 0.3 h.

@@ -6,37 +6,43 @@
 
 namespace plyimpact {
 
-HertzContact::HertzContact(double k, const ContactLawParameters& law) : k_(k), law_(law) {
+HertzContact::HertzContact(double k, const ContactLawParameters& law, double exponent)
+    : k_(k), law_(law), n_(exponent) {
   if (law_.unloading == UnloadingLaw::elastic) {
-    law_.q = 1.5; // unload along the loading curve, no permanent indentation
+    law_.q = n_; // unload along the loading curve, no permanent indentation
     law_.beta = 0.0;
   }
 }
 
+double HertzContact::loading(double alpha) const {
+  return n_ == 1.5 ? k_ * alpha * std::sqrt(alpha) : k_ * std::pow(alpha, n_);
+}
+
 double HertzContact::force(double alpha) const {
   if (alpha <= alpha_0_) return 0.0;
-  if (alpha >= alpha_m_) return k_ * alpha * std::sqrt(alpha); // (2.5) loading
+  if (alpha >= alpha_m_) return loading(alpha); // (2.5) loading
   const double ratio = (alpha - alpha_0_) / (alpha_m_ - alpha_0_);
-  return force_m_ * std::pow(ratio, reloading_ ? 1.5 : law_.q); // (2.7) reloading / (2.6) unloading
+  return force_m_ * std::pow(ratio, reloading_ ? n_ : law_.q); // (2.7) reloading / (2.6) unloading
 }
 
 double HertzContact::stiffness(double alpha) const {
   if (alpha <= alpha_0_) return 0.0;
-  if (alpha >= alpha_m_) return 1.5 * k_ * std::sqrt(alpha);
+  if (alpha >= alpha_m_) return n_ == 1.5 ? 1.5 * k_ * std::sqrt(alpha) : n_ * k_ * std::pow(alpha, n_ - 1.0);
   const double span = alpha_m_ - alpha_0_;
-  const double e = reloading_ ? 1.5 : law_.q;
+  const double e = reloading_ ? n_ : law_.q;
   return force_m_ * e * std::pow((alpha - alpha_0_) / span, e - 1.0) / span; // SPEC §4 misprint of (2.30)
 }
 
 double HertzContact::work_to(double alpha) const {
   if (alpha <= alpha_0_) return 0.0;
-  const double loading = 0.4 * k_; // ∫ k α^1.5 dα = 0.4 k α^2.5
-  if (alpha_m_ <= alpha_0_) return loading * (std::pow(alpha, 2.5) - std::pow(alpha_0_, 2.5));
+  const double c = n_ == 1.5 ? 0.4 * k_ : k_ / (n_ + 1.0); // ∫ k α^n dα = k α^(n+1)/(n+1)
+  const double m = n_ + 1.0;
+  if (alpha_m_ <= alpha_0_) return c * (std::pow(alpha, m) - std::pow(alpha_0_, m));
   const double span = alpha_m_ - alpha_0_;
-  const double e = reloading_ ? 1.5 : law_.q;
+  const double e = reloading_ ? n_ : law_.q;
   const double curve = force_m_ * span / (e + 1.0); // ∫ Fm ((α − α0)/span)^e dα from α0 to αm
   if (alpha < alpha_m_) return curve * std::pow((alpha - alpha_0_) / span, e + 1.0);
-  return curve + loading * (std::pow(alpha, 2.5) - std::pow(alpha_m_, 2.5));
+  return curve + c * (std::pow(alpha, m) - std::pow(alpha_m_, m));
 }
 
 double HertzContact::work(double from, double to) const {
@@ -46,7 +52,7 @@ double HertzContact::work(double from, double to) const {
 void HertzContact::commit(double alpha) {
   if (alpha > alpha_m_) {
     alpha_m_ = alpha;
-    force_m_ = k_ * alpha * std::sqrt(alpha);
+    force_m_ = loading(alpha);
     alpha_0_ = alpha_m_ > law_.alpha_cr ? law_.beta * (alpha_m_ - law_.alpha_cr) : 0.0; // Tan & Sun
     reloading_ = false;
   } else if (alpha <= alpha_0_ && alpha_m_ > 0.0) {

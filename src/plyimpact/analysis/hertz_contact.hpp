@@ -1,9 +1,11 @@
 #pragma once
 // Contact law between the rigid sphere and the plate (SPEC §4, thesis (2.5)–(2.7)).
 //
-//   loading      F = k α^1.5                                  (Hertz, modified constant k)
+//   loading      F = k α^n                                    (Hertz n = 1.5, modified constant k)
 //   unloading    F = Fm ((α − α0)/(αm − α0))^q                (Tan & Sun), α0 = β(αm − αcr) if αm > αcr
-//   reloading    F = Fm ((α − α0)/(αm − α0))^1.5  for α ≤ αm  (Yang & Sun), after a full unload
+//   reloading    F = Fm ((α − α0)/(αm − α0))^n    for α ≤ αm  (Yang & Sun), after a full unload
+// n = 1.5 for the hemisphere; 1 (flat-ended cylinder) and 2 (cone) for the other noses, which unload
+// elastically (parameters.hpp, docs/impactor.md).
 //
 // αm, Fm: indentation and force at the start of unloading (the largest indentation so far). The
 // unloading and reloading curves are reversible: moving back and forth below αm retraces them (no
@@ -15,7 +17,9 @@ namespace plyimpact {
 
 class HertzContact {
 public:
-  HertzContact(double k, const ContactLawParameters& law);
+  /// `exponent`: n of the loading law F = k α^n (contact_exponent of the nose; 1.5 for Hertz). The
+  /// reloading curve uses n too; the unloading exponent q is the law's (n when elastic).
+  HertzContact(double k, const ContactLawParameters& law, double exponent = 1.5);
 
   /// Contact force for indentation α with the current history (does not change the history).
   [[nodiscard]] double force(double alpha) const;
@@ -37,8 +41,12 @@ private:
   /// An antiderivative of force(α) with the current history, 0 at α ≤ α0.
   [[nodiscard]] double work_to(double alpha) const;
 
+  /// k α^n, written α√α for Hertz (the historical arithmetic, bit for bit).
+  [[nodiscard]] double loading(double alpha) const;
+
   double k_;
   ContactLawParameters law_;
+  double n_ = 1.5;
   double alpha_m_ = 0.0;   ///< largest indentation reached
   double force_m_ = 0.0;   ///< force at αm (on the loading curve)
   double alpha_0_ = 0.0;   ///< permanent indentation

@@ -52,7 +52,9 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.impactor = d.impactor;
   s.k = resolved_contact_stiffness(d);
   s.contact = d.contact;
-  s.dt = d.time.dt ? *d.time.dt : automatic_time_step(d.impactor.mass, s.k, d.impactor.velocity);
+  s.dt = d.time.dt ? *d.time.dt
+                   : automatic_time_step(d.impactor.mass, s.k, d.impactor.velocity,
+                                         contact_exponent(d.impactor.nose));
   if (d.delamination && !d.time.dt && !d.laminates.empty()) // within the interfaces' limit (DL5)
     s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
                                                                d.time.newmark_beta));
@@ -68,8 +70,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
 }
 
 double expected_contact_radius(const ImpactCaseDescription& d) {
-  return expected_contact_radius(d.impactor.mass, d.impactor.velocity, resolved_contact_stiffness(d),
-                                 d.impactor.radius);
+  return expected_contact_radius(d.impactor, resolved_contact_stiffness(d));
 }
 
 double size_at_impact(const ImpactCaseDescription& d) {
@@ -164,15 +165,14 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
     loop.linear_thickness = impacted_laminate(description_).thickness();
   // Guards that warn (docs/robustness.md): a Δt too coarse for the contact, an impact point on an
   // element boundary.
-  if (auto w = time_step_warning(imp.mass, imp.velocity, k, settings_.dt))
+  if (auto w = time_step_warning(imp.mass, imp.velocity, k, settings_.dt, contact_exponent(imp.nose)))
     loop.warnings.push_back(std::move(*w));
   if (!settings_.rigid_target) {
     // A point force on an element boundary loads whichever element holds it; the Hertz pressure is
     // integrated over every element its circle touches and needs no such warning.
     if (settings_.contact.load == ContactLoad::point)
       if (auto w = impact_point_warning(model_->mesh(), imp.x, imp.y)) loop.warnings.push_back(std::move(*w));
-    if (auto w = contact_mesh_warning(model_->mesh(), imp.x, imp.y,
-                                      expected_contact_radius(imp.mass, imp.velocity, k, imp.radius),
+    if (auto w = contact_mesh_warning(model_->mesh(), imp.x, imp.y, expected_contact_radius(imp, k),
                                       settings_.contact.load))
       loop.warnings.push_back(std::move(*w));
   }

@@ -161,7 +161,8 @@ void check_after_run(ImpactResult& r, const StepView& end, double e0, double law
                          end.plate_dissipated_energy() + law_work;
     r.energy_balance_error = std::abs(e0 - total) / e0;
   }
-  if (auto why = energy_balance_reason(r.energy_balance_error, e0, imp.mass, imp.velocity, k, s.dt)) {
+  if (auto why = energy_balance_reason(r.energy_balance_error, e0, imp.mass, imp.velocity, k, s.dt,
+                                       contact_exponent(imp.nose))) {
     r.suspect = true;
     r.suspect_reason = *why;
     r.warnings.push_back(std::move(*why));
@@ -183,7 +184,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   const auto n = static_cast<Eigen::Index>(policy.equations());
   const bool rigid = n == 0;
 
-  HertzContact law(k, contact);
+  HertzContact law(k, contact, contact_exponent(imp.nose));
   NewmarkStepper impactor(nc, imp.mass, 0.0, imp.velocity);
   PlateState state{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
   Eigen::VectorXd u_next(n), a_next(n);

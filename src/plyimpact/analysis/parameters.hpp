@@ -11,15 +11,37 @@ namespace plyimpact {
 
 enum class AnalysisKind { impact, static_, modal, buckling, laminate, threshold };
 
-/// Rigid spherical impactor (SPEC §4).
+/// The impactor's nose: a hemisphere (Hertz, SPEC §4), a flat-ended cylinder or a cone
+/// (docs/impactor.md for the contact laws and their sources).
+enum class NoseShape { hemisphere, flat, cone };
+
+/// The deck spelling ("hemisphere", "flat", "cone").
+[[nodiscard]] constexpr std::string_view to_string(NoseShape nose) {
+  return nose == NoseShape::hemisphere ? "hemisphere" : nose == NoseShape::flat ? "flat" : "cone";
+}
+
+/// n of the loading law F = k α^n: 3/2 for the hemisphere (Hertz), 1 for the flat punch (Boussinesq),
+/// 2 for the cone (Sneddon).
+[[nodiscard]] constexpr double contact_exponent(NoseShape nose) {
+  return nose == NoseShape::hemisphere ? 1.5 : nose == NoseShape::flat ? 1.0 : 2.0;
+}
+
+/// The unit of k in F = k α^n: "N/m^1.5", "N/m" or "N/m^2".
+[[nodiscard]] constexpr std::string_view contact_constant_unit(NoseShape nose) {
+  return nose == NoseShape::hemisphere ? "N/m^1.5" : nose == NoseShape::flat ? "N/m" : "N/m^2";
+}
+
+/// Rigid impactor (SPEC §4): a hemisphere of `radius` unless `nose` says otherwise.
 struct Impactor {
   double mass = 0.0;     ///< [kg]
-  double radius = 0.0;   ///< [m]
+  double radius = 0.0;   ///< [m]: the hemisphere's, or the flat end's (flat); unused by the cone
   double E = 0.0;        ///< Young's modulus [Pa]
   double nu = 0.3;       ///< Poisson ratio [-]
   double velocity = 0.0; ///< initial velocity, positive towards the plate (+z) [m/s]
   double x = 0.0;        ///< impact point [m]
   double y = 0.0;        ///< [m]
+  NoseShape nose = NoseShape::hemisphere;
+  double half_angle = 0.0; ///< cone: the angle between its axis and its flank [rad]
 };
 
 enum class UnloadingLaw { tan_sun, elastic };

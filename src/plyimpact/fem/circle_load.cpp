@@ -262,6 +262,22 @@ CircularPressure hertz_pressure(const Eigen::Vector2d& centre, double radius, do
           }};
 }
 
+CircularPressure flat_punch_pressure(const Eigen::Vector2d& centre, double radius, double force) {
+  const double c = force / (2.0 * std::numbers::pi * radius * radius);
+  return {centre, radius, [c, radius](double r) {
+            const double s = r / radius;
+            return s < 1.0 ? c / std::sqrt(1.0 - s * s) : 0.0;
+          }};
+}
+
+CircularPressure cone_pressure(const Eigen::Vector2d& centre, double radius, double force) {
+  const double mean = force / (std::numbers::pi * radius * radius);
+  return {centre, radius, [mean, radius](double r) {
+            const double s = r / radius;
+            return s < 1.0 ? mean * std::acosh(1.0 / std::max(s, 1e-300)) : 0.0;
+          }};
+}
+
 CircularPressure uniform_pressure(const Eigen::Vector2d& centre, double radius, double pressure) {
   return {centre, radius, [pressure, radius](double r) { return r <= radius ? pressure : 0.0; }};
 }

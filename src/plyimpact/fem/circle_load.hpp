@@ -44,6 +44,13 @@ struct CircularPressure {
 /// Hertz pressure of resultant `force` over the contact circle of radius c:
 /// p(r) = p0 √(1 − r²/c²), p0 = 3F/(2πc²) (Johnson, Contact Mechanics, 1985, eq. 4.23).
 [[nodiscard]] CircularPressure hertz_pressure(const Eigen::Vector2d& centre, double radius, double force);
+/// Pressure under a rigid flat-ended punch of radius c pressed with `force` (Boussinesq; Johnson, Contact
+/// Mechanics, 1985): p(r) = F / (2π c √(c² − r²)), unbounded at the rim, integrable.
+[[nodiscard]] CircularPressure flat_punch_pressure(const Eigen::Vector2d& centre, double radius,
+                                                   double force);
+/// Pressure under a rigid cone whose contact circle has radius c (Sneddon 1965; Johnson 1985):
+/// p(r) = F/(π c²) · arccosh(c/r), logarithmic at the tip, integrable.
+[[nodiscard]] CircularPressure cone_pressure(const Eigen::Vector2d& centre, double radius, double force);
 /// Uniform pressure p over the circle.
 [[nodiscard]] CircularPressure uniform_pressure(const Eigen::Vector2d& centre, double radius,
                                                 double pressure);

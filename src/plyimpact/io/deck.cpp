@@ -164,7 +164,11 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
     d.boundary = read_boundary(*t, d.file_mesh.get());
   if (const auto t = top.optional_table("impactor"))
     d.impactor = read_impactor(*t, d.plate, d.file_mesh.get(), d.impactor_input, d.impactor_defaults);
-  if (const auto t = top.optional_table("contact")) d.contact = read_contact(*t);
+  const NoseShape nose = d.impactor ? d.impactor->nose : NoseShape::hemisphere;
+  if (const auto t = top.optional_table("contact"))
+    d.contact = read_contact(*t, nose);
+  else if (nose != NoseShape::hemisphere)
+    d.contact.unloading = UnloadingLaw::elastic; // docs/impactor.md
   if (const auto t = top.optional_table("time")) d.time = read_time(*t);
   if (const auto t = top.optional_table("load")) d.load = read_load(*t, d.plate, d.file_mesh.get());
   if (const auto t = top.optional_table("modal")) d.modal = read_modal(*t);

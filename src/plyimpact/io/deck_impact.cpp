@@ -34,10 +34,30 @@ double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& in
 
 Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate, const Mesh* file_mesh,
                        ImpactorInput& input, const ImpactorDefaults& defaults) {
-  t.only({"mass", "density", "radius", "E", "nu", "velocity", "energy", "x", "y"});
+  t.only({"mass", "density", "radius", "E", "nu", "velocity", "energy", "x", "y", "nose", "half_angle"});
   Impactor imp;
-  imp.radius = defaults.radius ? t.optional_positive("radius", "m").value_or(*defaults.radius)
-                               : t.positive("radius", "m");
+  imp.nose = t.optional_choice<NoseShape>("nose", {{"hemisphere", NoseShape::hemisphere},
+                                                   {"flat", NoseShape::flat},
+                                                   {"cone", NoseShape::cone}})
+                 .value_or(NoseShape::hemisphere);
+  if (imp.nose == NoseShape::cone) {
+    const double degrees = t.positive("half_angle", "-");
+    if (!(degrees < 90.0))
+      t.fail_at("half_angle", fmt::format("impactor.half_angle is the angle between the cone's axis and its "
+                                          "flank, in degrees, below 90; got {}",
+                                          degrees));
+    imp.half_angle = degrees * std::numbers::pi / 180.0;
+    if (t.has("radius"))
+      t.fail_at("radius", "a cone has no radius: its contact radius grows with the indentation (leave out "
+                          "impactor.radius)");
+    if (t.has("density"))
+      t.fail_at("density", "impactor.density gives the mass of a sphere: give the cone's impactor.mass");
+  } else if (t.has("half_angle")) {
+    t.fail_at("half_angle", "impactor.half_angle belongs to nose = \"cone\"");
+  }
+  if (imp.nose != NoseShape::cone)
+    imp.radius = defaults.radius ? t.optional_positive("radius", "m").value_or(*defaults.radius)
+                                 : t.positive("radius", "m");
   const auto mass = t.optional_positive("mass", "kg");
   const auto density = t.optional_positive("density", "kg/m^3");
   if (mass && density) t.fail_at("density", "give impactor.mass or impactor.density, not both");
@@ -81,13 +101,18 @@ Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>&
   return imp;
 }
 
-ContactLawParameters read_contact(const TableReader& t) {
+ContactLawParameters read_contact(const TableReader& t, NoseShape nose) {
   t.only({"k", "unloading", "q", "beta", "alpha_cr", "load"});
   ContactLawParameters c;
-  c.k = t.positive_or_auto("k", "N/m^1.5");
-  c.unloading = t.optional_choice<UnloadingLaw>(
-                     "unloading", {{"tan-sun", UnloadingLaw::tan_sun}, {"elastic", UnloadingLaw::elastic}})
-                    .value_or(UnloadingLaw::tan_sun);
+  c.k = t.positive_or_auto("k", contact_constant_unit(nose));
+  const auto unloading = t.optional_choice<UnloadingLaw>(
+      "unloading", {{"tan-sun", UnloadingLaw::tan_sun}, {"elastic", UnloadingLaw::elastic}});
+  if (nose != NoseShape::hemisphere && unloading == UnloadingLaw::tan_sun)
+    t.fail_at("unloading", fmt::format("contact.unloading = \"tan-sun\" was measured with hemispherical "
+                                       "impactors; a {} nose unloads elastically here (docs/impactor.md)",
+                                       to_string(nose)));
+  c.unloading =
+      unloading.value_or(nose == NoseShape::hemisphere ? UnloadingLaw::tan_sun : UnloadingLaw::elastic);
   c.q = t.optional_positive("q", "-").value_or(2.5);
   c.beta = t.optional_number("beta", "-").value_or(0.094);
   if (!(c.beta >= 0.0 && c.beta < 1.0))

@@ -111,14 +111,15 @@ void check_contact_stiffness(const Deck& d, double k_auto, Checks& c) {
   const double k = *d.contact.k;
   const double ratio = k / k_auto;
   if (ratio >= 1.0 / k_ratio && ratio <= k_ratio) return;
-  const UnitConversion conv = unit_conversion(d.units, "N/m^1.5");
-  const double n_per_mm = unit_conversion(UnitSystem::mm_n_mpa_tonne, "N/m^1.5").multiply;
-  // Written in N/mm^1.5 where N/m^1.5 was meant, or the other way round.
-  const double as_other = d.units == UnitSystem::si ? k * n_per_mm : k / n_per_mm;
-  const std::string_view other = d.units == UnitSystem::si ? "N/mm^1.5" : "N/m^1.5";
+  const std::string_view unit = contact_constant_unit(d.impactor->nose);
+  const UnitConversion conv = unit_conversion(d.units, unit);
+  const UnitConversion mm = unit_conversion(UnitSystem::mm_n_mpa_tonne, unit);
+  // Written in N/mm^n where N/m^n was meant, or the other way round.
+  const double as_other = d.units == UnitSystem::si ? k * mm.multiply : k / mm.multiply;
+  const std::string_view other = d.units == UnitSystem::si ? mm.unit : unit;
   std::string hint = "check its unit";
   if (as_other / k_auto >= 1.0 / 3.0 && as_other / k_auto <= 3.0)
-    hint = fmt::format("this looks like {}; {} — write {}", other, deck_units_note(d.units, "N/m^1.5"),
+    hint = fmt::format("this looks like {}; {} — write {}", other, deck_units_note(d.units, unit),
                        short_number(conv.from_si(as_other)));
   c.warnings.push_back(fmt::format("contact.k = {}: {} times the Hertz stiffness of this impactor on ply 1 "
                                    "(k = \"auto\" gives {} {}); {}",
@@ -128,15 +129,18 @@ void check_contact_stiffness(const Deck& d, double k_auto, Checks& c) {
 
 void check_impactor(const Deck& d, Checks& c) {
   const Impactor& imp = *d.impactor;
-  const bool radius_ok = radius_range.holds(imp.radius);
-  c.add({"impactor.radius", imp.radius, "m", radius_range.lo, radius_range.hi, "an impactor radius"});
+  const bool cone = imp.nose == NoseShape::cone; // no radius
+  const bool radius_ok = cone || radius_range.holds(imp.radius);
+  if (!cone)
+    c.add({"impactor.radius", imp.radius, "m", radius_range.lo, radius_range.hi, "an impactor radius"});
   if (d.impactor_input.density) {
     c.add({"impactor.density", *d.impactor_input.density, "kg/m^3", 300.0, 25e3, "a density"});
   } else {
     // Lighter than a sphere of its radius of 300 kg/m^3 (wood) is as implausible as a heavy drop weight.
     const double sphere = 300.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(imp.radius, 3);
-    c.add({"impactor.mass", imp.mass, "kg", radius_ok ? std::max(mass_range.lo, sphere) : mass_range.lo,
-           mass_range.hi, "an impactor mass"});
+    c.add({"impactor.mass", imp.mass, "kg",
+           radius_ok && !cone ? std::max(mass_range.lo, sphere) : mass_range.lo, mass_range.hi,
+           "an impactor mass"});
   }
   c.add({"impactor.E", imp.E, "Pa", modulus.lo, modulus.hi, "an impactor modulus"});
   if (d.impactor_input.energy)
@@ -159,7 +163,7 @@ void check_impactor(const Deck& d, Checks& c) {
         k <= k_auto * k_ratio))
     return;
   // Δt and the end time against the rigid-target Hertz contact time (the plate only lengthens it).
-  const double tc = hertz_contact_time(imp.mass, imp.velocity, k);
+  const double tc = hertz_contact_time(imp.mass, imp.velocity, k, contact_exponent(imp.nose));
   const std::string what = fmt::format("this impact (Hertz contact time {} s)", short_number(tc));
   if (d.time.dt) c.add({"time.dt", *d.time.dt, "s", tc / 1e5, tc / 5.0, "a time step of " + what});
   if (d.time.end) c.add({"time.end", *d.time.end, "s", tc / 1e3, tc * 1e3, "an end time of " + what});

@@ -50,7 +50,8 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
 [[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
                                      const Mesh* file_mesh, ImpactorInput& input,
                                      const ImpactorDefaults& defaults = {});
-[[nodiscard]] ContactLawParameters read_contact(const TableReader& t);
+/// [contact] for the impactor's nose (the unit of contact.k, the default unloading law).
+[[nodiscard]] ContactLawParameters read_contact(const TableReader& t, NoseShape nose);
 [[nodiscard]] TimeStepping read_time(const TableReader& t);
 /// Top-level `nonlinear`, `strain_measure`, `load_steps`.
 void read_nonlinear_keys(const TableReader& top, Deck& d);

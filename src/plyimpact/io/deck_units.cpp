@@ -16,7 +16,7 @@ struct UnitRow {
 };
 
 // 1 N/mm^1.5 = 1 N / (1e-3 m)^1.5 = 1e3·√1e3 N/m^1.5 (not a power of ten: the only inexact factor).
-const std::array<UnitRow, 13> rows{{
+const std::array<UnitRow, 14> rows{{
     {"-", {1.0, 1.0, "-"}},
     {"m", {1.0, 1e3, "mm"}},
     {"m^2", {1.0, 1e6, "mm^2"}},
@@ -30,6 +30,7 @@ const std::array<UnitRow, 13> rows{{
     {"J/m^2", {1e3, 1.0, "N/mm"}}, // fracture toughness: 1 N/mm = 1 kJ/m^2
     {"J", {1.0, 1e3, "mJ"}},
     {"N/m^1.5", {1e3 * std::sqrt(1e3), 1.0, "N/mm^1.5"}},
+    {"N/m^2", {1e6, 1.0, "N/mm^2"}}, // a cone's contact constant
 }};
 
 } // namespace

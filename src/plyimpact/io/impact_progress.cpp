@@ -14,7 +14,7 @@ double expected_run_time(const ImpactSettings& settings, const StepView& view, d
   if (settings.end) return *settings.end;
   if (separation > 0.0) return 2.0 * separation;
   const Impactor& i = settings.impactor;
-  const double rigid = hertz_contact_time(i.mass, i.velocity, settings.k);
+  const double rigid = hertz_contact_time(i.mass, i.velocity, settings.k, contact_exponent(i.nose));
   const double phase = std::acos(std::clamp(view.impactor_v / i.velocity, -1.0, 1.0));
   const double half_sine = phase > 0.1 ? std::numbers::pi * view.t / phase : 0.0;
   return 2.0 * std::max(rigid, half_sine);

@@ -116,10 +116,9 @@ std::string impact_history_csv(const ImpactResult& r) {
 
 std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) {
   std::string t;
-  t += fmt::format(
-      "impact: m = {:.4g} kg, v0 = {:.4g} m/s, k = {:.4g} N/m^1.5, dt = {:.4g} us, {} equations{}\n",
-      s.impactor.mass, s.impactor.velocity, s.k, s.dt * 1e6, r.dofs,
-      r.inplane_eliminated ? " (in-plane DOFs decoupled, left out)" : "");
+  t += fmt::format("impact: m = {:.4g} kg, v0 = {:.4g} m/s, k = {:.4g} {}, dt = {:.4g} us, {} equations{}\n",
+                   s.impactor.mass, s.impactor.velocity, s.k, contact_constant_unit(s.impactor.nose),
+                   s.dt * 1e6, r.dofs, r.inplane_eliminated ? " (in-plane DOFs decoupled, left out)" : "");
   t += fmt::format("  mesh: {} {} elements{}, {:.3g} to {:.3g} mm; contact load {}\n", s.mesh.elements,
                    to_string(s.mesh.element), s.mesh.graded ? " graded toward the impact point" : "",
                    s.mesh.smallest_element * 1e3, s.mesh.largest_element * 1e3, to_string(s.contact.load));

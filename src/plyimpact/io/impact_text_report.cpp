@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <numbers>
+
 namespace plyimpact {
 namespace {
 
@@ -51,12 +53,22 @@ std::string impactor_section(const ImpactSettings& s) {
   const Impactor& i = s.impactor;
   std::string t = heading("IMPACTOR AND CONTACT");
   t += fmt::format("  impactor mass               {:.6g} kg\n", i.mass);
-  t += fmt::format("  impactor radius             {:.6g} mm\n", i.radius * 1e3);
+  if (i.nose == NoseShape::cone)
+    t += fmt::format("  impactor nose               cone, half-angle {:.6g} deg\n",
+                     i.half_angle * 180.0 / std::numbers::pi);
+  else if (i.nose == NoseShape::flat)
+    t += fmt::format("  impactor nose               flat, radius {:.6g} mm\n", i.radius * 1e3);
+  else
+    t += fmt::format("  impactor radius             {:.6g} mm\n", i.radius * 1e3);
   t += fmt::format("  impactor E, nu              {:.6g} GPa, {:.4g}\n", i.E * 1e-9, i.nu);
   t += fmt::format("  initial velocity            {:.6g} m/s ({:.6g} J)\n", i.velocity,
                    0.5 * i.mass * i.velocity * i.velocity);
   t += fmt::format("  impact point (x, y)         ({:.4f}, {:.4f}) mm\n", i.x * 1e3, i.y * 1e3);
-  t += fmt::format("  Hertz contact constant k    {:.5e} N/m^1.5\n", s.k);
+  if (i.nose == NoseShape::hemisphere)
+    t += fmt::format("  Hertz contact constant k    {:.5e} N/m^1.5\n", s.k);
+  else
+    t += fmt::format("  contact constant k          {:.5e} {} (F = k alpha^{:g})\n", s.k,
+                     contact_constant_unit(i.nose), contact_exponent(i.nose));
   t += fmt::format("  unloading                   {}",
                    s.contact.unloading == UnloadingLaw::tan_sun ? "Tan-Sun" : "elastic");
   if (s.contact.unloading == UnloadingLaw::tan_sun)

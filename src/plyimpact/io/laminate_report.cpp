@@ -86,7 +86,8 @@ std::string laminate_report_text(const Deck& d) {
         fmt::format("\nImpactor m = {:.6g} kg, R = {:.4g} mm, E = {:.4g} GPa, nu = {:.3g}, v0 = {:.4g} m/s\n",
                     d.impactor->mass, d.impactor->radius * 1e3, d.impactor->E / 1e9, d.impactor->nu,
                     d.impactor->velocity);
-    s += fmt::format("  contact stiffness k = {:.6g} N/m^1.5 ({})\n", contact_stiffness(d),
+    s += fmt::format("  contact stiffness k = {:.6g} {} ({})\n", contact_stiffness(d),
+                     contact_constant_unit(d.impactor->nose),
                      d.contact.k ? "given" : "modified Hertz, docs/deck.md [contact] k");
   }
   return s;
