@@ -107,6 +107,32 @@ thickness = 1e-3
   EXPECT_NEAR(d.laminate->thickness(), 6 * 0.465e-3 + 2e-3, 1e-15);
 }
 
+TEST(Deck, ReferenceDirectionTurnsTheLayupInThePlatesPlane) {
+  // [laminate] reference_direction: the layup's 0° along (1, 1, 0) lays [0/90]s at 45°/135°, which is
+  // the [45/-45]s laminate in the plate's axes (a ply at 135° is the ply at −45°).
+  const auto with = [](const std::string& layup, const std::string& direction) {
+    return parse_deck(
+        replace_line(base_deck, "layup = \"[0_2/90_4/0_2]\"", "layup = \"" + layup + "\"" + direction),
+        "deck.toml");
+  };
+  const Deck turned = with("[0/90]s", "\nreference_direction = [1, 1, 0]");
+  const Deck plain = with("[45/-45]s", "");
+  EXPECT_NEAR(turned.laminate_spec->reference_angle, 45.0, 1e-12);
+  EXPECT_LT((turned.laminate->D() - plain.laminate->D()).norm(), 1e-12 * plain.laminate->D().norm());
+  EXPECT_LT((turned.laminate->A() - plain.laminate->A()).norm(), 1e-12 * plain.laminate->A().norm());
+  const auto error = [&](const std::string& direction) {
+    try {
+      (void)with("[0/90]s", "\nreference_direction = " + direction);
+    } catch (const DeckError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(error("[1, 0, 0.5]").find("leaves the plate's plane (z = 0)"), std::string::npos);
+  EXPECT_NE(error("[0, 0, 0]").find("the zero vector"), std::string::npos);
+  EXPECT_NE(error("[1, 0]").find("must be a vector [x, y, z]"), std::string::npos);
+}
+
 struct BadDeck {
   const char* name;
   std::string from, to; // line edit applied to base_deck ("" = append `to`)

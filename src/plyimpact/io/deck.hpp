@@ -37,6 +37,9 @@ struct LaminateSpec {
   double shear_correction = 5.0 / 6.0;
   ReducedStiffnessModel reduced_stiffness = ReducedStiffnessModel::exact;
   std::vector<PlyOverride> overrides;
+  /// The angle of `reference_direction` (the layup's 0°) from the plate's x axis toward y [deg]: added to
+  /// every ply angle of the layup.
+  double reference_angle = 0.0;
 };
 
 /// A laminate of [laminates.NAME] (regions of the panel refer to it by name).

@@ -5,14 +5,49 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <tuple>
 
 namespace plyimpact::deck_tables {
 
+namespace {
+
+/// reference_direction = [x, y, z]: the layup's 0° direction in the plate's (the mesh's) axes, which must
+/// lie in its plane; its angle from x toward y [deg] (0 without the key).
+double read_reference_angle(const TableReader& t) {
+  const toml::node* n = t.node("reference_direction");
+  if (n == nullptr) return 0.0;
+  const std::string what =
+      fmt::format("{}.reference_direction must be a vector [x, y, z] in the plate's axes "
+                  "(the layup's 0° direction, e.g. [1, 0, 0] for x)",
+                  t.path());
+  const toml::array* arr = n->as_array();
+  if (arr == nullptr || arr->size() != 3) t.fail_at("reference_direction", what);
+  std::array<double, 3> d{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto v = (*arr)[i].value<double>();
+    if (!v || !std::isfinite(*v)) t.fail_at("reference_direction", what);
+    d[i] = *v;
+  }
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(length > 0.0)) t.fail_at("reference_direction", what + ", got the zero vector");
+  if (std::abs(d[2]) > 1e-9 * length)
+    t.fail_at(
+        "reference_direction",
+        fmt::format("{}.reference_direction = [{}, {}, {}] leaves the plate's plane (z = 0): the fibres lie "
+                    "in the plate, so give z = 0",
+                    t.path(), d[0], d[1], d[2]));
+  return std::atan2(d[1], d[0]) * 180.0 / std::numbers::pi;
+}
+
+} // namespace
+
 NamedLaminate read_laminate(const std::vector<Material>& materials, const TableReader& t, std::string name) {
   const std::string& file = t.file();
-  t.only({"material", "layup", "ply_thickness", "shear_correction", "reduced_stiffness", "override"});
+  t.only({"material", "layup", "ply_thickness", "shear_correction", "reduced_stiffness", "override",
+          "reference_direction"});
   LaminateSpec spec;
   spec.material = t.string("material", "the name of a [materials.NAME] table");
   const std::size_t default_material = material_index(materials, t, "material", spec.material);
@@ -33,10 +68,11 @@ NamedLaminate read_laminate(const std::vector<Material>& materials, const TableR
     if (where.begin.line == where.end.line) where.begin.column += static_cast<toml::source_index>(e.column());
     fail(file, where, e.what());
   }
+  spec.reference_angle = read_reference_angle(t);
   std::vector<Ply> plies;
   plies.reserve(angles.size());
   for (const double a : angles)
-    plies.push_back({a, spec.ply_thickness, default_material});
+    plies.push_back({a + spec.reference_angle, spec.ply_thickness, default_material});
 
   if (const toml::node* ov = t.node("override")) {
     const toml::array* arr = ov->as_array();

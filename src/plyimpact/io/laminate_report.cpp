@@ -60,6 +60,11 @@ std::string laminate_report_text(const Deck& d) {
       d.laminate_spec ? d.laminate_spec->layup : "", L.ply_count(), L.thickness() * 1e3, L.shear_correction(),
       L.stiffness_model() == ReducedStiffnessModel::poisson_free ? ", Poisson-free Q (thesis program)" : "");
   s += "  ply 1 is the impacted face (z = -h/2); z points in the impact direction\n";
+  if (d.laminate_spec && d.laminate_spec->reference_angle != 0.0)
+    s += fmt::format(
+        "  the layup's 0 deg lies at {:.6g} deg from the plate's x axis (reference_direction); the "
+        "angles below are in the plate's axes\n",
+        d.laminate_spec->reference_angle);
   s += fmt::format("  {:>4}{:>11}{:>14}{:>14}{:>14}  {}\n", "ply", "angle[deg]", "t[mm]", "z_top[mm]",
                    "z_bottom[mm]", "material");
   for (std::size_t k = 0; k < L.ply_count(); ++k)
