@@ -41,6 +41,20 @@ std::array<double, 2> read_impact_offset(const TableReader& t) {
 
 } // namespace
 
+namespace {
+
+/// mesh.growth, the size ratio of neighbouring elements (1 … 3), of a graded or a gmsh mesh.
+std::optional<double> read_growth(const TableReader& t) {
+  const auto r = t.optional_number("growth", "-");
+  if (r && !(*r >= 1.0 && *r <= 3.0))
+    t.fail_at("growth", fmt::format("mesh.growth must lie between 1 and 3 (size ratio of neighbouring "
+                                    "elements), got {}",
+                                    *r));
+  return r;
+}
+
+} // namespace
+
 MeshSpec read_mesh(const TableReader& t) {
   t.only({"file", "geo", "nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size",
           "impact_offset"});
@@ -99,13 +113,7 @@ MeshSpec read_mesh(const TableReader& t) {
     MeshGrading g;
     g.size_at_impact = t.positive_or_auto("size_at_impact", "m");
     g.max_size = t.positive_or_auto("max_size", "m");
-    if (const auto r = t.optional_number("growth", "-")) {
-      if (!(*r >= 1.0 && *r <= 3.0))
-        t.fail_at("growth", fmt::format("mesh.growth must lie between 1 and 3 (size ratio of neighbouring "
-                                        "elements), got {}",
-                                        *r));
-      g.growth = *r;
-    }
+    if (const auto r = read_growth(t)) g.growth = *r;
     if (t.has("impact_offset")) g.impact_offset = read_impact_offset(t);
     if (g.size_at_impact && g.max_size && *g.max_size < *g.size_at_impact)
       t.fail_at("max_size", "mesh.max_size must not be smaller than mesh.size_at_impact");
@@ -119,11 +127,7 @@ GeometryMeshing read_geometry_meshing(const TableReader& t, const std::optional<
   how.refine_at = refine_at;
   how.size_at_point = t.optional_positive("size_at_impact", "m");
   how.max_size = t.optional_positive("max_size", "m");
-  if (const auto r = t.optional_number("growth", "-")) {
-    if (!(*r >= 1.0 && *r <= 3.0))
-      t.fail_at("growth", fmt::format("mesh.growth must lie between 1 and 3 (size ratio of neighbouring "
-                                      "elements), got {}",
-                                      *r));
+  if (const auto r = read_growth(t)) {
     if (!how.size_at_point)
       t.fail_at("growth", "mesh.growth grades the elements away from mesh.size_at_impact: give it too");
     how.growth = *r;
