@@ -42,6 +42,12 @@ namespace {
 
 class DelaminationStepPolicy;
 
+/// The cohesive zone's length against the interface points' spacing [m].
+struct ProcessZone {
+  double length = 0.0;
+  double point_spacing = 0.0;
+};
+
 /// Halvings of a correction that raised the residual (DelaminationStepper::advance).
 constexpr int max_halvings = 6;
 
@@ -122,34 +128,38 @@ public:
   Eigen::VectorXd elastic_diagonal_; ///< its diagonal
   std::vector<int> model_of_top_;    ///< model equation of each top sub-laminate equation (−1: none)
 
-private:
   /// The cohesive zone l = E2 G_c / τ² (Hillerborg, M = 1) of the shorter mode against the spacing of the
   /// interface points (half the largest element side with the nodal rule): fewer than three points in it
   /// and the onset and growth of a delamination depend on the mesh.
-  [[nodiscard]] std::optional<std::string> process_zone_warning() const {
+  [[nodiscard]] ProcessZone process_zone() const {
     const CohesiveParameters& c = settings_.stack.interface;
     double E2 = INFINITY;
     for (const Material& m : model_.laminate().materials())
       E2 = std::min(E2, m.E2);
-    const double zone = std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
-                                 cohesive_zone_length(E2, c.G_IIc, c.shear_strength));
     double largest = 0.0;
     for (int e = 0; e < model_.mesh().element_count(); ++e) {
       const ElementCoordinates X = model_.mesh().element_coordinates(e);
       largest = std::max(
           {largest, X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff()});
     }
-    const double spacing = settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0;
-    if (zone >= 3.0 * spacing) return std::nullopt;
+    return {std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
+                     cohesive_zone_length(E2, c.G_IIc, c.shear_strength)),
+            settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0};
+  }
+
+private:
+  [[nodiscard]] std::optional<std::string> process_zone_warning() const {
+    const ProcessZone z = process_zone();
+    if (z.length >= 3.0 * z.point_spacing) return std::nullopt;
     return fmt::format(
         "delamination: the cohesive zone of the interfaces, E2 G_c / strength^2 = {:.3g} mm in the shorter "
         "mode, spans {:.2g} interface points ({:.3g} mm apart): fewer than 3, so the onset and growth of "
         "delaminations depend on the mesh. Refine to elements of {:.3g} mm or less, or lower both "
         "strengths (Turon et al. 2007: tau = sqrt(9 pi E2 G_c / (32 * 3 * {:.3g} mm))) "
         "(docs/delamination.md)",
-        zone * 1e3, zone / spacing, spacing * 1e3,
-        2.0 * zone / 3.0 * 1e3 * (settings_.stack.rule == CohesiveIntegration::nodal ? 1.0 : 1.5),
-        spacing * 1e3);
+        z.length * 1e3, z.length / z.point_spacing, z.point_spacing * 1e3,
+        2.0 * z.length / 3.0 * 1e3 * (settings_.stack.rule == CohesiveIntegration::nodal ? 1.0 : 1.5),
+        z.point_spacing * 1e3);
   }
   /// Turon et al. (2010): with S/N ≠ √(G_IIc/G_Ic) the mixed-mode law does not dissipate G_c(B) along a
   /// crack front whose mixity changes (measured: MMB 1.23 G_c with N halved alone).
@@ -330,6 +340,9 @@ std::optional<DelaminationResult> DelaminationStepper::delamination() const {
   const StackedPlateModel& stack = p_.stack_;
   DelaminationResult r;
   r.dissipated = dissipated_;
+  const ProcessZone zone = p_.process_zone();
+  r.cohesive_zone_length = zone.length;
+  r.interface_point_spacing = zone.point_spacing;
   std::vector<bool> delaminated; // per point, in any interface
   for (int i = 0; i < stack.interface_count(); ++i) {
     const CohesiveInterface& ci = stack.interface(i);
@@ -338,10 +351,14 @@ std::optional<DelaminationResult> DelaminationStepper::delamination() const {
     r.delaminated_area.push_back(ci.damaged_area(states, 1.0));
     double softening = 0.0;
     delaminated.resize(states.size(), false);
+    const auto per_element = static_cast<std::size_t>(ci.points_per_element());
+    std::vector<double>& of_element = r.element_damage.emplace_back(states.size() / per_element, 0.0);
     for (std::size_t q = 0; q < states.size(); ++q) {
       const double d = states[q].damage;
       if (d > 0.0 && d < 1.0) softening += ci.point_area(static_cast<int>(q));
       if (d >= 1.0) delaminated[q] = true;
+      double& largest = of_element[q / per_element];
+      largest = std::max(largest, d);
     }
     r.process_zone_area.push_back(softening);
   }

@@ -64,6 +64,10 @@ struct DelaminationResult {
   std::vector<double> process_zone_area; ///< per interface: points softening (0 < d < 1) [m²]
   double projected_area = 0.0;           ///< union over the interfaces of the delaminated points [m²]
   double dissipated = 0.0;               ///< energy dissipated by the interfaces [J]
+  /// per interface and element: the largest damage of its points (0 intact, 1 cracked)
+  std::vector<std::vector<double>> element_damage;
+  double cohesive_zone_length = 0.0;    ///< E2 G_c / strength² of the shorter mode (Hillerborg) [m]
+  double interface_point_spacing = 0.0; ///< the interface points' spacing in the largest element [m]
 };
 
 struct ImpactResult {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -52,6 +53,19 @@ std::vector<int> interfaces_between_orientations(const Laminate& laminate) {
     if (laminate.plies()[k].angle_deg != laminate.plies()[k + 1].angle_deg)
       cuts.push_back(static_cast<int>(k));
   return cuts;
+}
+
+double turon_penalty_stiffness(const Laminate& laminate, const std::vector<int>& cuts, double alpha) {
+  if (cuts.empty()) throw std::invalid_argument("turon_penalty_stiffness: no interface to tie");
+  const std::vector<Laminate> parts = split_laminate(laminate, cuts);
+  double K = 0.0;
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    const auto ply = static_cast<std::size_t>(cuts[i]);
+    const double E3 = std::max(laminate.material_of(ply).E2, laminate.material_of(ply + 1).E2);
+    const double t = std::min(parts[i].thickness(), parts[i + 1].thickness());
+    K = std::max(K, turon_penalty_stiffness(E3, t, alpha));
+  }
+  return K;
 }
 
 StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,

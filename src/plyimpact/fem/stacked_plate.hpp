@@ -46,6 +46,14 @@ namespace plyimpact {
 /// The default cuts: every interface between plies of different orientation (issue 19).
 [[nodiscard]] std::vector<int> interfaces_between_orientations(const Laminate& laminate);
 
+/// One penalty stiffness for every interface of `laminate` cut at `cuts` (Turon et al. 2007,
+/// turon_penalty_stiffness): at each interface α E3/t with E3 the larger E2 of the two plies that meet
+/// there and t the thinner of the two sub-laminates; the largest over the interfaces, so that none
+/// adds more than ~1/α of its sub-laminates' through-thickness compliance. Throws
+/// std::invalid_argument without cuts.
+[[nodiscard]] double turon_penalty_stiffness(const Laminate& laminate, const std::vector<int>& cuts,
+                                             double alpha = turon_default_alpha);
+
 /// The history of a stacked plate: the damage of every interface point.
 struct StackedPlateState {
   std::vector<std::vector<CohesiveState>> interfaces; ///< [interface][point]

@@ -32,6 +32,7 @@ ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) 
     d.nonlinear = ns;
   }
   d.progressive_damage = deck.damage.progressive;
+  d.delamination = deck.delamination;
   d.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
   return d;
 }

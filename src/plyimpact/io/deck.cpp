@@ -131,10 +131,10 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   d.text = std::string(text);
   d.units = read_units(root, source);
   const TableReader top(root, "", source, d.units);
-  top.only({"units",  "analysis",  "title",          "materials",  "laminate", "laminates",
-            "region", "plate",     "mesh",           "boundary",   "impactor", "contact",
-            "time",   "load",      "modal",          "buckling",   "damage",   "threshold",
-            "output", "nonlinear", "strain_measure", "load_steps", "sweep",    "rig"});
+  top.only({"units",      "analysis", "title",    "materials",   "laminate", "laminates", "region",
+            "plate",      "mesh",     "boundary", "impactor",    "contact",  "time",      "load",
+            "modal",      "buckling", "damage",   "threshold",   "output",   "nonlinear", "strain_measure",
+            "load_steps", "sweep",    "rig",      "delamination"});
   d.title = top.optional_string("title").value_or("");
   read_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {
@@ -174,6 +174,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("modal")) d.modal = read_modal(*t);
   if (const auto t = top.optional_table("buckling")) d.buckling = read_buckling(*t);
   if (const auto t = top.optional_table("damage")) d.damage = read_damage(*t, d);
+  if (const auto t = top.optional_table("delamination")) d.delamination = read_delamination(*t, d);
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
   d.warnings = plausibility_warnings(d);
@@ -208,6 +209,11 @@ void require_sections(const Deck& d, AnalysisKind kind) {
   if (kind == AnalysisKind::buckling) need(d.buckling.has_value(), "[buckling]");
   if (kind == AnalysisKind::impact || kind == AnalysisKind::threshold)
     need(d.impactor.has_value(), "[impactor]");
+  if (d.delamination && kind != AnalysisKind::impact && kind != AnalysisKind::laminate)
+    throw DeckError(
+        fmt::format("{}: error: [delamination] is read by the impact analysis only; the {} analysis "
+                    "runs the single laminate (remove [delamination] or run `plyimpact impact`)",
+                    d.source, to_string(kind)));
   if (missing.empty()) return;
   std::string list;
   for (const auto& m : missing)

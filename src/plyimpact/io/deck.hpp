@@ -2,6 +2,7 @@
 // Input decks (TOML, SPEC §10): one file describes a whole analysis. See docs/deck.md.
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/parameters.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/boundary.hpp"
 #include "plyimpact/fem/loads.hpp"
 #include "plyimpact/fem/mesh.hpp"
@@ -98,6 +99,9 @@ struct Deck {
   ModalSettings modal;
   std::optional<BucklingSettings> buckling;
   DamageSettings damage;
+  /// [delamination]: the laminate cut into sub-laminates tied by cohesive interfaces (impact only,
+  /// docs/delamination.md); the cuts are 0-based (after ply k), the penalty stiffness resolved
+  std::optional<DelaminationSettings> delamination;
   ThresholdSettings threshold;
   std::vector<StressProbeSpec> probes; ///< [[output.probe]]
   std::string output_dir = "results";

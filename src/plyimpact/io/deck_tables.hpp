@@ -66,6 +66,11 @@ void read_nonlinear_keys(const TableReader& top, Deck& d);
 /// [threshold]; `d` has its [damage] already (damage criteria need the progressive model).
 [[nodiscard]] ThresholdSettings read_threshold(const TableReader& t, const Deck& d);
 
+// deck_delamination.cpp
+/// [delamination]; `d` has its laminate and [damage] already (the cuts follow the layup; progressive ply
+/// damage and the stacked plate do not run together yet).
+[[nodiscard]] DelaminationSettings read_delamination(const TableReader& t, const Deck& d);
+
 // deck_output.cpp
 void read_output(const TableReader& t, Deck& d);
 

@@ -16,7 +16,7 @@ struct UnitRow {
 };
 
 // 1 N/mm^1.5 = 1 N / (1e-3 m)^1.5 = 1e3·√1e3 N/m^1.5 (not a power of ten: the only inexact factor).
-const std::array<UnitRow, 14> rows{{
+const std::array<UnitRow, 15> rows{{
     {"-", {1.0, 1.0, "-"}},
     {"m", {1.0, 1e3, "mm"}},
     {"m^2", {1.0, 1e6, "mm^2"}},
@@ -31,6 +31,7 @@ const std::array<UnitRow, 14> rows{{
     {"J", {1.0, 1e3, "mJ"}},
     {"N/m^1.5", {1e3 * std::sqrt(1e3), 1.0, "N/mm^1.5"}},
     {"N/m^2", {1e6, 1.0, "N/mm^2"}}, // a cone's contact constant
+    {"Pa/m", {1e9, 1.0, "N/mm^3"}},  // a cohesive penalty stiffness: 1 N/mm^3 = 1e9 Pa/m
 }};
 
 } // namespace

@@ -18,7 +18,7 @@ enum class UnitSystem { si, mm_n_mpa_tonne };
 [[nodiscard]] std::string unit_system_names();
 
 /// How a number written in `units` for a quantity whose SI unit is `si_unit` ("Pa", "m", "m^2", "kg",
-/// "kg/m^3", "m/s", "N/m^1.5", "s", "N", "N/m", "J" or "-") becomes SI.
+/// "kg/m^3", "m/s", "N/m^1.5", "N/m^2", "s", "N", "N/m", "J", "J/m^2", "Pa/m" or "-") becomes SI.
 struct UnitConversion {
   double multiply = 1.0; ///< SI value = written · multiply / divide (one of them is 1: no
   double divide = 1.0;   ///< inexact reciprocal such as 1e-3 enters the conversion)

@@ -31,6 +31,60 @@ std::string not_given(const ImpactResult& r) {
                             : "   not given (the impactor has not left the plate)";
 }
 
+/// The stacked plate's interfaces (docs/delamination.md): the law, the areas, the energy, the zone.
+nlohmann::json delamination_json(const DelaminationSettings& s, const DelaminationResult& d,
+                                 const std::optional<NewtonStatistics>& newton) {
+  const CohesiveParameters& law = s.stack.interface;
+  nlohmann::json j;
+  j["interfaces_after_ply"] = d.interface_after_ply;
+  j["delaminated_area_m2"] = d.delaminated_area;
+  j["process_zone_area_m2"] = d.process_zone_area;
+  j["projected_delaminated_area_m2"] = d.projected_area;
+  j["dissipated_energy_J"] = d.dissipated;
+  j["cohesive_zone_length_m"] = d.cohesive_zone_length;
+  j["interface_point_spacing_m"] = d.interface_point_spacing;
+  j["penalty_stiffness_Pa_per_m"] = law.penalty_stiffness;
+  j["normal_strength_Pa"] = law.normal_strength;
+  j["shear_strength_Pa"] = law.shear_strength;
+  j["G_Ic_J_per_m2"] = law.G_Ic;
+  j["G_IIc_J_per_m2"] = law.G_IIc;
+  j["bk_exponent"] = law.bk_exponent;
+  j["onset"] = law.onset == CohesiveOnset::turon_bk ? "turon-bk" : "camanho-quadratic";
+  j["points"] = s.stack.rule == CohesiveIntegration::nodal ? "nodal" : "gauss";
+  j["supports"] = s.supports_on_all ? "all" : "bottom";
+  j["integration"] = s.integration == DamageIntegration::lagged ? "lagged" : "implicit";
+  if (newton) {
+    j["iterations"] = newton->iterations;
+    j["max_iterations_per_step"] = newton->max_iterations_per_step;
+    j["factorizations"] = newton->factorizations;
+  }
+  return j;
+}
+
+std::string millimetres_squared(const std::vector<double>& areas) {
+  std::string list;
+  for (const double a : areas)
+    list += fmt::format("{}{:.1f}", list.empty() ? "" : ", ", a * 1e6);
+  return list;
+}
+
+std::string delamination_text(const DelaminationResult& d, double penalty_stiffness) {
+  std::string plies;
+  for (const int p : d.interface_after_ply)
+    plies += fmt::format("{}{}", plies.empty() ? "" : ", ", p);
+  std::string t;
+  t += fmt::format("  delamination            {:12d} interface(s), after plies {}; K = {:.3g} Pa/m\n",
+                   d.interface_after_ply.size(), plies, penalty_stiffness);
+  t += fmt::format("  delaminated area        {:12.2f} mm^2 projected; per interface {} mm^2 (softening {} "
+                   "mm^2)\n",
+                   d.projected_area * 1e6, millimetres_squared(d.delaminated_area),
+                   millimetres_squared(d.process_zone_area));
+  t += fmt::format("  delamination energy     {:12.4f} J dissipated by the interfaces\n", d.dissipated);
+  t += fmt::format("  cohesive zone           {:12.3f} mm, interface points {:.3f} mm apart\n",
+                   d.cohesive_zone_length * 1e3, d.interface_point_spacing * 1e3);
+  return t;
+}
+
 } // namespace
 
 nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, const ImpactResult& r) {
@@ -97,6 +151,8 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
     d["factorizations"] = r.newton->factorizations;
     j["damage"] = d;
   }
+  if (r.delamination && s.delamination) // the stacked plate's interfaces (docs/delamination.md)
+    j["delamination"] = delamination_json(*s.delamination, *r.delamination, r.newton);
   if (s.nonlinear && r.newton) { // large deflections (docs/nonlinear.md)
     j["nonlinear"] = true;
     j["strain_measure"] = to_string(s.nonlinear->measure);
@@ -155,6 +211,8 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                        r.newton->iterations, r.steps, r.newton->max_iterations_per_step,
                        r.newton->factorizations);
   }
+  if (r.delamination && s.delamination)
+    t += delamination_text(*r.delamination, s.delamination->stack.interface.penalty_stiffness);
   t += fmt::format("  energy balance error    {:12.3g} % of {:.4f} J{}\n", 100.0 * r.energy_balance_error, e0,
                    r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,
@@ -162,6 +220,21 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   if (!r.incomplete_reason.empty()) t += "  incomplete: " + r.incomplete_reason + "\n";
   if (r.suspect) t += "  suspect: " + r.suspect_reason + "\n";
   return t;
+}
+
+std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result) {
+  std::string csv = "element,x_m,y_m";
+  for (const int p : result.interface_after_ply)
+    csv += fmt::format(",d_after_ply_{}", p);
+  csv += "\n";
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const Eigen::Vector2d centre = mesh.map(e, 0.0, 0.0);
+    csv += fmt::format("{},{},{}", e + 1, centre.x(), centre.y());
+    for (const std::vector<double>& d : result.element_damage)
+      csv += fmt::format(",{}", d[static_cast<std::size_t>(e)]);
+    csv += "\n";
+  }
+  return csv;
 }
 
 void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& r,

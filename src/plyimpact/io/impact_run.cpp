@@ -150,6 +150,9 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
     folder->write_text(
         damage_elements_file,
         damage_elements_csv(model, PlyDamageTable(model, out.result.progressive->element_ply_damage)));
+  if (out.result.delamination)
+    folder->write_text("delamination_elements.csv",
+                       delamination_elements_csv(model.mesh(), *out.result.delamination));
   if (probes) folder->write_text("probes.csv", probes_csv(*probes));
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,

@@ -56,10 +56,12 @@ constexpr std::array<Column, 14> result_columns{{
 }};
 /// Columns added later, after `error`, so that every earlier column keeps its place (scripts that read
 /// the table by position). Empty where they do not apply: onset damage and threshold runs compute no
-/// dissipation or damaged area.
-constexpr std::array<Column, 2> later_columns{{
+/// dissipation or damaged area; runs without [delamination] no delaminated area.
+constexpr std::array<Column, 4> later_columns{{
     {"damage_dissipation_J", "damage_dissipation"},
     {"damage_area_m2", "damage_area"},
+    {"delamination_dissipation_J", "delamination_dissipation"},
+    {"delamination_area_m2", "delamination_area"},
 }};
 
 std::string csv_field(const std::string& s) {
@@ -356,6 +358,10 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
   if (r.progressive) { // ply damage (docs/progressive_damage.md); absent for onset runs
     results["damage_dissipation"] = r.progressive->dissipated.sum();
     results["damage_area"] = r.progressive->projected_damage_area;
+  }
+  if (r.delamination) { // the stacked plate's interfaces (docs/delamination.md)
+    results["delamination_area"] = r.delamination->projected_area;
+    results["delamination_dissipation"] = r.delamination->dissipated;
   }
   if (o.damage_tracked)
     put_first_failure(results, o.first_failures.empty()

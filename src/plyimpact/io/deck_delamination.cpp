@@ -1,0 +1,104 @@
+// [delamination] (docs/deck.md, docs/delamination.md): where the laminate may delaminate, the cohesive law
+// of its interfaces, and how the stacked plate is held and stepped.
+#include "plyimpact/fem/stacked_plate.hpp"
+#include "plyimpact/io/deck_tables.hpp"
+
+#include <fmt/format.h>
+
+namespace plyimpact::deck_tables {
+
+namespace {
+
+/// "orientation-changes" (the default) or a list of 1-based plies after which the laminate is cut,
+/// returned as split_laminate's 0-based cuts.
+std::vector<int> read_interfaces(const TableReader& t, const Laminate& laminate) {
+  const int plies = static_cast<int>(laminate.ply_count());
+  const toml::node* n = t.node("interfaces");
+  if (n == nullptr || (n->as_string() != nullptr && n->as_string()->get() == "orientation-changes")) {
+    std::vector<int> cuts = interfaces_between_orientations(laminate);
+    if (!cuts.empty()) return cuts;
+    const std::string why = "[delamination]: every ply of the layup has the same orientation, so there is no "
+                            "interface between plies of different orientation to cut: list the interfaces, "
+                            "e.g. interfaces = [2] for a cut after ply 2";
+    if (n != nullptr) t.fail_at("interfaces", why);
+    t.fail_here(why);
+  }
+  const toml::array* list = n->as_array();
+  if (list == nullptr || list->empty())
+    t.fail_at("interfaces", "delamination.interfaces must be \"orientation-changes\" or a list of the plies "
+                            "after which the laminate may delaminate, e.g. [2, 4] (1 = the impacted ply)");
+  std::vector<int> cuts;
+  for (const toml::node& item : *list) {
+    const auto* i = item.as_integer();
+    if (i == nullptr)
+      fail(t.file(), item.source(),
+           fmt::format("delamination.interfaces: expected ply numbers (integers), got {}", type_name(item)));
+    const long after = i->get();
+    if (after < 1 || after >= plies)
+      fail(t.file(), item.source(),
+           fmt::format("delamination.interfaces: {} is not an interface of the {}-ply laminate: an interface "
+                       "lies after ply 1 to {} (1 = the impacted ply)",
+                       after, plies, plies - 1));
+    if (!cuts.empty() && after - 1 <= cuts.back())
+      fail(t.file(), item.source(),
+           "delamination.interfaces must be listed once each, from the impacted face down (increasing)");
+    cuts.push_back(static_cast<int>(after - 1));
+  }
+  return cuts;
+}
+
+CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, const std::vector<int>& cuts) {
+  CohesiveParameters law;
+  law.G_Ic = t.positive("G_Ic", "J/m^2");
+  law.G_IIc = t.positive("G_IIc", "J/m^2");
+  law.bk_exponent = t.positive("bk_exponent", "-");
+  law.normal_strength = t.positive("normal_strength", "Pa");
+  law.shear_strength = t.positive("shear_strength", "Pa");
+  law.onset =
+      t.optional_choice<CohesiveOnset>("onset", {{"turon-bk", CohesiveOnset::turon_bk},
+                                                 {"camanho-quadratic", CohesiveOnset::camanho_quadratic}})
+          .value_or(CohesiveOnset::turon_bk);
+  law.penalty_stiffness =
+      t.positive_or_auto("penalty_stiffness", "Pa/m").value_or(turon_penalty_stiffness(laminate, cuts));
+  try {
+    (void)CohesiveLaw(law); // the law's own checks: K large enough for the triangle to peak before its end
+  } catch (const std::invalid_argument& e) {
+    t.fail_here(fmt::format("[delamination]: {}", e.what()));
+  }
+  return law;
+}
+
+} // namespace
+
+DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
+  t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
+          "penalty_stiffness", "onset", "integration", "points", "supports"});
+  if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
+  if (d.damage.progressive)
+    t.fail_here(
+        "[delamination] and [damage] model = \"progressive\" do not run together yet: the stacked plate "
+        "tracks the interfaces, the progressive model the plies; use one at a time "
+        "(docs/delamination.md, limits)");
+  if (d.nonlinear)
+    t.fail_here("[delamination] is not available with the geometrically non-linear plate (nonlinear = true) "
+                "yet: use one at a time (docs/delamination.md, limits)");
+  if (!d.regions.empty())
+    t.fail_here(
+        "[delamination] needs one laminate over the whole plate: [[region]] tables with other laminates "
+        "are not available with it yet");
+  DelaminationSettings s;
+  s.stack.cuts = read_interfaces(t, *d.laminate);
+  s.stack.interface = read_law(t, *d.laminate, s.stack.cuts);
+  s.stack.rule = t.optional_choice<CohesiveIntegration>("points", {{"nodal", CohesiveIntegration::nodal},
+                                                                   {"gauss", CohesiveIntegration::gauss}})
+                     .value_or(CohesiveIntegration::nodal);
+  s.supports_on_all =
+      t.optional_choice<bool>("supports", {{"all", true}, {"bottom", false}}).value_or(s.supports_on_all);
+  s.integration =
+      t.optional_choice<DamageIntegration>(
+           "integration", {{"lagged", DamageIntegration::lagged}, {"implicit", DamageIntegration::implicit}})
+          .value_or(s.integration);
+  return s;
+}
+
+} // namespace plyimpact::deck_tables
