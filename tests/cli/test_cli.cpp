@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -17,7 +16,6 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
 
 namespace {
@@ -118,32 +116,15 @@ TEST(Cli, SigintFinishesTheStepAndWritesConsistentPartialResults) {
   // 2 000 000 steps of 1 us on a 6 x 4 mesh: far longer than the test waits. The signal is sent once
   // history.csv holds 100 rows, so the time loop is running whatever the build (a fixed delay raced
   // with start-up under the sanitizers and with the end of the run in the release build).
-  const fs::path deck = write(dir, small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[time]
-dt = 1e-6
-end = 2.0
-)"));
+  const fs::path deck = write(dir, long_impact_deck());
   const fs::path out = dir / "out";
-  const pid_t pid = ::fork();
+  const pid_t pid = start_impact(deck, out, true);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    (void)std::freopen("/dev/null", "w", stdout);
-    (void)std::freopen("/dev/null", "w", stderr);
-    ::execl(PLYIMPACT_EXE, "plyimpact", "impact", deck.c_str(), "-o", out.c_str(),
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  std::size_t rows_seen = 0;
-  for (int i = 0; i < 60000 && rows_seen < 100; ++i) { // at most 60 s
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    const std::string text = read_text(out / "history.csv");
-    rows_seen = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-  }
+  const auto newlines = [](const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  };
+  const std::size_t rows_seen =
+      newlines(wait_for_text(out / "history.csv", [&](const std::string& t) { return newlines(t) >= 100; }));
   ::kill(pid, SIGINT);
   int status = 0;
   ::waitpid(pid, &status, 0);

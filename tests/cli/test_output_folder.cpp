@@ -8,7 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
@@ -16,7 +15,6 @@
 #include <string>
 #include <sys/file.h>
 #include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -184,32 +182,13 @@ TEST(OutputFolder, WithoutOutputOptionResultsGoToResultsDeckNameOrOutputDir) {
 
 TEST(OutputFolder, ARunKilledWithSigkillLeavesAValidPartialHistory) {
   const fs::path dir = scratch("sigkill");
-  // 2 000 000 steps of 1 us on a 6 x 4 mesh: far longer than the test waits
-  const fs::path deck = write(dir, small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[time]
-dt = 1e-6
-end = 2.0
-)"));
+  const fs::path deck = write(dir, long_impact_deck());
   const fs::path out = dir / "out";
-  const pid_t pid = ::fork();
+  const pid_t pid = start_impact(deck, out, false);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    (void)std::freopen("/dev/null", "w", stdout);
-    ::execl(PLYIMPACT_EXE, "plyimpact", "impact", deck.c_str(), "-o", out.c_str(),
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  std::size_t rows_at_kill = 0;
-  for (int i = 0; i < 60000 && rows_at_kill < 1000; ++i) { // at most 60 s
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    const std::string text = read_text(out / "history.csv");
-    rows_at_kill = lines_of(text).size();
-  }
+  const std::size_t rows_at_kill = lines_of(wait_for_text(out / "history.csv", [](const std::string& t) {
+                                     return lines_of(t).size() >= 1000;
+                                   })).size();
   ::kill(pid, SIGKILL);
   int status = 0;
   ::waitpid(pid, &status, 0);

@@ -6,12 +6,15 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
 
 namespace plyimpact::test {
 
@@ -83,6 +86,32 @@ inline fs::path write(const fs::path& dir, const std::string& text) {
   return p;
 }
 
+/// small_deck's plate struck for 2 000 000 steps of 1 µs: far longer than a test waits before it
+/// interrupts or kills the run.
+inline std::string long_impact_deck() {
+  return small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+[time]
+dt = 1e-6
+end = 2.0
+)");
+}
+
+/// Starts `plyimpact impact DECK -o OUT` in a child process, its stdout (and its stderr with
+/// `quiet_stderr`) sent to /dev/null; returns the child's pid (negative when fork failed).
+inline pid_t start_impact(const fs::path& deck, const fs::path& out, bool quiet_stderr) {
+  const pid_t pid = ::fork();
+  if (pid != 0) return pid;
+  (void)std::freopen("/dev/null", "w", stdout);
+  if (quiet_stderr) (void)std::freopen("/dev/null", "w", stderr);
+  ::execl(PLYIMPACT_EXE, "plyimpact", "impact", deck.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
+  ::_exit(127);
+}
+
 /// The whole file as text (bytes as they are).
 inline std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -94,6 +123,18 @@ inline std::string read_text(const fs::path& p) {
 inline nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
+}
+
+/// Reads `file` every millisecond, for at most 60 s, until `enough(text)`; returns the last text read.
+template <class Enough>
+std::string wait_for_text(const fs::path& file, Enough enough) {
+  std::string text;
+  for (int i = 0; i < 60000; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    text = read_text(file);
+    if (enough(text)) break;
+  }
+  return text;
 }
 
 /// `text` with the first line (after the first) that starts with `from` replaced by `to`; a failed
