@@ -1,10 +1,11 @@
 #include "plyimpact/io/gmsh_mesh.hpp"
 
+#include "plyimpact/io/gmsh_api.hpp"
+
 #include "plyimpact/fem/shape_functions.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
-#include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,11 +52,11 @@ std::string element_type_name(int type) {
 class GmshSession {
 public:
   GmshSession() : lock_(mutex()) {
-    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.Verbosity", 0);
+    gmsh_.initialize(/*read_config_files=*/false);
+    gmsh_.set_option("General.Terminal", 0);
+    gmsh_.set_option("General.Verbosity", 0);
   }
-  ~GmshSession() { gmsh::finalize(); }
+  ~GmshSession() { gmsh_.finalize(); }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 
@@ -65,6 +66,7 @@ private:
     return m;
   }
   std::lock_guard<std::mutex> lock_;
+  const GmshApi& gmsh_ = gmsh_api();
 };
 
 /// A .msh file starts with $MeshFormat: anything else (a .geo script, a text file) is not handed to
@@ -90,8 +92,7 @@ struct RawMesh {
 
 /// Only QUAD9 elements on surfaces; anything else on a surface is named in the error.
 void require_quad9_only(const std::filesystem::path& file) {
-  std::vector<int> types;
-  gmsh::model::mesh::getElementTypes(types, 2);
+  const std::vector<int> types = gmsh_api().element_types(2);
   std::vector<int> others;
   std::copy_if(types.begin(), types.end(), std::back_inserter(others), [](int t) { return t != gmsh_quad9; });
   if (others.empty() && !types.empty()) return;
@@ -105,13 +106,12 @@ void require_quad9_only(const std::filesystem::path& file) {
 /// The QUAD9 elements and the nodes they use, numbered from 0 in the order met.
 void read_elements(const std::filesystem::path& file, RawMesh& m,
                    std::unordered_map<std::size_t, int>& index) {
-  std::vector<std::size_t> tags, node_tags, all_nodes;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(all_nodes, coords, parametric, -1, -1, false, false);
+  const GmshApi& gmsh = gmsh_api();
+  const auto [all_nodes, coords] = gmsh.nodes();
   std::unordered_map<std::size_t, std::size_t> where; // gmsh node tag → position in coords
   for (std::size_t i = 0; i < all_nodes.size(); ++i)
     where[all_nodes[i]] = i;
-  gmsh::model::mesh::getElementsByType(gmsh_quad9, tags, node_tags);
+  const auto [tags, node_tags] = gmsh.elements_by_type(gmsh_quad9);
   double size = 0.0;
   for (const double c : coords)
     size = std::max(size, std::abs(c));
@@ -168,16 +168,15 @@ void require_valid_elements(const std::filesystem::path& file, const RawMesh& m)
 }
 
 std::string group_name(int dim, int tag) {
-  std::string name;
-  gmsh::model::getPhysicalName(dim, tag, name);
+  const std::string name = gmsh_api().physical_name(dim, tag);
   return name.empty() ? std::to_string(tag) : name;
 }
 
 /// Physical curves → edge sets (their 3-node lines), physical points → node sets.
 void read_groups(const std::filesystem::path& file, RawMesh& m,
                  const std::unordered_map<std::size_t, int>& index) {
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
+  const GmshApi& gmsh = gmsh_api();
+  const std::vector<std::pair<int, int>> groups = gmsh.physical_groups();
   if (groups.empty())
     throw MeshFileError(
         fmt::format("{}: error: the mesh has no physical groups: supports and loads refer to "
@@ -195,28 +194,22 @@ void read_groups(const std::filesystem::path& file, RawMesh& m,
   for (const auto& [dim, tag] : groups) {
     const std::string name = group_name(dim, tag);
     if (dim == 1) {
-      std::vector<int> curves;
-      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, curves);
+      const std::vector<int> curves = gmsh.entities_for_physical_group(dim, tag);
       std::vector<EdgeSegment>& edges = m.edge_sets[name];
       for (const int curve : curves) {
-        std::vector<int> types;
-        gmsh::model::mesh::getElementTypes(types, 1, curve);
+        const std::vector<int> types = gmsh.element_types(1, curve);
         if (std::any_of(types.begin(), types.end(), [](int t) { return t != gmsh_line3; }))
           throw MeshFileError(
               fmt::format("{}: error: physical curve \"{}\" is not meshed with 3-node lines: {}",
                           file.string(), name, how_to_quad9));
-        std::vector<std::size_t> tags, nodes;
-        gmsh::model::mesh::getElementsByType(gmsh_line3, tags, nodes, curve);
+        const auto [tags, nodes] = gmsh.elements_by_type(gmsh_line3, curve);
         for (std::size_t s = 0; s < tags.size(); ++s) // gmsh: end, end, middle; ours: end, middle, end
           edges.push_back({node_of(nodes[3 * s], name), node_of(nodes[3 * s + 2], name),
                            node_of(nodes[3 * s + 1], name)});
       }
     } else if (dim == 0 || dim == 2) {
-      std::vector<std::size_t> tags;
-      std::vector<double> coords;
-      gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, coords);
       std::vector<int>& nodes = m.node_sets[name];
-      for (const std::size_t t : tags)
+      for (const std::size_t t : gmsh.nodes_for_physical_group(dim, tag).tags)
         nodes.push_back(node_of(t, name));
     }
   }
@@ -224,37 +217,42 @@ void read_groups(const std::filesystem::path& file, RawMesh& m,
 
 /// Meshes the geometry gmsh has open, in QUAD9, with the size field of `how`.
 void generate_quad9(const GeometryMeshing& how) {
-  gmsh::option::setNumber("Mesh.RecombineAll", 1);
-  gmsh::option::setNumber("Mesh.ElementOrder", 2);
-  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0);
-  if (how.max_size) gmsh::option::setNumber("Mesh.MeshSizeMax", *how.max_size);
+  const GmshApi& gmsh = gmsh_api();
+  gmsh.set_option("Mesh.RecombineAll", 1);
+  gmsh.set_option("Mesh.ElementOrder", 2);
+  gmsh.set_option("Mesh.SecondOrderIncomplete", 0);
+  if (how.max_size) gmsh.set_option("Mesh.MeshSizeMax", *how.max_size);
   if (how.size_at_point) {
     Eigen::Vector2d at;
     if (how.refine_at) {
       at = *how.refine_at;
     } else {
-      double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
-      gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-      at = {(x0 + x1) / 2.0, (y0 + y1) / 2.0};
+      const std::vector<double> box = gmsh.bounding_box(); // x0, y0, z0, x1, y1, z1
+      at = {(box[0] + box[3]) / 2.0, (box[1] + box[4]) / 2.0};
     }
     // h(d) = min(max_size, size_at_point + (growth − 1) d), as gmsh's MathEval of the distance.
-    const int field = gmsh::model::mesh::field::add("MathEval");
+    const int field = gmsh.add_field("MathEval");
     std::string h = fmt::format("{:.17g} + {:.17g} * Sqrt((x - {:.17g})^2 + (y - {:.17g})^2)",
                                 *how.size_at_point, how.growth - 1.0, at.x(), at.y());
     if (how.max_size) h = fmt::format("Min({:.17g}, {})", *how.max_size, h);
-    gmsh::model::mesh::field::setString(field, "F", h);
-    gmsh::model::mesh::field::setAsBackgroundMesh(field);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh.set_field_string(field, "F", h);
+    gmsh.set_background_field(field);
+    gmsh.set_option("Mesh.MeshSizeFromPoints", 0);
+    gmsh.set_option("Mesh.MeshSizeFromCurvature", 0);
+    gmsh.set_option("Mesh.MeshSizeExtendFromBoundary", 0);
   }
-  gmsh::model::mesh::generate(2);
+  gmsh.generate(2);
 }
 
 /// Reads the mesh gmsh holds after `load` (opening a .msh, or meshing a .geo).
 template <class Load>
 RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
-  const GmshSession session;
+  std::optional<GmshSession> session;
+  try {
+    session.emplace();
+  } catch (const GmshError& e) { // the library could not be loaded or initialised
+    throw MeshFileError(fmt::format("{}: error: {}", file.string(), e.what()));
+  }
   try {
     load();
     require_quad9_only(file);
@@ -267,8 +265,7 @@ RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
   } catch (const MeshFileError&) {
     throw;
   } catch (...) { // gmsh's own errors (the type depends on its version): say what gmsh said last
-    std::string last;
-    gmsh::logger::getLastError(last);
+    const std::string last = gmsh_api().last_error();
     throw MeshFileError(fmt::format("{}: error: gmsh could not read or mesh it{}", file.string(),
                                     last.empty() ? "" : ": " + last));
   }
@@ -287,7 +284,7 @@ Mesh to_mesh(RawMesh raw) {
 
 Mesh read_gmsh_mesh(const std::filesystem::path& file) {
   require_msh_header(file);
-  return to_mesh(read_raw(file, [&] { gmsh::open(file.string()); }));
+  return to_mesh(read_raw(file, [&] { gmsh_api().open(file.string()); }));
 }
 
 double graded_size(const GeometryMeshing& how, double d) {
@@ -300,7 +297,7 @@ Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing&
   if (!std::filesystem::is_regular_file(geo, ec))
     throw MeshFileError(fmt::format("{}: error: cannot open the geometry file", geo.string()));
   return to_mesh(read_raw(geo, [&] {
-    gmsh::open(geo.string());
+    gmsh_api().open(geo.string());
     generate_quad9(how);
   }));
 }
@@ -308,7 +305,7 @@ Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing&
 Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build,
                      const GeometryMeshing& how) {
   return to_mesh(read_raw(name, [&] {
-    gmsh::model::add(name);
+    gmsh_api().add_model(name);
     build();
     generate_quad9(how);
   }));

@@ -1,7 +1,8 @@
 #include "plyimpact/io/test_rigs.hpp"
 
+#include "plyimpact/io/gmsh_api.hpp"
+
 #include <fmt/format.h>
-#include <gmsh.h>
 
 #include <algorithm>
 #include <vector>
@@ -10,66 +11,66 @@ namespace plyimpact {
 
 namespace {
 
-namespace geo = gmsh::model::geo;
-
 // ASTM D7136 coupon (the same geometry as examples/meshes/astm-d7136-coupon.geo) [m].
 constexpr double coupon_a = 0.150, coupon_b = 0.100, window_a = 0.125, window_b = 0.075;
 constexpr double clamp_dx = 0.050, clamp_dy = 0.04375; // clamp tips from the centre (R. Kok's model)
 
-void name_group(int dim, const std::vector<int>& tags, const std::string& name) {
-  gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, tags), name);
+void name_group(const GmshApi& gmsh, int dim, const std::vector<int>& tags, const std::string& name) {
+  gmsh.set_physical_name(dim, gmsh.add_physical_group(dim, tags), name);
 }
 
 /// A closed polygon of lines through the points; returns the lines.
-std::vector<int> polygon(const std::vector<int>& points) {
+std::vector<int> polygon(const GmshApi& gmsh, const std::vector<int>& points) {
   std::vector<int> lines;
   for (std::size_t i = 0; i < points.size(); ++i)
-    lines.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
+    lines.push_back(gmsh.add_line(points[i], points[(i + 1) % points.size()]));
   return lines;
 }
 
 /// The coupon with the window's edge and the clamp tips as lines and points of its mesh.
 void add_astm_coupon() {
+  const GmshApi& gmsh = gmsh_api();
   const double x0 = (coupon_a - window_a) / 2, y0 = (coupon_b - window_b) / 2;
   const double cx = coupon_a / 2, cy = coupon_b / 2;
   const std::vector<int> edges =
-      polygon({geo::addPoint(0, 0, 0), geo::addPoint(coupon_a, 0, 0), geo::addPoint(coupon_a, coupon_b, 0),
-               geo::addPoint(0, coupon_b, 0)});
-  const int plate = geo::addPlaneSurface({geo::addCurveLoop(edges)});
+      polygon(gmsh, {gmsh.add_point(0, 0, 0), gmsh.add_point(coupon_a, 0, 0),
+                     gmsh.add_point(coupon_a, coupon_b, 0), gmsh.add_point(0, coupon_b, 0)});
+  const int plate = gmsh.add_plane_surface({gmsh.add_curve_loop(edges)});
   const std::vector<int> window =
-      polygon({geo::addPoint(x0, y0, 0), geo::addPoint(x0 + window_a, y0, 0),
-               geo::addPoint(x0 + window_a, y0 + window_b, 0), geo::addPoint(x0, y0 + window_b, 0)});
+      polygon(gmsh, {gmsh.add_point(x0, y0, 0), gmsh.add_point(x0 + window_a, y0, 0),
+                     gmsh.add_point(x0 + window_a, y0 + window_b, 0), gmsh.add_point(x0, y0 + window_b, 0)});
   const std::vector<int> clamps{
-      geo::addPoint(cx - clamp_dx, cy - clamp_dy, 0), geo::addPoint(cx + clamp_dx, cy - clamp_dy, 0),
-      geo::addPoint(cx + clamp_dx, cy + clamp_dy, 0), geo::addPoint(cx - clamp_dx, cy + clamp_dy, 0)};
-  const int centre = geo::addPoint(cx, cy, 0);
-  geo::synchronize();
-  gmsh::model::mesh::embed(1, window, 2, plate);
+      gmsh.add_point(cx - clamp_dx, cy - clamp_dy, 0), gmsh.add_point(cx + clamp_dx, cy - clamp_dy, 0),
+      gmsh.add_point(cx + clamp_dx, cy + clamp_dy, 0), gmsh.add_point(cx - clamp_dx, cy + clamp_dy, 0)};
+  const int centre = gmsh.add_point(cx, cy, 0);
+  gmsh.synchronize();
+  gmsh.embed(1, window, 2, plate);
   std::vector<int> points = clamps;
   points.push_back(centre);
-  gmsh::model::mesh::embed(0, points, 2, plate);
-  name_group(1, edges, "edges");
-  name_group(1, window, "window");
-  name_group(0, clamps, "clamps");
-  name_group(0, {centre}, "centre");
-  name_group(2, {plate}, "plate");
+  gmsh.embed(0, points, 2, plate);
+  name_group(gmsh, 1, edges, "edges");
+  name_group(gmsh, 1, window, "window");
+  name_group(gmsh, 0, clamps, "clamps");
+  name_group(gmsh, 0, {centre}, "centre");
+  name_group(gmsh, 2, {plate}, "plate");
 }
 
 /// The disk of diameter `d` centred at the origin, with its centre a node.
 void add_disk(double d) {
+  const GmshApi& gmsh = gmsh_api();
   const double r = d / 2;
-  const int c = geo::addPoint(0, 0, 0);
-  const std::vector<int> rim_points{geo::addPoint(r, 0, 0), geo::addPoint(0, r, 0), geo::addPoint(-r, 0, 0),
-                                    geo::addPoint(0, -r, 0)};
+  const int c = gmsh.add_point(0, 0, 0);
+  const std::vector<int> rim_points{gmsh.add_point(r, 0, 0), gmsh.add_point(0, r, 0),
+                                    gmsh.add_point(-r, 0, 0), gmsh.add_point(0, -r, 0)};
   std::vector<int> rim;
   for (std::size_t i = 0; i < rim_points.size(); ++i)
-    rim.push_back(geo::addCircleArc(rim_points[i], c, rim_points[(i + 1) % rim_points.size()]));
-  const int plate = geo::addPlaneSurface({geo::addCurveLoop(rim)});
-  geo::synchronize();
-  gmsh::model::mesh::embed(0, {c}, 2, plate);
-  name_group(1, rim, "rim");
-  name_group(0, {c}, "centre");
-  name_group(2, {plate}, "plate");
+    rim.push_back(gmsh.add_circle_arc(rim_points[i], c, rim_points[(i + 1) % rim_points.size()]));
+  const int plate = gmsh.add_plane_surface({gmsh.add_curve_loop(rim)});
+  gmsh.synchronize();
+  gmsh.embed(0, {c}, 2, plate);
+  name_group(gmsh, 1, rim, "rim");
+  name_group(gmsh, 0, {c}, "centre");
+  name_group(gmsh, 2, {plate}, "plate");
 }
 
 } // namespace
