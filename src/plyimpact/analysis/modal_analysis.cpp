@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace plyimpact {
@@ -20,11 +21,24 @@ public:
   ShiftInvertOp(const SparseMatrix& K, const SparseMatrix& M) : K_(K), M_(M) {}
   [[nodiscard]] Eigen::Index rows() const { return K_.rows(); }
   [[nodiscard]] Eigen::Index cols() const { return K_.cols(); }
+  /// Factors K − σM, unless it is factored at this σ already (Spectra sets the shift it was given).
   void set_shift(double sigma) {
+    if (shift_ == sigma) return;
+    shift_.reset();
     const SparseMatrix A = K_ - sigma * M_;
     ldlt_.compute(A);
     if (ldlt_.info() != Eigen::Success)
       throw std::runtime_error("modal analysis: K - sigma M could not be factored");
+    shift_ = sigma;
+  }
+  /// Whether K is positive definite (pivots above 1e-12 of the largest), from its factor at σ = 0.
+  [[nodiscard]] bool stiffness_definite() {
+    try {
+      set_shift(0.0);
+    } catch (const std::runtime_error&) {
+      return false;
+    }
+    return ldlt_.vectorD().minCoeff() > 1e-12 * ldlt_.vectorD().maxCoeff();
   }
   void perform_op(const double* x_in, double* y_out) const {
     Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
@@ -36,6 +50,7 @@ private:
   const SparseMatrix& K_;
   const SparseMatrix& M_;
   Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
+  std::optional<double> shift_; ///< the σ of ldlt_, if it holds a factor
 };
 
 } // namespace
@@ -63,20 +78,16 @@ ModalResult solve_modal(const SparseMatrix& K, const SparseMatrix& M, int count)
   // Shift: σ = 0 (plain inverse iteration on K) when K is positive definite. A free or partly free
   // plate has a singular K; then a small negative shift keeps K − σM positive definite so rigid-body
   // and spurious modes are found and reported, not hidden.
-  double sigma = 0.0;
-  {
-    const Eigen::SimplicialLDLT<SparseMatrix> ldlt(K);
-    const bool definite =
-        ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 1e-12 * ldlt.vectorD().maxCoeff();
-    if (!definite) {
-      double ratio = 0.0;
-      int terms = 0;
-      for (int i = 0; i < n; ++i)
-        if (M.coeff(i, i) > 0.0) ratio += K.coeff(i, i) / M.coeff(i, i), ++terms;
-      sigma = -1e-6 * ratio / std::max(terms, 1);
-    }
-  }
+  // The test factors K as the operator's factor at σ = 0, which Spectra then reuses (one factorization).
   ShiftInvertOp op(K, M);
+  double sigma = 0.0;
+  if (!op.stiffness_definite()) {
+    double ratio = 0.0;
+    int terms = 0;
+    for (int i = 0; i < n; ++i)
+      if (M.coeff(i, i) > 0.0) ratio += K.coeff(i, i) / M.coeff(i, i), ++terms;
+    sigma = -1e-6 * ratio / std::max(terms, 1);
+  }
   Spectra::SparseSymMatProd<double> Bop(M);
   const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
   Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>,
