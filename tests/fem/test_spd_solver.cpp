@@ -31,6 +31,26 @@ TEST_P(SpdSolverBackends, SolvesTheEffectiveStiffnessToRoundOff) {
   EXPECT_LT((X.col(1) - reference).norm(), 1e-11 * reference.norm());
 }
 
+TEST_P(SpdSolverBackends, WorkspaceSolveGivesTheNumbersOfThePlainSolve) {
+  // The time loop's solve into a kept vector with kept buffers: bit for bit the plain solve's x, on
+  // repeated calls and after the solver factors another matrix of another size with the same buffers.
+  SpdSolver solver(GetParam());
+  SpdSolver::Workspace workspace;
+  Eigen::VectorXd x;
+  for (const char* edges : {"ss", "clamped"}) {
+    const PlateModel model = small_plate(edges);
+    const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
+    solver.factorize(Kbar);
+    for (int call = 0; call < 3; ++call) {
+      const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(Kbar.rows(), -1.0 + call, 2.0);
+      solver.solve(b, x, workspace);
+      const Eigen::VectorXd plain = solver.solve(b);
+      ASSERT_EQ(x.size(), plain.size());
+      EXPECT_EQ(x, plain) << edges << ", call " << call;
+    }
+  }
+}
+
 TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
   // A plate with free edges has six rigid-body motions: K is singular.
   const PlateModel model = small_plate("00000");

@@ -128,6 +128,12 @@ Eigen::VectorXd ContactLoading::load(double alpha) const {
   return (1.0 - b.weight) * entry(b.j).load + b.weight * entry(b.j + 1).load;
 }
 
+double ContactLoading::load_dot(double alpha, const Eigen::VectorXd& u) const {
+  const Bracket b = bracket(alpha);
+  if (b.weight == 0.0) return entry(b.j).load.dot(u);
+  return ((1.0 - b.weight) * entry(b.j).load + b.weight * entry(b.j + 1).load).dot(u);
+}
+
 Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a,
                                        NoseShape nose) {
   const Mesh& mesh = model.mesh();

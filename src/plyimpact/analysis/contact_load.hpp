@@ -51,6 +51,8 @@ public:
   void add_response(double alpha, double force, Eigen::VectorXd& u) const;
   /// s_load(α), the load of a unit contact force.
   [[nodiscard]] Eigen::VectorXd load(double alpha) const;
+  /// s_load(α)ᵀ u, the numbers of load(alpha).dot(u) without forming the vector.
+  [[nodiscard]] double load_dot(double alpha, const Eigen::VectorXd& u) const;
 
 private:
   struct Entry {

@@ -65,8 +65,11 @@ private:
 
   const LinearStepPolicy& p_;
   ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and the compliance c = swᵀ K̄⁻¹ s_load
-  Eigen::VectorXd rhs_, u_hat_;
-  double alpha_ = 0.0; ///< indentation of the last step (its load vector)
+  // The step's vectors, sized once: no allocation in the time loop.
+  Eigen::VectorXd predictor_, rhs_, u_hat_;
+  mutable Eigen::VectorXd scratch_; ///< M v and M a of the energies
+  SpdSolver::Workspace workspace_;  ///< CHOLMOD's arrays, reused by every solve
+  double alpha_ = 0.0;              ///< indentation of the last step (its load vector)
 };
 
 class LinearStepPolicy final : public StepPolicy {
@@ -113,7 +116,8 @@ public:
 
 LinearStepper::LinearStepper(const LinearStepPolicy& policy, const Impactor& impactor)
     : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
-      rhs_(policy.equations()), u_hat_(policy.equations()) {
+      predictor_(policy.equations()), rhs_(policy.equations()), u_hat_(policy.equations()),
+      scratch_(policy.equations()) {
   loading_.set_solver([&factor = p_.factor_](const Eigen::VectorXd& b) { return factor.solve(b); });
 }
 
@@ -121,8 +125,9 @@ ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateS
                                        const ContactStep& contact, Eigen::VectorXd& u_next) {
   const NewmarkCoefficients& nc = p_.options_.newmark;
   // 1. Load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a): one back-substitution.
-  rhs_ = p_.M_.times(nc.c0 * s.u + nc.c2 * s.v + nc.c3 * s.a);
-  u_hat_ = p_.factor_.solve(rhs_);
+  predictor_ = nc.c0 * s.u + nc.c2 * s.v + nc.c3 * s.a;
+  p_.M_.apply(predictor_, rhs_);
+  p_.factor_.solve(rhs_, u_hat_, workspace_);
   // 2. Scalar contact problem with ws affine in Fc.
   const ContactSolution cs = loading_.solve(contact, sw().dot(u_hat_));
   alpha_ = cs.alpha;
@@ -133,11 +138,12 @@ ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateS
 }
 
 double LinearStepper::kinetic_energy(const PlateState& s) const {
-  return p_.M_.kinetic_energy(s.v);
+  return p_.M_.kinetic_energy(s.v, scratch_);
 }
 
 double LinearStepper::strain_energy(const PlateState& s, double force) const {
-  return 0.5 * (force * loading_.load(alpha_).dot(s.u) - s.u.dot(p_.M_.times(s.a))); // K u = F s − M a
+  p_.M_.apply(s.a, scratch_);
+  return 0.5 * (force * loading_.load_dot(alpha_, s.u) - s.u.dot(scratch_)); // K u = F s − M a
 }
 
 void LinearStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {

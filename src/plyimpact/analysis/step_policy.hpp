@@ -166,8 +166,20 @@ public:
     if (diagonal_.size() > 0) return diagonal_.cwiseProduct(x);
     return M_ * x;
   }
+  /// out = M x into `out` (sized once): the numbers of times(x) without a new vector.
+  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+    if (diagonal_.size() > 0)
+      out = diagonal_.cwiseProduct(x);
+    else
+      out.noalias() = M_ * x;
+  }
   /// ½ vᵀMv.
   [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v) const { return 0.5 * v.dot(times(v)); }
+  /// ½ vᵀMv with `scratch` for M v.
+  [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v, Eigen::VectorXd& scratch) const {
+    apply(v, scratch);
+    return 0.5 * v.dot(scratch);
+  }
   [[nodiscard]] const SparseMatrix& matrix() const { return M_; }
 
 private:

@@ -25,6 +25,25 @@ public:
       d(static_cast<Eigen::Index>(j)) = x[p[j]];
     return d;
   }
+  /// x = A⁻¹ b by cholmod_solve2, which reuses X, Y and E when they have the right size (what
+  /// cholmod_solve, and so Eigen's solve(), allocates and frees on every call).
+  void solve_into(const Eigen::VectorXd& b, Eigen::VectorXd& x, cholmod_dense*& X, cholmod_dense*& Y,
+                  cholmod_dense*& E) {
+    cholmod_dense B{};
+    B.nrow = B.d = static_cast<std::size_t>(b.size());
+    B.ncol = 1;
+    B.nzmax = B.nrow;
+    B.x = const_cast<double*>(b.data()); // read only: CHOLMOD's B is const in meaning, not in type
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    if (cholmod_solve2(CHOLMOD_A, m_cholmodFactor, &B, nullptr, &X, nullptr, &Y, &E, &cholmod()) == 0 ||
+        X == nullptr)
+      throw std::runtime_error("CHOLMOD could not solve with its factor (out of memory?)");
+    x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(X->x), b.size());
+  }
+  void free_dense(cholmod_dense*& D) {
+    if (D != nullptr) cholmod_free_dense(&D, &cholmod());
+  }
   [[nodiscard]] long factor_nonzeros() const { // strictly lower, as SimplicialLDLT reports it
     const auto* nz = static_cast<const int*>(m_cholmodFactor->nz);
     long total = 0;
@@ -88,6 +107,41 @@ Eigen::MatrixXd SpdSolver::solve(const Eigen::MatrixXd& B) const {
   if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.solve(B);
   if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.solve(B);
   return impl_->ldlt.solve(B);
+}
+
+/// CHOLMOD's arrays for cholmod_solve2, freed by the solver's CHOLMOD that allocated them.
+struct SpdSolver::Workspace::Buffers {
+  CholmodLdlt* owner = nullptr;
+  cholmod_dense* X = nullptr; ///< the solution
+  cholmod_dense* Y = nullptr; ///< work arrays
+  cholmod_dense* E = nullptr;
+  Buffers() = default;
+  Buffers(const Buffers&) = delete;
+  Buffers& operator=(const Buffers&) = delete;
+  ~Buffers() { release(); }
+  void release() {
+    if (owner == nullptr) return;
+    owner->free_dense(X);
+    owner->free_dense(Y);
+    owner->free_dense(E);
+    owner = nullptr;
+  }
+};
+
+SpdSolver::Workspace::Workspace() : buffers_(std::make_unique<Buffers>()) {}
+SpdSolver::Workspace::~Workspace() = default;
+SpdSolver::Workspace::Workspace(Workspace&&) noexcept = default;
+SpdSolver::Workspace& SpdSolver::Workspace::operator=(Workspace&&) noexcept = default;
+
+void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const {
+  if (kind_ != SparseSolverKind::cholmod_simplicial) {
+    x = solve(b);
+    return;
+  }
+  Workspace::Buffers& buf = *w.buffers_;
+  if (buf.owner != &impl_->cholmod_ldlt) buf.release(); // filled by another solver
+  buf.owner = &impl_->cholmod_ldlt;
+  buf.owner->solve_into(b, x, buf.X, buf.Y, buf.E);
 }
 
 long SpdSolver::factor_nonzeros() const {

@@ -32,8 +32,29 @@ public:
 
   /// Analyses the pattern (fill-reducing ordering) and factors A. Throws NotPositiveDefinite.
   void factorize(const Eigen::SparseMatrix<double>& A);
+  /// Buffers that solve(b, x, workspace) keeps from one call to the next, so that a time loop solves
+  /// without allocating (CHOLMOD's solution and work arrays). Belongs to one thread and must not
+  /// outlive the solver that filled it.
+  class Workspace {
+  public:
+    Workspace();
+    ~Workspace();
+    Workspace(const Workspace&) = delete;
+    Workspace& operator=(const Workspace&) = delete;
+    Workspace(Workspace&&) noexcept;
+    Workspace& operator=(Workspace&&) noexcept;
+
+  private:
+    friend class SpdSolver;
+    struct Buffers;
+    std::unique_ptr<Buffers> buffers_;
+  };
+
   /// x = A⁻¹ b with the current factor.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// x = A⁻¹ b into x (sized once), with the buffers of `w`: the same numbers as solve(b), no
+  /// allocation after the first call.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const;
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   [[nodiscard]] SparseSolverKind kind() const { return kind_; }
   /// Non-zeros of the factor (memory estimate), after factorize().
