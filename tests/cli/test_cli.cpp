@@ -24,15 +24,7 @@ using namespace plyimpact::test;
 
 TEST(Cli, ImpactWritesHistoryAndSummaryWithTheSpecKeys) {
   const fs::path dir = scratch("impact");
-  const fs::path deck = write(dir, small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[time]
-dt = 1e-6
-)"));
+  const fs::path deck = write(dir, small_deck("impact", steel_ball_impactor("dt = 1e-6\n")));
   const CommandResult r = run("impact " + deck.string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("peak force"), std::string::npos);

@@ -119,15 +119,7 @@ TEST(HonestSummary, CoarseTimeStepOnTheSection36DeckIsSuspect) {
 TEST(HonestSummary, EndShorterThanOneTimeStepIsRefused) {
   // Refused, not clamped: Δt is fixed by the factorization of K + c0 M; nothing is run or written.
   const fs::path dir = scratch("end-before-dt");
-  const ImpactRun r = impact(dir, small_deck("impact", R"([impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[time]
-dt = 1e-6
-end = 0.5e-6
-)"));
+  const ImpactRun r = impact(dir, small_deck("impact", steel_ball_impactor("dt = 1e-6\nend = 0.5e-6\n")));
   EXPECT_EQ(r.result.status, 1) << r.result.out;
   EXPECT_NE(r.result.out.find("plyimpact: error: impact: time.end = 5e-07 s is shorter than one time step, "
                               "time.dt = 1e-06 s: the first step would end past time.end"),

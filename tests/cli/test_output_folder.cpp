@@ -22,15 +22,7 @@ namespace {
 
 using namespace plyimpact::test;
 
-const std::string impactor = R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[time]
-dt = 2e-6
-)";
+const std::string impactor = steel_ball_impactor("dt = 2e-6\n");
 
 /// A short 20 m/s impact on the small plate with Choi-Chang damage (T300/976 strengths, Table 4.2).
 std::string damage_deck() {

@@ -14,15 +14,7 @@ namespace plyimpact {
 namespace {
 
 TEST(HistoryCsv, StreamedFileEqualsTheInMemoryHistoryText) {
-  const std::string deck_text = test::small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[time]
-dt = 2e-6
-)");
+  const std::string deck_text = test::small_deck("impact", test::steel_ball_impactor("dt = 2e-6\n"));
   const Deck deck = parse_deck(deck_text, "deck.toml");
   const ImpactCase impact(impact_case_description(deck));
   const test::fs::path dir = test::scratch("history-csv");

@@ -86,19 +86,23 @@ inline fs::path write(const fs::path& dir, const std::string& text) {
   return p;
 }
 
-/// small_deck's plate struck for 2 000 000 steps of 1 µs: far longer than a test waits before it
-/// interrupts or kills the run.
-inline std::string long_impact_deck() {
-  return small_deck("impact", R"(
+/// The tests' usual impactor, the 314 g steel ball of R = 12.7 mm at 2.92 m/s (thesis §4.2), and a
+/// [time] table with `time_keys` (one "key = value" per line).
+inline std::string steel_ball_impactor(const std::string& time_keys) {
+  return R"(
 [impactor]
 mass = 0.314
 radius = 12.7e-3
 E = 207e9
 velocity = 2.92
 [time]
-dt = 1e-6
-end = 2.0
-)");
+)" + time_keys;
+}
+
+/// small_deck's plate struck for 2 000 000 steps of 1 µs: far longer than a test waits before it
+/// interrupts or kills the run.
+inline std::string long_impact_deck() {
+  return small_deck("impact", steel_ball_impactor("dt = 1e-6\nend = 2.0\n"));
 }
 
 /// Starts `plyimpact impact DECK -o OUT` in a child process, its stdout (and its stderr with
