@@ -52,8 +52,9 @@ public:
 
   /// x = A⁻¹ b with the current factor.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  /// x = A⁻¹ b into x (sized once), with the buffers of `w`: the same numbers as solve(b), no
-  /// allocation after the first call.
+  /// x = A⁻¹ b into x (sized once), with the buffers of `w`: the same numbers as solve(b). With
+  /// cholmod_simplicial (the time loop's default) nothing is allocated after the first call but
+  /// CHOLMOD 3.0's own work array (bench/README.md); the other backends solve as solve(b) does.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const;
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   [[nodiscard]] SparseSolverKind kind() const { return kind_; }
