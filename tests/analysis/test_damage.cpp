@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <random>
 #include <set>
 #include <tuple>
 
@@ -19,7 +20,8 @@ namespace {
 /// Thesis Table 4.2 plate (T300/976, [0_2/90_4/0_2], simply supported), a coarse mesh for speed,
 /// steel sphere R = 6.35 mm.
 Deck table42_deck(double velocity,
-                  const std::string& criteria = R"("choi-chang-matrix", "choi-chang-delamination")") {
+                  const std::string& criteria = R"("choi-chang-matrix", "choi-chang-delamination")",
+                  double end = 80e-6, double Da = 1.8) {
   return parse_deck(R"(
 [materials.T300_976]
 E1 = 144.8e9
@@ -34,7 +36,8 @@ Yt = 55.2e6
 Yc = 294.0e6
 S12 = 101.1e6
 S23 = 32.94e6
-Da = 1.8
+Da = )" + std::to_string(Da) +
+                        R"(
 [laminate]
 material = "T300_976"
 layup = "[0_2/90_4/0_2]"
@@ -60,7 +63,8 @@ velocity = )" + std::to_string(velocity) +
 alpha_cr = 8.03e-5
 [time]
 dt = 0.27e-6
-end = 80e-6
+end = )" + std::to_string(end) +
+                        R"(
 [damage]
 criteria = [)" + criteria +
                         "]\n",
@@ -70,6 +74,7 @@ criteria = [)" + criteria +
 struct DamageRun {
   std::vector<DamageOnset> onsets;
   std::vector<DamageAreaSample> areas;
+  double matrix_peak = 0.0, delamination_peak = 0.0; ///< largest indices over the run
 };
 
 DamageRun run_with_damage(const Deck& deck) {
@@ -78,7 +83,8 @@ DamageRun run_with_damage(const Deck& deck) {
   RunRequest run;
   run.observers = {&tracker};
   (void)impact.run(run);
-  return {tracker.onsets(), tracker.area_history()};
+  return {tracker.onsets(), tracker.area_history(), tracker.peak_index(Criterion::choi_chang_matrix),
+          tracker.peak_index(Criterion::choi_chang_delamination)};
 }
 
 TEST(Damage, FailedPointsStayFailedAndFailedAreaNeverShrinks) {
@@ -117,26 +123,119 @@ TEST(Damage, DelaminationOnlyWhereAnAdjacentPlyHasCracked) {
   }
 }
 
-TEST(Damage, FastChoiChangPathEqualsTheGeneralPath) {
-  // Choi–Chang-only runs use exact index bounds to skip points; adding a face criterion forces the
-  // general path. The Choi–Chang onsets must be the same, point for point.
-  const DamageRun fast = run_with_damage(table42_deck(20.0));
-  const DamageRun general =
-      run_with_damage(table42_deck(20.0, R"("choi-chang-matrix", "choi-chang-delamination", "max-stress")"));
+/// Choi–Chang-only runs skip points while exact bounds (and their growth along the element's path
+/// since the point was last evaluated) prove that nothing can change; adding a face criterion forces
+/// the general path, which evaluates every point every step. The Choi–Chang onsets and peak indices
+/// must be the same, point for point and bit for bit.
+void expect_fast_path_equals_general_path(double velocity, const std::string& criteria, double end) {
+  const DamageRun fast = run_with_damage(table42_deck(velocity, criteria, end));
+  const DamageRun general = run_with_damage(table42_deck(velocity, criteria + R"(, "max-stress")", end));
   std::vector<DamageOnset> g;
   for (const auto& o : general.onsets)
     if (o.criterion != Criterion::max_stress) g.push_back(o);
   ASSERT_FALSE(g.empty());
   ASSERT_EQ(fast.onsets.size(), g.size());
   for (std::size_t i = 0; i < g.size(); ++i) {
+    EXPECT_EQ(fast.onsets[i].criterion, g[i].criterion);
     EXPECT_EQ(fast.onsets[i].element, g[i].element);
+    EXPECT_EQ(fast.onsets[i].ipgs, g[i].ipgs);
+    EXPECT_EQ(fast.onsets[i].jpgs, g[i].jpgs);
     EXPECT_EQ(fast.onsets[i].ply, g[i].ply);
     EXPECT_EQ(fast.onsets[i].interface, g[i].interface);
     EXPECT_EQ(fast.onsets[i].time, g[i].time);
     EXPECT_NEAR(fast.onsets[i].sigma22, g[i].sigma22, 1e-6 * 1e6);
     EXPECT_NEAR(fast.onsets[i].tau23, g[i].tau23, 1e-6 * 1e6);
   }
+  EXPECT_EQ(fast.matrix_peak, general.matrix_peak);
+  EXPECT_EQ(fast.delamination_peak, general.delamination_peak);
 }
+
+TEST(Damage, FastChoiChangPathEqualsTheGeneralPath) {
+  expect_fast_path_equals_general_path(20.0, R"("choi-chang-matrix", "choi-chang-delamination")", 80e-6);
+}
+
+TEST(Damage, FastPathEqualsTheGeneralPathOverAWholeEventWithVibration) {
+  // 400 µs: the impactor leaves and the plate rings, so points are proven, re-evaluated and
+  // proven again many times.
+  expect_fast_path_equals_general_path(20.0, R"("choi-chang-matrix", "choi-chang-delamination")", 400e-6);
+}
+
+TEST(Damage, FastPathWithDelaminationAloneStillFollowsTheMatrixCracksThatGateIt) {
+  // Without the matrix criterion the cracks that open (2.43) are still tracked exactly.
+  expect_fast_path_equals_general_path(20.0, R"("choi-chang-delamination")", 200e-6);
+}
+
+/// Random bending fields (w, θx, θy on the free DOFs, in-plane DOFs zero), seeded.
+Eigen::VectorXd random_bending_field(const PlateModel& model, std::mt19937& rng) {
+  std::normal_distribution<double> n01;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(model.dofs().free_count());
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    for (int d = 2; d < 5; ++d)
+      if (const int eq = model.dofs().equation(n, d); eq >= 0) u(eq) = n01(rng) * (d == 2 ? 1e-4 : 1e-2);
+  return u;
+}
+
+class SkippingOnRandomStates : public testing::TestWithParam<double> {};
+
+TEST_P(SkippingOnRandomStates, NeverHidesAFailureOrAPeak) {
+  // The skipping rests on two inequalities (the index bound, and its growth along the element's path
+  // since the last evaluation); a state sequence that drifts slowly and sometimes jumps, changes
+  // shape and sign, and crosses failure at some points and not others, tests both harder than an
+  // impact does. The reference is the general path (a face criterion added), which skips nothing.
+  // Da < 1: the delamination bound no longer covers the matrix cracks that gate it, so the cracks'
+  // own bound must keep points evaluated (with Da ≥ 1 it never binds).
+  const ImpactCase impact(impact_case_description(
+      table42_deck(20.0, R"("choi-chang-matrix", "choi-chang-delamination")", 80e-6, GetParam())));
+  const PlateModel& model = impact.model();
+  std::mt19937 rng(20261126);
+  const Eigen::VectorXd shape1 = random_bending_field(model, rng), shape2 = random_bending_field(model, rng);
+  const auto peak_of = [&](const Eigen::VectorXd& u) {
+    DamageTracker probe(model, {Criterion::choi_chang_matrix});
+    probe.observe(0, 0.0, 0.0, u);
+    return probe.peak_index(Criterion::choi_chang_matrix);
+  };
+  const Eigen::VectorXd phi1 = shape1 / peak_of(shape1),
+                        phi2 = shape2 / peak_of(shape2); // index 1 at amplitude 1
+  std::vector<Eigen::VectorXd> states;
+  std::normal_distribution<double> n01;
+  double s = 0.1, r = 0.0;
+  for (int k = 0; k < 600; ++k) {
+    s = std::clamp(s + 0.03 * n01(rng) + (k % 97 == 96 ? 0.6 * n01(rng) : 0.0), -1.6, 1.6);
+    r = std::clamp(r + 0.03 * n01(rng), -1.2, 1.2);
+    const double spike = k % 31 == 30 ? 1.5 * n01(rng) : 0.0; // one state only, then back
+    states.emplace_back(0.8 * (s + spike) * phi1 + 0.5 * r * phi2);
+  }
+  for (const std::vector<Criterion>& criteria :
+       {std::vector{Criterion::choi_chang_matrix, Criterion::choi_chang_delamination},
+        std::vector{Criterion::choi_chang_delamination}, std::vector{Criterion::choi_chang_matrix}}) {
+    std::vector<Criterion> with_faces = criteria;
+    with_faces.push_back(Criterion::max_stress);
+    DamageTracker fast(model, criteria), general(model, with_faces);
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      fast.observe(static_cast<long>(k), 1e-6 * static_cast<double>(k), 0.0, states[k]);
+      general.observe(static_cast<long>(k), 1e-6 * static_cast<double>(k), 0.0, states[k]);
+    }
+    std::vector<DamageOnset> g;
+    for (const auto& o : general.onsets())
+      if (o.criterion != Criterion::max_stress) g.push_back(o);
+    ASSERT_GE(g.size(), 5U);
+    ASSERT_EQ(fast.onsets().size(), g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      EXPECT_EQ(fast.onsets()[i].criterion, g[i].criterion);
+      EXPECT_EQ(fast.onsets()[i].element, g[i].element);
+      EXPECT_EQ(fast.onsets()[i].ipgs, g[i].ipgs);
+      EXPECT_EQ(fast.onsets()[i].jpgs, g[i].jpgs);
+      EXPECT_EQ(fast.onsets()[i].ply + fast.onsets()[i].interface, g[i].ply + g[i].interface);
+      EXPECT_EQ(fast.onsets()[i].time, g[i].time);
+    }
+    for (const Criterion c : criteria)
+      EXPECT_EQ(fast.peak_index(c), general.peak_index(c));
+    std::printf("  %zu criteria: %zu onsets, peak index %.4f\n", criteria.size(), g.size(),
+                general.peak_index(criteria.front()));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Da, SkippingOnRandomStates, testing::Values(1.8, 0.2));
 
 TEST(Threshold, MonotoneWithinToleranceAndDeterministic) {
   const Deck deck = table42_deck(5.0);

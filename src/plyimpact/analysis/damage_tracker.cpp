@@ -3,6 +3,7 @@
 #include "plyimpact/fem/quadrature.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <algorithm>
 #include <map>
@@ -68,6 +69,30 @@ DamageTracker::SectionOperators DamageTracker::section_operators(const Laminate&
   return o;
 }
 
+Eigen::Matrix<double, 5, 1> DamageTracker::layer_bound(const SectionOperators& sec, std::size_t k,
+                                                       bool interface) {
+  const auto inv = [](const std::optional<double>& v) { return v ? 1.0 / *v : 0.0; };
+  const auto inverse_strength = [&](std::size_t ply) {
+    const Strengths& st = sec.laminate->material_of(ply).strength;
+    return std::max({inv(st.Yt), inv(st.Yc), inv(st.S23)});
+  };
+  Eigen::Matrix<double, 5, 1> bound;
+  for (int j = 0; j < 5; ++j) {
+    const double nk = sec.transverse_bending[k].col(j).norm();
+    if (!interface) {
+      bound(j) = inverse_strength(k) * nk;
+      continue;
+    }
+    const Strengths& s0 = sec.laminate->material_of(k).strength;
+    const Strengths& s1 = sec.laminate->material_of(k + 1).strength;
+    const double da = 0.5 * (s0.Da.value_or(0.0) + s1.Da.value_or(0.0));
+    const double n1 = sec.transverse_bending[k + 1].col(j).norm();
+    bound(j) =
+        std::sqrt(da) * std::max(inverse_strength(k), inverse_strength(k + 1)) * std::sqrt(nk * nk + n1 * n1);
+  }
+  return bound;
+}
+
 DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options)
     : model_(model), criteria_(std::move(criteria)), options_(options) {
   if (options_.every < 1) throw std::invalid_argument("damage: evaluation interval must be at least 1 step");
@@ -118,33 +143,40 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
       if (const int eq = model.dofs().equation(n, d); eq >= 0) inplane_equations_.push_back(eq);
   S_average_.setZero(5 * static_cast<Eigen::Index>(layers_), n_points);
   // ‖T e‖ ≤ Σ_j ‖T(:, j)‖ |e_j| with T_k the (σ̄22, τ̄13, τ̄23) rows of ply k and e = (κ, γ), so
-  // e_M ≤ Σ_j max_k [max(1/Yt, 1/Yc, 1/S23)_k ‖T_k(:, j)‖] |e_j|, and likewise for e_D with
-  // √Da and the two plies of an interface. A point whose bound stays below both 1 and the peak index
-  // so far can neither fail nor raise the peak, and is skipped (Choi–Chang-only runs). The bound
-  // takes the largest over every laminate of the plate.
-  for (const Criterion c : criteria_) {
+  // e_M ≤ Σ_j [max(1/Yt, 1/Yc, 1/S23)_k ‖T_k(:, j)‖] |e_j|, and likewise for e_D with √Da and the two
+  // plies of an interface (layer_bound); choi_chang_bound_ takes the largest over the layers of every
+  // laminate of the plate. A point whose bound stays below both 1 and the peak index so far can
+  // neither fail nor raise the peak. Matrix cracks gate (2.43): with delamination tracked, the
+  // cracks are one more bound slot (no new crack while its bound stays below 1).
+  bound_slots_ = criteria_.size() + (track_cracks_for_delamination_ ? 1 : 0);
+  for (std::size_t c = 0; c < bound_slots_; ++c) {
+    const bool interfaces = c < criteria_.size() && criteria_[c] == Criterion::choi_chang_delamination;
     Eigen::Matrix<double, 5, 1> bound = Eigen::Matrix<double, 5, 1>::Zero();
-    const auto inv = [](const std::optional<double>& v) { return v ? 1.0 / *v : 0.0; };
-    for (const SectionOperators& sec : sections_) {
-      const Laminate& lam = *sec.laminate;
-      for (std::size_t k = 0; k < sec.plies; ++k) {
-        const Strengths& st = lam.material_of(k).strength;
-        const double ik = std::max({inv(st.Yt), inv(st.Yc), inv(st.S23)});
-        for (int j = 0; j < 5; ++j) {
-          const double nk = sec.transverse_bending[k].col(j).norm();
-          if (c == Criterion::choi_chang_matrix) bound(j) = std::max(bound(j), ik * nk);
-          if (c == Criterion::choi_chang_delamination && k + 1 < sec.plies) {
-            const Strengths& s1 = lam.material_of(k + 1).strength;
-            const double i1 = std::max({inv(s1.Yt), inv(s1.Yc), inv(s1.S23)});
-            const double da = 0.5 * (st.Da.value_or(0.0) + s1.Da.value_or(0.0));
-            const double n1 = sec.transverse_bending[k + 1].col(j).norm();
-            bound(j) = std::max(bound(j), std::sqrt(da) * std::max(ik, i1) * std::sqrt(nk * nk + n1 * n1));
-          }
-        }
+    for (std::size_t s = 0; s < sections_.size(); ++s) {
+      const SectionOperators& sec = sections_[s];
+      for (std::size_t k = 0; k < sec.plies - (interfaces ? 1 : 0); ++k) {
+        bound = bound.cwiseMax(layer_bound(sec, k, interfaces));
       }
     }
     choi_chang_bound_.push_back(bound);
   }
+  // |Δe_j| ≤ Σ_a |B(j, w_a)| max|Δw| + Σ_a (|B(j, θx_a)| + |B(j, θy_a)|) max|Δθ|, so the bound β·|e|
+  // grows by at most (β·R_w) max|Δw| + (β·R_θ) max|Δθ| (see lipschitz_).
+  for (const auto& Bb : B_bending_) {
+    Eigen::Matrix<double, 5, 1> rw = Eigen::Matrix<double, 5, 1>::Zero(), rr = rw;
+    for (int a = 0; a < 9; ++a) {
+      rw += Bb.col(3 * a).cwiseAbs();
+      rr += Bb.col(3 * a + 1).cwiseAbs() + Bb.col(3 * a + 2).cwiseAbs();
+    }
+    for (const auto& bound : choi_chang_bound_)
+      lipschitz_.push_back({bound.dot(rw), bound.dot(rr)});
+  }
+  path_w_.assign(static_cast<std::size_t>(n_elements), 0.0);
+  path_rotation_.assign(path_w_.size(), 0.0);
+  proof_path_w_.assign(points_.size(), 0.0);
+  proof_path_rotation_.assign(points_.size(), 0.0);
+  margin_.assign(bound_slots_ * points_.size(), 0.0);
+  point_index_.assign(bound_slots_ * layers_, 0.0);
   if (needs_faces_) {
     S_top_.setZero(S_average_.rows(), n_points);
     S_bottom_.setZero(S_average_.rows(), n_points);
@@ -170,23 +202,163 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
 
 void DamageTracker::observe(long step, double t, double force, const Eigen::VectorXd& u) {
   if (step % options_.every != 0) return;
-  // Batched: element DOFs U (45 × elements) → generalized strains E (8 × points) → ply stresses
-  // S = A E (5·plies × points), as dense matrix products; then the criteria point by point.
-  for (int e = 0; e < model_.mesh().element_count(); ++e)
-    U_.col(e) = gather(u, model_.element_equations(e));
   // Under a transverse load a laminate with B = 0 and I1 = 0 never moves in-plane: then only the
   // bending DOFs (w, θx, θy) and strains (κ, γ) enter, 27 of 45 columns and 5 of 8 rows.
   bool bending_only = true;
   for (std::size_t i = 0; i < inplane_equations_.size() && bending_only; ++i)
     bending_only = u(inplane_equations_[i]) == 0.0;
+  if (bending_only && !needs_faces_) {
+    observe_choi_chang_bending(u, t, force);
+    return;
+  }
+  proofs_valid_ = false;
+  gather_all(u);
   if (bending_only)
     observe_bending(t, force);
   else
     observe_general(t, force);
 }
 
+void DamageTracker::gather_all(const Eigen::VectorXd& u) {
+  // Batched: element DOFs U (45 × elements) → generalized strains E (8 × points) → ply stresses
+  // S = A E (5·plies × points), as dense matrix products; then the criteria point by point.
+  for (int e = 0; e < model_.mesh().element_count(); ++e)
+    U_.col(e) = gather(u, model_.element_equations(e));
+}
+
+Eigen::Matrix<double, 27, 1> DamageTracker::bending_dofs(const Eigen::VectorXd& u, int e) const {
+  const ElementEquations& eq = model_.element_equations(e);
+  Eigen::Matrix<double, 27, 1> ub;
+  for (std::size_t a = 0; a < 9; ++a)
+    for (std::size_t d = 0; d < 3; ++d) {
+      const int i = eq[5 * a + 2 + d];
+      ub(static_cast<Eigen::Index>(3 * a + d)) = i >= 0 ? u(i) : 0.0;
+    }
+  return ub;
+}
+
+void DamageTracker::advance_paths(const Eigen::VectorXd& u) {
+  // Each element's path: the largest change of w and of θx, θy over its nodes since the last
+  // observation, summed over observations.
+  for (std::size_t e = 0; e < path_w_.size(); ++e) {
+    const ElementEquations& eq = model_.element_equations(static_cast<int>(e));
+    double dw = 0.0, dr = 0.0;
+    for (std::size_t a = 0; a < 9; ++a) {
+      const auto change = [&](std::size_t d) {
+        const int i = eq[5 * a + d];
+        return i >= 0 ? std::abs(u(i) - previous_u_(i)) : 0.0;
+      };
+      dw = std::max(dw, change(2));
+      dr = std::max({dr, change(3), change(4)});
+    }
+    path_w_[e] += dw;
+    path_rotation_[e] += dr;
+  }
+  previous_u_ = u;
+}
+
+bool DamageTracker::still_proven(std::size_t g, std::size_t e) const {
+  const double dw = path_w_[e] - proof_path_w_[g], dr = path_rotation_[e] - proof_path_rotation_[g];
+  const auto points_per_element = static_cast<std::size_t>(stress_points);
+  const auto shape = static_cast<std::size_t>(model_.mesh().shape_class(static_cast<int>(e)));
+  const std::size_t base = (points_per_element * shape + g % points_per_element) * bound_slots_;
+  for (std::size_t c = 0; c < bound_slots_; ++c) {
+    const PointLipschitz& L = lipschitz_[base + c];
+    // 1e-9 of the margin covers the rounding of the sums (a NaN state fails the test: evaluated).
+    if (!(L.w * dw + L.rotation * dr < margin_[c * points_.size() + g] * (1.0 - 1e-9))) return false;
+  }
+  return true;
+}
+
+void DamageTracker::refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains) {
+  // From the bounds at this state: the largest over the layers below min(1, peak) (no new failure,
+  // no new peak), the crack slot below 1 (no new crack).
+  proof_path_w_[g] = path_w_[e];
+  proof_path_rotation_[g] = path_rotation_[e];
+  const Eigen::Matrix<double, 5, 1> magnitude = strains.cwiseAbs();
+  for (std::size_t c = 0; c < bound_slots_; ++c) {
+    const double limit = c == criteria_.size() ? 1.0 : std::min(1.0, peak_[c]);
+    margin_[c * points_.size() + g] = limit - choi_chang_bound_[c].dot(magnitude);
+  }
+}
+
+void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e) {
+  // The indices are Lipschitz in (κ, γ) with the constants of their bounds (each is a weighted
+  // Euclidean norm of stresses linear in (κ, γ)), so the margins can start from the exact indices
+  // just evaluated. Interfaces that (2.43) did not evaluate (no adjacent crack) stay unevaluated
+  // while the crack slot's margin holds, and do not count.
+  proof_path_w_[g] = path_w_[e];
+  proof_path_rotation_[g] = path_rotation_[e];
+  const std::size_t plies = section_at(g).plies;
+  for (std::size_t c = 0; c < bound_slots_; ++c) {
+    const bool cracks = c == criteria_.size();
+    const bool interfaces = !cracks && criteria_[c] == Criterion::choi_chang_delamination;
+    double unfailed = 0.0, largest = 0.0;
+    for (std::size_t k = 0; k < plies - (interfaces ? 1 : 0); ++k) {
+      const double index = point_index_[c * layers_ + k];
+      largest = std::max(largest, index);
+      if (layer_failed(c, k, g) == 0) unfailed = std::max(unfailed, index);
+    }
+    double margin = 1.0 - unfailed;
+    if (!cracks) margin = std::min(margin, peak_[c] - largest);
+    margin_[c * points_.size() + g] = margin;
+  }
+}
+
+char DamageTracker::layer_failed(std::size_t c, std::size_t k, std::size_t g) const {
+  return c == criteria_.size() ? cracked_[k * points_.size() + g] : failed_[slot(c, k, g)];
+}
+
+bool DamageTracker::proven_now(std::size_t g) const {
+  for (std::size_t c = 0; c < bound_slots_; ++c)
+    if (!(margin_[c * points_.size() + g] > 0.0)) return false;
+  return true;
+}
+
+void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double t, double force) {
+  if (proofs_valid_) {
+    advance_paths(u);
+  } else {
+    previous_u_ = u;
+    std::fill(margin_.begin(), margin_.end(), -1.0); // nothing proven: evaluate every point
+    proofs_valid_ = true;
+  }
+  const Mesh& mesh = model_.mesh();
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    const auto first = ue * static_cast<std::size_t>(stress_points);
+    bool all_proven = true;
+    for (std::size_t l = 0; l < static_cast<std::size_t>(stress_points) && all_proven; ++l)
+      all_proven = still_proven(first + l, ue);
+    if (all_proven) continue;
+    const Eigen::Matrix<double, 27, 1> ub = bending_dofs(u, e);
+    const auto& sec = sections_[static_cast<std::size_t>(model_.section_index(e))];
+    const auto shape = static_cast<std::size_t>(mesh.shape_class(e));
+    for (std::size_t l = 0; l < static_cast<std::size_t>(stress_points); ++l) {
+      const std::size_t g = first + l;
+      if (still_proven(g, ue)) continue;
+      const Eigen::Matrix<double, 5, 1> eb =
+          B_bending_[static_cast<std::size_t>(stress_points) * shape + l] * ub;
+      refresh_proof(g, ue, eb);
+      if (!proven_now(g)) { // not proven by the bounds at this state: evaluate the plies
+        const auto col = static_cast<Eigen::Index>(g);
+        for (std::size_t k = 0; k < sec.plies; ++k) {
+          const auto row = 5 * static_cast<Eigen::Index>(k);
+          const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb; // σ̄22, τ̄13, τ̄23
+          S_average_(row + 1, col) = v(0);
+          S_average_(row + 3, col) = v(1);
+          S_average_(row + 4, col) = v(2);
+        }
+        evaluate_point(g, t, force);
+        refresh_proof_exactly(g, ue);
+      }
+    }
+  }
+}
+
 void DamageTracker::observe_bending(double t, double force) {
-  // Fixed-size products, point by point: 5×27 for the strains, 5×5 per ply for the stresses.
+  // Face criteria on a bending-only state: fixed-size products, point by point, 5×27 for the
+  // strains, 5×5 per ply for the stresses at the ply's mid-plane and faces.
   Eigen::Matrix<double, 27, 1> ub;
   const Mesh& mesh = model_.mesh();
   for (Eigen::Index e = 0; e < U_.cols(); ++e) {
@@ -198,16 +370,8 @@ void DamageTracker::observe_bending(double t, double force) {
       const Eigen::Matrix<double, 5, 1> eb =
           B_bending_[static_cast<std::size_t>(stress_points) * shape + static_cast<std::size_t>(l)] * ub;
       const Eigen::Index g = e * stress_points + l;
-      if (!needs_faces_ && cannot_change(eb)) continue; // proven: no new failure, no new peak
       for (std::size_t k = 0; k < sec.plies; ++k) {
         const auto row = 5 * static_cast<Eigen::Index>(k);
-        if (!needs_faces_) { // Choi–Chang only: σ̄22, τ̄13, τ̄23 are all they read
-          const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb;
-          S_average_(row + 1, g) = v(0);
-          S_average_(row + 3, g) = v(1);
-          S_average_(row + 4, g) = v(2);
-          continue;
-        }
         S_average_.block<5, 1>(row, g).noalias() = sec.average_bending[k] * eb;
         S_top_.block<5, 1>(row, g).noalias() = sec.top_bending[k] * eb;
         S_bottom_.block<5, 1>(row, g).noalias() = sec.bottom_bending[k] * eb;
@@ -247,15 +411,6 @@ void DamageTracker::observe_general(double t, double force) {
     evaluate_point(g, t, force);
 }
 
-bool DamageTracker::cannot_change(const Eigen::Matrix<double, 5, 1>& strains) const {
-  // Upper bounds of the Choi–Chang indices at a point from |κ|, |γ| (see choi_chang_bound_).
-  for (std::size_t c = 0; c < criteria_.size(); ++c) {
-    const double bound = choi_chang_bound_[c].dot(strains.cwiseAbs());
-    if (!(bound < 1.0 && bound <= peak_[c])) return false;
-  }
-  return true;
-}
-
 namespace {
 
 PlyStress as_ply_stress(const Eigen::Matrix<double, 5, 1>& v) {
@@ -283,6 +438,7 @@ void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
   for (std::size_t k = 0; k < plies; ++k)
     avg[k] = as_ply_stress(S_average_.block<5, 1>(5 * static_cast<Eigen::Index>(k), col));
   const auto record = [&](std::size_t c, std::size_t layer, const FailureResult& r, bool interface) {
+    point_index_[c * layers_ + layer] = r.index;
     peak_[c] = std::max(peak_[c], r.index);
     char& flag = failed_[slot(c, layer, g)];
     if (flag != 0 || !r.failed()) return;
@@ -307,11 +463,13 @@ void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
     a += p.area;
     areas_.push_back({t, criteria_[c], o.ply, o.interface, a});
   };
+  std::fill(point_index_.begin(), point_index_.end(), -std::numeric_limits<double>::infinity());
   // Choi–Chang matrix cracking, once per ply: a criterion of its own and the gate of (2.43).
   std::vector<FailureResult>& matrix = matrix_;
   if (needs_matrix_)
     for (std::size_t k = 0; k < plies; ++k) {
       matrix[k] = choi_chang_matrix_cracking(avg[k], lam.material_of(k).strength);
+      if (track_cracks_for_delamination_) point_index_[criteria_.size() * layers_ + k] = matrix[k].index;
       if (track_cracks_for_delamination_ && matrix[k].failed()) cracked_[k * points_.size() + g] = 1;
     }
   for (std::size_t c = 0; c < criteria_.size(); ++c) {

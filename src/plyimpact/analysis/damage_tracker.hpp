@@ -76,7 +76,8 @@ private:
   };
   [[nodiscard]] static SectionOperators section_operators(const Laminate& lam);
   void evaluate_point(std::size_t g, double t, double force);
-  [[nodiscard]] bool cannot_change(const Eigen::Matrix<double, 5, 1>& strains) const;
+  [[nodiscard]] static Eigen::Matrix<double, 5, 1> layer_bound(const SectionOperators& sec, std::size_t k,
+                                                               bool interface);
   [[nodiscard]] std::size_t slot(std::size_t c, std::size_t layer, std::size_t g) const {
     return (c * layers_ + layer) * points_.size() + g;
   }
@@ -87,8 +88,17 @@ private:
     return B_[gauss3x3.size() * static_cast<std::size_t>(model_.mesh().shape_class(e)) +
               static_cast<std::size_t>(l)];
   }
+  void gather_all(const Eigen::VectorXd& u);
   void observe_bending(double t, double force);
   void observe_general(double t, double force);
+  void observe_choi_chang_bending(const Eigen::VectorXd& u, double t, double force);
+  void advance_paths(const Eigen::VectorXd& u);
+  [[nodiscard]] Eigen::Matrix<double, 27, 1> bending_dofs(const Eigen::VectorXd& u, int e) const;
+  [[nodiscard]] bool still_proven(std::size_t g, std::size_t e) const;
+  [[nodiscard]] bool proven_now(std::size_t g) const;
+  void refresh_proof_exactly(std::size_t g, std::size_t e);
+  [[nodiscard]] char layer_failed(std::size_t c, std::size_t k, std::size_t g) const;
+  void refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
 
   const PlateModel& model_;
   std::vector<Criterion> criteria_;
@@ -103,8 +113,25 @@ private:
   Eigen::MatrixXd U_, local_strains_, E_, S_average_, S_top_, S_bottom_; ///< work arrays, sized once
   std::vector<Eigen::Matrix<double, 5, 27>> B_bending_; ///< (κ, γ) rows, (w, θx, θy) columns of B_
   std::vector<int> inplane_equations_;
-  std::vector<Eigen::Matrix<double, 5, 1>> choi_chang_bound_; ///< per criterion: index ≤ bound · |(κ, γ)|
-  std::vector<char> failed_;                                  ///< per (criterion, layer, point)
+  std::size_t bound_slots_ = 0; ///< the criteria, and the matrix cracks when they gate delamination
+  std::vector<Eigen::Matrix<double, 5, 1>> choi_chang_bound_; ///< per slot: index ≤ bound · |(κ, γ)|
+  // Skipping points between evaluations (Choi–Chang only, bending only): a point's bound can grow
+  // between two observations by at most lip_w · Δw + lip_rot · Δθ, where Δw, Δθ are the largest
+  // changes of the element's w and rotations; summed over observations (the element's path), the
+  // growth since the point's last evaluation is bounded, and the point is evaluated again only when
+  // that growth could use up its margin to min(1, peak). Exact: the onsets and peaks are those of
+  // evaluating every point every time.
+  struct PointLipschitz {
+    double w = 0.0, rotation = 0.0; ///< index bound growth per unit Δw [1/m], per unit Δθ [1/rad]
+  };
+  std::vector<PointLipschitz> lipschitz_;      ///< per (shape class, local point, criterion)
+  Eigen::VectorXd previous_u_;                 ///< the plate state of the last observation
+  bool proofs_valid_ = false;                  ///< false: every point is evaluated at the next observation
+  std::vector<double> path_w_, path_rotation_; ///< per element: Σ max|Δw|, Σ max|Δθ|
+  std::vector<double> proof_path_w_, proof_path_rotation_; ///< per point: the element paths at its proof
+  std::vector<double> margin_;        ///< per (slot, point): what the bounds may grow by before a change
+  std::vector<double> point_index_;   ///< per (slot, layer): the indices of the point just evaluated
+  std::vector<char> failed_;          ///< per (criterion, layer, point)
   std::vector<char> cracked_;         ///< Choi–Chang matrix crack per (ply, point), for gating
   std::vector<double> area_;          ///< per (criterion, layer)
   std::vector<double> peak_;          ///< per criterion
