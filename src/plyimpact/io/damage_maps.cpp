@@ -76,6 +76,13 @@ DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& m
   if (!have_gnuplot && !groups.empty())
     files.warning =
         "gnuplot not found: damage map scripts written, images not drawn (apt-get install gnuplot-nox)";
+  // Every map's script goes into one gnuplot run: a gnuplot start costs about 0.1 s (fonts, cairo),
+  // the drawing of a map a few ms, and a 24-ply laminate has up to 47 maps.
+  struct Pending {
+    fs::path svg, png, svg_tmp, png_tmp, gp;
+  };
+  std::vector<Pending> pending;
+  std::string batch;
   for (const auto& [key, points] : groups) {
     const auto& [criterion, layer, number] = key;
     const std::string stem = fmt::format("damage_map_{}_{}{}", criterion, layer, number);
@@ -88,21 +95,26 @@ DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& m
         gp, damage_map_script(mesh, points, title, svg.filename().string(), png.filename().string()));
     files.scripts.push_back(gp);
     if (!have_gnuplot) continue;
-    const fs::path run = dir / (stem + ".gp.tmp");
-    write_file_atomically(run, damage_map_script(mesh, points, title, svg_tmp.string(), png_tmp.string()));
-    const int status = std::system(fmt::format("gnuplot '{}' > /dev/null 2>&1", run.string()).c_str());
-    fs::remove(run);
+    batch += damage_map_script(mesh, points, title, svg_tmp.string(), png_tmp.string()) + "reset\n";
+    pending.push_back({svg, png, svg_tmp, png_tmp, gp});
+  }
+  if (pending.empty()) return files;
+  const fs::path run = dir / "damage_maps.gp.tmp";
+  write_file_atomically(run, batch);
+  const int status = std::system(fmt::format("gnuplot '{}' > /dev/null 2>&1", run.string()).c_str());
+  fs::remove(run);
+  for (const Pending& m : pending) {
     std::error_code ec;
-    if (status != 0 || !fs::exists(svg_tmp) || !fs::exists(png_tmp)) {
-      files.warning = "gnuplot failed on " + gp.string();
-      fs::remove(svg_tmp, ec);
-      fs::remove(png_tmp, ec);
+    if (status != 0 || !fs::exists(m.svg_tmp) || !fs::exists(m.png_tmp)) {
+      if (files.warning.empty()) files.warning = "gnuplot failed on " + m.gp.string();
+      fs::remove(m.svg_tmp, ec);
+      fs::remove(m.png_tmp, ec);
       continue;
     }
-    fs::rename(svg_tmp, svg);
-    fs::rename(png_tmp, png);
-    files.images.push_back(svg);
-    files.images.push_back(png);
+    fs::rename(m.svg_tmp, m.svg);
+    fs::rename(m.png_tmp, m.png);
+    files.images.push_back(m.svg);
+    files.images.push_back(m.png);
   }
   return files;
 }
