@@ -3,7 +3,6 @@
 #include "plyimpact/fem/quadrature.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include <algorithm>
 #include <map>
@@ -176,7 +175,8 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
   proof_path_w_.assign(points_.size(), 0.0);
   proof_path_rotation_.assign(points_.size(), 0.0);
   margin_.assign(bound_slots_ * points_.size(), 0.0);
-  point_index_.assign(bound_slots_ * layers_, 0.0);
+  point_largest_.assign(bound_slots_, 0.0);
+  point_unfailed_.assign(bound_slots_, 0.0);
   if (needs_faces_) {
     S_top_.setZero(S_average_.rows(), n_points);
     S_bottom_.setZero(S_average_.rows(), n_points);
@@ -285,28 +285,16 @@ void DamageTracker::refresh_proof(std::size_t g, std::size_t e, const Eigen::Mat
 void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e) {
   // The indices are Lipschitz in (κ, γ) with the constants of their bounds (each is a weighted
   // Euclidean norm of stresses linear in (κ, γ)), so the margins can start from the exact indices
-  // just evaluated. Interfaces that (2.43) did not evaluate (no adjacent crack) stay unevaluated
-  // while the crack slot's margin holds, and do not count.
+  // just evaluated (evaluate_point keeps their largest, and the largest over the layers that can
+  // still fail). Interfaces that (2.43) did not evaluate (no adjacent crack) stay unevaluated while
+  // the crack slot's margin holds, and do not count.
   proof_path_w_[g] = path_w_[e];
   proof_path_rotation_[g] = path_rotation_[e];
-  const std::size_t plies = section_at(g).plies;
   for (std::size_t c = 0; c < bound_slots_; ++c) {
-    const bool cracks = c == criteria_.size();
-    const bool interfaces = !cracks && criteria_[c] == Criterion::choi_chang_delamination;
-    double unfailed = 0.0, largest = 0.0;
-    for (std::size_t k = 0; k < plies - (interfaces ? 1 : 0); ++k) {
-      const double index = point_index_[c * layers_ + k];
-      largest = std::max(largest, index);
-      if (layer_failed(c, k, g) == 0) unfailed = std::max(unfailed, index);
-    }
-    double margin = 1.0 - unfailed;
-    if (!cracks) margin = std::min(margin, peak_[c] - largest);
+    double margin = 1.0 - point_unfailed_[c];
+    if (c < criteria_.size()) margin = std::min(margin, peak_[c] - point_largest_[c]);
     margin_[c * points_.size() + g] = margin;
   }
-}
-
-char DamageTracker::layer_failed(std::size_t c, std::size_t k, std::size_t g) const {
-  return c == criteria_.size() ? cracked_[k * points_.size() + g] : failed_[slot(c, k, g)];
 }
 
 bool DamageTracker::proven_now(std::size_t g) const {
@@ -438,10 +426,14 @@ void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
   for (std::size_t k = 0; k < plies; ++k)
     avg[k] = as_ply_stress(S_average_.block<5, 1>(5 * static_cast<Eigen::Index>(k), col));
   const auto record = [&](std::size_t c, std::size_t layer, const FailureResult& r, bool interface) {
-    point_index_[c * layers_ + layer] = r.index;
     peak_[c] = std::max(peak_[c], r.index);
+    point_largest_[c] = std::max(point_largest_[c], r.index);
     char& flag = failed_[slot(c, layer, g)];
-    if (flag != 0 || !r.failed()) return;
+    if (flag != 0) return;
+    if (!r.failed()) {
+      point_unfailed_[c] = std::max(point_unfailed_[c], r.index);
+      return;
+    }
     flag = 1;
     DamageOnset o;
     o.criterion = criteria_[c];
@@ -463,14 +455,19 @@ void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
     a += p.area;
     areas_.push_back({t, criteria_[c], o.ply, o.interface, a});
   };
-  std::fill(point_index_.begin(), point_index_.end(), -std::numeric_limits<double>::infinity());
+  std::fill(point_largest_.begin(), point_largest_.end(), 0.0);
+  std::fill(point_unfailed_.begin(), point_unfailed_.end(), 0.0);
   // Choi–Chang matrix cracking, once per ply: a criterion of its own and the gate of (2.43).
   std::vector<FailureResult>& matrix = matrix_;
   if (needs_matrix_)
     for (std::size_t k = 0; k < plies; ++k) {
       matrix[k] = choi_chang_matrix_cracking(avg[k], lam.material_of(k).strength);
-      if (track_cracks_for_delamination_) point_index_[criteria_.size() * layers_ + k] = matrix[k].index;
-      if (track_cracks_for_delamination_ && matrix[k].failed()) cracked_[k * points_.size() + g] = 1;
+      if (!track_cracks_for_delamination_) continue;
+      char& cracked = cracked_[k * points_.size() + g];
+      if (matrix[k].failed())
+        cracked = 1;
+      else if (cracked == 0)
+        point_unfailed_.back() = std::max(point_unfailed_.back(), matrix[k].index);
     }
   for (std::size_t c = 0; c < criteria_.size(); ++c) {
     const Criterion crit = criteria_[c];

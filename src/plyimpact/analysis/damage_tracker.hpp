@@ -97,7 +97,6 @@ private:
   [[nodiscard]] bool still_proven(std::size_t g, std::size_t e) const;
   [[nodiscard]] bool proven_now(std::size_t g) const;
   void refresh_proof_exactly(std::size_t g, std::size_t e);
-  [[nodiscard]] char layer_failed(std::size_t c, std::size_t k, std::size_t g) const;
   void refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
 
   const PlateModel& model_;
@@ -129,14 +128,15 @@ private:
   bool proofs_valid_ = false;                  ///< false: every point is evaluated at the next observation
   std::vector<double> path_w_, path_rotation_; ///< per element: Σ max|Δw|, Σ max|Δθ|
   std::vector<double> proof_path_w_, proof_path_rotation_; ///< per point: the element paths at its proof
-  std::vector<double> margin_;        ///< per (slot, point): what the bounds may grow by before a change
-  std::vector<double> point_index_;   ///< per (slot, layer): the indices of the point just evaluated
-  std::vector<char> failed_;          ///< per (criterion, layer, point)
-  std::vector<char> cracked_;         ///< Choi–Chang matrix crack per (ply, point), for gating
-  std::vector<double> area_;          ///< per (criterion, layer)
-  std::vector<double> peak_;          ///< per criterion
-  std::vector<PlyStress> averaged_;   ///< per ply, at the current point
-  std::vector<FailureResult> matrix_; ///< Choi–Chang matrix cracking per ply, current point
+  std::vector<double> margin_;         ///< per (slot, point): what the bounds may grow by before a change
+  std::vector<double> point_largest_;  ///< per slot: the largest index of the point just evaluated
+  std::vector<double> point_unfailed_; ///< per slot: the same over the layers that have not failed
+  std::vector<char> failed_;           ///< per (criterion, layer, point)
+  std::vector<char> cracked_;          ///< Choi–Chang matrix crack per (ply, point), for gating
+  std::vector<double> area_;           ///< per (criterion, layer)
+  std::vector<double> peak_;           ///< per criterion
+  std::vector<PlyStress> averaged_;    ///< per ply, at the current point
+  std::vector<FailureResult> matrix_;  ///< Choi–Chang matrix cracking per ply, current point
   bool needs_matrix_ = false;
   std::vector<DamageOnset> onsets_;
   std::vector<DamageAreaSample> areas_;

@@ -359,12 +359,20 @@ FailureResult choi_chang_delamination(const PlyStress& upper_avg, const Strength
   const bool upper_is_n = ply_n == DelaminationPlyN::upper;
   const PlyStress& sn = upper_is_n ? upper_avg : lower_avg;
   const PlyStress& sn1 = upper_is_n ? lower_avg : upper_avg;
-  const ResolvedStrengths rn = resolve(upper_is_n ? upper : lower, Criterion::choi_chang_delamination);
-  const ResolvedStrengths rn1 = resolve(upper_is_n ? lower : upper, Criterion::choi_chang_delamination);
-  const double Da = 0.5 * (rn.Da + rn1.Da);
-  const double Y1 = sn1.s22 >= 0.0 ? rn1.Yt : rn1.Yc;
-  const double e = std::sqrt(Da * (sq(sn.t23 / rn.S23) + sq(sn1.t13 / rn1.S23) + sq(sn1.s22 / Y1)));
-  return govern({{FailureMode::delamination, 0.0, e}});
+  const Strengths& rn = upper_is_n ? upper : lower;
+  const Strengths& rn1 = upper_is_n ? lower : upper;
+  // The strengths read directly (this runs at every cracked interface of every tracked step); the
+  // result is govern({{delamination, 0, e}})'s, NaN when a strength is missing.
+  if (!rn.Yt || !rn.Yc || !rn.S23 || !rn.Da || !rn1.Yt || !rn1.Yc || !rn1.S23 || !rn1.Da) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, FailureMode::none, nan};
+  }
+  const double Da = 0.5 * (*rn.Da + *rn1.Da);
+  const double Y1 = sn1.s22 >= 0.0 ? *rn1.Yt : *rn1.Yc;
+  const double e = std::sqrt(Da * (sq(sn.t23 / *rn.S23) + sq(sn1.t13 / *rn1.S23) + sq(sn1.s22 / Y1)));
+  if (std::isnan(e)) return {e, FailureMode::none, e};
+  const double ratio = ray_ratio(0.0, e);
+  return {e, ratio < kInf ? FailureMode::delamination : FailureMode::none, ratio};
 }
 
 // --- dispatch -------------------------------------------------------------------------------
