@@ -13,6 +13,9 @@ namespace plyimpact {
 
 namespace {
 
+/// What a proof keeps in hand against the rounding of its sums (indices are of order 1–10).
+constexpr double rounding_guard = 1e-12;
+
 /// Stress points per element: the 3×3 Gauss points of PlateElement::stress_points().
 constexpr Eigen::Index stress_points = 9;
 static_assert(gauss3x3.size() == stress_points);
@@ -175,6 +178,8 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
   proof_path_w_.assign(points_.size(), 0.0);
   proof_path_rotation_.assign(points_.size(), 0.0);
   margin_.assign(bound_slots_ * points_.size(), 0.0);
+  proof_margin_.assign(margin_.size(), -1.0);
+  proof_strains_.assign(points_.size(), Eigen::Matrix<double, 5, 1>::Zero());
   point_largest_.assign(bound_slots_, 0.0);
   point_unfailed_.assign(bound_slots_, 0.0);
   if (needs_faces_) {
@@ -264,8 +269,8 @@ bool DamageTracker::still_proven(std::size_t g, std::size_t e) const {
   const std::size_t base = (points_per_element * shape + g % points_per_element) * bound_slots_;
   for (std::size_t c = 0; c < bound_slots_; ++c) {
     const PointLipschitz& L = lipschitz_[base + c];
-    // 1e-9 of the margin covers the rounding of the sums (a NaN state fails the test: evaluated).
-    if (!(L.w * dw + L.rotation * dr < margin_[c * points_.size() + g] * (1.0 - 1e-9))) return false;
+    // rounding_guard covers the rounding of the sums (a NaN state fails the test: evaluated).
+    if (!(L.w * dw + L.rotation * dr < margin_[c * points_.size() + g] - rounding_guard)) return false;
   }
   return true;
 }
@@ -280,9 +285,32 @@ void DamageTracker::refresh_proof(std::size_t g, std::size_t e, const Eigen::Mat
     const double limit = c == criteria_.size() ? 1.0 : std::min(1.0, peak_[c]);
     margin_[c * points_.size() + g] = limit - choi_chang_bound_[c].dot(magnitude);
   }
+  keep_proof(g, strains);
 }
 
-void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e) {
+void DamageTracker::keep_proof(std::size_t g, const Eigen::Matrix<double, 5, 1>& strains) {
+  proof_strains_[g] = strains;
+  for (std::size_t c = 0; c < bound_slots_; ++c)
+    proof_margin_[c * points_.size() + g] = margin_[c * points_.size() + g];
+}
+
+bool DamageTracker::proven_again(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains) {
+  // The path bound has run out, but the strains themselves may have moved less: every bound and
+  // index grows by at most β·|e − e_proof| from the state of the last proof, so what is left of
+  // that proof's margins holds from here, with the element's path counted from now.
+  const Eigen::Matrix<double, 5, 1> change = (strains - proof_strains_[g]).cwiseAbs();
+  for (std::size_t c = 0; c < bound_slots_; ++c) {
+    const std::size_t i = c * points_.size() + g;
+    margin_[i] = proof_margin_[i] - choi_chang_bound_[c].dot(change);
+    if (!(margin_[i] > rounding_guard)) return false;
+  }
+  proof_path_w_[g] = path_w_[e];
+  proof_path_rotation_[g] = path_rotation_[e];
+  return true;
+}
+
+void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e,
+                                          const Eigen::Matrix<double, 5, 1>& strains) {
   // The indices are Lipschitz in (κ, γ) with the constants of their bounds (each is a weighted
   // Euclidean norm of stresses linear in (κ, γ)), so the margins can start from the exact indices
   // just evaluated (evaluate_point keeps their largest, and the largest over the layers that can
@@ -295,6 +323,7 @@ void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e) {
     if (c < criteria_.size()) margin = std::min(margin, peak_[c] - point_largest_[c]);
     margin_[c * points_.size() + g] = margin;
   }
+  keep_proof(g, strains);
 }
 
 bool DamageTracker::proven_now(std::size_t g) const {
@@ -309,6 +338,7 @@ void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double 
   } else {
     previous_u_ = u;
     std::fill(margin_.begin(), margin_.end(), -1.0); // nothing proven: evaluate every point
+    std::fill(proof_margin_.begin(), proof_margin_.end(), -1.0);
     proofs_valid_ = true;
   }
   const Mesh& mesh = model_.mesh();
@@ -327,6 +357,7 @@ void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double 
       if (still_proven(g, ue)) continue;
       const Eigen::Matrix<double, 5, 1> eb =
           B_bending_[static_cast<std::size_t>(stress_points) * shape + l] * ub;
+      if (proven_again(g, ue, eb)) continue;
       refresh_proof(g, ue, eb);
       if (!proven_now(g)) { // not proven by the bounds at this state: evaluate the plies
         const auto col = static_cast<Eigen::Index>(g);
@@ -338,7 +369,7 @@ void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double 
           S_average_(row + 4, col) = v(2);
         }
         evaluate_point(g, t, force);
-        refresh_proof_exactly(g, ue);
+        refresh_proof_exactly(g, ue, eb);
       }
     }
   }

@@ -96,7 +96,9 @@ private:
   [[nodiscard]] Eigen::Matrix<double, 27, 1> bending_dofs(const Eigen::VectorXd& u, int e) const;
   [[nodiscard]] bool still_proven(std::size_t g, std::size_t e) const;
   [[nodiscard]] bool proven_now(std::size_t g) const;
-  void refresh_proof_exactly(std::size_t g, std::size_t e);
+  void refresh_proof_exactly(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
+  void keep_proof(std::size_t g, const Eigen::Matrix<double, 5, 1>& strains);
+  [[nodiscard]] bool proven_again(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
   void refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
 
   const PlateModel& model_;
@@ -128,7 +130,9 @@ private:
   bool proofs_valid_ = false;                  ///< false: every point is evaluated at the next observation
   std::vector<double> path_w_, path_rotation_; ///< per element: Σ max|Δw|, Σ max|Δθ|
   std::vector<double> proof_path_w_, proof_path_rotation_; ///< per point: the element paths at its proof
-  std::vector<double> margin_;         ///< per (slot, point): what the bounds may grow by before a change
+  std::vector<double> margin_; ///< per (slot, point): what the bounds may grow by before a change
+  std::vector<Eigen::Matrix<double, 5, 1>> proof_strains_; ///< per point: (κ, γ) at its last proof
+  std::vector<double> proof_margin_;                       ///< per (slot, point): the margins then
   std::vector<double> point_largest_;  ///< per slot: the largest index of the point just evaluated
   std::vector<double> point_unfailed_; ///< per slot: the same over the layers that have not failed
   std::vector<char> failed_;           ///< per (criterion, layer, point)
