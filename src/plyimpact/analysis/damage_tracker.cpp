@@ -262,10 +262,9 @@ void DamageTracker::advance_paths(const Eigen::VectorXd& u) {
   previous_u_ = u;
 }
 
-bool DamageTracker::still_proven(std::size_t g, std::size_t e) const {
+bool DamageTracker::still_proven(std::size_t g, std::size_t e, std::size_t shape) const {
   const double dw = path_w_[e] - proof_path_w_[g], dr = path_rotation_[e] - proof_path_rotation_[g];
   const auto points_per_element = static_cast<std::size_t>(stress_points);
-  const auto shape = static_cast<std::size_t>(model_.mesh().shape_class(static_cast<int>(e)));
   const std::size_t base = (points_per_element * shape + g % points_per_element) * bound_slots_;
   for (std::size_t c = 0; c < bound_slots_; ++c) {
     const PointLipschitz& L = lipschitz_[base + c];
@@ -278,17 +277,17 @@ bool DamageTracker::still_proven(std::size_t g, std::size_t e) const {
 void DamageTracker::refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains) {
   // From the bounds at this state: the largest over the layers below min(1, peak) (no new failure,
   // no new peak), the crack slot below 1 (no new crack).
-  proof_path_w_[g] = path_w_[e];
-  proof_path_rotation_[g] = path_rotation_[e];
   const Eigen::Matrix<double, 5, 1> magnitude = strains.cwiseAbs();
   for (std::size_t c = 0; c < bound_slots_; ++c) {
     const double limit = c == criteria_.size() ? 1.0 : std::min(1.0, peak_[c]);
     margin_[c * points_.size() + g] = limit - choi_chang_bound_[c].dot(magnitude);
   }
-  keep_proof(g, strains);
+  keep_proof(g, e, strains);
 }
 
-void DamageTracker::keep_proof(std::size_t g, const Eigen::Matrix<double, 5, 1>& strains) {
+void DamageTracker::keep_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains) {
+  proof_path_w_[g] = path_w_[e];
+  proof_path_rotation_[g] = path_rotation_[e];
   proof_strains_[g] = strains;
   for (std::size_t c = 0; c < bound_slots_; ++c)
     proof_margin_[c * points_.size() + g] = margin_[c * points_.size() + g];
@@ -316,14 +315,12 @@ void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e,
   // just evaluated (evaluate_point keeps their largest, and the largest over the layers that can
   // still fail). Interfaces that (2.43) did not evaluate (no adjacent crack) stay unevaluated while
   // the crack slot's margin holds, and do not count.
-  proof_path_w_[g] = path_w_[e];
-  proof_path_rotation_[g] = path_rotation_[e];
   for (std::size_t c = 0; c < bound_slots_; ++c) {
     double margin = 1.0 - point_unfailed_[c];
     if (c < criteria_.size()) margin = std::min(margin, peak_[c] - point_largest_[c]);
     margin_[c * points_.size() + g] = margin;
   }
-  keep_proof(g, strains);
+  keep_proof(g, e, strains);
 }
 
 bool DamageTracker::proven_now(std::size_t g) const {
@@ -345,16 +342,16 @@ void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double 
   for (int e = 0; e < mesh.element_count(); ++e) {
     const auto ue = static_cast<std::size_t>(e);
     const auto first = ue * static_cast<std::size_t>(stress_points);
+    const auto shape = static_cast<std::size_t>(mesh.shape_class(e));
     bool all_proven = true;
     for (std::size_t l = 0; l < static_cast<std::size_t>(stress_points) && all_proven; ++l)
-      all_proven = still_proven(first + l, ue);
+      all_proven = still_proven(first + l, ue, shape);
     if (all_proven) continue;
     const Eigen::Matrix<double, 27, 1> ub = bending_dofs(u, e);
     const auto& sec = sections_[static_cast<std::size_t>(model_.section_index(e))];
-    const auto shape = static_cast<std::size_t>(mesh.shape_class(e));
     for (std::size_t l = 0; l < static_cast<std::size_t>(stress_points); ++l) {
       const std::size_t g = first + l;
-      if (still_proven(g, ue)) continue;
+      if (still_proven(g, ue, shape)) continue;
       const Eigen::Matrix<double, 5, 1> eb =
           B_bending_[static_cast<std::size_t>(stress_points) * shape + l] * ub;
       if (proven_again(g, ue, eb)) continue;

@@ -94,10 +94,10 @@ private:
   void observe_choi_chang_bending(const Eigen::VectorXd& u, double t, double force);
   void advance_paths(const Eigen::VectorXd& u);
   [[nodiscard]] Eigen::Matrix<double, 27, 1> bending_dofs(const Eigen::VectorXd& u, int e) const;
-  [[nodiscard]] bool still_proven(std::size_t g, std::size_t e) const;
+  [[nodiscard]] bool still_proven(std::size_t g, std::size_t e, std::size_t shape) const;
   [[nodiscard]] bool proven_now(std::size_t g) const;
   void refresh_proof_exactly(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
-  void keep_proof(std::size_t g, const Eigen::Matrix<double, 5, 1>& strains);
+  void keep_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
   [[nodiscard]] bool proven_again(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
   void refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
 
@@ -116,16 +116,17 @@ private:
   std::vector<int> inplane_equations_;
   std::size_t bound_slots_ = 0; ///< the criteria, and the matrix cracks when they gate delamination
   std::vector<Eigen::Matrix<double, 5, 1>> choi_chang_bound_; ///< per slot: index ≤ bound · |(κ, γ)|
-  // Skipping points between evaluations (Choi–Chang only, bending only): a point's bound can grow
-  // between two observations by at most lip_w · Δw + lip_rot · Δθ, where Δw, Δθ are the largest
-  // changes of the element's w and rotations; summed over observations (the element's path), the
-  // growth since the point's last evaluation is bounded, and the point is evaluated again only when
-  // that growth could use up its margin to min(1, peak). Exact: the onsets and peaks are those of
-  // evaluating every point every time.
+  // Skipping points between evaluations (Choi–Chang only, bending only): a point's bounds and
+  // indices can grow between two observations by at most lip_w · Δw + lip_rot · Δθ, where Δw, Δθ are
+  // the largest changes of the element's w and rotations; summed over observations (the element's
+  // path), the growth since the point's last proof is bounded, and the point is looked at again only
+  // when that growth could use up a margin of its proof (to 1 for the layers that have not failed, to
+  // the peak index so far for all). Exact: the onsets and peaks are those of evaluating every point
+  // every time.
   struct PointLipschitz {
     double w = 0.0, rotation = 0.0; ///< index bound growth per unit Δw [1/m], per unit Δθ [1/rad]
   };
-  std::vector<PointLipschitz> lipschitz_;      ///< per (shape class, local point, criterion)
+  std::vector<PointLipschitz> lipschitz_;      ///< per (shape class, local point, bound slot)
   Eigen::VectorXd previous_u_;                 ///< the plate state of the last observation
   bool proofs_valid_ = false;                  ///< false: every point is evaluated at the next observation
   std::vector<double> path_w_, path_rotation_; ///< per element: Σ max|Δw|, Σ max|Δθ|
