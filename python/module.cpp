@@ -28,7 +28,6 @@
 #include <iterator>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -40,35 +39,17 @@ namespace {
 
 using plyimpact::Deck;
 
-/// The column names of history.csv (units in the names), in order.
-std::vector<std::string> history_columns(int damaged_plies) {
-  std::vector<std::string> names;
-  std::istringstream header(plyimpact::history_csv_header(damaged_plies));
-  std::string line;
-  std::getline(header, line);
-  std::istringstream fields(line);
-  for (std::string name; std::getline(fields, name, ',');)
-    names.push_back(name);
-  return names;
-}
-
-/// One row per recorded step, the columns of history.csv.
+/// One row per recorded step, the columns of history.csv (io/history_csv.hpp).
 py::array_t<double> history_array(const std::vector<plyimpact::ImpactSample>& samples, std::size_t columns) {
   py::array_t<double> a({samples.size(), columns});
   auto m = a.mutable_unchecked<2>();
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    const plyimpact::ImpactSample& h = samples[i];
-    const double fixed[] = {
-        h.t,           h.force,         h.impactor_w,   h.impactor_v,      h.plate_w,
-        h.indentation, h.plate_kinetic, h.plate_strain, h.impactor_energy, h.contact_work};
     std::size_t j = 0;
-    for (const double v : fixed)
-      m(i, j++) = v;
-    if (j == columns) continue;
-    m(i, j++) = h.damage_dissipation;
-    m(i, j++) = h.damage_area;
-    for (const double v : h.ply_damage_area)
-      m(i, j++) = v;
+    plyimpact::for_each_history_value(samples[i], [&](double v) {
+      if (j < columns) m(i, j) = v;
+      ++j;
+    });
+    if (j != columns) throw std::logic_error("history row of another length than its header");
   }
   return a;
 }
@@ -77,7 +58,7 @@ struct ImpactRunOutput {
   std::string summary_json;
   std::vector<std::string> notes;
   std::vector<plyimpact::ImpactSample> samples;
-  int damaged_plies = 0;
+  plyimpact::HistoryLayout layout;
 };
 
 /// An impact run of `deck`, as `plyimpact impact DECK [-o DIR]` runs it (without the progress display).
@@ -101,8 +82,7 @@ ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem
   out.summary_json = run.summary.dump();
   out.notes = std::move(run.notes);
   out.samples = std::move(history.samples());
-  out.damaged_plies =
-      deck.damage.progressive && deck.laminate ? static_cast<int>(deck.laminate->ply_count()) : 0;
+  out.layout = std::move(run.history_layout);
   return out;
 }
 
@@ -231,7 +211,7 @@ PYBIND11_MODULE(_core, m) {
           const py::gil_scoped_release release;
           out = run_impact(deck, output_dir, overwrite, nonlinear, keep_history);
         }
-        const std::vector<std::string> columns = history_columns(out.damaged_plies);
+        const std::vector<std::string> columns = plyimpact::history_columns(out.layout);
         return py::make_tuple(out.summary_json, out.notes, columns,
                               history_array(out.samples, columns.size()));
       },

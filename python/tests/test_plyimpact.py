@@ -55,6 +55,29 @@ def test_impact_summary_and_history_equal_the_command_line_bit_for_bit(examples,
     assert run.history["force_N"].max() == run.summary["peak_force"]
 
 
+def test_a_stacked_plates_history_follows_its_interfaces_as_the_command_line_does(examples):
+    """The delamination columns (issue 19) come out of Python as out of history.csv, double for double:
+    the example on 5 x 5 elements to 0.25 ms, where both interfaces delaminate."""
+    text = (SOURCE / "examples/impact-delamination.toml").read_text()
+    for old, new in (("nx = 11", "nx = 5"), ("ny = 11", "ny = 5"), ("end = 0.35e-3", "end = 0.25e-3")):
+        assert f"\n{old}\n" in text
+        text = text.replace(f"\n{old}\n", f"\n{new}\n")
+    (examples / "small.toml").write_text(text)
+    done = cli("impact", "small.toml", "-o", "cli", "--quiet", cwd=examples)
+    assert done.returncode == 0, done.stderr
+    run = plyimpact.impact("small.toml")
+    with open(examples / "cli/history.csv") as f:
+        header = f.readline().strip().split(",")
+    rows = np.loadtxt(examples / "cli/history.csv", delimiter=",", skiprows=1, ndmin=2)
+    assert list(run.history) == header
+    assert header[-4:] == ["delamination_dissipation_J", "delamination_area_m2",
+                           "delamination_area_after_ply2_m2", "delamination_area_after_ply6_m2"]
+    for j, column in enumerate(header):
+        assert np.array_equal(run.history[column], rows[:, j]), column
+    projected = run.summary["delamination"]["projected_delaminated_area_m2"]
+    assert run.history["delamination_area_m2"][-1] == projected > 0
+
+
 def test_impact_writes_the_same_results_folder(examples):
     """plyimpact.impact(deck, DIR) writes the folder the command writes (summary.json equal)."""
     run = plyimpact.impact("examples/thesis-3.6-v268.toml", examples / "py")

@@ -1,6 +1,7 @@
 // The stacked plate (issue 19): the laminate cut into sub-laminates tied by cohesive interfaces. Checks
 // the cut, the kinematics of the separation (DL1) and that a stack whose interfaces do not fail is the
 // single laminate.
+#include "plyimpact/fem/quadrature.hpp"
 #include "plyimpact/fem/stacked_plate.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 #include "support/as4_peek.hpp"
@@ -122,6 +123,52 @@ TEST_F(TwoSubLaminates, InterfacePointsCoverThePlate) {
   // The points on x = a/2, an element boundary, are not cracked (strict inequality): the left element
   // column loses the Simpson weight 1/6 of its width a/2.
   EXPECT_NEAR(face.damaged_area(state.interfaces[0], 1.0), 0.5 * a * b - (a / 2.0) * b / 6.0, 1e-15);
+}
+
+// A rule's tributary intervals lie end to end over [−1, 1], each as long as its point's weight and holding
+// its point (Gauss and Lobatto alike).
+TEST(TributaryInterval, TilesTheParentIntervalAndHoldsItsPoint) {
+  for (const QuadratureRule1D<3>& rule : {gauss3, lobatto3}) {
+    double end = -1.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto [from, to] = tributary_interval(rule, k);
+      EXPECT_DOUBLE_EQ(from, end);
+      EXPECT_NEAR(to - from, rule.weights[k], 1e-15);
+      EXPECT_GE(rule.points[k], from);
+      EXPECT_LE(rule.points[k], to);
+      end = to;
+    }
+    EXPECT_NEAR(end, 1.0, 1e-15);
+  }
+  // Simpson's nodal rule: the corner points stand for a sixth of the side each, the middle for 2/3.
+  EXPECT_DOUBLE_EQ(tributary_interval(lobatto3, 0).second, -2.0 / 3.0);
+}
+
+// Each interface point stands for a cell of its element (the map of its tributary rectangle): on this
+// rectangular mesh the cell's area is the point's w detJ, the cell holds the point, and the cells tile the
+// plate (their areas add up to a × b, and to the elements' areas element by element).
+TEST_F(TwoSubLaminates, EachPointStandsForACellOfItsElementWithThePointsArea) {
+  const CohesiveInterface& face = stack.interface(0);
+  double total = 0.0;
+  for (int p = 0; p < face.point_count(); ++p) {
+    const std::array<Eigen::Vector2d, 4> c = face.point_cell(p);
+    double shoelace = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Eigen::Vector2d& u = c[k];
+      const Eigen::Vector2d& v = c[(k + 1) % 4];
+      shoelace += 0.5 * (u.x() * v.y() - v.x() * u.y());
+    }
+    EXPECT_NEAR(shoelace, face.point_area(p), 1e-18) << "point " << p; // > 0: counter-clockwise
+    const Eigen::Vector2d& x = face.point_position(p);
+    constexpr double round_off = 1e-15; // the nodal rule's points lie on their cells' edges
+    EXPECT_TRUE(x.x() >= c[0].x() - round_off && x.x() <= c[2].x() + round_off &&
+                x.y() >= c[0].y() - round_off && x.y() <= c[2].y() + round_off)
+        << p;
+    total += shoelace;
+  }
+  EXPECT_NEAR(total, a * b, 1e-15);
+  // The corner point of the first element stands for (a/2)/6 × (b/2)/6.
+  EXPECT_NEAR(face.point_area(0), (a / 12.0) * (b / 12.0), 1e-18);
 }
 
 // The force is the gradient of the stored energy: central differences of ψ(u) along random directions

@@ -66,6 +66,7 @@ public:
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
   [[nodiscard]] std::optional<DelaminationResult> delamination() const override;
+  bool delamination_areas(DelaminationAreas& out) const override;
 
 private:
   /// x = K̄⁻¹ b with the iteration matrix in use.
@@ -336,36 +337,59 @@ void DelaminationStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& ou
     if (const int eq = p_.model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
 }
 
+bool DelaminationStepper::delamination_areas(DelaminationAreas& out) const {
+  const StackedPlateModel& stack = p_.stack_;
+  out.dissipated = dissipated_;
+  out.delaminated_area.assign(static_cast<std::size_t>(stack.interface_count()), 0.0);
+  out.projected_area = 0.0;
+  if (stack.interface_count() == 0) return true;
+  // Every interface has the same points (same mesh and rule): the union is taken point by point.
+  const CohesiveInterface& points = stack.interface(0);
+  for (int q = 0; q < points.point_count(); ++q) {
+    bool delaminated = false;
+    for (std::size_t i = 0; i < out.delaminated_area.size(); ++i)
+      if (committed_.interfaces[i][static_cast<std::size_t>(q)].damage >= 1.0) {
+        out.delaminated_area[i] += points.point_area(q);
+        delaminated = true;
+      }
+    if (delaminated) out.projected_area += points.point_area(q);
+  }
+  return true;
+}
+
 std::optional<DelaminationResult> DelaminationStepper::delamination() const {
   const StackedPlateModel& stack = p_.stack_;
   DelaminationResult r;
-  r.dissipated = dissipated_;
+  DelaminationAreas areas;
+  (void)delamination_areas(areas);
+  r.delaminated_area = std::move(areas.delaminated_area);
+  r.projected_area = areas.projected_area;
+  r.dissipated = areas.dissipated;
   const ProcessZone zone = p_.process_zone();
   r.cohesive_zone_length = zone.length;
   r.interface_point_spacing = zone.point_spacing;
-  std::vector<bool> delaminated; // per point, in any interface
   for (int i = 0; i < stack.interface_count(); ++i) {
     const CohesiveInterface& ci = stack.interface(i);
     const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
     r.interface_after_ply.push_back(p_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
-    r.delaminated_area.push_back(ci.damaged_area(states, 1.0));
     double softening = 0.0;
-    delaminated.resize(states.size(), false);
     const auto per_element = static_cast<std::size_t>(ci.points_per_element());
     std::vector<double>& of_element = r.element_damage.emplace_back(states.size() / per_element, 0.0);
+    std::vector<double>& of_point = r.point_damage.emplace_back();
     for (std::size_t q = 0; q < states.size(); ++q) {
       const double d = states[q].damage;
       if (d > 0.0 && d < 1.0) softening += ci.point_area(static_cast<int>(q));
-      if (d >= 1.0) delaminated[q] = true;
       double& largest = of_element[q / per_element];
       largest = std::max(largest, d);
+      of_point.push_back(d);
     }
     r.process_zone_area.push_back(softening);
   }
-  // Every interface has the same points (same mesh and rule): the union is taken point by point.
   if (stack.interface_count() > 0)
-    for (std::size_t q = 0; q < delaminated.size(); ++q)
-      if (delaminated[q]) r.projected_area += stack.interface(0).point_area(static_cast<int>(q));
+    for (int q = 0; q < stack.interface(0).point_count(); ++q) {
+      r.point_cells.push_back(stack.interface(0).point_cell(q));
+      r.point_area.push_back(stack.interface(0).point_area(q));
+    }
   return r;
 }
 

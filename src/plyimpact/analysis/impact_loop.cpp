@@ -123,7 +123,7 @@ class PlateAccess final : public PlateStateAccess {
 public:
   PlateAccess(const PlateStepper& stepper, const PlateState& state, const double& force)
       : stepper_(stepper), state_(state), force_(force) {}
-  void next_step() { expanded_ = false, kinetic_.reset(), strain_.reset(); }
+  void next_step() { expanded_ = false, kinetic_.reset(), strain_.reset(), areas_state_ = unknown; }
   [[nodiscard]] const Eigen::VectorXd& displacement() const override {
     if (!expanded_) stepper_.to_model(state_.u, model_u_), expanded_ = true;
     return model_u_;
@@ -139,6 +139,13 @@ public:
   }
   [[nodiscard]] double dissipated_energy() const override { return stepper_.dissipated_energy(); }
   [[nodiscard]] const DamageField* damage() const override { return stepper_.damage(); }
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
+    return stepper_.delamination();
+  }
+  [[nodiscard]] const DelaminationAreas* delamination_areas() const override {
+    if (areas_state_ == unknown) areas_state_ = stepper_.delamination_areas(areas_) ? known : none;
+    return areas_state_ == known ? &areas_ : nullptr;
+  }
 
 private:
   const PlateStepper& stepper_;
@@ -147,6 +154,9 @@ private:
   mutable Eigen::VectorXd model_u_;
   mutable bool expanded_ = false;
   mutable std::optional<double> kinetic_, strain_;
+  enum AreasState { unknown, known, none };
+  mutable AreasState areas_state_ = unknown;
+  mutable DelaminationAreas areas_; ///< its vectors are reused from step to step
 };
 
 /// The checks of a finished run (guards.hpp): the energy balance (suspect above

@@ -6,6 +6,7 @@
 #include "plyimpact/fem/damaged_plate.hpp"
 
 #include <Eigen/Core>
+#include <optional>
 
 namespace plyimpact {
 
@@ -23,6 +24,10 @@ public:
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
   /// The plies' damage (progressive damage only).
   [[nodiscard]] virtual const DamageField* damage() const { return nullptr; }
+  /// The interfaces' areas and dissipation (stacked plate only).
+  [[nodiscard]] virtual const DelaminationAreas* delamination_areas() const { return nullptr; }
+  /// The interfaces' whole state (stacked plate only), computed at each call: for occasional outputs.
+  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
 };
 
 /// The state after a converged step (or the initial state, step 0).
@@ -49,6 +54,14 @@ public:
   [[nodiscard]] double plate_dissipated_energy() const { return plate ? plate->dissipated_energy() : 0.0; }
   /// The plies' damage, or null without progressive damage.
   [[nodiscard]] const DamageField* damage() const { return plate ? plate->damage() : nullptr; }
+  /// The interfaces' whole state, or nothing unless the plate is stacked (computed at each call).
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const {
+    return plate ? plate->delamination() : std::nullopt;
+  }
+  /// The interfaces' areas and dissipation, or null unless the plate is stacked.
+  [[nodiscard]] const DelaminationAreas* delamination_areas() const {
+    return plate ? plate->delamination_areas() : nullptr;
+  }
 };
 
 /// The history row of a step view.

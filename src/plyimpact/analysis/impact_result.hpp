@@ -3,6 +3,7 @@
 #include "plyimpact/fem/damaged_plate.hpp"
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ struct ImpactSample {
   double damage_dissipation = 0.0;     ///< energy dissipated by ply damage, all modes [J]
   double damage_area = 0.0;            ///< projected damaged area (union over the plies) [m²]
   std::vector<double> ply_damage_area; ///< damaged area of each ply [m²]
+  // Stacked plate only (zero / empty otherwise):
+  double delamination_dissipation = 0.0;          ///< energy dissipated by the interfaces [J]
+  double delaminated_area = 0.0;                  ///< projected delaminated area (d = 1, any interface) [m²]
+  std::vector<double> interface_delaminated_area; ///< delaminated area (d = 1) of each interface [m²]
 };
 
 struct ContactEpisode {
@@ -57,6 +62,13 @@ struct ProgressiveDamageResult {
   int active_elements = 0;                          ///< elements that evaluated the law
 };
 
+/// The interfaces' areas and dissipation after a step of a run on the stacked plate (issue 19).
+struct DelaminationAreas {
+  std::vector<double> delaminated_area; ///< per interface: points fully cracked (d = 1) [m²]
+  double projected_area = 0.0;          ///< union over the interfaces of the delaminated points [m²]
+  double dissipated = 0.0;              ///< energy dissipated by the interfaces [J]
+};
+
 /// The interfaces at the end of a run on the stacked plate (issue 19, docs/delamination.md).
 struct DelaminationResult {
   std::vector<int> interface_after_ply;  ///< each interface lies after this ply (1-based, from the top)
@@ -66,6 +78,11 @@ struct DelaminationResult {
   double dissipated = 0.0;               ///< energy dissipated by the interfaces [J]
   /// per interface and element: the largest damage of its points (0 intact, 1 cracked)
   std::vector<std::vector<double>> element_damage;
+  /// per interface and point (index e · points per element + q): the damage
+  std::vector<std::vector<double>> point_damage;
+  /// per point: the part of its element it stands for (CohesiveInterface::point_cell) [m], and its area [m²]
+  std::vector<std::array<Eigen::Vector2d, 4>> point_cells;
+  std::vector<double> point_area;
   double cohesive_zone_length = 0.0;    ///< E2 G_c / strength² of the shorter mode (Hillerborg) [m]
   double interface_point_spacing = 0.0; ///< the interface points' spacing in the largest element [m]
 };

@@ -21,6 +21,11 @@ ImpactSample history_sample(const StepView& v) {
     h.damage_area = d->projected_damage_area();
     h.ply_damage_area = d->ply_damage_area();
   }
+  if (const DelaminationAreas* d = v.delamination_areas()) {
+    h.delamination_dissipation = d->dissipated;
+    h.delaminated_area = d->projected_area;
+    h.interface_delaminated_area = d->delaminated_area;
+  }
   return h;
 }
 

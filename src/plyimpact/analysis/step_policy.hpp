@@ -66,6 +66,9 @@ public:
   [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
   /// The interfaces after the last accepted step (stacked plate only).
   [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
+  /// Their areas and dissipation into `out` (its vectors reused from step to step); false when the plate
+  /// has no interfaces.
+  virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
 };
 
 class StepPolicy {

@@ -15,6 +15,10 @@ std::vector<QuadraturePoint> rule_points(CohesiveIntegration rule) {
   return {gauss3x3.begin(), gauss3x3.end()};
 }
 
+const QuadratureRule1D<3>& rule_1d(CohesiveIntegration rule) {
+  return rule == CohesiveIntegration::nodal ? lobatto3 : gauss3;
+}
+
 } // namespace
 
 CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
@@ -27,7 +31,8 @@ CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& 
       lower.mesh().node_count() != upper.mesh().node_count())
     throw std::invalid_argument("cohesive interface: the two sub-laminates must share one mesh");
   for (const QuadraturePoint& q : rule_points(rule)) {
-    rule_.push_back({q.xi, q.eta, q.weight});
+    rule_.push_back({q.xi, q.eta, q.weight, tributary_interval(rule_1d(rule), static_cast<std::size_t>(q.i)),
+                     tributary_interval(rule_1d(rule), static_cast<std::size_t>(q.j))});
     jump_.push_back(jump(q.xi, q.eta));
   }
   const Mesh& mesh = upper.mesh();
@@ -130,6 +135,15 @@ double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,
     energy += area_[static_cast<std::size_t>(p)] *
               law_.stored_energy(states[static_cast<std::size_t>(p)], separation(p, u));
   return energy;
+}
+
+std::array<Eigen::Vector2d, 4> CohesiveInterface::point_cell(int p) const {
+  const int e = p / points_per_element();
+  const Point& q = rule_[static_cast<std::size_t>(p % points_per_element())];
+  const Mesh& mesh = upper_.mesh();
+  const auto [xi0, xi1] = q.xi_range;
+  const auto [eta0, eta1] = q.eta_range;
+  return {mesh.map(e, xi0, eta0), mesh.map(e, xi1, eta0), mesh.map(e, xi1, eta1), mesh.map(e, xi0, eta1)};
 }
 
 double CohesiveInterface::damaged_area(std::span<const CohesiveState> states, double threshold) const {

@@ -24,8 +24,10 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -67,6 +69,10 @@ public:
   }
   /// Area the point stands for, w_q detJ [m²].
   [[nodiscard]] double point_area(int p) const { return area_[static_cast<std::size_t>(p)]; }
+  /// The part of its element that point p stands for: the image of the parent rectangle of its tributary
+  /// intervals (tributary_interval), corners counter-clockwise [m]. Its parent area is the point's weight,
+  /// so on an affine element its area is point_area(p); the cells tile the element.
+  [[nodiscard]] std::array<Eigen::Vector2d, 4> point_cell(int p) const;
 
   /// The separation (DL1) at point p for the stacked displacement u.
   [[nodiscard]] Eigen::Vector3d separation(int p, const Eigen::VectorXd& u) const;
@@ -86,6 +92,7 @@ public:
 private:
   struct Point {
     double xi, eta, weight;
+    std::pair<double, double> xi_range, eta_range; ///< the tributary intervals
   };
   [[nodiscard]] JumpOperator jump(double xi, double eta) const;
   [[nodiscard]] Eigen::Matrix<double, 2 * q9_dofs, 1> element_dofs(int e, const Eigen::VectorXd& u) const;

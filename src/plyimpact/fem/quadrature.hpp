@@ -3,6 +3,7 @@
 // their tensor products on the parent square [−1, 1]².
 #include <array>
 #include <cstddef>
+#include <utility>
 
 namespace plyimpact {
 
@@ -22,6 +23,17 @@ inline constexpr QuadratureRule1D<3> gauss3{{-0.77459666924148337704, 0.0, 0.774
 
 /// 3-point Gauss–Lobatto (nodes −1, 0, 1; weights 1/3, 4/3, 1/3): diagonal mass (thesis (3.7)/(3.8)).
 inline constexpr QuadratureRule1D<3> lobatto3{{-1.0, 0.0, 1.0}, {1.0 / 3.0, 4.0 / 3.0, 1.0 / 3.0}};
+
+/// The part of [−1, 1] that point k of a rule stands for: the rule's weights laid end to end from −1
+/// (they add up to 2), so that the interval's length is the point's weight and the intervals tile [−1, 1]
+/// in the order of the points (for the rules above each interval contains its point).
+template <std::size_t N>
+constexpr std::pair<double, double> tributary_interval(const QuadratureRule1D<N>& r, std::size_t k) {
+  double start = -1.0;
+  for (std::size_t i = 0; i < k; ++i)
+    start += r.weights[i];
+  return {start, k + 1 == N ? 1.0 : start + r.weights[k]}; // the last ends at 1 exactly, not 1 + round-off
+}
 
 /// A point of a tensor-product rule: parent coordinates, weight w_i w_j, and its indices i along ξ and
 /// j along η (0-based; the thesis's IPGS = i + 1, JPGS = j + 1).

@@ -21,27 +21,48 @@ constexpr auto flush_interval = std::chrono::seconds(1);
 
 } // namespace
 
-std::string history_csv_header(int damaged_plies) {
-  std::string h = "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,plate_kinetic_J,"
-                  "plate_strain_J,impactor_energy_J,contact_work_J";
-  if (damaged_plies > 0) {
-    h += ",damage_dissipation_J,damage_area_m2";
-    for (int k = 1; k <= damaged_plies; ++k)
-      h += fmt::format(",ply{}_damage_area_m2", k);
+HistoryLayout history_layout(const ImpactResult& result) {
+  HistoryLayout layout;
+  if (!result.history.empty())
+    layout.damaged_plies = static_cast<int>(result.history.front().ply_damage_area.size());
+  if (result.delamination) layout.interfaces_after_ply = result.delamination->interface_after_ply;
+  return layout;
+}
+
+std::vector<std::string> history_columns(const HistoryLayout& layout) {
+  std::vector<std::string> names{
+      "t_s",           "force_N",         "impactor_w_m",   "impactor_v_m_per_s", "plate_w_m",
+      "indentation_m", "plate_kinetic_J", "plate_strain_J", "impactor_energy_J",  "contact_work_J"};
+  if (layout.damaged_plies > 0) {
+    names.emplace_back("damage_dissipation_J");
+    names.emplace_back("damage_area_m2");
+    for (int k = 1; k <= layout.damaged_plies; ++k)
+      names.push_back(fmt::format("ply{}_damage_area_m2", k));
   }
+  if (!layout.interfaces_after_ply.empty()) {
+    names.emplace_back("delamination_dissipation_J");
+    names.emplace_back("delamination_area_m2");
+    for (const int p : layout.interfaces_after_ply)
+      names.push_back(fmt::format("delamination_area_after_ply{}_m2", p));
+  }
+  return names;
+}
+
+std::string history_csv_header(const HistoryLayout& layout) {
+  std::string h;
+  for (const std::string& name : history_columns(layout))
+    h += (h.empty() ? "" : ",") + name;
   return h + "\n";
 }
 
 void append_history_csv_row(std::string& out, const ImpactSample& h) {
   // The shortest text that reads back as the same double (no float noise, no lost digits).
-  fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{}\n", h.t, h.force, h.impactor_w,
-                 h.impactor_v, h.plate_w, h.indentation, h.plate_kinetic, h.plate_strain, h.impactor_energy,
-                 h.contact_work);
-  if (h.ply_damage_area.empty()) return;
-  out.pop_back(); // the newline: the progressive-damage columns follow
-  fmt::format_to(std::back_inserter(out), ",{},{}", h.damage_dissipation, h.damage_area);
-  for (const double a : h.ply_damage_area)
-    fmt::format_to(std::back_inserter(out), ",{}", a);
+  bool first = true;
+  for_each_history_value(h, [&](double v) {
+    if (!first) out.push_back(',');
+    fmt::format_to(std::back_inserter(out), "{}", v);
+    first = false;
+  });
   out.push_back('\n');
 }
 
@@ -51,12 +72,12 @@ std::string history_csv_row(const ImpactSample& h) {
   return row;
 }
 
-HistoryCsvWriter::HistoryCsvWriter(std::filesystem::path path, int every, int damaged_plies)
+HistoryCsvWriter::HistoryCsvWriter(std::filesystem::path path, int every, const HistoryLayout& layout)
     : path_(std::move(path)), every_(every < 1 ? 1 : every), last_flush_(std::chrono::steady_clock::now()) {
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw std::runtime_error(fmt::format("{}: cannot write: {}", path_.string(), std::strerror(errno)));
-  buffer_ = history_csv_header(damaged_plies);
+  buffer_ = history_csv_header(layout);
   flush();
 }
 

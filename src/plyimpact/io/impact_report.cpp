@@ -164,7 +164,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
 }
 
 std::string impact_history_csv(const ImpactResult& r) {
-  std::string csv = history_csv_header();
+  std::string csv = history_csv_header(history_layout(r));
   for (const auto& h : r.history)
     csv += history_csv_row(h);
   return csv;
@@ -220,21 +220,6 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   if (!r.incomplete_reason.empty()) t += "  incomplete: " + r.incomplete_reason + "\n";
   if (r.suspect) t += "  suspect: " + r.suspect_reason + "\n";
   return t;
-}
-
-std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result) {
-  std::string csv = "element,x_m,y_m";
-  for (const int p : result.interface_after_ply)
-    csv += fmt::format(",d_after_ply_{}", p);
-  csv += "\n";
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    const Eigen::Vector2d centre = mesh.map(e, 0.0, 0.0);
-    csv += fmt::format("{},{},{}", e + 1, centre.x(), centre.y());
-    for (const std::vector<double>& d : result.element_damage)
-      csv += fmt::format(",{}", d[static_cast<std::size_t>(e)]);
-    csv += "\n";
-  }
-  return csv;
 }
 
 void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& r,

@@ -13,9 +13,6 @@ namespace plyimpact {
                                                  const ImpactResult& result);
 [[nodiscard]] std::string impact_history_csv(const ImpactResult& result);
 [[nodiscard]] std::string impact_summary_text(const ImpactSettings& settings, const ImpactResult& result);
-/// delamination_elements.csv: per element, its centre and the largest damage of its points at each
-/// interface (0 intact, 1 cracked), the columns named after the ply each interface follows.
-[[nodiscard]] std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result);
 /// field_<t>.csv for every snapshot and, last, summary.json (`summary`, from impact_summary_json);
 /// history.csv is streamed during the run (io/history_csv.hpp).
 void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& result,

@@ -47,13 +47,13 @@ public:
 private:
   void write(const StepView& v) {
     const std::vector<DamageOnset>& onsets = damage_ != nullptr ? damage_->onsets() : none_;
-    // A progressive run's plate has a damage field from the first frame on (virgin: all zero).
-    if (const DamageField* field = v.damage()) {
-      const std::vector<ElementPlyDamage> plies = field->element_ply_damage();
-      series_.write(v.step, v.t, v.plate_displacement(), onsets, &plies);
-    } else {
-      series_.write(v.step, v.t, v.plate_displacement(), onsets);
-    }
+    // A progressive run's plate has a damage field from the first frame on (virgin: all zero), a stacked
+    // plate its interfaces.
+    std::optional<std::vector<ElementPlyDamage>> plies;
+    if (const DamageField* field = v.damage()) plies = field->element_ply_damage();
+    const std::optional<DelaminationResult> interfaces = v.delamination();
+    series_.write(v.step, v.t, v.plate_displacement(), onsets, plies ? &*plies : nullptr,
+                  interfaces ? &*interfaces : nullptr);
     last_written_ = v.step;
   }
 
@@ -79,12 +79,24 @@ private:
   double t_;
 };
 
+/// The columns of a run's history: the plies' damage of a progressive run, the interfaces of a stacked one.
+HistoryLayout history_layout_of(const Deck& deck, const ImpactSettings& s) {
+  HistoryLayout layout;
+  if (deck.damage.progressive && deck.laminate)
+    layout.damaged_plies = static_cast<int>(deck.laminate->ply_count());
+  if (s.delamination)
+    for (const int cut : s.delamination->stack.cuts)
+      layout.interfaces_after_ply.push_back(cut + 1); // the cut lies after ply cut + 1 (1-based)
+  return layout;
+}
+
 } // namespace
 
 ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const ImpactRunOptions& options) {
   ImpactRunOutcome out;
   out.settings = resolved_settings(impact_case_description(deck, impact.nonlinear()));
   out.settings.mesh = impact.settings().mesh; // the mesh the shared case runs on
+  out.history_layout = history_layout_of(deck, out.settings);
   if (out.settings.dt != impact.settings().dt)
     throw std::invalid_argument(
         "impact: a case may reuse another's factorization only with the same time step");
@@ -109,9 +121,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   if (options.output_dir) folder.emplace(*options.output_dir, deck);
   std::optional<HistoryCsvWriter> history;
   if (folder && options.history)
-    run.observers.push_back(&history.emplace(
-        folder->path() / "history.csv", deck.history_every,
-        deck.damage.progressive && deck.laminate ? static_cast<int>(deck.laminate->ply_count()) : 0));
+    run.observers.push_back(
+        &history.emplace(folder->path() / "history.csv", deck.history_every, out.history_layout));
   std::optional<VtkFrames> vtk;
   if (folder && deck.vtk.enabled && plate)
     run.observers.push_back(
@@ -150,9 +161,11 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
     folder->write_text(
         damage_elements_file,
         damage_elements_csv(model, PlyDamageTable(model, out.result.progressive->element_ply_damage)));
-  if (out.result.delamination)
-    folder->write_text("delamination_elements.csv",
+  if (out.result.delamination) {
+    folder->write_text(delamination_elements_file,
                        delamination_elements_csv(model.mesh(), *out.result.delamination));
+    folder->write_text(delamination_points_file, delamination_points_csv(*out.result.delamination));
+  }
   if (probes) folder->write_text("probes.csv", probes_csv(*probes));
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,

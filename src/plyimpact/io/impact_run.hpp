@@ -5,6 +5,7 @@
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/history_csv.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +32,7 @@ struct ImpactRunOptions {
 struct ImpactRunOutcome {
   ImpactSettings settings; ///< of the deck's own case: its impactor, k, Δt
   ImpactResult result;
+  HistoryLayout history_layout; ///< the columns of its history rows (history.csv, the Python arrays)
   bool damage_tracked = false;
   std::vector<DamageOnset> first_failures; ///< per criterion, mode and ply or interface, in order of onset
   std::vector<std::string> notes;          ///< things the run could not do (e.g. no gnuplot for maps)

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <tuple>
 
 namespace plyimpact {
@@ -213,6 +215,63 @@ PlotSpec impactor_energy_plot(const std::vector<PlotRun>& runs) {
                    std::move(curves), "center right", "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n");
 }
 
+/// The column names of a history.csv.
+std::vector<std::string> history_header(const fs::path& history) {
+  std::ifstream in(history);
+  std::string header, name;
+  std::getline(in, header);
+  std::vector<std::string> names;
+  std::istringstream cells(header);
+  while (std::getline(cells, name, ','))
+    names.push_back(name);
+  return names;
+}
+
+/// Energy balance (SPEC §4): impactor + plate kinetic + plate strain + contact work (+ the energy the plies'
+/// damage and the interfaces dissipated, when the run has them) = ½ m v0².
+PlotSpec energy_plot(const fs::path& h) {
+  std::vector<std::pair<std::string, std::string>> terms{{"impactor_energy_J", "impactor kinetic"},
+                                                         {"plate_kinetic_J", "plate kinetic"},
+                                                         {"plate_strain_J", "plate strain"},
+                                                         {"contact_work_J", "contact work (indentation)"}};
+  const std::vector<std::string> columns = history_header(h);
+  const auto has = [&](const std::string& c) {
+    return std::find(columns.begin(), columns.end(), c) != columns.end();
+  };
+  if (has("damage_dissipation_J")) terms.emplace_back("damage_dissipation_J", "dissipated by ply damage");
+  if (has("delamination_dissipation_J"))
+    terms.emplace_back("delamination_dissipation_J", "dissipated by the interfaces");
+  std::vector<PlotCurve> curves;
+  std::string sum;
+  for (const auto& [column, title] : terms) {
+    curves.push_back(csv_curve(h, fmt::format("{}:(column('{}'))", t_us, column), title));
+    sum += fmt::format("{}column('{}')", sum.empty() ? "" : "+", column);
+  }
+  curves.push_back(csv_curve(h, fmt::format("{}:({})", t_us, sum), "sum"));
+  return plot_spec("energy", "Energy balance", "t [us]", "energy [J]", std::move(curves), "center right",
+                   "set yrange [0:*]\n");
+}
+
+/// Delaminated area (cohesive damage d = 1) of each interface and projected, against time, from the
+/// history.csv of a stacked plate (no curves otherwise).
+PlotSpec delamination_area_plot(const fs::path& h) {
+  std::vector<PlotCurve> curves;
+  constexpr std::string_view prefix = "delamination_area_after_ply";
+  for (const std::string& column : history_header(h))
+    if (column.rfind(prefix, 0) == 0)
+      curves.push_back(csv_curve(h, fmt::format("{}:(column('{}')*1e6)", t_us, column),
+                                 "interface after ply " +
+                                     column.substr(prefix.size(), column.size() - prefix.size() - 3)));
+  if (curves.empty()) return {};
+  curves.push_back(csv_curve(h, fmt::format("{}:(column('delamination_area_m2')*1e6)", t_us),
+                             "projected (union over the interfaces)"));
+  curves.back().colour = "#000000";
+  curves.back().style = "lines dt 2"; // dashed: an interface it equals stays visible beneath it
+  return plot_spec("delamination_area", "Delaminated area (cohesive damage d = 1)", "t [us]",
+                   "delaminated area [mm^2]", std::move(curves), "bottom right",
+                   "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n");
+}
+
 } // namespace
 
 std::pair<int, int> picture_size(const PlotSpec& spec) {
@@ -256,20 +315,10 @@ std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs) {
                         "top left"));
   p.push_back(impactor_energy_plot(runs));
   if (runs.size() == 1) {
-    // Energy balance (SPEC §4): impactor + plate kinetic + plate strain + contact work = ½ m v0².
     const fs::path h = runs.front().dir / "history.csv";
-    p.push_back(plot_spec(
-        "energy", "Energy balance", "t [us]", "energy [J]",
-        {csv_curve(h, fmt::format("{}:(column('impactor_energy_J'))", t_us), "impactor kinetic"),
-         csv_curve(h, fmt::format("{}:(column('plate_kinetic_J'))", t_us), "plate kinetic"),
-         csv_curve(h, fmt::format("{}:(column('plate_strain_J'))", t_us), "plate strain"),
-         csv_curve(h, fmt::format("{}:(column('contact_work_J'))", t_us), "contact work (indentation)"),
-         csv_curve(h,
-                   fmt::format("{}:(column('impactor_energy_J')+column('plate_kinetic_J')+"
-                               "column('plate_strain_J')+column('contact_work_J'))",
-                               t_us),
-                   "sum")},
-        "center right", "set yrange [0:*]\n"));
+    p.push_back(energy_plot(h));
+    if (PlotSpec delamination = delamination_area_plot(h); !delamination.curves.empty())
+      p.push_back(std::move(delamination));
     const fs::path area = runs.front().dir / "damage_area.csv";
     if (fs::exists(area)) {
       PlotSpec damage = damage_area_plot(area, last_time(h));
@@ -277,6 +326,9 @@ std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs) {
     }
     // Progressive damage: a map per ply and the projected map (io/ply_damage_maps.hpp).
     for (PlotSpec& map : ply_damage_map_plots(runs.front().dir))
+      p.push_back(std::move(map));
+    // Stacked plate: a map per interface and the projected map.
+    for (PlotSpec& map : delamination_map_plots(runs.front().dir))
       p.push_back(std::move(map));
   }
   return p;

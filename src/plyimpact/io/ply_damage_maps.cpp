@@ -67,9 +67,22 @@ constexpr const char* palette =
     "set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', "
     "0.7 '#e31a1c', 1 '#800026')\n";
 
+/// The colour scale of a map: gnuplot's palette and the colour box's label.
+struct MapScale {
+  const char* palette;
+  const char* label;
+};
+constexpr MapScale ply_scale{palette, "damage variable d (white: 0, intact; 1: fully cracked)"};
+/// The interfaces: the softening points in the same colours up to red, the delaminated ones (d = 1)
+/// black, so that a C-scan's delaminated area stands out from a process zone whose d is 0.998.
+constexpr MapScale interface_scale{
+    "set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', 0.7 '#e31a1c', "
+    "0.9999 '#bd0026', 0.9999 '#000000', 1 '#000000')\n",
+    "cohesive damage d (white: intact; black: delaminated, d = 1)"};
+
 /// The gnuplot settings of a map over the rows' elements: every element a polygon filled with its value.
 std::string map_settings(const std::vector<const DamageElementRow*>& elements,
-                         const std::vector<double>& values) {
+                         const std::vector<double>& values, const MapScale& scale) {
   double x0 = elements.front()->corners[0].x(), x1 = x0, y0 = elements.front()->corners[0].y(), y1 = y0;
   for (const DamageElementRow* r : elements)
     for (const Eigen::Vector2d& c : r->corners) {
@@ -81,8 +94,8 @@ std::string map_settings(const std::vector<const DamageElementRow*>& elements,
   std::string s = "unset grid\nset size ratio -1\n";
   s += fmt::format("set xrange [{:.6f}:{:.6f}]\nset yrange [{:.6f}:{:.6f}]\n", x0 * 1e3, x1 * 1e3, y0 * 1e3,
                    y1 * 1e3);
-  s += "set cbrange [0:1]\nset cblabel 'damage variable d (white: 0, intact; 1: fully cracked)' noenhanced\n";
-  s += palette;
+  s += fmt::format("set cbrange [0:1]\nset cblabel '{}' noenhanced\n", scale.label);
+  s += scale.palette;
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const auto& c = elements[i]->corners;
     s += fmt::format(
@@ -125,14 +138,15 @@ std::vector<PlotCurve> map_curves(const std::vector<const DamageElementRow*>& el
 }
 
 PlotSpec map_spec(std::string name, std::string title, const std::vector<const DamageElementRow*>& elements,
-                  const std::vector<double>& values, const std::optional<Eigen::Vector2d>& impact_point) {
+                  const std::vector<double>& values, const std::optional<Eigen::Vector2d>& impact_point,
+                  const MapScale& scale = ply_scale) {
   PlotSpec spec;
   spec.name = std::move(name);
   spec.title = std::move(title);
   spec.xlabel = "x [mm]";
   spec.ylabel = "y [mm]";
   spec.key = "at screen 0.98, 0.02 right bottom"; // bottom right corner, clear of the axes and labels
-  spec.extra = map_settings(elements, values);
+  spec.extra = map_settings(elements, values, scale);
   spec.curves = map_curves(elements, values, impact_point);
   return spec;
 }
@@ -152,6 +166,32 @@ std::optional<Eigen::Vector2d> impact_point_of(const fs::path& dir) {
   return std::nullopt;
 }
 
+/// The element's corner nodes 0-3 of the Q9 (counter-clockwise) as the cells ",x1,y1,…,x4,y4".
+std::string corner_cells(const Mesh& mesh, int e) {
+  std::string cells;
+  for (std::size_t a = 0; a < 4; ++a) {
+    const Eigen::Vector2d& c = mesh.node(mesh.element_nodes(e)[a]);
+    cells += fmt::format(",{},{}", c.x(), c.y());
+  }
+  return cells;
+}
+
+/// The centre and corners of the row being read.
+void read_geometry(const RowReader& reader, DamageElementRow& r) {
+  r.centre = {reader.number("x_m"), reader.number("y_m")};
+  for (std::size_t a = 0; a < 4; ++a)
+    r.corners[a] = {reader.number(fmt::format("x{}_m", a + 1)), reader.number(fmt::format("y{}_m", a + 1))};
+}
+
+/// The largest value per element over the layers.
+std::vector<double> largest_over(const std::vector<std::vector<double>>& layers) {
+  std::vector<double> top(layers.front().size(), 0.0);
+  for (const std::vector<double>& layer : layers)
+    for (std::size_t i = 0; i < top.size(); ++i)
+      top[i] = std::max(top[i], layer[i]);
+  return top;
+}
+
 } // namespace
 
 double DamageElementRow::largest() const {
@@ -164,11 +204,7 @@ std::string damage_elements_csv(const PlateModel& model, const PlyDamageTable& t
   for (int e = 0; e < mesh.element_count(); ++e) {
     const Laminate& lam = model.laminate_of(e);
     const Eigen::Vector2d centre = mesh.map(e, 0.0, 0.0);
-    std::string corners;
-    for (std::size_t a = 0; a < 4; ++a) { // corner nodes 0-3 of the Q9, counter-clockwise
-      const Eigen::Vector2d& c = mesh.node(mesh.element_nodes(e)[a]);
-      corners += fmt::format(",{},{}", c.x(), c.y());
-    }
+    const std::string corners = corner_cells(mesh, e);
     for (int k = 0; k < static_cast<int>(lam.ply_count()); ++k) {
       const auto& d = table.of(k, e).values;
       csv +=
@@ -191,14 +227,12 @@ std::vector<DamageElementRow> read_damage_elements_csv(const fs::path& csv) {
     reader.start(line, number);
     DamageElementRow r;
     r.element = static_cast<int>(reader.number("element"));
+    read_geometry(reader, r);
     r.ply = static_cast<int>(reader.number("ply"));
     r.angle_deg = reader.number("angle_deg");
-    r.centre = {reader.number("x_m"), reader.number("y_m")};
     const std::array<const char*, 4> modes{"d_ft", "d_fc", "d_mt", "d_mc"};
     for (std::size_t m = 0; m < modes.size(); ++m)
       r.damage.values[m] = reader.number(modes[m]);
-    for (std::size_t a = 0; a < 4; ++a)
-      r.corners[a] = {reader.number(fmt::format("x{}_m", a + 1)), reader.number(fmt::format("y{}_m", a + 1))};
     rows.push_back(r);
   }
   return rows;
@@ -263,6 +297,94 @@ std::vector<PlotSpec> ply_damage_map_plots(const fs::path& dir) {
   const fs::path csv = dir / damage_elements_file;
   if (!fs::exists(csv)) return {};
   return ply_damage_map_plots(read_damage_elements_csv(csv), impact_point_of(dir));
+}
+
+std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result) {
+  std::string csv = "element,x_m,y_m";
+  for (const int p : result.interface_after_ply)
+    csv += fmt::format(",d_after_ply_{}", p);
+  csv += "\n";
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const Eigen::Vector2d centre = mesh.map(e, 0.0, 0.0);
+    csv += fmt::format("{},{},{}", e + 1, centre.x(), centre.y());
+    for (const std::vector<double>& d : result.element_damage)
+      csv += fmt::format(",{}", d[static_cast<std::size_t>(e)]);
+    csv += "\n";
+  }
+  return csv;
+}
+
+std::string delamination_points_csv(const DelaminationResult& result) {
+  std::string csv = "point,x_m,y_m,area_m2";
+  for (const int p : result.interface_after_ply)
+    csv += fmt::format(",d_after_ply_{}", p);
+  csv += ",x1_m,y1_m,x2_m,y2_m,x3_m,y3_m,x4_m,y4_m\n";
+  for (std::size_t q = 0; q < result.point_cells.size(); ++q) {
+    const auto& cell = result.point_cells[q];
+    const Eigen::Vector2d centre = (cell[0] + cell[1] + cell[2] + cell[3]) / 4.0;
+    csv += fmt::format("{},{},{},{}", q + 1, centre.x(), centre.y(), result.point_area[q]);
+    for (const std::vector<double>& d : result.point_damage)
+      csv += fmt::format(",{}", d[q]);
+    for (const Eigen::Vector2d& c : cell)
+      csv += fmt::format(",{},{}", c.x(), c.y());
+    csv += "\n";
+  }
+  return csv;
+}
+
+std::vector<PlotSpec> delamination_map_plots(const fs::path& dir) {
+  const fs::path csv = dir / delamination_points_file;
+  std::ifstream in(csv);
+  if (!in) return {};
+  std::string line;
+  std::getline(in, line);
+  RowReader reader(csv, line);
+  std::vector<int> after_ply; // the interfaces, from the column names
+  for (const std::string& name : split(line))
+    if (name.rfind("d_after_ply_", 0) == 0) after_ply.push_back(std::stoi(name.substr(12)));
+  std::vector<DamageElementRow> cells; // one per interface point: its tributary cell
+  std::vector<double> area;
+  std::vector<std::vector<double>> damage(after_ply.size());
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    reader.start(line, number);
+    DamageElementRow& r = cells.emplace_back();
+    r.element = static_cast<int>(reader.number("point"));
+    read_geometry(reader, r);
+    area.push_back(reader.number("area_m2"));
+    for (std::size_t i = 0; i < after_ply.size(); ++i)
+      damage[i].push_back(reader.number(fmt::format("d_after_ply_{}", after_ply[i])));
+  }
+  if (cells.empty() || after_ply.empty()) return {};
+  std::vector<const DamageElementRow*> geometry;
+  geometry.reserve(cells.size());
+  for (const DamageElementRow& r : cells)
+    geometry.push_back(&r);
+  // The areas in the titles are those of summary.json: the points with d = 1, and 0 < d < 1.
+  const auto area_where = [&](const std::vector<double>& d, auto&& holds) {
+    double sum = 0.0;
+    for (std::size_t q = 0; q < d.size(); ++q)
+      if (holds(d[q])) sum += area[q];
+    return sum * 1e6;
+  };
+  const auto cracked = [](double d) { return d >= 1.0; };
+  const auto softening = [](double d) { return d > 0.0 && d < 1.0; };
+  const std::optional<Eigen::Vector2d> impact_point = impact_point_of(dir);
+  std::vector<PlotSpec> specs;
+  for (std::size_t i = 0; i < after_ply.size(); ++i)
+    specs.push_back(
+        map_spec(fmt::format("delamination_map_after_ply{:02d}", after_ply[i]),
+                 fmt::format("Interface after ply {}: cohesive damage d per interface point "
+                             "(delaminated {:.3g} mm^2, softening {:.3g} mm^2)",
+                             after_ply[i], area_where(damage[i], cracked), area_where(damage[i], softening)),
+                 geometry, damage[i], impact_point, interface_scale));
+  const std::vector<double> projected = largest_over(damage);
+  specs.push_back(map_spec("delamination_map_projected",
+                           fmt::format("Projected delamination (C-scan view): largest d of any interface "
+                                       "(delaminated {:.3g} mm^2)",
+                                       area_where(projected, cracked)),
+                           geometry, projected, impact_point, interface_scale));
+  return specs;
 }
 
 } // namespace plyimpact

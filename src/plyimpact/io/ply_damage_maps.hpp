@@ -10,6 +10,21 @@
 //                         of its four damage variables per element, and the projected map (largest over
 //                         the plies: what a C-scan sees), on a 0..1 colour scale over the element grid,
 //                         with the impact point of DIR/deck.toml marked.
+//
+// The interfaces of a stacked plate (docs/delamination.md) in the same way:
+//
+//   delamination_elements.csv   one row per element: element (1-based), x_m, y_m (centre) and
+//                         d_after_ply_P for each interface (the largest cohesive damage of the element's
+//                         interface points, 0 intact, 1 delaminated; P the ply above the interface).
+//   delamination_points.csv   one row per interface point (every interface has the same points): point
+//                         (1-based), x_m, y_m (centre of its cell), area_m2 (the area it stands for),
+//                         d_after_ply_P for each interface, and the corners x1_m, y1_m … x4_m, y4_m of
+//                         the part of its element it stands for (its tributary cell, counter-clockwise).
+//   plots/delamination_map_after_plyPP, plots/delamination_map_projected   per interface the damage of
+//                         every point drawn over its cell, and the largest over the interfaces (what a
+//                         C-scan of the delaminations shows); the titles give the delaminated (d = 1) and
+//                         softening areas, the sums of the cells' areas, equal to summary.json's.
+#include "plyimpact/analysis/impact_result.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/ply_damage_table.hpp"
@@ -27,6 +42,11 @@ namespace plyimpact {
 /// The file name of the per-element damage in a results folder.
 inline constexpr const char* damage_elements_file = "damage_elements.csv";
 
+/// The file name of the interfaces' per-element damage in a results folder.
+inline constexpr const char* delamination_elements_file = "delamination_elements.csv";
+/// The file name of the interfaces' per-point damage in a results folder.
+inline constexpr const char* delamination_points_file = "delamination_points.csv";
+
 /// One row of damage_elements.csv.
 struct DamageElementRow {
   int element = 0; ///< 1-based
@@ -41,6 +61,11 @@ struct DamageElementRow {
 
 /// damage_elements.csv of `table` on `model` (numbers as the shortest text that reads back the same).
 [[nodiscard]] std::string damage_elements_csv(const PlateModel& model, const PlyDamageTable& table);
+
+/// delamination_elements.csv of a stacked plate's interfaces on `mesh`.
+[[nodiscard]] std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result);
+/// delamination_points.csv of a stacked plate's interfaces.
+[[nodiscard]] std::string delamination_points_csv(const DelaminationResult& result);
 
 /// Reads damage_elements.csv (columns by name). Throws std::runtime_error naming the file and the line
 /// when a column is missing or a value is not a number.
@@ -57,5 +82,10 @@ struct DamageElementRow {
 
 /// The maps of results folder `dir` (reads damage_elements.csv and the impact point of deck.toml).
 [[nodiscard]] std::vector<PlotSpec> ply_damage_map_plots(const std::filesystem::path& dir);
+
+/// The interfaces' maps of results folder `dir`: one per interface and the projected map (reads
+/// delamination_points.csv and the impact point of deck.toml; none without the file). Throws
+/// std::runtime_error naming the file and line of a missing column or a value that is not a number.
+[[nodiscard]] std::vector<PlotSpec> delamination_map_plots(const std::filesystem::path& dir);
 
 } // namespace plyimpact

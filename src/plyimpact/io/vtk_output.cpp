@@ -115,11 +115,33 @@ void add_ply_damage(vtkCellData& cells, const PlyDamageTable& table, const std::
   add_cell_array(cells, "damage_max", elements, [&](int e) { return table.projected(e); });
 }
 
+/// The stacked plate's interfaces: cohesive_d_after_plyP (the largest damage of the element's points at the
+/// interface after ply P), then cohesive_d_max (the largest over the interfaces: the projected map).
+void add_cohesive_damage(vtkCellData& cells, const DelaminationResult& interfaces, vtkIdType elements) {
+  for (std::size_t i = 0; i < interfaces.interface_after_ply.size(); ++i)
+    add_cell_array(cells, fmt::format("cohesive_d_after_ply{}", interfaces.interface_after_ply[i]), elements,
+                   [&](int e) { return interfaces.element_damage[i][static_cast<std::size_t>(e)]; });
+  add_cell_array(cells, "cohesive_d_max", elements, [&](int e) {
+    double d = 0.0;
+    for (const std::vector<double>& of_element : interfaces.element_damage)
+      d = std::max(d, of_element[static_cast<std::size_t>(e)]);
+    return d;
+  });
+}
+
+/// The cohesive damage of the interface below ply k (0-based) in element e, 0 where the laminate is not cut.
+double cohesive_damage_below(const DelaminationResult& interfaces, int k, int e) {
+  for (std::size_t i = 0; i < interfaces.interface_after_ply.size(); ++i)
+    if (interfaces.interface_after_ply[i] == k + 1)
+      return interfaces.element_damage[i][static_cast<std::size_t>(e)];
+  return 0.0;
+}
+
 } // namespace
 
 void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
-                     const PlyDamageTable* progressive) {
+                     const PlyDamageTable* progressive, const DelaminationResult* interfaces) {
   const Mesh& mesh = model.mesh();
   const vtkIdType nodes = mesh.node_count(), elements = mesh.element_count();
   vtkNew<vtkPoints> points;
@@ -181,6 +203,7 @@ void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen:
                    [&](int e) { return damage.of_interface(i, e); });
   }
   if (progressive != nullptr) add_ply_damage(cells, *progressive, selected(options.plies, f.plies), elements);
+  if (interfaces != nullptr) add_cohesive_damage(cells, *interfaces, elements);
   write_grid(file, *grid);
 }
 
@@ -195,7 +218,7 @@ constexpr std::array<std::array<int, 4>, 4> q9_sub_quads{
 
 void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
                       const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
-                      const PlyDamageTable* progressive) {
+                      const PlyDamageTable* progressive, const DelaminationResult* interfaces) {
   const Mesh& mesh = model.mesh();
   const vtkIdType nodes = mesh.node_count();
   // Surfaces s = 0 (impacted face) … N (back face) of each laminate at heights z_s; point
@@ -252,6 +275,9 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
       ply_damage.emplace_back(double_array(name, count).Get());
     ply_damage.emplace_back(double_array("d_max", count).Get());
   }
+  // Stacked plate: the cohesive damage of the interface below the cell's ply.
+  vtkSmartPointer<vtkDoubleArray> cohesive;
+  if (interfaces != nullptr) cohesive = double_array("cohesive_d_below", count).Get();
 
   // Ply by ply (cells of ply 1 first), then element by element.
   vtkIdType cell = 0;
@@ -285,6 +311,7 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
             ply_damage[m]->SetValue(cell, progressive->of(k, e).values[m]);
           ply_damage.back()->SetValue(cell, progressive->largest(k, e));
         }
+        if (cohesive) cohesive->SetValue(cell, cohesive_damage_below(*interfaces, k, e));
         ++cell;
       }
     }
@@ -299,6 +326,7 @@ void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen
   data.AddArray(delaminated);
   for (const auto& a : ply_damage)
     data.AddArray(a);
+  if (cohesive) data.AddArray(cohesive);
   write_grid(file, *grid);
 }
 
@@ -331,14 +359,15 @@ VtkSeries::VtkSeries(fs::path dir, const PlateModel& model, VtkOptions options)
     : dir_(std::move(dir)), model_(model), options_(std::move(options)) {}
 
 void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets,
-                      const std::vector<ElementPlyDamage>* progressive) {
+                      const std::vector<ElementPlyDamage>* progressive,
+                      const DelaminationResult* interfaces) {
   const std::string plate = fmt::format("paraview/plate_{:07d}.vtu", step);
   const std::string layers = fmt::format("paraview/layers_{:07d}.vtu", step);
   std::optional<PlyDamageTable> table;
   if (progressive != nullptr) table.emplace(model_, *progressive);
   const PlyDamageTable* damage = table ? &*table : nullptr;
-  write_plate_vtu(dir_ / plate, model_, u, onsets, t, options_, damage);
-  write_layers_vtu(dir_ / layers, model_, u, onsets, t, options_, damage);
+  write_plate_vtu(dir_ / plate, model_, u, onsets, t, options_, damage, interfaces);
+  write_layers_vtu(dir_ / layers, model_, u, onsets, t, options_, damage, interfaces);
   plate_.push_back({t, plate});
   layers_.push_back({t, layers});
   write_pvd(dir_ / "plate.pvd", plate_);

@@ -7,17 +7,21 @@
 //               selected ply: σ̄11, σ̄22, τ̄12, τ̄13, τ̄23 (material axes), failure indices and the
 //               damaged fraction; per selected interface: (τyz, τxz) and the delaminated fraction.
 //               Progressive damage: per selected ply d_ft, d_fc, d_mt, d_mc and their largest, and the
-//               projected damage_max (largest over all plies and modes).
+//               projected damage_max (largest over all plies and modes). Stacked plate (delamination):
+//               cohesive_d_after_plyP per interface (the largest damage of the element's interface
+//               points, 1: delaminated) and cohesive_d_max (largest over the interfaces: the C-scan view).
 //   layers.pvd  the laminate in 3-D, one VTK_HEXAHEDRON layer per ply (each Q9 split into its 2×2
 //               node cells), thickness optionally exaggerated; cell data ply number, angle, stresses,
 //               damaged fraction and the delaminated fraction of the interface below; progressive damage:
-//               d_ft, d_fc, d_mt, d_mc and d_max of the ply.
+//               d_ft, d_fc, d_mt, d_mc and d_max of the ply; stacked plate: cohesive_d_below, the cohesive
+//               damage of the interface below the ply (0 where the laminate is not cut).
 //
 // Coordinates are SPEC §1's: z points in the impact direction (the impacted face is z = −h/2).
 // Cell values are sampled at element centres (analysis/element_fields.hpp). Every file is written to
 // a temporary name and renamed, and the collections are rewritten after every frame, so an
 // interrupted run leaves valid `.pvd` files listing every frame already written.
 #include "plyimpact/analysis/damage_tracker.hpp"
+#include "plyimpact/analysis/impact_result.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/io/ply_damage_table.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
@@ -38,14 +42,17 @@ struct VtkOptions {
 };
 
 /// One frame of plate.pvd: the mid-plane grid with its point and cell data. `progressive`: the plies'
-/// damage of a progressive-damage run (its arrays are written only when given).
+/// damage of a progressive-damage run, `interfaces`: those of a stacked plate (their arrays are written
+/// only when given).
 void write_plate_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
-                     const PlyDamageTable* progressive = nullptr);
+                     const PlyDamageTable* progressive = nullptr,
+                     const DelaminationResult* interfaces = nullptr);
 /// One frame of layers.pvd: the laminate as hexahedra, one layer per ply.
 void write_layers_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
                       const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
-                      const PlyDamageTable* progressive = nullptr);
+                      const PlyDamageTable* progressive = nullptr,
+                      const DelaminationResult* interfaces = nullptr);
 
 /// A `.pvd` collection: (time, file relative to the .pvd) pairs.
 struct PvdEntry {
@@ -59,9 +66,11 @@ class VtkSeries {
 public:
   VtkSeries(std::filesystem::path dir, const PlateModel& model, VtkOptions options);
   /// Writes the frame of `step` at time t (seconds) for the plate state u (free DOFs); `progressive`:
-  /// the plies' damage of a progressive-damage run (DamageField::element_ply_damage()), null otherwise.
+  /// the plies' damage of a progressive-damage run (DamageField::element_ply_damage()), null otherwise;
+  /// `interfaces`: the stacked plate's (PlateStateAccess::delamination()), null otherwise.
   void write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets,
-             const std::vector<ElementPlyDamage>* progressive = nullptr);
+             const std::vector<ElementPlyDamage>* progressive = nullptr,
+             const DelaminationResult* interfaces = nullptr);
   [[nodiscard]] std::size_t frames() const { return plate_.size(); }
 
 private:
