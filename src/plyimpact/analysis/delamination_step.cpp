@@ -339,21 +339,21 @@ void DelaminationStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& ou
 
 bool DelaminationStepper::delamination_areas(DelaminationAreas& out) const {
   const StackedPlateModel& stack = p_.stack_;
+  const std::vector<std::vector<CohesiveState>>& states = committed_.interfaces;
   out.dissipated = dissipated_;
-  out.delaminated_area.assign(static_cast<std::size_t>(stack.interface_count()), 0.0);
+  out.delaminated_area.clear(); // keeps its capacity: no allocation after the first step
+  out.delaminated_area.reserve(states.size());
+  for (int i = 0; i < stack.interface_count(); ++i)
+    out.delaminated_area.push_back(stack.interface(i).damaged_area(states[static_cast<std::size_t>(i)], 1.0));
   out.projected_area = 0.0;
   if (stack.interface_count() == 0) return true;
   // Every interface has the same points (same mesh and rule): the union is taken point by point.
   const CohesiveInterface& points = stack.interface(0);
-  for (int q = 0; q < points.point_count(); ++q) {
-    bool delaminated = false;
-    for (std::size_t i = 0; i < out.delaminated_area.size(); ++i)
-      if (committed_.interfaces[i][static_cast<std::size_t>(q)].damage >= 1.0) {
-        out.delaminated_area[i] += points.point_area(q);
-        delaminated = true;
-      }
-    if (delaminated) out.projected_area += points.point_area(q);
-  }
+  for (int q = 0; q < points.point_count(); ++q)
+    if (std::any_of(states.begin(), states.end(), [q](const std::vector<CohesiveState>& of_interface) {
+          return of_interface[static_cast<std::size_t>(q)].damage >= 1.0;
+        }))
+      out.projected_area += points.point_area(q);
   return true;
 }
 
