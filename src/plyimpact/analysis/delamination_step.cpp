@@ -20,9 +20,13 @@
 // stiffer than the tangent.)
 // The damage of the interface points is evaluated from the state of the last accepted step and
 // committed with the step: iterated with it (implicit), or held at the last accepted step's while the
-// step is solved and updated from its converged separation (lagged, the default: each step is then
-// piecewise linear, the kink only where a face closes; the energy the damage releases within a step is
-// counted at its end, an error first order in Δt).
+// step is solved and updated from its converged separation (lagged, the default; the energy the damage
+// releases within a step is counted at its end, an error first order in Δt). Under the trapezoidal rule
+// (β = ¼, γ = ½) the lagged step is solved in its two-point form, with the interfaces' mean traction
+// over the step (CohesiveLaw::step_mean, DL6; DL7 below): with the damage held, the step then keeps the
+// energy exactly, also where faces open or close inside it (with the law's end tractions the clapping
+// of delaminated faces, held apart by the penalty K, created energy: docs/delamination.md, "The lagged
+// step keeps the energy").
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -48,8 +52,9 @@ struct ProcessZone {
   double point_spacing = 0.0;
 };
 
-/// Halvings of a correction that raised the residual (DelaminationStepper::advance).
+/// Halvings of a correction that did not lower the residual by this fraction (DelaminationStepper::advance).
 constexpr int max_halvings = 6;
+constexpr double sufficient_decrease = 1e-4;
 
 class DelaminationStepper final : public PlateStepper {
 public:
@@ -71,6 +76,8 @@ public:
 private:
   /// x = K̄⁻¹ b with the iteration matrix in use.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n: f(u_n) − Fc_n s_n.
+  [[nodiscard]] Eigen::VectorXd step_start(const Eigen::VectorXd& u_n) const;
   /// Factors the tangent K_T + c0 M and iterates with it from now on.
   void use_tangent(const SparseMatrix& tangent);
   /// Has the iterate converged: small residual, and a small next correction estimated without a solve.
@@ -85,6 +92,7 @@ private:
   bool tangent_in_use_ = false;
   Eigen::VectorXd kbar_diagonal_;
   StackedPlateState committed_, trial_;
+  ContactSolution committed_contact_, trial_contact_; ///< Fc and α at the end of the last accepted step
   double trial_dissipated_ = 0.0, dissipated_ = 0.0;
   NewtonStatistics stats_;
 };
@@ -259,25 +267,33 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
   bool refactor = false;
   int iterations = 0, halvings = 0; // linear solves in this step; halvings of the last correction
   const bool lagged = ds.integration == DamageIntegration::lagged;
-  const CohesiveDamage damage = lagged ? CohesiveDamage::frozen : CohesiveDamage::evolve;
+  const bool mean_form = lagged && nc.beta == 0.25 && nc.gamma == 0.5;
+  const CohesiveDamage damage = !lagged     ? CohesiveDamage::evolve
+                                : mean_form ? CohesiveDamage::lagged_mean
+                                            : CohesiveDamage::lagged;
+  const Eigen::VectorXd start = mean_form ? step_start(s.u) : Eigen::VectorXd();
   for (;;) {
-    const Eigen::VectorXd inertia = p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
+    const Eigen::VectorXd inertia = mean_form ? p_.M_.times(nc.c0 * (uk - s.u - nc.dt * s.v))
+                                              : p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
     StackedPlateEvaluation e = refactor ? p_.stack_.evaluate(uk, committed_, damage)
                                         : p_.stack_.internal_force(uk, committed_, damage);
+    if (mean_form) e.force += start;
     const Eigen::VectorXd g = -inertia - e.force; // force-free residual
     if (iterations > 0) {
       if (converged(g, inertia, e.force, cs, uk)) {
-        // Lagged: the damage follows the converged separation (for the next step).
-        if (lagged) e = p_.stack_.internal_force(uk, committed_, CohesiveDamage::evolve);
+        // Lagged: the trial states' damage already follows the converged separation (for the next step).
         trial_ = std::move(e.trial);
         trial_dissipated_ = e.dissipated;
+        trial_contact_ = cs;
         break;
       }
       // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),
-      // and full corrections can cycle between its pieces; a correction that raised the residual is
-      // halved, up to max_halvings times (the last is kept).
+      // and full corrections can cycle between its pieces; a correction that did not lower the residual
+      // by the fraction sufficient_decrease is halved, up to max_halvings times (the last is kept). (An
+      // exact two-cycle, equal residuals at both ends, was measured after separation.)
       const double residual = (g + cs.force * loading_.load(cs.alpha)).norm();
-      if (residual > start_residual && tangent_in_use_ && halvings < max_halvings) {
+      if (residual > (1.0 - sufficient_decrease) * start_residual && tangent_in_use_ &&
+          halvings < max_halvings) {
         uk = 0.5 * (u_start + uk);
         cs.force = 0.5 * (cs_start.force + cs.force);
         cs.alpha = 0.5 * (cs_start.alpha + cs.alpha);
@@ -316,9 +332,24 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
   return cs;
 }
 
+// The trapezoidal rule over the step in its two-point form, (u − u_n)/Δt = (v_n + v)/2 and
+// M (v − v_n)/Δt = the mean of the step's forces, is
+//   Fc s + Fc_n s_n − c0 M (u − u_n − Δt v_n) − f'(u) − f(u_n) = 0,                          (DL7)
+// with f(u_n) = K_plates u_n + the interfaces' tractions at u_n, and f' the force of the end tractions
+// 2 τ̄ − τ(δ_n) (CohesiveDamage::lagged_mean), all at the held damage: the mean of the step's forces is
+// then ½ K_plates (u_n + u) + the interfaces' mean f̄ (DL6). aₙ does not enter: where the damage
+// changed or faces opened or closed, the Newmark accelerations are not the equilibrium ones.
+Eigen::VectorXd DelaminationStepper::step_start(const Eigen::VectorXd& u_n) const {
+  Eigen::VectorXd start = p_.stack_.internal_force(u_n, committed_, CohesiveDamage::lagged_mean).force;
+  if (committed_contact_.force != 0.0)
+    start -= committed_contact_.force * loading_.load(committed_contact_.alpha);
+  return start;
+}
+
 void DelaminationStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {
   committed_ = std::move(trial_);
   trial_ = {};
+  committed_contact_ = trial_contact_;
   dissipated_ += trial_dissipated_;
   trial_dissipated_ = 0.0;
 }

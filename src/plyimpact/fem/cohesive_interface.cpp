@@ -106,9 +106,19 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const JumpOperator& J = jump_[static_cast<std::size_t>(q)];
-      const CohesiveResponse r = damage == CohesiveDamage::evolve
-                                     ? law_.update(committed[p], J * ue, loading_band_)
-                                     : law_.at_fixed_damage(committed[p], J * ue);
+      const Eigen::Vector3d delta = J * ue;
+      CohesiveResponse r =
+          law_.update(committed[p], delta, damage == CohesiveDamage::evolve ? loading_band_ : 0.0);
+      if (damage == CohesiveDamage::lagged) { // the damage held: only the trial state comes from update
+        const CohesiveResponse held = law_.at_fixed_damage(committed[p], delta);
+        r.traction = held.traction;
+        r.tangent = held.tangent;
+      } else if (damage == CohesiveDamage::lagged_mean) {
+        const CohesiveResponse mean = law_.step_mean(committed[p], delta);
+        r.traction =
+            2.0 * mean.traction - law_.at_fixed_damage(committed[p], committed[p].separation).traction;
+        r.tangent = 2.0 * mean.tangent;
+      }
       out.trial[p] = r.state;
       out.dissipated += area_[p] * r.dissipated_energy;
       fe.noalias() += area_[p] * (J.transpose() * r.traction);

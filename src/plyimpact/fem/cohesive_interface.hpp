@@ -43,7 +43,13 @@ using JumpOperator = Eigen::Matrix<double, 3, 2 * q9_dofs>;
 /// How an evaluation treats the damage of the interface points.
 enum class CohesiveDamage {
   evolve, ///< the law's update from the committed states: the damage grows with the separation
-  frozen, ///< the committed damage held fixed (CohesiveLaw::at_fixed_damage): the lagged step
+  /// the lagged step: the tractions at the committed damage held fixed (CohesiveLaw::at_fixed_damage), the
+  /// trial states' damage and dissipation the law's update (for the next step)
+  lagged,
+  /// as lagged, with the end tractions τ = 2 τ̄ − τ(δ₀) whose trapezoid with the start's, τ(δ₀) at the
+  /// held damage, is the step's mean traction τ̄ from the committed separations δ₀ (CohesiveLaw::step_mean,
+  /// DL6): the trapezoidal rule then keeps the energy where faces open or close within a step
+  lagged_mean,
 };
 
 /// The evaluation of an interface at one displacement.

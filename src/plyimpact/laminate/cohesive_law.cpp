@@ -212,6 +212,30 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
   return r;
 }
 
+CohesiveResponse CohesiveLaw::step_mean(const CohesiveState& state, const Eigen::Vector3d& separation) const {
+  const double K = p_.penalty_stiffness;
+  const double opening = (1.0 - state.damage) * K; // of shear and opening at the held damage
+  const Eigen::Vector3d& from = state.separation;
+  CohesiveResponse r;
+  r.state = {state.damage, separation};
+  // (DL6) in shear: the mean of the two ends (ψ is quadratic there).
+  r.traction = 0.5 * opening * (from + separation);
+  r.tangent.diagonal().setConstant(0.5 * opening);
+  // Normal: ψ_n(g) = ½ k(g) g², k = (1 − d) K opening, K closing.
+  const double g0 = from(2), g1 = separation(2);
+  if ((g0 >= 0.0 && g1 >= 0.0) || (g0 <= 0.0 && g1 <= 0.0)) { // on one side of the kink
+    const double k = g0 + g1 > 0.0 ? opening : K;
+    r.traction(2) = 0.5 * k * (g0 + g1);
+    r.tangent(2, 2) = 0.5 * k;
+    return r;
+  }
+  const auto stiffness = [&](double g) { return g > 0.0 ? opening : K; };
+  const double psi0 = 0.5 * stiffness(g0) * g0 * g0, psi1 = 0.5 * stiffness(g1) * g1 * g1;
+  r.traction(2) = (psi1 - psi0) / (g1 - g0); // across the kink g1 − g0 ≠ 0
+  r.tangent(2, 2) = (stiffness(g1) * g1 - r.traction(2)) / (g1 - g0);
+  return r;
+}
+
 double CohesiveLaw::dissipation(const CohesiveState& previous, const Eigen::Vector3d& separation,
                                 double d) const {
   // On each piece, ∫ ½ K λ² dd along the envelope of the piece's mixity B is linear in the envelope

@@ -122,6 +122,19 @@ public:
   [[nodiscard]] CohesiveResponse at_fixed_damage(const CohesiveState& state,
                                                  const Eigen::Vector3d& separation) const;
 
+  /// The mean traction of a time step from the separation `state.separation` (δ₀, the step's start) to
+  /// `separation` (δ₁) with the damage of `state` held fixed, the discrete gradient of ψ(·; d): the
+  /// traction τ̄ with τ̄ · (δ₁ − δ₀) = ψ(δ₁) − ψ(δ₀) exactly,
+  ///   τ̄_s = ½ (1 − d) K (δ₀ + δ₁)_s in shear, τ̄_n = ½ k (δ₀ + δ₁)_n with k = (1 − d) K when both ends
+  ///   open and K when both close, τ̄_n = (ψ_n(δ₁) − ψ_n(δ₀)) / (δ₁ − δ₀)_n across the kink,     (DL6)
+  /// and its tangent ∂τ̄/∂δ₁ (diagonal, continuous across the kink). The lagged step puts it in the
+  /// trapezoidal rule's place of the mean of the two ends' tractions, so that the step keeps the energy
+  /// also where faces open or close inside it (Armero & Petőcz 1998 for penalty contact, cited from
+  /// memory; docs/delamination.md, "The lagged step keeps the energy"). The state's damage is kept,
+  /// nothing is dissipated.
+  [[nodiscard]] CohesiveResponse step_mean(const CohesiveState& state,
+                                           const Eigen::Vector3d& separation) const;
+
   /// Free energy ψ = ½(1 − d) K (δ_sh² + ⟨δ_n⟩²) + ½ K ⟨−δ_n⟩² stored per unit area [J/m²].
   [[nodiscard]] double stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const;
 
