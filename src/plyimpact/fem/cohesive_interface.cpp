@@ -19,6 +19,22 @@ const QuadratureRule1D<3>& rule_1d(CohesiveIntegration rule) {
   return rule == CohesiveIntegration::nodal ? lobatto3 : gauss3;
 }
 
+/// The law's response at one point of separation `delta` from its committed state, as `damage` says.
+CohesiveResponse point_response(const CohesiveLaw& law, const CohesiveState& committed,
+                                const Eigen::Vector3d& delta, CohesiveDamage damage, double loading_band) {
+  CohesiveResponse r = law.update(committed, delta, damage == CohesiveDamage::evolve ? loading_band : 0.0);
+  if (damage == CohesiveDamage::lagged) { // the damage held: only the trial state comes from update
+    const CohesiveResponse held = law.at_fixed_damage(committed, delta);
+    r.traction = held.traction;
+    r.tangent = held.tangent;
+  } else if (damage == CohesiveDamage::lagged_mean) { // 2 τ̄ − τ(δ₀), tangent 2 ∂τ̄/∂δ (DL6)
+    const CohesiveResponse mean = law.step_mean(committed, delta);
+    r.traction = 2.0 * mean.traction - law.at_fixed_damage(committed, committed.separation).traction;
+    r.tangent = 2.0 * mean.tangent;
+  }
+  return r;
+}
+
 } // namespace
 
 CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
@@ -106,19 +122,7 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const JumpOperator& J = jump_[static_cast<std::size_t>(q)];
-      const Eigen::Vector3d delta = J * ue;
-      CohesiveResponse r =
-          law_.update(committed[p], delta, damage == CohesiveDamage::evolve ? loading_band_ : 0.0);
-      if (damage == CohesiveDamage::lagged) { // the damage held: only the trial state comes from update
-        const CohesiveResponse held = law_.at_fixed_damage(committed[p], delta);
-        r.traction = held.traction;
-        r.tangent = held.tangent;
-      } else if (damage == CohesiveDamage::lagged_mean) {
-        const CohesiveResponse mean = law_.step_mean(committed[p], delta);
-        r.traction =
-            2.0 * mean.traction - law_.at_fixed_damage(committed[p], committed[p].separation).traction;
-        r.tangent = 2.0 * mean.tangent;
-      }
+      const CohesiveResponse r = point_response(law_, committed[p], J * ue, damage, loading_band_);
       out.trial[p] = r.state;
       out.dissipated += area_[p] * r.dissipated_energy;
       fe.noalias() += area_[p] * (J.transpose() * r.traction);
