@@ -9,19 +9,22 @@ namespace plyimpact {
 
 class ContactStep {
 public:
-  ContactStep(const HertzContact& law, const NewmarkStepper& impactor, double previous_indentation)
-      : law_(law), impactor_(impactor), previous_indentation_(previous_indentation) {}
+  /// `previous`: Fc and α of the last converged step.
+  ContactStep(const HertzContact& law, const NewmarkStepper& impactor, const ContactSolution& previous)
+      : law_(law), impactor_(impactor), previous_(previous) {}
   /// Fc and α for the load-free plate deflection ŵs and the plate's compliance c at the contact point.
   [[nodiscard]] ContactSolution solve(double w_hat, double c) const {
     return solve_contact_force(law_, impactor_.predicted_displacement() - w_hat, impactor_.compliance() + c);
   }
   /// α of the last converged step.
-  [[nodiscard]] double previous_indentation() const { return previous_indentation_; }
+  [[nodiscard]] double previous_indentation() const { return previous_.alpha; }
+  /// Fc of the last converged step.
+  [[nodiscard]] double previous_force() const { return previous_.force; }
 
 private:
   const HertzContact& law_;
   const NewmarkStepper& impactor_;
-  double previous_indentation_;
+  ContactSolution previous_;
 };
 
 } // namespace plyimpact

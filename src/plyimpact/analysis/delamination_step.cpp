@@ -77,7 +77,7 @@ private:
   /// x = K̄⁻¹ b with the iteration matrix in use.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n: f(u_n) − Fc_n s_n.
-  [[nodiscard]] Eigen::VectorXd step_start(const Eigen::VectorXd& u_n) const;
+  [[nodiscard]] Eigen::VectorXd step_start(const Eigen::VectorXd& u_n, const ContactStep& contact) const;
   /// Factors the tangent K_T + c0 M and iterates with it from now on.
   void use_tangent(const SparseMatrix& tangent);
   /// Has the iterate converged: small residual, and a small next correction estimated without a solve.
@@ -92,7 +92,6 @@ private:
   bool tangent_in_use_ = false;
   Eigen::VectorXd kbar_diagonal_;
   StackedPlateState committed_, trial_;
-  ContactSolution committed_contact_, trial_contact_; ///< Fc and α at the end of the last accepted step
   double trial_dissipated_ = 0.0, dissipated_ = 0.0;
   NewtonStatistics stats_;
 };
@@ -271,7 +270,7 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
   const CohesiveDamage damage = !lagged     ? CohesiveDamage::evolve
                                 : mean_form ? CohesiveDamage::lagged_mean
                                             : CohesiveDamage::lagged;
-  const Eigen::VectorXd start = mean_form ? step_start(s.u) : Eigen::VectorXd();
+  const Eigen::VectorXd start = mean_form ? step_start(s.u, contact) : Eigen::VectorXd();
   for (;;) {
     const Eigen::VectorXd inertia = mean_form ? p_.M_.times(nc.c0 * (uk - s.u - nc.dt * s.v))
                                               : p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
@@ -284,7 +283,6 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
         // Lagged: the trial states' damage already follows the converged separation (for the next step).
         trial_ = std::move(e.trial);
         trial_dissipated_ = e.dissipated;
-        trial_contact_ = cs;
         break;
       }
       // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),
@@ -339,17 +337,17 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
 // 2 τ̄ − τ(δ_n) (CohesiveDamage::lagged_mean), all at the held damage: the mean of the step's forces is
 // then ½ K_plates (u_n + u) + the interfaces' mean f̄ (DL6). aₙ does not enter: where the damage
 // changed or faces opened or closed, the Newmark accelerations are not the equilibrium ones.
-Eigen::VectorXd DelaminationStepper::step_start(const Eigen::VectorXd& u_n) const {
+Eigen::VectorXd DelaminationStepper::step_start(const Eigen::VectorXd& u_n,
+                                                const ContactStep& contact) const {
   Eigen::VectorXd start = p_.stack_.internal_force(u_n, committed_, CohesiveDamage::lagged_mean).force;
-  if (committed_contact_.force != 0.0)
-    start -= committed_contact_.force * loading_.load(committed_contact_.alpha);
+  if (contact.previous_force() != 0.0)
+    start -= contact.previous_force() * loading_.load(contact.previous_indentation());
   return start;
 }
 
 void DelaminationStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {
   committed_ = std::move(trial_);
   trial_ = {};
-  committed_contact_ = trial_contact_;
   dissipated_ += trial_dissipated_;
   trial_dissipated_ = 0.0;
 }

@@ -241,7 +241,8 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     t = static_cast<double>(step) * s.dt;
 
     // 1. Plate and contact force together (the step policy).
-    const ContactSolution cs = plate->advance(step, t, state, ContactStep(law, impactor, alpha), u_next);
+    const ContactSolution cs =
+        plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
     r.newton_iterations_max = std::max(r.newton_iterations_max, cs.iterations);
     const double force_old = force, alpha_old = alpha;
     force = cs.force;
