@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace plyimpact {
 namespace {
@@ -61,9 +62,15 @@ protected:
   static constexpr double a = 0.04, b = 0.03, h = 1e-3;
   Laminate lam{{as4_peek()}, {{0.0, h, 0}, {90.0, 2.0 * h, 0}}};
   Mesh mesh = structured_rectangle({a, b}, 2, 2);
-  StackedPlateModel stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {}, [](int) {
-                            return BoundaryConditions::on_edges("free", "free", "free", "free");
-                          }};
+  StackedPlateModel stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {}, free_edges};
+  /// The same stack integrated with `rule`.
+  std::unique_ptr<StackedPlateModel> stack_with(CohesiveIntegration rule) const {
+    return std::make_unique<StackedPlateModel>(mesh, lam, StackSettings{{0}, as4_peek_interface(h), rule},
+                                               Discretization{}, free_edges);
+  }
+  static BoundaryConditions free_edges(int /*sublaminate*/) {
+    return BoundaryConditions::on_edges("free", "free", "free", "free");
+  }
 
   /// A stacked vector from a displacement field u(x, y, z) of the whole laminate that is a Mindlin field
   /// with the same (w, θx, θy) in both sub-laminates: u0_k = u(z_k) at each sub-laminate's mid-plane.
@@ -172,37 +179,44 @@ TEST_F(TwoSubLaminates, EachPointStandsForACellOfItsElementWithThePointsArea) {
 }
 
 // The force is the gradient of the stored energy: central differences of ψ(u) along random directions
-// equal f·v (the interface part, undamaged and with a half-damaged interface).
+// equal f·v (the interface part, undamaged and with a half-damaged interface), with either rule.
 TEST_F(TwoSubLaminates, ForceIsTheGradientOfTheStoredEnergy) {
-  std::srand(7);
-  const Eigen::VectorXd u = 1e-9 * Eigen::VectorXd::Random(stack.size());
-  const Eigen::VectorXd v = 1e-9 * Eigen::VectorXd::Random(stack.size());
-  for (const double d : {0.0, 0.5}) {
-    StackedPlateState state = stack.virgin_state();
-    for (auto& s : state.interfaces[0])
-      s.damage = d;
-    const StackedPlateEvaluation e = stack.evaluate(u, state);
-    const double eps = 1e-3;
-    const double fd =
-        (stack.stored_energy(u + eps * v, state) - stack.stored_energy(u - eps * v, state)) / (2 * eps);
-    EXPECT_NEAR(e.force.dot(v), fd, 1e-7 * std::abs(fd)) << "d = " << d;
+  for (const CohesiveIntegration rule : {CohesiveIntegration::nodal, CohesiveIntegration::gauss}) {
+    const auto ruled = stack_with(rule);
+    std::srand(7);
+    const Eigen::VectorXd u = 1e-9 * Eigen::VectorXd::Random(ruled->size());
+    const Eigen::VectorXd v = 1e-9 * Eigen::VectorXd::Random(ruled->size());
+    for (const double d : {0.0, 0.5}) {
+      StackedPlateState state = ruled->virgin_state();
+      for (auto& s : state.interfaces[0])
+        s.damage = d;
+      const StackedPlateEvaluation e = ruled->evaluate(u, state);
+      const double eps = 1e-3;
+      const double fd =
+          (ruled->stored_energy(u + eps * v, state) - ruled->stored_energy(u - eps * v, state)) / (2 * eps);
+      EXPECT_NEAR(e.force.dot(v), fd, 1e-7 * std::abs(fd)) << "d = " << d;
+    }
   }
 }
 
-// Tangent = central differences of the force, across the onset of softening (FEBio's check).
+// Tangent = central differences of the force, across the onset of softening (FEBio's check), with either
+// rule: the nodal one couples each node pair of the faces alone, Gauss couples all nine nodes.
 TEST_F(TwoSubLaminates, TangentIsTheDerivativeOfTheForce) {
-  std::srand(11);
-  // Separations of about the onset (N/K = 80e6/5e14 = 1.6e-7 m) so that some points soften.
-  Eigen::VectorXd u = 3e-7 * Eigen::VectorXd::Random(stack.size());
-  const StackedPlateState state = stack.virgin_state();
-  const StackedPlateEvaluation e = stack.evaluate(u, state);
-  EXPECT_GT(e.dissipated, 0.0);
-  const Eigen::VectorXd v = Eigen::VectorXd::Random(stack.size());
-  const double eps = 1e-13;
-  const Eigen::VectorXd fd =
-      (stack.evaluate(u + eps * v, state).force - stack.evaluate(u - eps * v, state).force) / (2 * eps);
-  const Eigen::VectorXd Kv = e.tangent * v;
-  EXPECT_LT((Kv - fd).norm(), 1e-5 * Kv.norm());
+  for (const CohesiveIntegration rule : {CohesiveIntegration::nodal, CohesiveIntegration::gauss}) {
+    const auto ruled = stack_with(rule);
+    std::srand(11);
+    // Separations of about the onset (N/K = 80e6/5e14 = 1.6e-7 m) so that some points soften.
+    Eigen::VectorXd u = 3e-7 * Eigen::VectorXd::Random(ruled->size());
+    const StackedPlateState state = ruled->virgin_state();
+    const StackedPlateEvaluation e = ruled->evaluate(u, state);
+    EXPECT_GT(e.dissipated, 0.0);
+    const Eigen::VectorXd v = Eigen::VectorXd::Random(ruled->size());
+    const double eps = 1e-13;
+    const Eigen::VectorXd fd =
+        (ruled->evaluate(u + eps * v, state).force - ruled->evaluate(u - eps * v, state).force) / (2 * eps);
+    const Eigen::VectorXd Kv = e.tangent * v;
+    EXPECT_LT((Kv - fd).norm(), 1e-5 * Kv.norm());
+  }
 }
 
 /// Consistent nodal forces of a uniform pressure q on `model`, placed from `offset` in a vector of `size`.

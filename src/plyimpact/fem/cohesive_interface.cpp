@@ -35,6 +35,32 @@ CohesiveResponse point_response(const CohesiveLaw& law, const CohesiveState& com
   return r;
 }
 
+/// (DL1) for one node pair: columns 0–4 the upper node's (u, v, w, θx, θy), 5–9 the lower node's.
+NodeJump jump_of_node_pair(double half_upper, double half_lower) {
+  NodeJump L = NodeJump::Zero();
+  L(0, 0) = -1.0;
+  L(0, 3) = -half_upper;
+  L(0, 5) = 1.0;
+  L(0, 8) = -half_lower;
+  L(1, 1) = -1.0;
+  L(1, 4) = -half_upper;
+  L(1, 6) = 1.0;
+  L(1, 9) = -half_lower;
+  L(2, 2) = -1.0;
+  L(2, 7) = 1.0;
+  return L;
+}
+
+/// Index of the node pair (a, b) of an element, 9a + b.
+std::size_t node_pair(int a, int b) {
+  return 9 * static_cast<std::size_t>(a) + static_cast<std::size_t>(b);
+}
+
+/// Index among an element's 90 DOFs of column l (0–9) of node a's NodeJump.
+int element_dof(int a, int l) {
+  return l < 5 ? 5 * a + l : q9_dofs + 5 * a + (l - 5);
+}
+
 } // namespace
 
 CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
@@ -50,7 +76,13 @@ CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& 
     rule_.push_back({q.xi, q.eta, q.weight, tributary_interval(rule_1d(rule), static_cast<std::size_t>(q.i)),
                      tributary_interval(rule_1d(rule), static_cast<std::size_t>(q.j))});
     jump_.push_back(jump(q.xi, q.eta));
+    const Eigen::Matrix<double, 9, 1> N = q9_shape(q.xi, q.eta).N;
+    shape_.push_back(N);
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b < 9; ++b)
+        coupled_[node_pair(a, b)] |= N(a) * N(b) != 0.0; // Lobatto: a = b only
   }
+  node_jump_ = jump_of_node_pair(half_upper_, half_lower_);
   const Mesh& mesh = upper.mesh();
   for (int e = 0; e < element_count_; ++e) {
     const ElementCoordinates xy = mesh.element_coordinates(e);
@@ -58,6 +90,9 @@ CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& 
       position_.push_back(mesh.map(e, q.xi, q.eta));
       area_.push_back(q.weight * point_kinematics(xy, q.xi, q.eta).detJ);
     }
+    for (const auto& [plate, offset] : {std::pair{&upper_, upper_offset_}, std::pair{&lower_, lower_offset_}})
+      for (const int eq : plate->element_equations(e))
+        equations_.push_back(eq < 0 ? -1 : offset + eq);
   }
 }
 
@@ -83,15 +118,6 @@ JumpOperator CohesiveInterface::jump(double xi, double eta) const {
   return J;
 }
 
-int CohesiveInterface::equation(int e, int i) const {
-  if (i < q9_dofs) {
-    const int eq = upper_.element_equations(e)[static_cast<std::size_t>(i)];
-    return eq < 0 ? -1 : upper_offset_ + eq;
-  }
-  const int eq = lower_.element_equations(e)[static_cast<std::size_t>(i - q9_dofs)];
-  return eq < 0 ? -1 : lower_offset_ + eq;
-}
-
 Eigen::Matrix<double, 2 * q9_dofs, 1> CohesiveInterface::element_dofs(int e, const Eigen::VectorXd& u) const {
   Eigen::Matrix<double, 2 * q9_dofs, 1> ue;
   for (int i = 0; i < 2 * q9_dofs; ++i) {
@@ -106,6 +132,9 @@ Eigen::Vector3d CohesiveInterface::separation(int p, const Eigen::VectorXd& u) c
   return jump_[static_cast<std::size_t>(p % n)] * element_dofs(p / n, u);
 }
 
+// (DL2) by node pairs: with J = (N_1 L, …, N_9 L), f_a = Lᵀ Σ_p area_p N_a τ_p and
+// K_ab = Lᵀ (Σ_p area_p N_a N_b ∂τ/∂δ_p) L, only for the node pairs that share a point (the diagonal
+// under the nodal rule), instead of the 90 × 90 products Jᵀ (∂τ/∂δ) J.
 CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
                                                std::span<const CohesiveState> committed, Eigen::VectorXd& f,
                                                std::vector<Eigen::Triplet<double>>* tangent,
@@ -113,33 +142,53 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
   CohesiveEvaluation out;
   out.trial.resize(committed.size());
   const int n = points_per_element();
+  std::array<Eigen::Vector3d, 9> node_traction;
+  std::array<Eigen::Matrix3d, 81> pair_tangent;
   for (int e = 0; e < element_count_; ++e) {
     const auto ue = element_dofs(e, u);
-    Eigen::Matrix<double, 2 * q9_dofs, 1> fe = Eigen::Matrix<double, 2 * q9_dofs, 1>::Zero();
-    Eigen::Matrix<double, 2 * q9_dofs, 2 * q9_dofs> Ke =
-        Eigen::Matrix<double, 2 * q9_dofs, 2 * q9_dofs>::Zero();
+    node_traction.fill(Eigen::Vector3d::Zero());
+    if (tangent) pair_tangent.fill(Eigen::Matrix3d::Zero());
     for (int q = 0; q < n; ++q) {
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
-      const JumpOperator& J = jump_[static_cast<std::size_t>(q)];
-      const CohesiveResponse r = point_response(law_, committed[p], J * ue, damage, loading_band_);
+      const CohesiveResponse r =
+          point_response(law_, committed[p], jump_[static_cast<std::size_t>(q)] * ue, damage, loading_band_);
       out.trial[p] = r.state;
       out.dissipated += area_[p] * r.dissipated_energy;
-      fe.noalias() += area_[p] * (J.transpose() * r.traction);
-      if (tangent) Ke.noalias() += area_[p] * (J.transpose() * r.tangent * J);
-    }
-    for (int i = 0; i < 2 * q9_dofs; ++i) {
-      const int ei = equation(e, i);
-      if (ei < 0) continue;
-      f(ei) += fe(i);
+      const Eigen::Matrix<double, 9, 1>& N = shape_[static_cast<std::size_t>(q)];
+      const Eigen::Vector3d t = area_[p] * r.traction;
+      for (int a = 0; a < 9; ++a)
+        if (N(a) != 0.0) node_traction[static_cast<std::size_t>(a)] += N(a) * t;
       if (!tangent) continue;
-      for (int j = 0; j < 2 * q9_dofs; ++j) {
-        const int ej = equation(e, j);
-        if (ej >= 0 && Ke(i, j) != 0.0) tangent->emplace_back(ei, ej, Ke(i, j));
-      }
+      const Eigen::Matrix3d T = area_[p] * r.tangent;
+      for (int a = 0; a < 9; ++a)
+        for (int b = 0; b < 9; ++b)
+          if (N(a) * N(b) != 0.0) pair_tangent[node_pair(a, b)] += (N(a) * N(b)) * T;
+    }
+    for (int a = 0; a < 9; ++a) {
+      const Eigen::Matrix<double, 10, 1> fa =
+          node_jump_.transpose() * node_traction[static_cast<std::size_t>(a)];
+      for (int l = 0; l < 10; ++l)
+        if (const int eq = equation(e, element_dof(a, l)); eq >= 0) f(eq) += fa(l);
+      if (!tangent) continue;
+      for (int b = 0; b < 9; ++b)
+        if (coupled_[node_pair(a, b)]) add_node_block(e, a, b, pair_tangent[node_pair(a, b)], *tangent);
     }
   }
   return out;
+}
+
+void CohesiveInterface::add_node_block(int e, int a, int b, const Eigen::Matrix3d& C,
+                                       std::vector<Eigen::Triplet<double>>& tangent) const {
+  const Eigen::Matrix<double, 10, 10> K = node_jump_.transpose() * C * node_jump_;
+  for (int i = 0; i < 10; ++i) {
+    const int ei = equation(e, element_dof(a, i));
+    if (ei < 0) continue;
+    for (int j = 0; j < 10; ++j) {
+      const int ej = equation(e, element_dof(b, j));
+      if (ej >= 0 && K(i, j) != 0.0) tangent.emplace_back(ei, ej, K(i, j));
+    }
+  }
 }
 
 double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,

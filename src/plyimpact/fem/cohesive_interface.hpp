@@ -39,6 +39,9 @@ enum class CohesiveIntegration {
 };
 
 using JumpOperator = Eigen::Matrix<double, 3, 2 * q9_dofs>;
+/// The separation (DL1) of one node pair of the faces: δ = L (u, v, w, θx, θy)_upper, lower; the jump
+/// operator is J = (N_1 L, …, N_9 L) with its columns grouped by node.
+using NodeJump = Eigen::Matrix<double, 3, 10>;
 
 /// How an evaluation treats the damage of the interface points.
 enum class CohesiveDamage {
@@ -102,7 +105,13 @@ private:
   };
   [[nodiscard]] JumpOperator jump(double xi, double eta) const;
   [[nodiscard]] Eigen::Matrix<double, 2 * q9_dofs, 1> element_dofs(int e, const Eigen::VectorXd& u) const;
-  [[nodiscard]] int equation(int e, int i) const;
+  /// Stacked equation of element e's DOF i (0–44 upper, 45–89 lower), −1 where constrained.
+  [[nodiscard]] int equation(int e, int i) const {
+    return equations_[static_cast<std::size_t>(e) * 2 * q9_dofs + static_cast<std::size_t>(i)];
+  }
+  /// Adds Lᵀ C L, the block of nodes (a, b) of an element tangent, to `tangent` (DL2 by node pairs).
+  void add_node_block(int e, int a, int b, const Eigen::Matrix3d& C,
+                      std::vector<Eigen::Triplet<double>>& tangent) const;
 
   const PlateModel& upper_;
   const PlateModel& lower_;
@@ -113,6 +122,10 @@ private:
   std::vector<Point> rule_;
   int element_count_;
   std::vector<JumpOperator> jump_; ///< per point of the rule (same parent operator for every element)
+  std::vector<Eigen::Matrix<double, 9, 1>> shape_; ///< the nodes' shape functions at each point of the rule
+  std::array<bool, 81> coupled_{};                 ///< nodes a, b share a point: N_a N_b ≠ 0 (index 9a + b)
+  NodeJump node_jump_;
+  std::vector<int> equations_; ///< per element, its 90 stacked equations (equation())
   std::vector<Eigen::Vector2d> position_;
   std::vector<double> area_;
 };
