@@ -31,6 +31,7 @@
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
 
@@ -55,6 +56,11 @@ struct ProcessZone {
 /// Halvings of a correction that did not lower the residual by this fraction (DelaminationStepper::advance).
 constexpr int max_halvings = 6;
 constexpr double sufficient_decrease = 1e-4;
+/// A refresh of the lagged step's iteration matrix updates its factor (DelaminationStepper::update_factor)
+/// with at most this many rank-one terms, and a factor is refactored after this many in all (the
+/// round-off of the updates accumulates).
+constexpr int max_update_rank = 1000;
+constexpr int max_total_update_rank = 20000;
 
 class DelaminationStepper final : public PlateStepper {
 public:
@@ -78,8 +84,13 @@ private:
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n: f(u_n) − Fc_n s_n.
   [[nodiscard]] Eigen::VectorXd step_start(const Eigen::VectorXd& u_n, const ContactStep& contact) const;
-  /// Factors the tangent K_T + c0 M and iterates with it from now on.
-  void use_tangent(const SparseMatrix& tangent);
+  /// Factors the tangent K_T + c0 M and iterates with it from now on; the lagged step records the
+  /// interface points' tangents at uk that it holds (for update_factor).
+  void use_tangent(const SparseMatrix& tangent, const Eigen::VectorXd& uk, CohesiveDamage damage);
+  /// The lagged step's refresh where few interface points changed their tangent since the factor was
+  /// made: K̄ + Σ_p J_pᵀ ΔT_p J_p by a rank update of the factor (SpdSolver::modify), ΔT_p split into
+  /// its eigenvalues' signs. False, with the factor to be made anew, where that is not possible.
+  bool update_factor(const Eigen::VectorXd& uk, CohesiveDamage damage);
   /// Has the iterate converged: small residual, and a small next correction estimated without a solve.
   [[nodiscard]] bool converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
                                const Eigen::VectorXd& force, const ContactSolution& cs,
@@ -90,6 +101,9 @@ private:
   Eigen::SparseLU<SparseMatrix> tangent_lu_; ///< implicit: unsymmetric under mixed mode
   SpdSolver frozen_factor_;                  ///< lagged: the secant at fixed damage, symmetric positive
   bool tangent_in_use_ = false;
+  std::vector<std::vector<Eigen::Matrix3d>>
+      factored_tangents_; ///< per interface and point, in frozen_factor_
+  int update_rank_ = 0;   ///< rank-one updates since its factorization
   Eigen::VectorXd kbar_diagonal_;
   StackedPlateState committed_, trial_;
   double trial_dissipated_ = 0.0, dissipated_ = 0.0;
@@ -228,10 +242,16 @@ Eigen::VectorXd DelaminationStepper::solve(const Eigen::VectorXd& b) const {
   return p_.elastic_.solve(b);
 }
 
-void DelaminationStepper::use_tangent(const SparseMatrix& tangent) {
+void DelaminationStepper::use_tangent(const SparseMatrix& tangent, const Eigen::VectorXd& uk,
+                                      CohesiveDamage damage) {
   const SparseMatrix Kbar = tangent + p_.options_.newmark.c0 * p_.M_.matrix();
   if (p_.settings_.integration == DamageIntegration::lagged) {
     frozen_factor_.factorize(Kbar);
+    factored_tangents_.resize(static_cast<std::size_t>(p_.stack_.interface_count()));
+    for (int i = 0; i < p_.stack_.interface_count(); ++i)
+      p_.stack_.interface(i).point_tangents(uk, committed_.interfaces[static_cast<std::size_t>(i)], damage,
+                                            factored_tangents_[static_cast<std::size_t>(i)]);
+    update_rank_ = 0;
   } else {
     tangent_lu_.compute(Kbar);
     if (tangent_lu_.info() != Eigen::Success)
@@ -241,6 +261,66 @@ void DelaminationStepper::use_tangent(const SparseMatrix& tangent) {
   kbar_diagonal_ = Kbar.diagonal();
   loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); }); // responses recomputed
   ++stats_.factorizations;
+}
+
+bool DelaminationStepper::update_factor(const Eigen::VectorXd& uk, CohesiveDamage damage) {
+  if (!p_.settings_.update_factor || !tangent_in_use_ || damage == CohesiveDamage::evolve) return false;
+  struct Change {
+    std::size_t interface, point;
+    Eigen::Matrix3d tangent;
+  };
+  std::vector<Change> changes;
+  std::vector<Eigen::Triplet<double>> up, down; // the columns of C₊ and C₋
+  std::vector<std::pair<int, double>> rows[3];
+  std::vector<Eigen::Matrix3d> now;
+  for (int i = 0; i < p_.stack_.interface_count(); ++i) {
+    const CohesiveInterface& face = p_.stack_.interface(i);
+    const auto ii = static_cast<std::size_t>(i);
+    face.point_tangents(uk, committed_.interfaces[ii], damage, now);
+    for (int p = 0; p < face.point_count(); ++p) {
+      const Eigen::Matrix3d& held = factored_tangents_[ii][static_cast<std::size_t>(p)];
+      const Eigen::Matrix3d D = now[static_cast<std::size_t>(p)] - held;
+      const double scale = now[static_cast<std::size_t>(p)].norm() + held.norm();
+      if (D.norm() <= 1e-12 * scale) continue;
+      if ((D - D.transpose()).norm() > 1e-12 * scale) return false; // an unsymmetric tangent
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> split(0.5 * (D + D.transpose()));
+      for (int k = 0; k < 3; ++k) {
+        rows[k].clear();
+        face.jump_row(p, k, rows[k]);
+      }
+      for (int m = 0; m < 3; ++m) {
+        const double lambda = split.eigenvalues()(m);
+        if (std::abs(lambda) <= 1e-12 * scale) continue;
+        std::vector<Eigen::Triplet<double>>& side = lambda > 0.0 ? up : down;
+        const int column = side.empty() ? 0 : side.back().col() + 1;
+        for (int k = 0; k < 3; ++k)
+          for (const auto& [eq, c] : rows[k])
+            side.emplace_back(eq, column, std::sqrt(std::abs(lambda)) * split.eigenvectors()(k, m) * c);
+      }
+      changes.push_back({ii, static_cast<std::size_t>(p), now[static_cast<std::size_t>(p)]});
+    }
+  }
+  const int rank = (up.empty() ? 0 : up.back().col() + 1) + (down.empty() ? 0 : down.back().col() + 1);
+  if (rank > max_update_rank || update_rank_ + rank > max_total_update_rank) return false;
+  if (rank == 0) return true; // the factor holds the tangent already
+  const auto columns = [n = p_.stack_.size()](const std::vector<Eigen::Triplet<double>>& t) {
+    SparseMatrix C(n, t.empty() ? 0 : t.back().col() + 1);
+    C.setFromTriplets(t.begin(), t.end());
+    return C;
+  };
+  const SparseMatrix C_up = columns(up), C_down = columns(down);
+  // The update first: the matrix stays positive definite in between.
+  if ((C_up.cols() > 0 && !frozen_factor_.modify(C_up, true)) ||
+      (C_down.cols() > 0 && !frozen_factor_.modify(C_down, false)))
+    return false;
+  for (const Change& c : changes)
+    factored_tangents_[c.interface][c.point] = c.tangent;
+  kbar_diagonal_ += C_up.cwiseProduct(C_up) * Eigen::VectorXd::Ones(C_up.cols()) -
+                    C_down.cwiseProduct(C_down) * Eigen::VectorXd::Ones(C_down.cols());
+  update_rank_ += rank;
+  loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); }); // responses recomputed
+  ++stats_.factor_updates;
+  return true;
 }
 
 bool DelaminationStepper::converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
@@ -274,8 +354,9 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
   for (;;) {
     const Eigen::VectorXd inertia = mean_form ? p_.M_.times(nc.c0 * (uk - s.u - nc.dt * s.v))
                                               : p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
-    StackedPlateEvaluation e = refactor ? p_.stack_.evaluate(uk, committed_, damage)
-                                        : p_.stack_.internal_force(uk, committed_, damage);
+    const bool assemble_tangent = refactor && !(lagged && tangent_in_use_);
+    StackedPlateEvaluation e = assemble_tangent ? p_.stack_.evaluate(uk, committed_, damage)
+                                                : p_.stack_.internal_force(uk, committed_, damage);
     if (mean_form) e.force += start;
     const Eigen::VectorXd g = -inertia - e.force; // force-free residual
     if (iterations > 0) {
@@ -300,7 +381,9 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
       }
       start_residual = residual;
     }
-    if (refactor) use_tangent(e.tangent);
+    if (refactor && !update_factor(uk, damage))
+      use_tangent(assemble_tangent ? e.tangent : p_.stack_.evaluate(uk, committed_, damage).tangent, uk,
+                  damage);
     refactor = false;
     halvings = 0;
     if (iterations == ds.max_iterations)

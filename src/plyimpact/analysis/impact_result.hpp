@@ -47,6 +47,7 @@ struct NewtonStatistics {
   long iterations = 0;             ///< linear solves over all steps
   int max_iterations_per_step = 0; ///< most solves in one step
   int factorizations = 0;          ///< of K̄ = K_T + c0 M, including the first
+  int factor_updates = 0;          ///< refreshes of K̄ by a rank update of its factor instead
 };
 
 /// The plies' damage at the end of a progressive-damage run (fem/damaged_plate.hpp).

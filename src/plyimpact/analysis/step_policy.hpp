@@ -114,6 +114,9 @@ struct DelaminationSettings {
   double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
   int refresh_after = 4;                ///< factor the tangent when a step needs more iterations
   double refresh_ratio = 0.5;           ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
+  /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
+  bool update_factor = true;
 };
 
 /// What the policies need to know of the run besides the plate.

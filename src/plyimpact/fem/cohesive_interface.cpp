@@ -191,6 +191,29 @@ void CohesiveInterface::add_node_block(int e, int a, int b, const Eigen::Matrix3
   }
 }
 
+void CohesiveInterface::point_tangents(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
+                                       CohesiveDamage damage, std::vector<Eigen::Matrix3d>& out) const {
+  out.resize(committed.size());
+  const int n = points_per_element();
+  for (int e = 0; e < element_count_; ++e) {
+    const auto ue = element_dofs(e, u);
+    for (int q = 0; q < n; ++q) {
+      const std::size_t p =
+          static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
+      out[p] = area_[p] * point_response(law_, committed[p], jump_[static_cast<std::size_t>(q)] * ue, damage,
+                                         loading_band_)
+                              .tangent;
+    }
+  }
+}
+
+void CohesiveInterface::jump_row(int p, int k, std::vector<std::pair<int, double>>& out) const {
+  const int n = points_per_element();
+  const JumpOperator& J = jump_[static_cast<std::size_t>(p % n)];
+  for (int i = 0; i < 2 * q9_dofs; ++i)
+    if (const int eq = equation(p / n, i); eq >= 0 && J(k, i) != 0.0) out.emplace_back(eq, J(k, i));
+}
+
 double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,
                                         std::span<const CohesiveState> states) const {
   double energy = 0.0;

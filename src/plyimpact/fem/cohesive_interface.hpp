@@ -93,6 +93,13 @@ public:
                               Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
                               CohesiveDamage damage = CohesiveDamage::evolve) const;
 
+  /// Each point's tangent ∂τ/∂δ times its area, as assemble adds it (DL2), into `out` (one per point).
+  void point_tangents(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
+                      CohesiveDamage damage, std::vector<Eigen::Matrix3d>& out) const;
+  /// Appends row k of point p's jump operator over the stacked equations to `out`: δ_k = Σ c u(eq)
+  /// over its (eq, c).
+  void jump_row(int p, int k, std::vector<std::pair<int, double>>& out) const;
+
   /// Free energy stored in the interface, Σ_p area_p ψ(δ_p) [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states) const;
   /// Area of the points whose damage has reached `threshold` [m²] (1: fully delaminated).

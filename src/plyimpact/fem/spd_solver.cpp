@@ -3,6 +3,8 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <vector>
+
 namespace plyimpact {
 
 namespace {
@@ -43,6 +45,24 @@ public:
   }
   void free_dense(cholmod_dense*& D) {
     if (D != nullptr) cholmod_free_dense(&D, &cholmod());
+  }
+  /// LDLᵀ ± C Cᵀ (cholmod_updown), C in the rows of A: permuted here to the factor's order (P C), as
+  /// cholmod_updown works on the rows of L. False where CHOLMOD failed.
+  bool updown(const Eigen::SparseMatrix<double>& C, bool update) {
+    const cholmod_factor* L = m_cholmodFactor;
+    const auto* perm = static_cast<const int*>(L->Perm);
+    std::vector<int> row_of(L->n); // row of L of each row of A
+    for (std::size_t k = 0; k < L->n; ++k)
+      row_of[static_cast<std::size_t>(perm[k])] = static_cast<int>(k);
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int j = 0; j < C.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(C, j); it; ++it)
+        entries.emplace_back(row_of[static_cast<std::size_t>(it.row())], j, it.value());
+    Eigen::SparseMatrix<double> PC(C.rows(), C.cols()); // compressed, rows sorted: as CHOLMOD asks
+    PC.setFromTriplets(entries.begin(), entries.end());
+    cholmod_sparse view = Eigen::viewAsCholmod(PC);
+    return cholmod_updown(update ? 1 : 0, &view, m_cholmodFactor, &cholmod()) != 0 &&
+           cholmod().status == CHOLMOD_OK;
   }
   [[nodiscard]] long factor_nonzeros() const { // strictly lower, as SimplicialLDLT reports it
     const auto* nz = static_cast<const int*>(m_cholmodFactor->nz);
@@ -101,6 +121,17 @@ Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const {
   if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.solve(b);
   if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.solve(b);
   return impl_->ldlt.solve(b);
+}
+
+bool SpdSolver::modify(const Eigen::SparseMatrix<double>& C, bool update) {
+  if (kind_ != SparseSolverKind::cholmod_simplicial) return false;
+  if (!impl_->cholmod_ldlt.updown(C, update)) return false;
+  try {
+    check_ldlt(Eigen::Success, [&] { return impl_->cholmod_ldlt.pivots(); });
+  } catch (const NotPositiveDefinite&) {
+    return false;
+  }
+  return true;
 }
 
 Eigen::MatrixXd SpdSolver::solve(const Eigen::MatrixXd& B) const {

@@ -57,6 +57,12 @@ public:
   /// CHOLMOD 3.0's own work array (bench/README.md); the other backends solve as solve(b) does.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const;
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  /// Modifies the factor of A into the factor of A + C Cᵀ (`update`) or A − C Cᵀ, C of A's rows
+  /// (CHOLMOD's multiple-rank update and downdate of a simplicial LDLᵀ, Davis & Hager): the cost of
+  /// the factor's columns that C reaches, not of a factorization. Returns false, and leaves the solver
+  /// to be factored anew, where the backend has no such update (cholmod_simplicial only) or the
+  /// modified matrix is not positive definite.
+  [[nodiscard]] bool modify(const Eigen::SparseMatrix<double>& C, bool update);
   [[nodiscard]] SparseSolverKind kind() const { return kind_; }
   /// Non-zeros of the factor (memory estimate), after factorize().
   [[nodiscard]] long factor_nonzeros() const;

@@ -57,6 +57,7 @@ nlohmann::json delamination_json(const DelaminationSettings& s, const Delaminati
     j["iterations"] = newton->iterations;
     j["max_iterations_per_step"] = newton->max_iterations_per_step;
     j["factorizations"] = newton->factorizations;
+    j["factor_updates"] = newton->factor_updates;
   }
   return j;
 }
