@@ -91,6 +91,8 @@ private:
   /// made: K̄ + Σ_p J_pᵀ ΔT_p J_p by a rank update of the factor (SpdSolver::modify), ΔT_p split into
   /// its eigenvalues' signs. False, with the factor to be made anew, where that is not possible.
   bool update_factor(const Eigen::VectorXd& uk, CohesiveDamage damage);
+  /// A refresh may try update_factor: the lagged step's own Cholesky factor is in use and updates are on.
+  [[nodiscard]] bool may_update_factor() const;
   /// Has the iterate converged: small residual, and a small next correction estimated without a solve.
   [[nodiscard]] bool converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
                                const Eigen::VectorXd& force, const ContactSolution& cs,
@@ -263,8 +265,13 @@ void DelaminationStepper::use_tangent(const SparseMatrix& tangent, const Eigen::
   ++stats_.factorizations;
 }
 
+bool DelaminationStepper::may_update_factor() const {
+  return p_.settings_.update_factor && p_.settings_.integration == DamageIntegration::lagged &&
+         tangent_in_use_;
+}
+
 bool DelaminationStepper::update_factor(const Eigen::VectorXd& uk, CohesiveDamage damage) {
-  if (!p_.settings_.update_factor || !tangent_in_use_ || damage == CohesiveDamage::evolve) return false;
+  if (!may_update_factor()) return false;
   struct Change {
     std::size_t interface, point;
     Eigen::Matrix3d tangent;
@@ -354,7 +361,7 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
   for (;;) {
     const Eigen::VectorXd inertia = mean_form ? p_.M_.times(nc.c0 * (uk - s.u - nc.dt * s.v))
                                               : p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
-    const bool assemble_tangent = refactor && !(lagged && tangent_in_use_);
+    const bool assemble_tangent = refactor && !may_update_factor();
     StackedPlateEvaluation e = assemble_tangent ? p_.stack_.evaluate(uk, committed_, damage)
                                                 : p_.stack_.internal_force(uk, committed_, damage);
     if (mean_form) e.force += start;

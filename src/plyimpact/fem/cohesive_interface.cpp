@@ -19,18 +19,25 @@ const QuadratureRule1D<3>& rule_1d(CohesiveIntegration rule) {
   return rule == CohesiveIntegration::nodal ? lobatto3 : gauss3;
 }
 
+/// The step's traction and tangent at a point whose damage is held (`lagged`: the law's at the held
+/// damage; `lagged_mean`: 2 τ̄ − τ(δ₀) and 2 ∂τ̄/∂δ, DL6); the response's state is not the trial one.
+CohesiveResponse held_response(const CohesiveLaw& law, const CohesiveState& committed,
+                               const Eigen::Vector3d& delta, CohesiveDamage damage) {
+  if (damage == CohesiveDamage::lagged) return law.at_fixed_damage(committed, delta);
+  CohesiveResponse mean = law.step_mean(committed, delta);
+  mean.traction = 2.0 * mean.traction - law.at_fixed_damage(committed, committed.separation).traction;
+  mean.tangent *= 2.0;
+  return mean;
+}
+
 /// The law's response at one point of separation `delta` from its committed state, as `damage` says.
 CohesiveResponse point_response(const CohesiveLaw& law, const CohesiveState& committed,
                                 const Eigen::Vector3d& delta, CohesiveDamage damage, double loading_band) {
   CohesiveResponse r = law.update(committed, delta, damage == CohesiveDamage::evolve ? loading_band : 0.0);
-  if (damage == CohesiveDamage::lagged) { // the damage held: only the trial state comes from update
-    const CohesiveResponse held = law.at_fixed_damage(committed, delta);
+  if (damage != CohesiveDamage::evolve) { // the damage held: only the trial state comes from update
+    const CohesiveResponse held = held_response(law, committed, delta, damage);
     r.traction = held.traction;
     r.tangent = held.tangent;
-  } else if (damage == CohesiveDamage::lagged_mean) { // 2 τ̄ − τ(δ₀), tangent 2 ∂τ̄/∂δ (DL6)
-    const CohesiveResponse mean = law.step_mean(committed, delta);
-    r.traction = 2.0 * mean.traction - law.at_fixed_damage(committed, committed.separation).traction;
-    r.tangent = 2.0 * mean.tangent;
   }
   return r;
 }
@@ -200,9 +207,12 @@ void CohesiveInterface::point_tangents(const Eigen::VectorXd& u, std::span<const
     for (int q = 0; q < n; ++q) {
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
-      out[p] = area_[p] * point_response(law_, committed[p], jump_[static_cast<std::size_t>(q)] * ue, damage,
-                                         loading_band_)
-                              .tangent;
+      const Eigen::Vector3d delta = jump_[static_cast<std::size_t>(q)] * ue;
+      // Held damage: the tangent alone, without the trial state's update.
+      out[p] =
+          area_[p] * (damage == CohesiveDamage::evolve ? law_.update(committed[p], delta, loading_band_)
+                                                       : held_response(law_, committed[p], delta, damage))
+                         .tangent;
     }
   }
 }
