@@ -7,6 +7,8 @@
 //                                      the matrix the impact solver factors once per run
 //   solve/<backend>/<nx>x<ny>          one forward + back substitution with the factor of K
 //                                      (unit point load at the plate centre)
+//   ordering/<ordering>/<nx>x<ny>      one solve with CHOLMOD's simplicial LDLᵀ of K̄ in the AMD, METIS
+//                                      or NESDIS ordering; nnz_L of that factor
 //
 // for meshes 15×11 (the thesis's), 30×22, 60×44, 120×88 and both SpdSolver backends (CHOLMOD
 // supernodal LLᵀ, Eigen SimplicialLDLT). Counters: dofs = model.size(), nnz_K = stored non-zeros of
@@ -169,6 +171,23 @@ void solve(benchmark::State& state, int nx, int ny, SparseSolverKind kind) {
   set_factor_counters(state, c, c.K, kind, solver);
 }
 
+/// The factor of K̄ by CHOLMOD's simplicial LDLᵀ (the time loop's backend) in one fill-reducing ordering:
+/// its non-zeros and the time of a solve, which is what a time step costs.
+void ordering(benchmark::State& state, int nx, int ny, FillOrdering fill) {
+  Case& c = get_case(nx, ny);
+  SpdSolver solver(SparseSolverKind::cholmod_simplicial, fill);
+  solver.factorize(c.Keff);
+  SpdSolver::Workspace workspace;
+  Eigen::VectorXd u(c.f.size());
+  for (auto _ : state) {
+    solver.solve(c.f, u, workspace);
+    benchmark::DoNotOptimize(u.data());
+    benchmark::ClobberMemory();
+  }
+  set_size_counters(state, c);
+  state.counters["nnz_L"] = static_cast<double>(solver.factor_nonzeros() + c.Keff.rows());
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -197,6 +216,17 @@ int main(int argc, char** argv) {
           ->UseRealTime();
     }
   }
+  const std::vector<std::pair<FillOrdering, std::string>> orderings{
+      {FillOrdering::amd, "AMD"},
+      {FillOrdering::metis, "METIS"},
+      {FillOrdering::nested_dissection, "NESDIS"}};
+  for (const auto& [nx, ny] : meshes)
+    for (const auto& [fill, name] : orderings)
+      benchmark::RegisterBenchmark(
+          ("ordering/" + name + "/" + std::to_string(nx) + "x" + std::to_string(ny)).c_str(), ordering, nx,
+          ny, fill)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

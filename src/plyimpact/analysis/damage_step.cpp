@@ -91,7 +91,7 @@ bool DamageStepper::lagged() const {
 
 DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor)
     : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
-      factor_(policy.options_.solver), field_(policy.plate_.virgin_field()),
+      factor_(policy.options_.solver, policy.options_.ordering), field_(policy.plate_.virgin_field()),
       f_int_(Eigen::VectorXd::Zero(policy.equations())) {
   const SparseMatrix& K0 = p_.plate_.undamaged_stiffness();
   if (policy.options_.memory_limit_bytes)

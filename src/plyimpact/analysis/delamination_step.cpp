@@ -119,7 +119,8 @@ public:
       : model_(model), options_(options), settings_(settings),
         stack_(model.mesh(), single_laminate(model), settings.stack,
                Discretization{model.mass_kind(), model.formulation()}, [&](int k) { return supports_of(k); }),
-        top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14), elastic_(options.solver) {
+        top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14),
+        elastic_(options.solver, options.ordering) {
     check_time_step();
     const SparseMatrix Kbar =
         stack_.evaluate(Eigen::VectorXd::Zero(stack_.size()), stack_.virgin_state()).tangent +
@@ -231,8 +232,8 @@ private:
 DelaminationStepper::DelaminationStepper(const DelaminationStepPolicy& policy, const Impactor& impactor)
     : p_(policy), loading_(policy.stack_.sublaminate(0), policy.top_equations_, impactor,
                            policy.options_.load, policy.stack_.size()),
-      frozen_factor_(policy.options_.solver), kbar_diagonal_(policy.elastic_diagonal_),
-      committed_(policy.stack_.virgin_state()) {
+      frozen_factor_(policy.options_.solver, policy.options_.ordering),
+      kbar_diagonal_(policy.elastic_diagonal_), committed_(policy.stack_.virgin_state()) {
   loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); });
   stats_.factorizations = 1; // the policy's elastic factor
 }

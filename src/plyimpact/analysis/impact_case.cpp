@@ -135,6 +135,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.newmark = NewmarkCoefficients(settings_.dt, settings_.newmark_beta, settings_.newmark_gamma);
   options.load = settings_.contact.load;
   options.solver = description_.solver;
+  options.ordering = description_.ordering;
   options.memory_limit_bytes = description_.memory_limit_bytes;
   if (settings_.delamination)
     policy_ = delamination_step_policy(*model_, options, *settings_.delamination);

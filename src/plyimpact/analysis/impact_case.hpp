@@ -46,7 +46,8 @@ struct ImpactCaseDescription {
   /// (analysis/delamination_step.cpp, docs/delamination.md)
   std::optional<DelaminationSettings> delamination;
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
-  std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
+  FillOrdering ordering = FillOrdering::amd; ///< of the factor of K̄ (bench/README.md, "Orderings")
+  std::optional<double> memory_limit_bytes;  ///< refuse a factor of K̄ estimated above this
 };
 
 /// The settings of a case with every "auto" resolved (SPEC §4 rules, contact_rules.hpp).

@@ -81,7 +81,7 @@ public:
     const SparseMatrix Kbar = K_ + options.newmark.c0 * M_.matrix(); // effective stiffness, factored once
     if (options.memory_limit_bytes)
       check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);
-    factor_ = SpdSolver(options.solver);
+    factor_ = SpdSolver(options.solver, options.ordering);
     factor_.factorize(Kbar);
   }
 

@@ -78,7 +78,8 @@ public:
 
 NewtonStepper::NewtonStepper(const NewtonStepPolicy& policy, const Impactor& impactor)
     : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
-      factor_(policy.options_.solver), f_int_(Eigen::VectorXd::Zero(policy.equations())),
+      factor_(policy.options_.solver, policy.options_.ordering),
+      f_int_(Eigen::VectorXd::Zero(policy.equations())),
       f_int_previous_step_(Eigen::VectorXd::Zero(policy.equations())) {
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
   if (policy.options_.memory_limit_bytes)

@@ -124,6 +124,7 @@ struct StepPolicyOptions {
   NewmarkCoefficients newmark{1e-6, 0.25, 0.5};
   ContactLoad load = ContactLoad::point;
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
+  FillOrdering ordering = FillOrdering::amd;
   std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
 };
 

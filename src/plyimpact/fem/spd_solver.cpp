@@ -3,21 +3,38 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <stdexcept>
 #include <vector>
 
 namespace plyimpact {
 
 namespace {
 
+/// CHOLMOD's code of an ordering.
+int cholmod_ordering(FillOrdering ordering) {
+  switch (ordering) {
+  case FillOrdering::metis:
+    return CHOLMOD_METIS;
+  case FillOrdering::nested_dissection:
+    return CHOLMOD_NESDIS;
+  case FillOrdering::amd:
+    break;
+  }
+  return CHOLMOD_AMD;
+}
+
+/// Makes `common` try one ordering only (its default tries several and keeps the sparsest factor).
+void use_one_ordering(cholmod_common& common, FillOrdering ordering) {
+  common.nmethods = 1;
+  common.method[0].ordering = cholmod_ordering(ordering);
+  common.postorder = 1;
+}
+
 /// CHOLMOD's simplicial LDLᵀ, with access to the pivots D (the first entry of each column of the
 /// simplicial factor) for the same positive-definiteness checks as Eigen's LDLᵀ.
 class CholmodLdlt : public Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> {
 public:
-  CholmodLdlt() {
-    cholmod().nmethods = 1; // AMD only, as SimplicialLDLT (and the memory estimate) use
-    cholmod().method[0].ordering = CHOLMOD_AMD;
-    cholmod().postorder = 1;
-  }
+  CholmodLdlt() { use_one_ordering(cholmod(), FillOrdering::amd); } // as SimplicialLDLT, memory estimate
   [[nodiscard]] Eigen::VectorXd pivots() const {
     const cholmod_factor* L = m_cholmodFactor;
     Eigen::VectorXd d(static_cast<Eigen::Index>(L->n));
@@ -95,7 +112,14 @@ struct SpdSolver::Impl {
   CholmodLdlt cholmod_ldlt;
 };
 
-SpdSolver::SpdSolver(SparseSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {}
+SpdSolver::SpdSolver(SparseSolverKind kind, FillOrdering ordering)
+    : kind_(kind), ordering_(ordering), impl_(std::make_unique<Impl>()) {
+  if (ordering == FillOrdering::amd) return; // each backend's default
+  if (kind == SparseSolverKind::simplicial_ldlt)
+    throw std::invalid_argument("Eigen's SimplicialLDLT orders by AMD only; METIS orderings need CHOLMOD");
+  use_one_ordering(impl_->cholmod.cholmod(), ordering);
+  use_one_ordering(impl_->cholmod_ldlt.cholmod(), ordering);
+}
 SpdSolver::~SpdSolver() = default;
 SpdSolver::SpdSolver(SpdSolver&&) noexcept = default;
 SpdSolver& SpdSolver::operator=(SpdSolver&&) noexcept = default;

@@ -15,6 +15,13 @@ enum class SparseSolverKind {
   cholmod_simplicial,
 };
 
+/// The fill-reducing ordering of a CHOLMOD factor (bench/README.md, "Orderings", compares them).
+enum class FillOrdering {
+  amd,               ///< approximate minimum degree (the default; Eigen's SimplicialLDLT uses it too)
+  metis,             ///< METIS nested dissection of the whole graph (CHOLMOD_METIS)
+  nested_dissection, ///< CHOLMOD's own nested dissection (NESDIS: METIS partitions, CAMD on the parts)
+};
+
 /// The matrix is not positive definite (insufficient restraint, zero thickness, ...).
 class NotPositiveDefinite : public std::runtime_error {
 public:
@@ -23,7 +30,9 @@ public:
 
 class SpdSolver {
 public:
-  explicit SpdSolver(SparseSolverKind kind = SparseSolverKind::simplicial_ldlt);
+  /// `ordering` other than AMD needs a CHOLMOD backend (std::invalid_argument otherwise).
+  explicit SpdSolver(SparseSolverKind kind = SparseSolverKind::simplicial_ldlt,
+                     FillOrdering ordering = FillOrdering::amd);
   ~SpdSolver();
   SpdSolver(SpdSolver&&) noexcept;
   SpdSolver& operator=(SpdSolver&&) noexcept;
@@ -64,12 +73,14 @@ public:
   /// modified matrix is not positive definite.
   [[nodiscard]] bool modify(const Eigen::SparseMatrix<double>& C, bool update);
   [[nodiscard]] SparseSolverKind kind() const { return kind_; }
+  [[nodiscard]] FillOrdering ordering() const { return ordering_; }
   /// Non-zeros of the factor (memory estimate), after factorize().
   [[nodiscard]] long factor_nonzeros() const;
 
 private:
   struct Impl;
   SparseSolverKind kind_;
+  FillOrdering ordering_;
   std::unique_ptr<Impl> impl_;
 };
 
