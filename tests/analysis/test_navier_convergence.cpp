@@ -142,6 +142,26 @@ TEST_P(NavierConvergence, CrossPlyBiaxialBucklingMatchesTheSeries) {
   EXPECT_NEAR(lambda / exact.lambda, 1.0, 0.01);
 }
 
+TEST_P(NavierConvergence, FundamentalPeriodIsTheLowestElasticModeWithOrWithoutRigidModes) {
+  // The impact's end-of-event rule needs only the lowest elastic period. A supported plate (K positive
+  // definite) computes one mode, a free one seven, skipping its rigid-body modes: both must give the
+  // lowest elastic frequency of the full modal analysis and, supported, of the Navier series.
+  const CrossPlyCase c;
+  const PlateModel supported = c.model(16, GetParam());
+  const double f_navier = nv::lowest_frequencies(c.navier(), 1)[0].omega / (2 * std::numbers::pi);
+  const double f_modal = solve_modal(supported, 5).frequencies_hz[0];
+  EXPECT_NEAR(1.0 / fundamental_period(supported) / f_modal, 1.0, 1e-10);
+  EXPECT_NEAR(1.0 / fundamental_period(supported) / f_navier, 1.0, 0.005);
+
+  const PlateModel free{
+      c.laminate(), {c.a, c.b}, {8, 6, MassMatrix::lumped, GetParam()}, test::all_edges("free")};
+  const ModalResult all = solve_modal(free, 10);
+  ASSERT_GE(all.zero_energy_modes, 3); // w, θx, θy rigid motions at least (in-plane ones too)
+  const double f_elastic = all.frequencies_hz[static_cast<std::size_t>(all.zero_energy_modes)];
+  ASSERT_GT(f_elastic, 0.0);
+  EXPECT_NEAR(1.0 / fundamental_period(free) / f_elastic, 1.0, 1e-8);
+}
+
 INSTANTIATE_TEST_SUITE_P(Element, NavierConvergence,
                          ::testing::Values(ElementFormulation::q9, ElementFormulation::mitc9),
                          [](const ::testing::TestParamInfo<ElementFormulation>& p) {
