@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <initializer_list>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -45,26 +46,44 @@ std::array<Edge, 4> element_edges(const Q9NodeCoordinates& X) {
   return edges;
 }
 
-/// Real roots in [−1, 1] of Σ c_k s^k (companion matrix, then Newton polish on the polynomial).
-std::vector<double> roots_in_unit_interval(std::vector<double> c) {
+/// The real roots of a polynomial of degree 4 at most, kept without allocating (the circle-load table of
+/// an impact finds some 10⁵ of them).
+class Roots {
+public:
+  void push_back(double s) { value_.at(count_++) = s; }
+  [[nodiscard]] const double* begin() const { return value_.data(); }
+  [[nodiscard]] const double* end() const { return value_.data() + count_; }
+
+private:
+  std::array<double, 4> value_{};
+  std::size_t count_ = 0;
+};
+
+/// Real roots in [−1, 1] of Σ c_k s^k, degree ≤ 4 (companion matrix, then Newton polish on the
+/// polynomial). The matrices have a fixed capacity: the same arithmetic as dynamic ones, no allocation.
+Roots roots_in_unit_interval(std::initializer_list<double> coefficients) {
+  std::array<double, 5> c{};
+  std::copy(coefficients.begin(), coefficients.end(), c.begin());
+  std::size_t size = coefficients.size();
   const double scale =
-      std::max(1e-300, std::abs(*std::max_element(c.begin(), c.end(), [](double x, double y) {
+      std::max(1e-300, std::abs(*std::max_element(c.begin(), c.begin() + size, [](double x, double y) {
                  return std::abs(x) < std::abs(y);
                })));
-  while (c.size() > 1 && std::abs(c.back()) <= 1e-13 * scale)
-    c.pop_back(); // lower the degree
-  const auto degree = static_cast<Eigen::Index>(c.size()) - 1;
-  std::vector<double> roots;
+  while (size > 1 && std::abs(c[size - 1]) <= 1e-13 * scale)
+    --size; // lower the degree
+  const auto degree = static_cast<Eigen::Index>(size) - 1;
+  Roots roots;
   if (degree < 1) return roots;
-  Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(degree, degree);
+  using Companion = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+  Companion companion = Companion::Zero(degree, degree);
   for (Eigen::Index i = 0; i < degree; ++i) {
-    companion(0, i) = -c[static_cast<std::size_t>(degree - 1 - i)] / c.back();
+    companion(0, i) = -c[static_cast<std::size_t>(degree - 1 - i)] / c[size - 1];
     if (i + 1 < degree) companion(i + 1, i) = 1.0;
   }
-  const Eigen::EigenSolver<Eigen::MatrixXd> eig(companion, false);
+  const Eigen::EigenSolver<Companion> eig(companion, false);
   const auto value = [&](double s) {
     double v = 0.0, d = 0.0;
-    for (std::size_t k = c.size(); k-- > 0;) {
+    for (std::size_t k = size; k-- > 0;) {
       d = d * s + v;
       v = v * s + c[k];
     }
