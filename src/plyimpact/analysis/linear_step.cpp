@@ -20,34 +20,6 @@ MassOperator::MassOperator(const SparseMatrix& M, double tolerance) : M_(M) {
 
 namespace {
 
-/// Largest |A(i, j)| with i in-plane (u, v) and j bending (w, θx, θy), relative to max |A|.
-double inplane_coupling(const PlateModel& model, const SparseMatrix& A) {
-  std::vector<bool> inplane(static_cast<std::size_t>(model.size()));
-  for (int n = 0; n < model.mesh().node_count(); ++n)
-    for (int d = 0; d < 2; ++d)
-      if (const int eq = model.dofs().equation(n, d); eq >= 0) inplane[static_cast<std::size_t>(eq)] = true;
-  double coupling = 0.0, scale = 0.0;
-  for (int col = 0; col < A.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(A, col); it; ++it) {
-      scale = std::max(scale, std::abs(it.value()));
-      if (inplane[static_cast<std::size_t>(it.row())] != inplane[static_cast<std::size_t>(col)])
-        coupling = std::max(coupling, std::abs(it.value()));
-    }
-  return scale > 0.0 ? coupling / scale : 0.0;
-}
-
-/// In-plane DOFs carry no load and, for B = 0 and I1 = 0, no coupling: they stay exactly zero and are
-/// left out of the time loop (about 2/5 of the equations).
-EquationSubset loop_equations(const PlateModel& model, const SparseMatrix& K, const SparseMatrix& M) {
-  const bool decoupled = inplane_coupling(model, K) <= 1e-13 && inplane_coupling(model, M) <= 1e-13;
-  if (!decoupled) return EquationSubset(model.size());
-  std::vector<int> keep;
-  for (int n = 0; n < model.mesh().node_count(); ++n)
-    for (int d = 2; d < dofs_per_node; ++d)
-      if (const int eq = model.dofs().equation(n, d); eq >= 0) keep.push_back(eq);
-  return {std::move(keep), model.size()};
-}
-
 class LinearStepPolicy;
 
 class LinearStepper final : public PlateStepper {
@@ -76,8 +48,8 @@ class LinearStepPolicy final : public StepPolicy {
 public:
   LinearStepPolicy(const PlateModel& model, const StepPolicyOptions& options, const SparseMatrix& K,
                    const SparseMatrix& M)
-      : model_(model), options_(options), equations_(loop_equations(model, K, M)), K_(equations_.restrict(K)),
-        M_(equations_.restrict(M), 0.0) {
+      : model_(model), options_(options), equations_(bending_equations_if_decoupled(model, K, M)),
+        K_(equations_.restrict(K)), M_(equations_.restrict(M), 0.0) {
     const SparseMatrix Kbar = K_ + options.newmark.c0 * M_.matrix(); // effective stiffness, factored once
     if (options.memory_limit_bytes)
       check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);

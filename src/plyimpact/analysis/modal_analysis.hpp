@@ -20,7 +20,8 @@ struct ModalResult {
 /// with its interfaces' elastic stiffness).
 [[nodiscard]] ModalResult solve_modal(const SparseMatrix& K, const SparseMatrix& M, int count);
 
-/// Period of the lowest elastic (non-zero) mode [s].
+/// Period of the lowest elastic (non-zero) mode [s], for the impact's end-of-event rule: of the bending
+/// DOFs alone where the in-plane ones are exactly decoupled (bending_equations_if_decoupled).
 [[nodiscard]] double fundamental_period(const PlateModel& model);
 
 } // namespace plyimpact

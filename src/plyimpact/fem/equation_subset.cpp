@@ -1,6 +1,9 @@
 #include "plyimpact/fem/equation_subset.hpp"
 
+#include "plyimpact/fem/plate_model.hpp"
+
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace plyimpact {
@@ -42,6 +45,37 @@ Eigen::SparseMatrix<double> EquationSubset::restrict(const Eigen::SparseMatrix<d
                                 static_cast<Eigen::Index>(keep_.size()));
   R.setFromTriplets(t.begin(), t.end());
   return R;
+}
+
+namespace {
+
+/// Largest |A(i, j)| with i in-plane (u, v) and j bending (w, θx, θy), relative to max |A|.
+double inplane_coupling(const PlateModel& model, const Eigen::SparseMatrix<double>& A) {
+  std::vector<bool> inplane(static_cast<std::size_t>(model.size()));
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    for (int d = 0; d < 2; ++d)
+      if (const int eq = model.dofs().equation(n, d); eq >= 0) inplane[static_cast<std::size_t>(eq)] = true;
+  double coupling = 0.0, scale = 0.0;
+  for (int col = 0; col < A.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, col); it; ++it) {
+      scale = std::max(scale, std::abs(it.value()));
+      if (inplane[static_cast<std::size_t>(it.row())] != inplane[static_cast<std::size_t>(col)])
+        coupling = std::max(coupling, std::abs(it.value()));
+    }
+  return scale > 0.0 ? coupling / scale : 0.0;
+}
+
+} // namespace
+
+EquationSubset bending_equations_if_decoupled(const PlateModel& model, const Eigen::SparseMatrix<double>& K,
+                                              const Eigen::SparseMatrix<double>& M) {
+  const bool decoupled = inplane_coupling(model, K) <= 1e-13 && inplane_coupling(model, M) <= 1e-13;
+  if (!decoupled) return EquationSubset(model.size());
+  std::vector<int> keep;
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    for (int d = 2; d < dofs_per_node; ++d)
+      if (const int eq = model.dofs().equation(n, d); eq >= 0) keep.push_back(eq);
+  return {std::move(keep), model.size()};
 }
 
 } // namespace plyimpact
