@@ -91,8 +91,9 @@ def table(case, repeats, work):
     for mesh in MESHES:
         row = [f"{100 * cells[(str(mesh), dt)][0]:+.2f} %, {cells[(str(mesh), dt)][1]:.3f} s" for dt in steps_us]
         print(f"| {name[str(mesh)]} | " + " | ".join(row) + " |")
-    # The cheapest cell within 1 %, and the cheapest whose mesh alone (at 1 µs) and step alone (on the
-    # finest mesh of the table) are each within 1 %, so that it is not two errors cancelling.
+    # The cheapest cell within 1 %, and the cheapest whose mesh alone (at the case's smallest step) and step
+    # alone (on the graded mesh, the finest of the table) are each within 1 %, so that it is not two errors
+    # cancelling.
     finest, smallest = str(MESHES[0]), steps_us[0]
     within = [(c[1], key) for key, c in cells.items() if abs(c[0]) < 0.01]
     honest = [(c[1], key) for key, c in cells.items() if abs(c[0]) < 0.01
