@@ -9,8 +9,13 @@ defaults (Hertz pressure, MITC9), which converge:
   light  the §4.2 plate [0_2/90_4/0_2] of the same material struck by an 8.4 g steel ball (R = 6.35 mm,
          k = "auto") at 3 m/s, a 135 µs contact, run to 400 µs; reference (iii), 447.94 N.
 
+  light-auto  the light case run to the end-of-event rule (end = "auto", the default): a 135 µs contact
+         and a free vibration of about 1 ms after it, where nothing changes the contact force.
+
 Each cell runs `plyimpact impact DECK -o DIR -q` (set-up, time loop, outputs, plots) REPEATS times and
-reports the median wall time and the peak force's error.
+reports the median wall time and the peak force's error. Then each case runs on its default graded mesh
+with error-controlled steps ([time] adaptive = true) at a range of tolerances, from the largest fixed step
+of its table down to the smallest.
 
 Usage: bench/time_to_accuracy.py [REPEATS]   (needs build/release/plyimpact; bench/README.md)
 """
@@ -48,15 +53,23 @@ def light(mesh, dt_us):
     return text + mesh_table(mesh)
 
 
+def light_auto(mesh, dt_us):
+    """The light case run to the end-of-event rule."""
+    return light(mesh, dt_us).replace("end = 400e-6", 'end = "auto"')
+
+
 def mesh_table(mesh):
     return "" if mesh == "graded" else f"\n[mesh]\nnx = {mesh[0]}\nny = {mesh[1]}\n"
 
 
-# name: deck builder, reference peak force [N] (docs/notes/contact-reference.md), time steps [µs]
+# name: deck builder, reference peak force [N] (docs/notes/contact-reference.md), time steps [µs], meshes,
+# the largest adaptive step [µs] and the levels that take it below the smallest fixed step
 CASES = {
-    "heavy": (heavy, 12878.0, [1, 2, 5, 10, 20, 50, 100, 200]),
-    "light": (light, 447.94, [0.1, 0.2, 0.5, 1, 2, 5]),
+    "heavy": (heavy, 12878.0, [1, 2, 5, 10, 20, 50, 100, 200], MESHES, 200, 12),
+    "light": (light, 447.94, [0.1, 0.2, 0.5, 1, 2, 5], MESHES, 5, 8),
+    "light-auto": (light_auto, 447.94, [0.1, 0.2, 0.5, 1, 2, 5], ["graded"], 40, 11),
 }
+TOLERANCES = ["1e-2", "3e-3", "1e-3", "3e-4", "1e-4", "3e-5"]
 
 
 def run(path, out, repeats):
@@ -72,9 +85,9 @@ def run(path, out, repeats):
 
 def table(case, repeats, work):
     """The markdown table of one case and the two cheapest cells within 1 %."""
-    deck, reference, steps_us = CASES[case]
+    deck, reference, steps_us, meshes, _, _ = CASES[case]
     cells = {}
-    for mesh in MESHES:
+    for mesh in meshes:
         for dt in steps_us:
             path = work / "case.toml"
             path.write_text(deck(mesh, dt))
@@ -84,17 +97,17 @@ def table(case, repeats, work):
             print(f"{case} {mesh} dt {dt} us: F {summary['peak_force']:.2f} N, error {100 * error:+.3f} %, "
                   f"{summary['steps']} steps, loop {summary['wall_time']:.3f} s, process {wall:.3f} s",
                   file=sys.stderr, flush=True)
-    name = {str(m): ("graded (default)" if m == "graded" else f"{m[0]}×{m[1]}") for m in MESHES}
+    name = {str(m): ("graded (default)" if m == "graded" else f"{m[0]}×{m[1]}") for m in meshes}
     print(f"\n{case}: peak force error against {reference} N, and the whole process's median time\n")
     print("| mesh | " + " | ".join(f"Δt = {dt} µs" for dt in steps_us) + " |")
     print("|---|" + "---:|" * len(steps_us))
-    for mesh in MESHES:
+    for mesh in meshes:
         row = [f"{100 * cells[(str(mesh), dt)][0]:+.2f} %, {cells[(str(mesh), dt)][1]:.3f} s" for dt in steps_us]
         print(f"| {name[str(mesh)]} | " + " | ".join(row) + " |")
     # The cheapest cell within 1 %, and the cheapest whose mesh alone (at the case's smallest step) and step
     # alone (on the graded mesh, the finest of the table) are each within 1 %, so that it is not two errors
     # cancelling.
-    finest, smallest = str(MESHES[0]), steps_us[0]
+    finest, smallest = str(meshes[0]), steps_us[0]
     within = [(c[1], key) for key, c in cells.items() if abs(c[0]) < 0.01]
     honest = [(c[1], key) for key, c in cells.items() if abs(c[0]) < 0.01
               and abs(cells[(key[0], smallest)][0]) < 0.01 and abs(cells[(finest, key[1])][0]) < 0.01]
@@ -105,11 +118,33 @@ def table(case, repeats, work):
                   f"({cells[key][2]} steps)")
 
 
+def adaptive_table(case, repeats, work):
+    """Error-controlled steps on the default graded mesh: the peak force's error, the time and the steps at
+    each tolerance."""
+    deck, reference, steps_us, _, largest_us, levels = CASES[case]
+    print(f"\n{case}, graded mesh, adaptive steps from {largest_us} µs down to "
+          f"{largest_us / 2 ** (levels - 1):.3g} µs ({levels} levels)\n")
+    print("| tolerance | error | whole process | time loop | steps (redone) | smallest step | factorizations |")
+    print("|---:|---:|---:|---:|---:|---:|---:|")
+    for tol in TOLERANCES:
+        text = deck("graded", 1).replace(
+            "dt = 1e-6", f"dt = {largest_us}e-6\nadaptive = true\nlevels = {levels}\ntolerance = {tol}")
+        path = work / "case.toml"
+        path.write_text(text)
+        wall, summary = run(path, work / "out", repeats)
+        steps = summary["time_steps"]
+        error = summary["peak_force"] / reference - 1.0
+        print(f"| {tol} | {100 * error:+.2f} % | {wall:.3f} s | {summary['wall_time']:.3f} s | {summary['steps']} "
+              f"({steps['rejected_steps']}) | {steps['smallest_used_dt'] * 1e6:.3g} µs | {steps['factorizations']} |",
+              flush=True)
+
+
 def main():
     repeats = int(sys.argv[1]) if len(sys.argv) > 1 else 3
     with tempfile.TemporaryDirectory() as work:
         for case in CASES:
             table(case, repeats, Path(work))
+            adaptive_table(case, repeats, Path(work))
 
 
 if __name__ == "__main__":

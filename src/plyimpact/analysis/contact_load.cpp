@@ -26,17 +26,22 @@ ContactLoading::ContactLoading(const PlateModel& model, const EquationSubset& eq
     : model_(model), equations_(equations), impactor_(impactor), kind_(kind),
       size_(std::max(size, equations.size())),
       sw_(padded(equations.restrict(model.sampler(impactor.x, impactor.y).as_vector(model.size())))) {
-  table_.push_back({0.0, sw_, {}, 0.0}); // radius 0: the point load
+  loads_ = std::make_shared<std::deque<Load>>();
+  loads_->push_back({0.0, sw_}); // radius 0: the point load
   if (flat_punch()) {
     // One load shape, the punch's pressure over its end; the punch's indentation is measured with the
     // same weights (the plate's deflection under a rigid punch, by reciprocity), which keeps the
     // contact work-conjugate: with the centre's deflection instead, the stiff linear law and the
     // spread load exchange energy and the run blows up.
-    table_.push_back({impactor_.radius, pressure_load(impactor_.radius), {}, 0.0});
-    sw_ = table_.back().load;
-    table_.front().load = sw_;
+    loads_->push_back({impactor_.radius, pressure_load(impactor_.radius)});
+    sw_ = loads_->back().vector;
+    loads_->front().vector = sw_;
   }
 }
+
+ContactLoading::ContactLoading(const ContactLoading& other, Solve solve)
+    : model_(other.model_), equations_(other.equations_), impactor_(other.impactor_), kind_(other.kind_),
+      size_(other.size_), sw_(other.sw_), solve_(std::move(solve)), loads_(other.loads_) {}
 
 bool ContactLoading::flat_punch() const {
   return distributed() && impactor_.nose == NoseShape::flat;
@@ -44,8 +49,7 @@ bool ContactLoading::flat_punch() const {
 
 void ContactLoading::set_solver(Solve solve) {
   solve_ = std::move(solve);
-  for (Entry& e : table_)
-    e.response.resize(0);
+  responses_.clear();
 }
 
 Eigen::VectorXd ContactLoading::padded(Eigen::VectorXd v) const {
@@ -61,18 +65,24 @@ Eigen::VectorXd ContactLoading::pressure_load(double radius) const {
       equations_.restrict(hertz_pressure_weights(model_, impactor_.x, impactor_.y, radius, impactor_.nose)));
 }
 
-const ContactLoading::Entry& ContactLoading::entry(std::size_t j) const {
-  while (table_.size() <= j) {
+const ContactLoading::Load& ContactLoading::load_entry(std::size_t j) const {
+  while (loads_->size() <= j) {
     const double radius =
-        table_.size() == 1 ? smallest_radius : table_.back().radius * radius_ratio; // geometric from a_1
-    table_.push_back({radius, pressure_load(radius), {}, 0.0});
+        loads_->size() == 1 ? smallest_radius : loads_->back().radius * radius_ratio; // geometric from a_1
+    loads_->push_back({radius, pressure_load(radius)});
   }
-  Entry& e = table_[j];
-  if (e.response.size() == 0 && solve_) {
-    e.response = solve_(e.load);
-    e.compliance = sw_.dot(e.response);
+  return (*loads_)[j];
+}
+
+const ContactLoading::Response& ContactLoading::response_entry(std::size_t j) const {
+  const Load& load = load_entry(j);
+  if (responses_.size() <= j) responses_.resize(j + 1);
+  Response& r = responses_[j];
+  if (r.vector.size() == 0 && solve_) {
+    r.vector = solve_(load.vector);
+    r.compliance = sw_.dot(r.vector);
   }
-  return e;
+  return r;
 }
 
 ContactLoading::Bracket ContactLoading::bracket(double alpha) const {
@@ -84,23 +94,23 @@ ContactLoading::Bracket ContactLoading::bracket(double alpha) const {
   // a_j = a_1 · ratio^(j−1) ≤ radius < a_{j+1}
   auto j =
       1 + static_cast<std::size_t>(std::floor(std::log(radius / smallest_radius) / std::log(radius_ratio)));
-  while (j > 1 && entry(j).radius > radius) // round-off of the logarithm
+  while (j > 1 && load_entry(j).radius > radius) // round-off of the logarithm
     --j;
-  while (entry(j + 1).radius <= radius)
+  while (load_entry(j + 1).radius <= radius)
     ++j;
-  const double a0 = entry(j).radius, a1 = entry(j + 1).radius;
+  const double a0 = load_entry(j).radius, a1 = load_entry(j + 1).radius;
   return {j, (radius - a0) / (a1 - a0)};
 }
 
 double ContactLoading::compliance(double alpha) const {
   const Bracket b = bracket(alpha);
-  const double c0 = entry(b.j).compliance;
+  const double c0 = response_entry(b.j).compliance;
   if (b.weight == 0.0) return c0;
-  return (1.0 - b.weight) * c0 + b.weight * entry(b.j + 1).compliance;
+  return (1.0 - b.weight) * c0 + b.weight * response_entry(b.j + 1).compliance;
 }
 
 ContactSolution ContactLoading::solve(const ContactStep& step, double w_hat) const {
-  if (!distributed()) return step.solve(w_hat, entry(0).compliance);
+  if (!distributed()) return step.solve(w_hat, response_entry(0).compliance);
   // c depends weakly on α (through the radius): a fixed point on c converges in a few passes.
   double c = compliance(step.previous_indentation());
   ContactSolution cs = step.solve(w_hat, c);
@@ -116,22 +126,23 @@ ContactSolution ContactLoading::solve(const ContactStep& step, double w_hat) con
 void ContactLoading::add_response(double alpha, double force, Eigen::VectorXd& u) const {
   const Bracket b = bracket(alpha);
   if (b.weight == 0.0) {
-    u += force * entry(b.j).response;
+    u += force * response_entry(b.j).vector;
     return;
   }
-  u += ((1.0 - b.weight) * force) * entry(b.j).response + (b.weight * force) * entry(b.j + 1).response;
+  u += ((1.0 - b.weight) * force) * response_entry(b.j).vector +
+       (b.weight * force) * response_entry(b.j + 1).vector;
 }
 
 Eigen::VectorXd ContactLoading::load(double alpha) const {
   const Bracket b = bracket(alpha);
-  if (b.weight == 0.0) return entry(b.j).load;
-  return (1.0 - b.weight) * entry(b.j).load + b.weight * entry(b.j + 1).load;
+  if (b.weight == 0.0) return load_entry(b.j).vector;
+  return (1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector;
 }
 
 double ContactLoading::load_dot(double alpha, const Eigen::VectorXd& u) const {
   const Bracket b = bracket(alpha);
-  if (b.weight == 0.0) return entry(b.j).load.dot(u);
-  return ((1.0 - b.weight) * entry(b.j).load + b.weight * entry(b.j + 1).load).dot(u);
+  if (b.weight == 0.0) return load_entry(b.j).vector.dot(u);
+  return ((1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector).dot(u);
 }
 
 Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a,

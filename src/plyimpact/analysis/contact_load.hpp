@@ -19,7 +19,9 @@
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 
+#include <deque>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace plyimpact {
@@ -41,6 +43,10 @@ public:
   /// under it sampled with the same weights (sampler() is that load).
   [[nodiscard]] bool flat_punch() const;
 
+  /// The same contact on a plate with another factor (another time step): the load table is shared with
+  /// `other` (its loads are computed once for both), the responses are computed with `solve`.
+  ContactLoading(const ContactLoading& other, Solve solve);
+
   /// The factor changed: responses are recomputed with `solve` when next needed.
   void set_solver(Solve solve);
 
@@ -55,11 +61,13 @@ public:
   [[nodiscard]] double load_dot(double alpha, const Eigen::VectorXd& u) const;
 
 private:
-  struct Entry {
+  struct Load {
     double radius = 0.0;
-    Eigen::VectorXd load;     ///< s_load of a unit force
-    Eigen::VectorXd response; ///< K̄⁻¹ s_load (empty until needed)
-    double compliance = 0.0;  ///< swᵀ K̄⁻¹ s_load
+    Eigen::VectorXd vector; ///< s_load of a unit force
+  };
+  struct Response {
+    Eigen::VectorXd vector;  ///< K̄⁻¹ s_load (empty until needed)
+    double compliance = 0.0; ///< swᵀ K̄⁻¹ s_load
   };
   /// Entry j (built on first use) and j + 1 around the radius of α, and the weight of j + 1.
   struct Bracket {
@@ -67,8 +75,10 @@ private:
     double weight = 0.0;
   };
   [[nodiscard]] Bracket bracket(double alpha) const;
-  /// Entry j, its load and response computed on first use (the table is a cache).
-  const Entry& entry(std::size_t j) const;
+  /// Load j, computed on first use (the table is a cache).
+  const Load& load_entry(std::size_t j) const;
+  /// The plate's response to load j, computed on first use.
+  const Response& response_entry(std::size_t j) const;
   [[nodiscard]] double compliance(double alpha) const;
   [[nodiscard]] Eigen::VectorXd pressure_load(double radius) const;
   /// v (subset numbering) padded with zeros to `size_` equations.
@@ -81,7 +91,10 @@ private:
   int size_;
   Eigen::VectorXd sw_;
   Solve solve_;
-  mutable std::vector<Entry> table_; ///< radius 0 (= the point load), then 1 µm · 1.08^(j−1)
+  /// radius 0 (= the point load), then 1 µm · 1.08^(j−1); shared by the loadings of one run's time steps
+  /// (a deque: references to its entries stay valid as it grows)
+  std::shared_ptr<std::deque<Load>> loads_;
+  mutable std::deque<Response> responses_; ///< responses_[j] to loads_[j]
 };
 
 /// Unit-force contact pressure over the contact circle of radius a centred at (x, y) — Hertz's for the

@@ -55,6 +55,9 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.dt = d.time.dt ? *d.time.dt
                    : automatic_time_step(d.impactor.mass, s.k, d.impactor.velocity,
                                          contact_exponent(d.impactor.nose));
+  if (d.time.adaptive && !d.time.dt) // the automatic step is the smallest of the error-controlled ones
+    s.dt = std::ldexp(s.dt, d.time.adaptive->levels - 1);
+  s.adaptive = d.time.adaptive;
   if (d.delamination && !d.time.dt && !d.laminates.empty()) // within the interfaces' limit (DL5)
     s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
                                                                d.time.newmark_beta));
@@ -160,14 +163,16 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   loop.newmark_beta = settings_.newmark_beta;
   loop.newmark_gamma = settings_.newmark_gamma;
   loop.max_steps = settings_.max_steps;
+  loop.adaptive = settings_.adaptive;
   loop.fundamental_period = fundamental_period_;
   loop.cancel = request.cancel;
   if (!settings_.rigid_target && !settings_.nonlinear)
     loop.linear_thickness = impacted_laminate(description_).thickness();
   // Guards that warn (docs/robustness.md): a Δt too coarse for the contact, an impact point on an
-  // element boundary.
-  if (auto w = time_step_warning(imp.mass, imp.velocity, k, settings_.dt, contact_exponent(imp.nose)))
-    loop.warnings.push_back(std::move(*w));
+  // element boundary. (An error-controlled run chooses its own steps below dt.)
+  if (!settings_.adaptive)
+    if (auto w = time_step_warning(imp.mass, imp.velocity, k, settings_.dt, contact_exponent(imp.nose)))
+      loop.warnings.push_back(std::move(*w));
   if (!settings_.rigid_target) {
     // A point force on an element boundary loads whichever element holds it; the Hertz pressure is
     // integrated over every element its circle touches and needs no such warning.

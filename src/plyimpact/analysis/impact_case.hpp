@@ -69,6 +69,7 @@ struct ImpactSettings {
   std::optional<double> end; ///< [s]; empty: SPEC §4 end-of-event rule
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  std::optional<AdaptiveTimeStep> adaptive; ///< engaged: dt is the largest of the error-controlled steps
   bool rigid_target = false;
   std::optional<NonlinearImpactSettings> nonlinear;
   std::optional<ProgressiveDamageSettings> progressive_damage;

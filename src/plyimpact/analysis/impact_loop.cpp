@@ -1,6 +1,8 @@
 #include "plyimpact/analysis/impact_loop.hpp"
 
+#include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/time_step_control.hpp"
 
 #include <fmt/format.h>
 
@@ -43,11 +45,11 @@ public:
     return false;
   }
 
-  /// A converged step: contact episodes, peak force, peak deflection ws and indentation α.
-  void record(double t, double force, double alpha, double ws) {
+  /// A converged step of length dt: contact episodes, peak force, peak deflection ws and indentation α.
+  void record(double t, double dt, double force, double alpha, double ws) {
     last_force_ = force;
     if (force > 0.0) {
-      if (!in_contact_) r_.episodes.push_back({t - s_.dt, t, 0.0});
+      if (!in_contact_) r_.episodes.push_back({t - dt, t, 0.0});
       in_contact_ = true;
       auto& ep = r_.episodes.back();
       ep.end = t;
@@ -190,6 +192,15 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   const auto wall0 = std::chrono::steady_clock::now();
   check_end_after_first_step(s.dt, s.end);
   const NewmarkCoefficients nc(s.dt, s.newmark_beta, s.newmark_gamma);
+  std::optional<TimeStepControl> control;
+  if (s.adaptive) {
+    if (!policy.variable_time_step())
+      throw std::invalid_argument(
+          "adaptive time steps are available for the linear plate only (no progressive "
+          "damage, delamination or non-linear plate): set [time] adaptive = false");
+    control.emplace(nc, *s.adaptive,
+                    rigid_target_indentation(imp.mass, imp.velocity, k, contact_exponent(imp.nose)));
+  }
   const std::unique_ptr<PlateStepper> plate = policy.start(imp);
   const auto n = static_cast<Eigen::Index>(policy.equations());
   const bool rigid = n == 0;
@@ -238,11 +249,32 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   for (;;) {
     if (event.must_stop(step, t, step > 0 && observer_stop())) break;
     ++step;
-    t = static_cast<double>(step) * s.dt;
 
-    // 1. Plate and contact force together (the step policy).
-    const ContactSolution cs =
-        plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
+    // 1. Plate and contact force together (the step policy), solved again at a shorter step while the
+    //    error control asks for one.
+    ContactSolution cs;
+    const NewmarkCoefficients* step_nc = &nc;
+    for (;;) {
+      if (control) {
+        plate->set_time_step_level(control->level());
+        impactor.set_coefficients(control->coefficients());
+        step_nc = &control->coefficients();
+        t = control->step_end_time();
+      } else {
+        t = static_cast<double>(step) * s.dt;
+      }
+      cs = plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
+      a_next = step_nc->c0 * (u_next - state.u) - step_nc->c2 * state.v - step_nc->c3 * state.a;
+      if (!control) break;
+      if (cs.force == 0.0 && force == 0.0) { // out of contact: nothing to control
+        control->accept_free_flight();
+        break;
+      }
+      if (control->accept(control->indentation_errors(impactor.acceleration(), -cs.force / imp.mass,
+                                                      plate->contact_deflection(state.a),
+                                                      plate->contact_deflection(a_next))))
+        break;
+    }
     r.newton_iterations_max = std::max(r.newton_iterations_max, cs.iterations);
     const double force_old = force, alpha_old = alpha;
     force = cs.force;
@@ -255,8 +287,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
     // 2. Newmark update of the plate (2.11)–(2.16).
     plate->accept(state, u_next);
-    a_next = nc.c0 * (u_next - state.u) - nc.c2 * state.v - nc.c3 * state.a;
-    state.v += nc.c6 * state.a + nc.c7 * a_next;
+    state.v += step_nc->c6 * state.a + step_nc->c7 * a_next;
     state.u.swap(u_next);
     state.a.swap(a_next);
     ws = rigid ? 0.0 : plate->contact_deflection(state.u);
@@ -271,7 +302,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     }
 
     // 3. Episodes and peaks, observers, end of the event.
-    event.record(t, force, alpha, ws);
+    event.record(t, step_nc->dt, force, alpha, ws);
     if (const DamageField* d = plate->damage(); d && d->first_damage() && !first_damage) {
       first_damage = ProgressiveDamageResult{};
       first_damage->first_mode = d->first_damage()->mode;
@@ -279,6 +310,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
       first_damage->first_time = t;
       first_damage->first_force = force;
     }
+    view.dt = step_nc->dt;
     update_view(step, t);
     for (ImpactObserver* o : observers)
       o->on_step(view);
@@ -290,6 +322,15 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   event.finish(ended, step, t, law, impactor, e0, contact_work);
   check_after_run(r, view, e0, law_work, imp, k, s);
   r.newton = plate->statistics();
+  if (control) {
+    r.time_steps = control->result(policy.factorizations());
+    if (r.time_steps->steps_above_tolerance > 0)
+      r.warnings.push_back(fmt::format("adaptive time steps: {} steps at the smallest allowed step, {:.4g} "
+                                       "s, kept a local error up to {:.3g} "
+                                       "times the tolerance: raise [time] levels or lower dt",
+                                       r.time_steps->steps_above_tolerance, r.time_steps->smallest_allowed_dt,
+                                       r.time_steps->largest_error_ratio));
+  }
   r.delamination = plate->delamination();
   if (const DamageField* d = plate->damage()) {
     ProgressiveDamageResult pd = first_damage.value_or(ProgressiveDamageResult{});

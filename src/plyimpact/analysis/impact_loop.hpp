@@ -1,7 +1,7 @@
 #pragma once
 // The one time loop of every impact run (SPEC §4; thesis 2.3–2.4, 3.5): plate M ü + K u = Fc s (2.2)
 // (or its non-linear form), impactor m ẅi = −Fc (2.4), indentation α = wi − ws (2.8), contact law
-// HertzContact, Newmark with constant Δt for both.
+// HertzContact, Newmark with constant Δt for both (or error-controlled steps, time_step_control.hpp).
 //
 //   initialise (u, v, a, impactor)               observers.on_start
 //   for each step:
@@ -28,6 +28,8 @@ struct LoopSettings {
   std::optional<double> end; ///< [s]; empty: the SPEC §4 end-of-event rule
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  /// engaged: error-controlled steps of at most dt (time_step_control.hpp); the policy must allow them
+  std::optional<AdaptiveTimeStep> adaptive;
   double fundamental_period = 0.0;           ///< of the plate, for the end-of-event rule [s]
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
   /// Laminate thickness under the impact point of a linear plate (empty: non-linear plate or rigid

@@ -88,6 +88,18 @@ struct DelaminationResult {
   double interface_point_spacing = 0.0; ///< the interface points' spacing in the largest element [m]
 };
 
+/// How an error-controlled run stepped (TimeStepControl, [time] adaptive = true).
+struct AdaptiveStepResult {
+  double tolerance = 0.0;           ///< of the local indentation error, relative to α_m
+  double largest_dt = 0.0;          ///< [s]
+  double smallest_allowed_dt = 0.0; ///< [s]
+  double smallest_used_dt = 0.0;    ///< [s]
+  long rejected_steps = 0;          ///< solved again at a finer level
+  long steps_above_tolerance = 0;   ///< accepted at the finest level with the error above the bound
+  double largest_error_ratio = 0.0; ///< of an accepted step's error estimate to the bound
+  int factorizations = 0;           ///< of K̄, one per level used
+};
+
 struct ImpactResult {
   std::vector<ImpactSample> history; ///< every k-th step (RunRequest::history_every), first and last always
   std::vector<ContactEpisode> episodes;
@@ -124,6 +136,7 @@ struct ImpactResult {
   std::optional<NewtonStatistics> newton; ///< geometrically non-linear and progressive-damage runs
   std::optional<ProgressiveDamageResult> progressive; ///< progressive-damage runs only
   std::optional<DelaminationResult> delamination;     ///< stacked-plate runs only
+  std::optional<AdaptiveStepResult> time_steps;       ///< error-controlled runs only
 };
 
 } // namespace plyimpact

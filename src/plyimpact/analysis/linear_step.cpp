@@ -4,9 +4,14 @@
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 
 namespace plyimpact {
 
@@ -31,17 +36,27 @@ public:
   [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
   [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override { return sw().dot(u); }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
+  void set_time_step_level(int level) override;
 
 private:
-  [[nodiscard]] const Eigen::VectorXd& sw() const { return loading_.sampler(); }
+  [[nodiscard]] const Eigen::VectorXd& sw() const { return loadings_.front()->sampler(); }
 
   const LinearStepPolicy& p_;
-  ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and the compliance c = swᵀ K̄⁻¹ s_load
+  Impactor impactor_;
+  /// per time-step level (built when first used): s_load, K̄⁻¹ s_load and the compliance c = swᵀ K̄⁻¹ s_load
+  std::vector<std::unique_ptr<ContactLoading>> loadings_;
+  int level_ = 0;
   // The step's vectors, sized once: no allocation in the time loop.
   Eigen::VectorXd predictor_, rhs_, u_hat_;
   mutable Eigen::VectorXd scratch_; ///< M v and M a of the energies
   SpdSolver::Workspace workspace_;  ///< CHOLMOD's arrays, reused by every solve
   double alpha_ = 0.0;              ///< indentation of the last step (its load vector)
+};
+
+/// The effective stiffness of one time step: K̄ = K + c0 M with its Newmark coefficients.
+struct TimeStepLevel {
+  NewmarkCoefficients newmark;
+  SpdSolver factor;
 };
 
 class LinearStepPolicy final : public StepPolicy {
@@ -50,15 +65,13 @@ public:
                    const SparseMatrix& M)
       : model_(model), options_(options), equations_(bending_equations_if_decoupled(model, K, M)),
         K_(equations_.restrict(K)), M_(equations_.restrict(M), 0.0) {
-    const SparseMatrix Kbar = K_ + options.newmark.c0 * M_.matrix(); // effective stiffness, factored once
-    if (options.memory_limit_bytes)
-      check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);
-    factor_ = SpdSolver(options.solver, options.ordering);
-    factor_.factorize(Kbar);
+    std::call_once(once_[0], [this] { levels_[0] = factor_level(options_.newmark, true); });
   }
 
   [[nodiscard]] int equations() const override { return equations_.size(); }
   [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
+  [[nodiscard]] bool variable_time_step() const override { return true; }
+  [[nodiscard]] int factorizations() const override { return factorizations_.load(); }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<LinearStepper>(*this, impactor);
   }
@@ -70,7 +83,7 @@ public:
     Eigen::VectorXd x;
     for (int i = 0; i < repeats; ++i) {
       const auto t0 = std::chrono::steady_clock::now();
-      x = factor_.solve(b);
+      x = level(0).factor.solve(b);
       t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       b(0) += 1e-30 * x(0);
     }
@@ -78,34 +91,83 @@ public:
     return t[static_cast<std::size_t>(repeats / 2)];
   }
 
+  /// Level k: Δt/2^k and its factor of K̄, factored on first use (once, whichever run asks first: runs
+  /// on several threads share the policy).
+  [[nodiscard]] const TimeStepLevel& level(int k) const {
+    if (k < 0 || k >= max_levels)
+      throw std::invalid_argument(fmt::format("time-step level {} outside 0 … {}", k, max_levels - 1));
+    std::call_once(once_[static_cast<std::size_t>(k)], [this, k] {
+      const NewmarkCoefficients& n = options_.newmark;
+      levels_[static_cast<std::size_t>(k)] = factor_level({std::ldexp(n.dt, -k), n.beta, n.gamma}, false);
+      ++factorizations_;
+    });
+    return *levels_[static_cast<std::size_t>(k)];
+  }
+
+  static constexpr int max_levels = 24;
+
   const PlateModel& model_;
   StepPolicyOptions options_;
   EquationSubset equations_;
   SparseMatrix K_;
   MassOperator M_; ///< exactly diagonal when lumped with I1 = 0
-  SpdSolver factor_;
+
+private:
+  /// K̄ of `newmark` factored; `check_memory`: against the memory limit first (level 0: the other levels
+  /// have the same pattern, so the same factor size).
+  [[nodiscard]] std::unique_ptr<TimeStepLevel> factor_level(const NewmarkCoefficients& newmark,
+                                                            bool check_memory) const {
+    const SparseMatrix Kbar = K_ + newmark.c0 * M_.matrix(); // effective stiffness, factored once
+    if (check_memory && options_.memory_limit_bytes)
+      check_factor_memory(estimate_factor_memory(Kbar), *options_.memory_limit_bytes);
+    auto level = std::make_unique<TimeStepLevel>(
+        TimeStepLevel{newmark, SpdSolver(options_.solver, options_.ordering)});
+    level->factor.factorize(Kbar);
+    return level;
+  }
+
+  mutable std::array<std::once_flag, max_levels> once_;
+  mutable std::array<std::unique_ptr<TimeStepLevel>, max_levels> levels_;
+  mutable std::atomic<int> factorizations_{1};
 };
 
 LinearStepper::LinearStepper(const LinearStepPolicy& policy, const Impactor& impactor)
-    : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
+    : p_(policy), impactor_(impactor), loadings_(LinearStepPolicy::max_levels),
       predictor_(policy.equations()), rhs_(policy.equations()), u_hat_(policy.equations()),
       scratch_(policy.equations()) {
-  loading_.set_solver([&factor = p_.factor_](const Eigen::VectorXd& b) { return factor.solve(b); });
+  set_time_step_level(0);
+}
+
+void LinearStepper::set_time_step_level(int level) {
+  const TimeStepLevel& l = p_.level(level);
+  auto& loading = loadings_[static_cast<std::size_t>(level)];
+  if (!loading) {
+    ContactLoading::Solve solve = [&factor = l.factor](const Eigen::VectorXd& b) { return factor.solve(b); };
+    if (level == 0) {
+      loading = std::make_unique<ContactLoading>(p_.model_, p_.equations_, impactor_, p_.options_.load);
+      loading->set_solver(std::move(solve));
+    } else { // the loads of level 0, this level's responses
+      loading = std::make_unique<ContactLoading>(*loadings_.front(), std::move(solve));
+    }
+  }
+  level_ = level;
 }
 
 ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateState& s,
                                        const ContactStep& contact, Eigen::VectorXd& u_next) {
-  const NewmarkCoefficients& nc = p_.options_.newmark;
+  const TimeStepLevel& level = p_.level(level_);
+  const NewmarkCoefficients& nc = level.newmark;
+  const ContactLoading& loading = *loadings_[static_cast<std::size_t>(level_)];
   // 1. Load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a): one back-substitution.
   predictor_ = nc.c0 * s.u + nc.c2 * s.v + nc.c3 * s.a;
   p_.M_.apply(predictor_, rhs_);
-  p_.factor_.solve(rhs_, u_hat_, workspace_);
+  level.factor.solve(rhs_, u_hat_, workspace_);
   // 2. Scalar contact problem with ws affine in Fc.
-  const ContactSolution cs = loading_.solve(contact, sw().dot(u_hat_));
+  const ContactSolution cs = loading.solve(contact, sw().dot(u_hat_));
   alpha_ = cs.alpha;
   // 3. The plate under the converged force.
   u_next = u_hat_;
-  loading_.add_response(cs.alpha, cs.force, u_next);
+  loading.add_response(cs.alpha, cs.force, u_next);
   return cs;
 }
 
@@ -115,7 +177,7 @@ double LinearStepper::kinetic_energy(const PlateState& s) const {
 
 double LinearStepper::strain_energy(const PlateState& s, double force) const {
   p_.M_.apply(s.a, scratch_);
-  return 0.5 * (force * loading_.load_dot(alpha_, s.u) - s.u.dot(scratch_)); // K u = F s − M a
+  return 0.5 * (force * loadings_.front()->load_dot(alpha_, s.u) - s.u.dot(scratch_)); // K u = F s − M a
 }
 
 void LinearStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {

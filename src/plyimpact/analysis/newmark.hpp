@@ -40,8 +40,12 @@ public:
     w_ = w1;
     a_ = a1;
   }
+  /// The next steps use these coefficients (a new Δt): the state (w, v, a) carries over.
+  void set_coefficients(const NewmarkCoefficients& c) { c_ = c; }
+  [[nodiscard]] const NewmarkCoefficients& coefficients() const { return c_; }
   [[nodiscard]] double displacement() const { return w_; }
   [[nodiscard]] double velocity() const { return v_; }
+  [[nodiscard]] double acceleration() const { return a_; }
   [[nodiscard]] double kinetic_energy() const { return 0.5 * mass_ * v_ * v_; }
 
 private:

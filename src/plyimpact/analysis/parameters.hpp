@@ -62,6 +62,15 @@ struct ContactLawParameters {
   ContactLoad load = ContactLoad::hertz_pressure; ///< point: the thesis's point force
 };
 
+/// Error-controlled time steps (issue 22, docs/deck.md `[time]`). The steps are dt_max/2^k, k = 0 … levels −
+/// 1, each with its factor of K̄ computed when first used. A step is redone at a finer level when its error of
+/// the indentation (Newmark's local error, or the error of interpolating the history between steps)
+/// exceeds `tolerance` times the rigid-target Hertz indentation α_m (analysis/time_step_control.hpp).
+struct AdaptiveTimeStep {
+  double tolerance = 1e-3; ///< of the local indentation error, relative to α_m
+  int levels = 8;          ///< the smallest step is dt / 2^(levels − 1)
+};
+
 /// Newmark time stepping (2.11)–(2.16).
 struct TimeStepping {
   std::optional<double> dt;  ///< [s]; empty = "auto"
@@ -69,6 +78,9 @@ struct TimeStepping {
   double newmark_beta = 0.25;
   double newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  /// engaged: error-controlled steps (impact_loop.hpp): dt is the largest step, halved where the
+  /// estimated local error of the indentation exceeds the tolerance
+  std::optional<AdaptiveTimeStep> adaptive;
 };
 
 struct ModalSettings {

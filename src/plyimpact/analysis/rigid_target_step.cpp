@@ -16,11 +16,14 @@ public:
   [[nodiscard]] double strain_energy(const PlateState& /*s*/, double /*force*/) const override { return 0.0; }
   [[nodiscard]] double contact_deflection(const Eigen::VectorXd& /*u*/) const override { return 0.0; }
   void to_model(const Eigen::VectorXd& /*u*/, Eigen::VectorXd& out) const override { out.resize(0); }
+  void set_time_step_level(int /*level*/) override {} // nothing is factored: any step will do
 };
 
 class RigidTargetPolicy final : public StepPolicy {
 public:
   [[nodiscard]] int equations() const override { return 0; }
+  [[nodiscard]] bool variable_time_step() const override { return true; }
+  [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& /*impactor*/) const override {
     return std::make_unique<RigidStepper>();
   }

@@ -28,6 +28,7 @@
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,11 @@ public:
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
   /// u in the model's numbering.
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
+  /// The next steps are Δt/2^level long, Δt of StepPolicyOptions::newmark (error-controlled runs, only
+  /// where StepPolicy::variable_time_step()); level 0 is where every run starts.
+  virtual void set_time_step_level(int /*level*/) {
+    throw std::logic_error("this step policy has a fixed time step");
+  }
   [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
   /// The interfaces after the last accepted step (stacked plate only).
   [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
@@ -82,6 +88,10 @@ public:
   [[nodiscard]] virtual int equations() const = 0;
   /// True when the in-plane DOFs are left out (exactly decoupled from bending: B = 0, I1 = 0).
   [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
+  /// True when its steppers take set_time_step_level() (error-controlled time steps).
+  [[nodiscard]] virtual bool variable_time_step() const { return false; }
+  /// Factorizations of K̄ done so far (one per time-step level used).
+  [[nodiscard]] virtual int factorizations() const { return 1; }
   [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor) const = 0;
   /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
   [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }

@@ -177,6 +177,11 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("delamination")) d.delamination = read_delamination(*t, d);
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
+  if (d.time.adaptive && (!d.damage.criteria.empty() || d.damage.progressive || d.delamination))
+    top.optional_table("time")->fail_at(
+        "adaptive", "time.adaptive controls the error of the contact force only: the ply criteria, the "
+                    "progressive damage and the interfaces need every step at one Δt. Remove adaptive = true "
+                    "(and give dt), or leave out [damage] and [delamination]");
   d.warnings = plausibility_warnings(d);
   return d;
 }

@@ -125,8 +125,49 @@ ContactLawParameters read_contact(const TableReader& t, NoseShape nose) {
   return c;
 }
 
+namespace {
+
+/// `adaptive`, `tolerance`, `levels` of [time] (error-controlled steps, analysis/time_step_control.hpp).
+std::optional<AdaptiveTimeStep> read_adaptive_time_step(const TableReader& t) {
+  bool adaptive = false;
+  if (const toml::node* n = t.node("adaptive")) {
+    const auto* b = n->as_boolean();
+    if (b == nullptr)
+      t.fail_at("adaptive", fmt::format("time.adaptive must be true or false, got {}", type_name(*n)));
+    adaptive = b->get();
+  }
+  if (!adaptive) {
+    for (const char* key : {"tolerance", "levels"})
+      if (t.has(key))
+        t.fail_at(key,
+                  fmt::format("time.{} sets the error-controlled steps: add adaptive = true to [time], or "
+                              "remove {}",
+                              key, key));
+    return std::nullopt;
+  }
+  AdaptiveTimeStep a;
+  if (const auto tol = t.optional_positive("tolerance", "-")) {
+    if (!(*tol < 1.0))
+      t.fail_at("tolerance",
+                fmt::format("time.tolerance is the local error of the indentation relative to the "
+                            "rigid-target indentation; it must lie in (0, 1), got {}",
+                            *tol));
+    a.tolerance = *tol;
+  }
+  if (const auto levels = t.optional_integer("levels")) {
+    if (*levels < 1 || *levels > 24)
+      t.fail_at("levels", fmt::format("time.levels must lie between 1 and 24 (the smallest step is "
+                                      "dt/2^(levels - 1)), got {}",
+                                      *levels));
+    a.levels = static_cast<int>(*levels);
+  }
+  return a;
+}
+
+} // namespace
+
 TimeStepping read_time(const TableReader& t) {
-  t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps"});
+  t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps", "adaptive", "tolerance", "levels"});
   TimeStepping ts;
   ts.dt = t.positive_or_auto("dt", "s");
   ts.end = t.positive_or_auto("end", "s");
@@ -143,6 +184,7 @@ TimeStepping read_time(const TableReader& t) {
                 fmt::format("time.max_steps must lie between 1 and {}, got {}", max_step_cap, *m));
     ts.max_steps = *m;
   }
+  ts.adaptive = read_adaptive_time_step(t);
   if (ts.dt && ts.end && *ts.end / *ts.dt > static_cast<double>(max_step_cap))
     t.fail_at("end", fmt::format("time.end / time.dt = {:.3g} steps: more than the limit of {} steps",
                                  *ts.end / *ts.dt, max_step_cap));

@@ -165,7 +165,10 @@ void check_impactor(const Deck& d, Checks& c) {
   // Δt and the end time against the rigid-target Hertz contact time (the plate only lengthens it).
   const double tc = hertz_contact_time(imp.mass, imp.velocity, k, contact_exponent(imp.nose));
   const std::string what = fmt::format("this impact (Hertz contact time {} s)", short_number(tc));
-  if (d.time.dt) c.add({"time.dt", *d.time.dt, "s", tc / 1e5, tc / 5.0, "a time step of " + what});
+  // With error-controlled steps dt is only the longest step (out of contact it is taken as it is).
+  if (d.time.dt)
+    c.add({"time.dt", *d.time.dt, "s", tc / 1e5, d.time.adaptive ? tc * 10.0 : tc / 5.0,
+           (d.time.adaptive ? "the longest time step of " : "a time step of ") + what});
   if (d.time.end) c.add({"time.end", *d.time.end, "s", tc / 1e3, tc * 1e3, "an end time of " + what});
 }
 

@@ -154,6 +154,18 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   }
   if (r.delamination && s.delamination) // the stacked plate's interfaces (docs/delamination.md)
     j["delamination"] = delamination_json(*s.delamination, *r.delamination, r.newton);
+  if (r.time_steps) { // error-controlled steps (docs/deck.md, [time] adaptive)
+    const AdaptiveStepResult& a = *r.time_steps;
+    j["time_steps"] = {{"adaptive", true},
+                       {"tolerance", a.tolerance},
+                       {"largest_dt", a.largest_dt},
+                       {"smallest_allowed_dt", a.smallest_allowed_dt},
+                       {"smallest_used_dt", a.smallest_used_dt},
+                       {"rejected_steps", a.rejected_steps},
+                       {"steps_above_tolerance", a.steps_above_tolerance},
+                       {"largest_error_ratio", a.largest_error_ratio},
+                       {"factorizations", a.factorizations}};
+  }
   if (s.nonlinear && r.newton) { // large deflections (docs/nonlinear.md)
     j["nonlinear"] = true;
     j["strain_measure"] = to_string(s.nonlinear->measure);
@@ -218,6 +230,13 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                    r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,
                    r.end_time * 1e6, r.wall_time, r.complete ? "" : "  INCOMPLETE");
+  if (r.time_steps)
+    t += fmt::format(
+        "  adaptive steps          {:12.3g} to {:.3g} us (allowed {:.3g} to {:.3g}), {} redone, {} "
+        "factorizations, largest error {:.3g} of the bound\n",
+        r.time_steps->smallest_used_dt * 1e6, r.time_steps->largest_dt * 1e6,
+        r.time_steps->smallest_allowed_dt * 1e6, r.time_steps->largest_dt * 1e6, r.time_steps->rejected_steps,
+        r.time_steps->factorizations, r.time_steps->largest_error_ratio);
   if (!r.incomplete_reason.empty()) t += "  incomplete: " + r.incomplete_reason + "\n";
   if (r.suspect) t += "  suspect: " + r.suspect_reason + "\n";
   return t;

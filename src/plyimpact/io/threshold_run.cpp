@@ -10,6 +10,11 @@
 namespace plyimpact {
 
 ThresholdCriterion threshold_criterion(const Deck& deck, const std::string& name, const std::string& option) {
+  if (deck.time.adaptive)
+    throw DeckError(
+        fmt::format("{}: error: [time] adaptive = true: a threshold search evaluates its criterion at "
+                    "every step of one Δt; remove adaptive = true (and give dt)",
+                    deck.source));
   std::string chosen = !name.empty() ? name : deck.threshold.criterion;
   if (chosen.empty() && !deck.damage.criteria.empty()) chosen = deck.damage.criteria.front();
   if (chosen.empty())
