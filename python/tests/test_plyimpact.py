@@ -35,10 +35,11 @@ def examples(tmp_path, monkeypatch):
     return tmp_path
 
 
-@pytest.mark.parametrize("name", ["thesis-3.6-v268", "thesis-3.6-v268-nonlinear"])
+@pytest.mark.parametrize("name", ["thesis-3.6-v268", "thesis-3.6-v268-nonlinear", "impact-adaptive-steps"])
 def test_impact_summary_and_history_equal_the_command_line_bit_for_bit(examples, name):
-    """One engine: the §3.6 impact (linear and geometrically non-linear) run from Python gives the
-    CLI's summary.json and history.csv exactly (every double equal, not close)."""
+    """One engine: the §3.6 impact (linear and geometrically non-linear) and an impact with
+    error-controlled steps run from Python give the CLI's summary.json and history.csv exactly (every
+    double equal, not close)."""
     deck_path = f"examples/{name}.toml"
     done = cli("impact", deck_path, "-o", "cli", "--quiet", cwd=examples)
     assert done.returncode == 0, done.stderr
