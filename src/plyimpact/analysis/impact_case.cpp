@@ -148,7 +148,10 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
     policy_ = newton_step_policy(*model_, options, *settings_.nonlinear);
   else
     policy_ = linear_step_policy(*model_, options);
-  if (!settings_.end) fundamental_period_ = fundamental_period(*model_); // for the end-of-event rule
+  if (!settings_.end) { // for the end-of-event rule
+    const std::optional<double> from_policy = policy_->fundamental_period();
+    fundamental_period_ = from_policy ? *from_policy : fundamental_period(*model_);
+  }
 }
 
 ImpactCase::~ImpactCase() = default;

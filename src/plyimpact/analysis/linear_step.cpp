@@ -2,6 +2,7 @@
 // back-substitution for the load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a), the exact scalar
 // contact solve with ws = sᵀû + c Fc, c = sᵀK̄⁻¹s, and u_{n+1} = û + Fc K̄⁻¹ s_load.
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 
 #include <fmt/format.h>
@@ -72,6 +73,9 @@ public:
   [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
   [[nodiscard]] bool variable_time_step() const override { return true; }
   [[nodiscard]] int factorizations() const override { return factorizations_.load(); }
+  [[nodiscard]] std::optional<double> fundamental_period() const override {
+    return plyimpact::fundamental_period(K_, M_.matrix()); // the time loop's equations, as assembled here
+  }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<LinearStepper>(*this, impactor);
   }

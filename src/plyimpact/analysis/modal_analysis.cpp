@@ -72,7 +72,10 @@ double fundamental_period(const PlateModel& model) {
   // carry modes far above the bending ones and no share of a transverse impact.
   const SparseMatrix K_model = model.stiffness(), M_model = model.mass(model.mass_kind());
   const EquationSubset equations = bending_equations_if_decoupled(model, K_model, M_model);
-  const SparseMatrix K = equations.restrict(K_model), M = equations.restrict(M_model);
+  return fundamental_period(equations.restrict(K_model), equations.restrict(M_model));
+}
+
+double fundamental_period(const SparseMatrix& K, const SparseMatrix& M) {
   // A supported plate's lowest mode is elastic, and one mode costs a third of seven (the Lanczos basis
   // shrinks from 27 vectors to 21, with fewer restarts). A free plate has 6 rigid-body modes, and q9's
   // spurious zero-energy modes come on top (docs/elements.md): ask for more until one is elastic.

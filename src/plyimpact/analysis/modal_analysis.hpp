@@ -23,5 +23,8 @@ struct ModalResult {
 /// Period of the lowest elastic (non-zero) mode [s], for the impact's end-of-event rule: of the bending
 /// DOFs alone where the in-plane ones are exactly decoupled (bending_equations_if_decoupled).
 [[nodiscard]] double fundamental_period(const PlateModel& model);
+/// The same of K φ = ω² M φ as the time loop holds them (its equations only): a step policy that has
+/// assembled them spares the assembly (StepPolicy::fundamental_period).
+[[nodiscard]] double fundamental_period(const SparseMatrix& K, const SparseMatrix& M);
 
 } // namespace plyimpact

@@ -92,6 +92,9 @@ public:
   [[nodiscard]] virtual bool variable_time_step() const { return false; }
   /// Factorizations of K̄ done so far (one per time-step level used).
   [[nodiscard]] virtual int factorizations() const { return 1; }
+  /// The plate's fundamental period from the matrices the policy holds (empty: it holds none that give
+  /// it; the case then assembles them, modal_analysis.hpp) [s].
+  [[nodiscard]] virtual std::optional<double> fundamental_period() const { return std::nullopt; }
   [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor) const = 0;
   /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
   [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
