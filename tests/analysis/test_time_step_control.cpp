@@ -237,6 +237,25 @@ TEST(TimeStepControl, OutOfContactTheNextStepIsTheLongest) {
   EXPECT_DOUBLE_EQ(c.step_end_time(), 4e-6 + 32e-6);
 }
 
+TEST(AdaptiveImpact, AGivenEndTimeIsWhereTheRunStops) {
+  // 50 µs steps out of contact, from wherever the contact ended, would overshoot 1 200 µs by up to 50 µs;
+  // the last steps are shortened to end there (1 200 µs is 24 × 50 µs, a whole number of every step).
+  const ImpactResult r =
+      run_deck(plate_deck("dt = 50e-6\nadaptive = true\nlevels = 12\ntolerance = 1e-4\nend = 1200e-6\n"));
+  EXPECT_NEAR(r.end_time, 1200e-6, 1e-15);
+  EXPECT_TRUE(r.complete);
+}
+
+TEST(TimeStepControl, EndByShortensTheNextStepUntilItFits) {
+  TimeStepControl c(NewmarkCoefficients(32e-6, 0.25, 0.5), AdaptiveTimeStep{1e-3, 4}, 1e-4);
+  c.end_by(12e-6); // 32 → 16 → 8 µs fits
+  EXPECT_EQ(c.level(), 2);
+  EXPECT_DOUBLE_EQ(c.step_end_time(), 8e-6);
+  c.end_by(3e-6); // cannot fit: the smallest, 4 µs
+  EXPECT_EQ(c.level(), 3);
+  EXPECT_EQ(c.result(1).rejected_steps, 0);
+}
+
 TEST(AdaptiveImpact, RunsOfOneCaseShareTheFactorsOfEachStepLevel) {
   const Deck deck =
       parse_deck(plate_deck("dt = 50e-6\nadaptive = true\nlevels = 12\ntolerance = 1e-4\n"), "t.toml");

@@ -256,6 +256,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     const NewmarkCoefficients* step_nc = &nc;
     for (;;) {
       if (control) {
+        if (s.end) control->end_by(*s.end);
         plate->set_time_step_level(control->level());
         impactor.set_coefficients(control->coefficients());
         step_nc = &control->coefficients();

@@ -67,6 +67,11 @@ void TimeStepControl::accept_free_flight() {
   just_rejected_ = false;
 }
 
+void TimeStepControl::end_by(double end) {
+  while (level_ < settings_.levels - 1 && step_end_time() > end + 1e-9 * smallest_dt_)
+    ++level_;
+}
+
 AdaptiveStepResult TimeStepControl::result(int factorizations) const {
   AdaptiveStepResult r;
   r.tolerance = settings_.tolerance;

@@ -56,6 +56,9 @@ public:
   bool accept(const StepErrors& e);
   /// The step just solved was out of contact at both ends: it is accepted and the next one is Δt_max.
   void accept_free_flight();
+  /// Makes the next step shorter (finer levels; not counted as redone) until it ends at `end` or before,
+  /// or is the smallest: a run with time.end stops there, not up to Δt_max after it.
+  void end_by(double end);
   /// What the run's summary reports (ImpactResult::time_steps).
   [[nodiscard]] AdaptiveStepResult result(int factorizations) const;
 
