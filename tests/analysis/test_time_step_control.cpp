@@ -2,8 +2,10 @@
 // the convergence of an adaptive impact with its tolerance against the Hertz closed form, energy
 // conservation with changing steps, and the plate cases that the fixed step also solves.
 #include "plyimpact/analysis/contact_rules.hpp"
+#include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/time_step_control.hpp"
+#include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/deck_error.hpp"
@@ -266,6 +268,29 @@ TEST(AdaptiveImpact, RunsOfOneCaseShareTheFactorsOfEachStepLevel) {
   EXPECT_EQ(first.steps, second.steps);
   EXPECT_EQ(second.time_steps->factorizations, first.time_steps->factorizations);
   EXPECT_GT(first.time_steps->factorizations, 1);
+}
+
+TEST(AdaptiveImpact, EachLevelsFactorCountsAgainstTheMemoryLimit) {
+  // The limit holds level 0's factor and half another: the run stops with InsufficientMemory when it
+  // needs a second level, instead of growing past the memory it was given.
+  const Deck deck =
+      parse_deck(plate_deck("dt = 50e-6\nadaptive = true\nlevels = 12\ntolerance = 1e-4\n"), "t.toml");
+  ImpactCaseDescription d = impact_case_description(deck);
+  const PlateModel model = impact_plate_model(d);
+  const SparseMatrix K = model.stiffness(), M = model.mass();
+  const EquationSubset equations = bending_equations_if_decoupled(model, K, M);
+  const NewmarkCoefficients largest(50e-6, 0.25, 0.5);
+  const double one = estimate_factor_memory(equations.restrict(K) + largest.c0 * equations.restrict(M)).bytes;
+  d.memory_limit_bytes = 1.5 * one;
+  const ImpactCase impact(d);
+  try {
+    (void)impact.run();
+    ADD_FAILURE() << "no InsufficientMemory";
+  } catch (const InsufficientMemory& e) {
+    EXPECT_NE(std::string(e.what()).find("would make 2 factors held"), std::string::npos) << e.what();
+  }
+  d.memory_limit_bytes = 12.5 * one; // room for every level
+  EXPECT_GT(ImpactCase(d).run().time_steps->factorizations, 1);
 }
 
 TEST(AdaptiveImpact, DeckKeysAndTheirSlips) {

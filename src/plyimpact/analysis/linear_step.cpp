@@ -102,6 +102,7 @@ public:
       throw std::invalid_argument(fmt::format("time-step level {} outside 0 … {}", k, max_levels - 1));
     std::call_once(once_[static_cast<std::size_t>(k)], [this, k] {
       const NewmarkCoefficients& n = options_.newmark;
+      check_levels_memory(n.dt / std::ldexp(1.0, k));
       levels_[static_cast<std::size_t>(k)] = factor_level({std::ldexp(n.dt, -k), n.beta, n.gamma}, false);
       ++factorizations_;
     });
@@ -122,14 +123,33 @@ private:
   [[nodiscard]] std::unique_ptr<TimeStepLevel> factor_level(const NewmarkCoefficients& newmark,
                                                             bool check_memory) const {
     const SparseMatrix Kbar = K_ + newmark.c0 * M_.matrix(); // effective stiffness, factored once
-    if (check_memory && options_.memory_limit_bytes)
-      check_factor_memory(estimate_factor_memory(Kbar), *options_.memory_limit_bytes);
+    if (check_memory && options_.memory_limit_bytes) {
+      factor_memory_ = estimate_factor_memory(Kbar);
+      check_factor_memory(factor_memory_, *options_.memory_limit_bytes);
+    }
     auto level = std::make_unique<TimeStepLevel>(
         TimeStepLevel{newmark, SpdSolver(options_.solver, options_.ordering)});
     level->factor.factorize(Kbar);
     return level;
   }
 
+  /// Before the factor of one more time-step level (a step of `dt`): the factors held then, all of level
+  /// 0's size, must fit in the memory the case was given (InsufficientMemory otherwise).
+  void check_levels_memory(double dt) const {
+    if (!options_.memory_limit_bytes) return;
+    const int held = factorizations_.load() + 1;
+    const double bytes = held * factor_memory_.bytes;
+    if (bytes <= *options_.memory_limit_bytes) return;
+    throw InsufficientMemory(fmt::format(
+        "adaptive time steps: a factor of K̄ for the step {:.4g} s would make {} factors held ({} non-zeros "
+        "each), about {:.3g} MB in all, but only {:.3g} MB are available: raise [time] tolerance, lower "
+        "levels "
+        "or use fixed steps",
+        dt, held, factor_memory_.factor_nonzeros, bytes / 1e6, *options_.memory_limit_bytes / 1e6));
+  }
+
+  /// of level 0's factor (when the case has a memory limit), set once by its factorization in the constructor
+  mutable FactorMemoryEstimate factor_memory_;
   mutable std::array<std::once_flag, max_levels> once_;
   mutable std::array<std::unique_ptr<TimeStepLevel>, max_levels> levels_;
   mutable std::atomic<int> factorizations_{1};
