@@ -101,9 +101,9 @@ public:
     if (k < 0 || k >= max_levels)
       throw std::invalid_argument(fmt::format("time-step level {} outside 0 … {}", k, max_levels - 1));
     std::call_once(once_[static_cast<std::size_t>(k)], [this, k] {
-      const NewmarkCoefficients& n = options_.newmark;
-      check_levels_memory(n.dt / std::ldexp(1.0, k));
-      levels_[static_cast<std::size_t>(k)] = factor_level({std::ldexp(n.dt, -k), n.beta, n.gamma}, false);
+      const NewmarkCoefficients newmark = options_.newmark.halved(k);
+      check_levels_memory(newmark.dt);
+      levels_[static_cast<std::size_t>(k)] = factor_level(newmark, false);
       ++factorizations_;
     });
     return *levels_[static_cast<std::size_t>(k)];

@@ -3,6 +3,8 @@
 //   u_{n+1} = u_n + Δt v_n + Δt² ((½ − β) a_n + β a_{n+1})
 //   v_{n+1} = v_n + Δt ((1 − γ) a_n + γ a_{n+1})
 // written as the effective-stiffness update K̄ u_{n+1} = f_{n+1} + M (c0 u_n + c2 v_n + c3 a_n).
+#include <cmath>
+
 namespace plyimpact {
 
 struct NewmarkCoefficients {
@@ -13,6 +15,8 @@ struct NewmarkCoefficients {
       : dt(dt_), beta(beta_), gamma(gamma_), c0(1.0 / (beta_ * dt_ * dt_)), c2(1.0 / (beta_ * dt_)),
         c3(0.5 / beta_ - 1.0), c6(dt_ * (1.0 - gamma_)), c7(gamma_ * dt_) {}
 
+  /// The coefficients of the step Δt/2^k (the levels of error-controlled steps, time_step_control.hpp).
+  [[nodiscard]] NewmarkCoefficients halved(int k) const { return {std::ldexp(dt, -k), beta, gamma}; }
   /// a_{n+1} from the new displacement.
   [[nodiscard]] double acceleration(double u1, double u0, double v0, double a0) const {
     return c0 * (u1 - u0) - c2 * v0 - c3 * a0;

@@ -11,7 +11,7 @@ namespace plyimpact {
 TimeStepControl::TimeStepControl(const NewmarkCoefficients& largest, const AdaptiveTimeStep& settings,
                                  double indentation_scale)
     : settings_(settings), bound_(settings.tolerance * indentation_scale),
-      smallest_dt_(std::ldexp(largest.dt, -(settings.levels - 1))) {
+      smallest_dt_(largest.halved(settings.levels - 1).dt) {
   if (settings.levels < 1 || settings.levels > 24)
     throw std::invalid_argument(
         fmt::format("adaptive time steps: levels must lie between 1 and 24, got {}", settings.levels));
@@ -22,7 +22,7 @@ TimeStepControl::TimeStepControl(const NewmarkCoefficients& largest, const Adapt
     throw std::invalid_argument("adaptive time steps: the error estimate (β − 1/6) Δt² Δa vanishes for "
                                 "newmark_beta = 1/6; use the default 1/4");
   for (int k = 0; k < settings.levels; ++k)
-    coefficients_.emplace_back(std::ldexp(largest.dt, -k), largest.beta, largest.gamma);
+    coefficients_.push_back(largest.halved(k));
 }
 
 double TimeStepControl::step_end_time() const {
