@@ -199,6 +199,8 @@ double DamageStepper::kinetic_energy(const PlateState& s) const {
 
 std::unique_ptr<StepPolicy> damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                                const ProgressiveDamageSettings& settings) {
+  if (settings.integration == DamageIntegration::central_difference)
+    return explicit_damage_step_policy(model, options, settings);
   return std::make_unique<DamageStepPolicy>(model, options, settings);
 }
 

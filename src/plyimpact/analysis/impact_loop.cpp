@@ -265,7 +265,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
         t = static_cast<double>(step) * s.dt;
       }
       cs = plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
-      a_next = step_nc->c0 * (u_next - state.u) - step_nc->c2 * state.v - step_nc->c3 * state.a;
+      plate->next_acceleration(*step_nc, state, u_next, a_next);
       if (!control) break;
       if (cs.force == 0.0 && force == 0.0) { // out of contact: nothing to control
         control->accept_free_flight();

@@ -4,6 +4,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymEigsSolver.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 #include <fmt/format.h>
 
@@ -161,5 +162,21 @@ ModalResult lowest_modes(const SparseMatrix& K, const SparseMatrix& M, int count
 }
 
 } // namespace
+
+double highest_angular_frequency(const SparseMatrix& K, const Eigen::VectorXd& mass) {
+  const auto n = static_cast<int>(K.rows());
+  if (n < 3) throw std::invalid_argument("highest_angular_frequency: too few DOFs");
+  if (mass.size() != n || !(mass.minCoeff() > 0.0))
+    throw std::invalid_argument("highest_angular_frequency: the mass must be diagonal and positive");
+  const Eigen::VectorXd scale = mass.cwiseSqrt().cwiseInverse();
+  const SparseMatrix A = scale.asDiagonal() * K * scale.asDiagonal();
+  Spectra::SparseSymMatProd<double> op(A);
+  Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(op, 1, std::min(n, 20));
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-6);
+  if (solver.info() != Spectra::CompInfo::Successful)
+    throw std::runtime_error("highest_angular_frequency: the eigensolver did not converge");
+  return std::sqrt(solver.eigenvalues()(0));
+}
 
 } // namespace plyimpact

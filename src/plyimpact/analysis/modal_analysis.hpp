@@ -27,4 +27,9 @@ struct ModalResult {
 /// assembled them spares the assembly (StepPolicy::fundamental_period).
 [[nodiscard]] double fundamental_period(const SparseMatrix& K, const SparseMatrix& M);
 
+/// The highest angular frequency ω_max of K φ = ω² M φ with a diagonal M (`mass`, all entries > 0),
+/// by Lanczos on M^{-½} K M^{-½} (Spectra), to 1e-6 relative [rad/s]. It sets the stable step 2/ω_max
+/// of explicit central differences.
+[[nodiscard]] double highest_angular_frequency(const SparseMatrix& K, const Eigen::VectorXd& mass);
+
 } // namespace plyimpact

@@ -50,6 +50,12 @@ public:
   /// Solves step `step` (ending at t) for the plate and the contact force together: u_{n+1} into u_next.
   virtual ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                                   Eigen::VectorXd& u_next) = 0;
+  /// a_{n+1} of the step advance() has just solved: Newmark's (2.11) from u_{n+1}, unless the plate
+  /// has it from its equation of motion (the explicit step of explicit_damage_step.cpp).
+  virtual void next_acceleration(const NewmarkCoefficients& nc, const PlateState& s,
+                                 const Eigen::VectorXd& u_next, Eigen::VectorXd& a_next) const {
+    a_next = nc.c0 * (u_next - s.u) - nc.c2 * s.v - nc.c3 * s.a;
+  }
   /// The step is accepted: u_next will become u (energy bookkeeping of path-dependent plates).
   virtual void accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {}
   /// ½ vᵀMv.
@@ -144,6 +150,12 @@ struct StepPolicyOptions {
 /// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
 [[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options);
+/// The plate whose plies crack with explicit central differences on the lumped mass (settings.integration
+/// = central_difference; explicit_damage_step.cpp). Throws std::invalid_argument when the mass is not
+/// diagonal or Δt of `options` is above the stable step, which the message gives.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                            const ProgressiveDamageSettings& settings);
 /// Newton iterations on the non-linear plate.
 [[nodiscard]] std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options,
@@ -201,6 +213,8 @@ public:
     return 0.5 * v.dot(scratch);
   }
   [[nodiscard]] const SparseMatrix& matrix() const { return M_; }
+  /// M's diagonal when M is diagonal, else empty.
+  [[nodiscard]] const Eigen::VectorXd& diagonal() const { return diagonal_; }
 
 private:
   SparseMatrix M_;

@@ -31,6 +31,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -49,7 +50,25 @@ enum class DamageIntegration {
   /// records: O(Δt) while points soften over several steps, more where a point breaks within one step
   /// (docs/progressive_damage.md, "The lagged step").
   lagged,
+  /// Explicit central differences with the lumped mass (Abaqus/Explicit, LS-DYNA, OpenRadioss): the plate's
+  /// u_{n+1} follows from the state at n, the law is evaluated once at u_{n+1} and gives a_{n+1}; nothing
+  /// is solved or iterated. Stable below the step 2/ω_max of the undamaged plate, which the run checks
+  /// (docs/progressive_damage.md, "The explicit step").
+  central_difference,
 };
+
+/// The deck spelling of `[damage] integration` ("implicit", "lagged", "explicit").
+[[nodiscard]] constexpr std::string_view to_string(DamageIntegration i) {
+  switch (i) {
+  case DamageIntegration::implicit:
+    return "implicit";
+  case DamageIntegration::lagged:
+    return "lagged";
+  case DamageIntegration::central_difference:
+    return "explicit";
+  }
+  return "unknown";
+}
 
 /// Settings of the progressive damage of the plies.
 struct ProgressiveDamageSettings {

@@ -126,10 +126,11 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
                                               p.area_threshold));
     p.reduce_strengths_above_band_limit =
         t.optional_choice<bool>("oversize", {{"error", false}, {"reduce-strength", true}}).value_or(false);
-    p.integration =
-        t.optional_choice<DamageIntegration>("integration", {{"implicit", DamageIntegration::implicit},
-                                                             {"lagged", DamageIntegration::lagged}})
-            .value_or(p.integration);
+    p.integration = t.optional_choice<DamageIntegration>(
+                         "integration", {{"implicit", DamageIntegration::implicit},
+                                         {"lagged", DamageIntegration::lagged},
+                                         {"explicit", DamageIntegration::central_difference}})
+                        .value_or(p.integration);
     damage.progressive = p;
   } else {
     for (const char* key :

@@ -52,7 +52,7 @@ nlohmann::json delamination_json(const DelaminationSettings& s, const Delaminati
   j["onset"] = law.onset == CohesiveOnset::turon_bk ? "turon-bk" : "camanho-quadratic";
   j["points"] = s.stack.rule == CohesiveIntegration::nodal ? "nodal" : "gauss";
   j["supports"] = s.supports_on_all ? "all" : "bottom";
-  j["integration"] = s.integration == DamageIntegration::lagged ? "lagged" : "implicit";
+  j["integration"] = std::string(to_string(s.integration));
   if (newton) {
     j["iterations"] = newton->iterations;
     j["max_iterations_per_step"] = newton->max_iterations_per_step;
@@ -134,6 +134,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
     const ProgressiveDamageResult& pd = *r.progressive;
     nlohmann::json d;
     d["model"] = "progressive";
+    d["integration"] = std::string(to_string(s.progressive_damage->integration));
     d["dissipated_energy"] = pd.dissipated.sum();
     for (const DamageMode m : all_damage_modes)
       d["dissipated_energy_by_mode"][std::string(to_string(m))] = pd.dissipated[m];

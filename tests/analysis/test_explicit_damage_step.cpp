@@ -1,0 +1,167 @@
+// Progressive ply damage with explicit central differences ([damage] integration = "explicit",
+// analysis/explicit_damage_step.cpp): the highest frequency that sets the stable step against a closed
+// form, the energy balance where many points soften at once (where the implicit step stops and the
+// lagged one leaks energy), the elastic plate of the implicit scheme when nothing cracks, agreement with
+// the iterated implicit step where that one runs, and the refusals of a step that cannot be stable.
+#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/analysis/modal_analysis.hpp"
+#include "plyimpact/analysis/nonlinear_static.hpp"
+#include "plyimpact/io/case_from_deck.hpp"
+#include "plyimpact/io/deck.hpp"
+#include "test_paths.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+std::string example(const std::string& name) {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/" + name);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+ImpactResult run(const std::string& text) {
+  const Deck deck = parse_deck(text, "explicit.toml");
+  const ImpactCase impact(impact_case_description(deck));
+  return impact.run();
+}
+
+/// The line `key = value` replaced (the first occurrence of "key = ").
+std::string with(std::string text, const std::string& key, const std::string& value) {
+  const std::size_t at = text.find("\n" + key + " = ");
+  EXPECT_NE(at, std::string::npos) << key;
+  const std::size_t end = text.find('\n', at + 1);
+  return text.replace(at + 1, end - at - 1, key + " = " + value);
+}
+
+/// examples/damage-progressive-lagged.toml (7 × 7 mesh of 1.7 mm, 30 g at 3 m/s, strengths lowered to the
+/// band limit, point load) with the given integration and time step, ended at 300 µs (past the peak).
+std::string hard_impact(const std::string& integration, const std::string& dt) {
+  return with(with(with(example("damage-progressive-lagged.toml"), "dt", dt), "integration",
+                   "\"" + integration + "\""),
+              "end", "3.0e-4");
+}
+
+TEST(HighestFrequency, SpringChainClosedForm) {
+  // n equal masses m between fixed ends, n + 1 springs k: ω_max = 2 √(k/m) sin(nπ / (2(n + 1))).
+  const int n = 40;
+  const double k = 3.0e5, m = 2.0e-3;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, 2.0 * k);
+    if (i > 0) entries.emplace_back(i, i - 1, -k), entries.emplace_back(i - 1, i, -k);
+  }
+  SparseMatrix K(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
+  const double exact = 2.0 * std::sqrt(k / m) * std::sin(n * std::numbers::pi / (2.0 * (n + 1)));
+  EXPECT_NEAR(highest_angular_frequency(K, Eigen::VectorXd::Constant(n, m)), exact, 1e-6 * exact);
+  // Halving one mass cannot lower ω_max (Rayleigh quotient over a smaller M).
+  Eigen::VectorXd lighter = Eigen::VectorXd::Constant(n, m);
+  lighter(n / 2) = 0.5 * m;
+  EXPECT_GT(highest_angular_frequency(K, lighter), exact);
+}
+
+TEST(ExplicitDamageStep, EnergyBalanceClosesWhereManyPointsSoften) {
+  // At 3 m/s whole regions soften within a few steps: the implicit step stops, the lagged one runs
+  // with a balance error of 0.5-1 % that is first order in Δt (test_progressive_impact.cpp). The
+  // explicit step evaluates the law once at each step's own displacement, so the damage dissipation
+  // the law records is the energy the plate loses: the balance closes to the time integration's
+  // second-order error, far below the 1 %.
+  const ImpactResult r = run(hard_impact("explicit", "6.0e-8"));
+  const ImpactResult lagged = run(hard_impact("lagged", "1.75e-6"));
+  const double e0 = 0.5 * 0.03 * 3.0 * 3.0;
+  const double damage = r.progressive->dissipated.sum();
+  std::printf(
+      "[ measured ] explicit: balance error %.3g %% of %.4g J, damage dissipation %.4g J, peak %.5g N "
+      "(%ld steps); lagged at 1.75 us: %.3g %%, %.4g J, %.5g N\n",
+      100.0 * r.energy_balance_error, e0, damage, r.peak_force, r.steps, 100.0 * lagged.energy_balance_error,
+      lagged.progressive->dissipated.sum(), lagged.peak_force);
+  EXPECT_GT(damage, 0.1 * e0); // a real share of the impact energy goes into the plies
+  EXPECT_LT(r.energy_balance_error, 1e-4);
+  EXPECT_LT(r.energy_balance_error, 0.05 * lagged.energy_balance_error);
+  EXPECT_FALSE(r.suspect);
+}
+
+TEST(ExplicitDamageStep, UnbreakablePliesGiveTheElasticPlate) {
+  // Strengths 1000 times larger: nothing cracks, and central differences on the lumped mass and the
+  // implicit average-acceleration step of the elastic plate are two second-order schemes of the same
+  // semi-discrete equations: at Δt = 60 ns (1/3000 of the contact) their peak forces agree to O(Δt²).
+  std::string strong = hard_impact("explicit", "6.0e-8");
+  for (const auto& [key, value] : {std::pair{"Xt", "1.5e12"},
+                                   {"Xc", "1.2e12"},
+                                   {"Yt", "55.2e9"},
+                                   {"Yc", "294.0e9"},
+                                   {"S12", "101.1e9"},
+                                   {"S23", "32.94e9"}})
+    strong = with(strong, key, value);
+  strong = with(strong, "oversize", "\"error\"");
+  const ImpactResult explicit_run = run(strong);
+  const ImpactResult elastic = run(strong.substr(0, strong.find("\n[damage]") + 1)); // no [damage]
+  std::printf("[ measured ] peak force %.8g N explicit, %.8g N implicit elastic; times %.6g, %.6g us\n",
+              explicit_run.peak_force, elastic.peak_force, 1e6 * explicit_run.time_of_peak_force,
+              1e6 * elastic.time_of_peak_force);
+  EXPECT_EQ(explicit_run.progressive->dissipated.sum(), 0.0);
+  EXPECT_NEAR(explicit_run.peak_force, elastic.peak_force, 1e-4 * elastic.peak_force);
+  EXPECT_NEAR(explicit_run.time_of_peak_force, elastic.time_of_peak_force, 0.5e-6);
+}
+
+TEST(ExplicitDamageStep, AgreesWithTheIteratedSecantWhereItConverges) {
+  // examples/damage-progressive.toml (2 m/s, 1 mm elements, the bottom ply cracks in matrix tension at
+  // 48 µs) to 150 µs: the iterated implicit step at Δt = 0.875 µs and the explicit one at 35 ns crack the
+  // same ply first, at the same time within the implicit step, and dissipate the same energy.
+  const std::string deck = with(example("damage-progressive.toml"), "end", "1.5e-4");
+  const ImpactResult implicit_run = run(with(deck, "dt", "0.875e-6"));
+  const ImpactResult explicit_run = run(with(deck, "dt", "3.5e-8") + "integration = \"explicit\"\n");
+  const double d_im = implicit_run.progressive->dissipated.sum();
+  const double d_ex = explicit_run.progressive->dissipated.sum();
+  std::printf("[ measured ] first damage at %.5g us implicit, %.5g us explicit; dissipation %.5g J, %.5g J; "
+              "force at the end %.6g N, %.6g N\n",
+              1e6 * implicit_run.progressive->first_time, 1e6 * explicit_run.progressive->first_time, d_im,
+              d_ex, implicit_run.history.back().force, explicit_run.history.back().force);
+  EXPECT_EQ(explicit_run.progressive->first_mode, implicit_run.progressive->first_mode);
+  EXPECT_EQ(explicit_run.progressive->first_ply, implicit_run.progressive->first_ply);
+  EXPECT_NEAR(explicit_run.progressive->first_time, implicit_run.progressive->first_time, 0.875e-6);
+  EXPECT_NEAR(d_ex, d_im, 0.05 * d_im);
+  EXPECT_NEAR(explicit_run.history.back().force, implicit_run.history.back().force,
+              0.01 * implicit_run.history.back().force);
+}
+
+TEST(ExplicitDamageStep, RefusesAStepAboveTheStableStep) {
+  // The 7 × 7 plate's ω_max is 2.76e7 rad/s: 0.9 · 2/ω_max = 65 ns. 1.75 µs is refused with the step
+  // to use; so is a consistent mass (not diagonal).
+  try {
+    (void)run(hard_impact("explicit", "1.75e-6"));
+    ADD_FAILURE() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("time.dt <= 6.5"), std::string::npos) << what;
+  }
+  const std::string consistent =
+      with(hard_impact("explicit", "6.0e-8"), "element", "\"mitc9\"\nmass = \"consistent\"");
+  EXPECT_THROW((void)run(consistent), std::invalid_argument);
+}
+
+TEST(ExplicitDamageStep, StopsWhenTheContactSpringMakesTheStepUnstable) {
+  // A contact stiffness 10⁴ times the Hertz value puts a spring of ~1e10 N/m on the impact point's
+  // lumped mass (~1e-5 kg): ω_c ≈ 3e7 rad/s, so Δt = 60 ns is no longer stable. The run stops with the
+  // step to use instead of producing a growing oscillation.
+  const std::string stiff = with(hard_impact("explicit", "6.0e-8"), "k", "8.728e12");
+  try {
+    (void)run(stiff);
+    ADD_FAILURE() << "expected NewtonFailure";
+  } catch (const NewtonFailure& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("contact spring"), std::string::npos) << what;
+  }
+}
+
+} // namespace
+} // namespace plyimpact
