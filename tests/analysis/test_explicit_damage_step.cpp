@@ -3,49 +3,29 @@
 // form, the energy balance where many points soften at once (where the implicit step stops and the
 // lagged one leaks energy), the elastic plate of the implicit scheme when nothing cracks, agreement with
 // the iterated implicit step where that one runs, and the refusals of a step that cannot be stable.
-#include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
-#include "test_paths.hpp"
+#include "support/impact_decks.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 namespace plyimpact {
 namespace {
 
-std::string example(const std::string& name) {
-  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/" + name);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 ImpactResult run(const std::string& text) {
-  const Deck deck = parse_deck(text, "explicit.toml");
-  const ImpactCase impact(impact_case_description(deck));
-  return impact.run();
+  return test::run_deck(text, "explicit.toml");
 }
 
-/// The line `key = value` replaced (the first occurrence of "key = ").
-std::string with(std::string text, const std::string& key, const std::string& value) {
-  const std::size_t at = text.find("\n" + key + " = ");
-  EXPECT_NE(at, std::string::npos) << key;
-  const std::size_t end = text.find('\n', at + 1);
-  return text.replace(at + 1, end - at - 1, key + " = " + value);
-}
+const auto with = test::with_key;
 
 /// examples/damage-progressive-lagged.toml (7 × 7 mesh of 1.7 mm, 30 g at 3 m/s, strengths lowered to the
 /// band limit, point load) with the given integration and time step, ended at 300 µs (past the peak).
 std::string hard_impact(const std::string& integration, const std::string& dt) {
-  return with(with(with(example("damage-progressive-lagged.toml"), "dt", dt), "integration",
+  return with(with(with(test::example_text("damage-progressive-lagged.toml"), "dt", dt), "integration",
                    "\"" + integration + "\""),
               "end", "3.0e-4");
 }
@@ -117,7 +97,7 @@ TEST(ExplicitDamageStep, AgreesWithTheIteratedSecantWhereItConverges) {
   // examples/damage-progressive.toml (2 m/s, 1 mm elements, the bottom ply cracks in matrix tension at
   // 48 µs) to 150 µs: the iterated implicit step at Δt = 0.875 µs and the explicit one at 35 ns crack the
   // same ply first, at the same time within the implicit step, and dissipate the same energy.
-  const std::string deck = with(example("damage-progressive.toml"), "end", "1.5e-4");
+  const std::string deck = with(test::example_text("damage-progressive.toml"), "end", "1.5e-4");
   const ImpactResult implicit_run = run(with(deck, "dt", "0.875e-6"));
   const ImpactResult explicit_run = run(with(deck, "dt", "3.5e-8") + "integration = \"explicit\"\n");
   const double d_im = implicit_run.progressive->dissipated.sum();

@@ -1,8 +1,6 @@
 // Impact solver (SPEC §4): closed-form rigid-target limit, energy balance, time-step convergence,
 // mesh convergence of the §3.6 case and the parametric trends of thesis §4.2.
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "support/impact_decks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,55 +11,15 @@
 namespace plyimpact {
 namespace {
 
-/// Thesis §3.6 plate (Table 3.1) with a steel sphere; `extra` is appended (TOML keys override).
-std::string thesis_deck(const std::string& impactor, const std::string& extra = "",
-                        const std::string& mesh = "15, 11", const std::string& edge = "ss") {
-  const auto comma = mesh.find(',');
-  return R"(
-[materials.m]
-E1 = 129.0e9
-E2 = 7.5e9
-G12 = 3.5e9
-nu12 = 0.33
-rho = 1540.0
-[laminate]
-material = "m"
-layup = "[45/90/-45/0]3s"
-ply_thickness = 0.19375e-3
-[plate]
-a = 0.127
-b = 0.0762
-[mesh]
-nx = )" + mesh.substr(0, comma) +
-         "\nny = " + mesh.substr(comma + 1) + R"(
-[boundary]
-x0 = ")" +
-         edge + R"("
-xa = ")" +
-         edge + R"("
-y0 = ")" +
-         edge + R"("
-yb = ")" +
-         edge + R"("
-[impactor]
-radius = 12.7e-3
-E = 207e9
-nu = 0.3
-)" + impactor +
-         "\n" + extra;
-}
-
-ImpactResult run_deck(const std::string& text) {
-  const Deck deck = parse_deck(text, "test.toml");
-  return ImpactCase(impact_case_description(deck)).run();
-}
+using test::run_deck;
+using test::thesis_3_6_deck;
 
 TEST(Impact, ElasticContactConservesTotalEnergy) {
   // β = 1/4, γ = 1/2: impactor + plate kinetic + plate strain + Hertz potential (2/5) k α^2.5 stays at
   // ½ m v0² (the potential is the exact one, not the integrated contact work). With the point load: the
   // Hertz pressure works on the mean deflection under it while the law sees the centre value, which
   // is not conservative (docs/notes/contact-reference.md §1).
-  const ImpactResult r = run_deck(thesis_deck("mass = 0.314\nvelocity = 2.92", R"(
+  const ImpactResult r = run_deck(thesis_3_6_deck("mass = 0.314\nvelocity = 2.92", R"(
 [contact]
 k = 0.6e9
 unloading = "elastic"
@@ -70,7 +28,7 @@ load = "point"
 dt = 0.25e-6
 end = 1.0e-3
 )",
-                                              "8, 6"));
+                                                  "8, 6"));
   const double e0 = 0.5 * 0.314 * 2.92 * 2.92, k = 0.6e9;
   double worst = 0.0;
   for (const auto& h : r.history) {
@@ -85,7 +43,7 @@ end = 1.0e-3
 }
 
 TEST(Impact, TanSunAbsorbedEnergyIsTheForceIndentationLoopPlusPlateVibration) {
-  const ImpactResult r = run_deck(thesis_deck("mass = 0.314\nvelocity = 2.92", R"(
+  const ImpactResult r = run_deck(thesis_3_6_deck("mass = 0.314\nvelocity = 2.92", R"(
 [contact]
 k = 0.6e9
 alpha_cr = 1.7e-5
@@ -93,7 +51,7 @@ load = "point"
 [time]
 dt = 0.25e-6
 )",
-                                              "8, 6"));
+                                                  "8, 6"));
   // Loop area ∮F dα from the history (trapezoids), independent of the solver's own bookkeeping.
   double loop = 0.0;
   for (std::size_t i = 1; i < r.history.size(); ++i)
@@ -111,31 +69,8 @@ dt = 0.25e-6
 
 std::string rigid_target_deck(double dt) {
   char time[64];
-  std::snprintf(time, sizeof time, "[time]\ndt = %.17g\n", dt);
-  return std::string(R"(
-[materials.m]
-E1 = 129.0e9
-E2 = 7.5e9
-G12 = 3.5e9
-nu12 = 0.33
-rho = 1540.0
-[laminate]
-material = "m"
-layup = "[0]"
-ply_thickness = 1e-3
-[plate]
-a = 0.1
-b = 0.1
-rigid = true
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[contact]
-k = 0.6e9
-unloading = "elastic"
-)") + time;
+  std::snprintf(time, sizeof time, "dt = %.17g\n", dt);
+  return test::rigid_target_deck(time);
 }
 
 TEST(Impact, RigidTargetReproducesTheHertzClosedForm) {
@@ -171,9 +106,9 @@ TEST(Impact, PeakForceConvergesAtSecondOrderInTheTimeStep) {
   for (const double dt : {1e-6, 0.5e-6, 0.25e-6}) {
     char time[64];
     std::snprintf(time, sizeof time, "[time]\ndt = %.17g\nend = 3.0e-4\n", dt);
-    const ImpactResult r =
-        run_deck(thesis_deck("mass = 0.314\nvelocity = 2.92",
-                             std::string("[contact]\nk = 0.6e9\nunloading = \"elastic\"\n") + time, "6, 4"));
+    const ImpactResult r = run_deck(
+        thesis_3_6_deck("mass = 0.314\nvelocity = 2.92",
+                        std::string("[contact]\nk = 0.6e9\nunloading = \"elastic\"\n") + time, "6, 4"));
     w.push_back(r.history.back().impactor_w);
     peaks.push_back(r.peak_force);
   }
@@ -191,7 +126,7 @@ TEST(Impact, Section36PeakForceAgreesBetween15x11And30x22Meshes) {
   // asserted (docs/validation.md).
   const std::string impactor = "mass = 6.14\nvelocity = 2.68";
   const auto run = [&](const std::string& mesh, const std::string& load) {
-    return run_deck(thesis_deck(
+    return run_deck(thesis_3_6_deck(
         impactor, "[contact]\nk = 0.6e9\nload = \"" + load + "\"\n[time]\ndt = 1.0e-6\nend = 2.6e-3\n",
         mesh)); // the peak comes at about 2.05 ms
   };
@@ -210,7 +145,7 @@ TEST(Impact, Section36PeakForceAgreesBetween15x11And30x22Meshes) {
 }
 
 double peak(const std::string& impactor, const std::string& edge = "ss") {
-  return run_deck(thesis_deck(impactor, "[contact]\nk = \"auto\"\n[time]\ndt = 0.5e-6\n", "10, 8", edge))
+  return run_deck(thesis_3_6_deck(impactor, "[contact]\nk = \"auto\"\n[time]\ndt = 0.5e-6\n", "10, 8", edge))
       .peak_force;
 }
 
@@ -219,9 +154,9 @@ TEST(Impact, ThesisTrendsPeakForceRisesWithVelocityMassAndRadius) {
   const double faster = peak("mass = 0.314\nvelocity = 2.92");
   const double heavier = peak("mass = 0.628\nvelocity = 2.0");
   const std::string big = "mass = 0.314\nvelocity = 2.0";
-  const ImpactResult larger =
-      run_deck(thesis_deck(big, "[contact]\nk = \"auto\"\n[time]\ndt = 0.5e-6\n", "10, 8")
-                   .replace(thesis_deck(big, "", "10, 8").find("radius = 12.7e-3"), 16, "radius = 25.4e-3"));
+  const ImpactResult larger = run_deck(
+      thesis_3_6_deck(big, "[contact]\nk = \"auto\"\n[time]\ndt = 0.5e-6\n", "10, 8")
+          .replace(thesis_3_6_deck(big, "", "10, 8").find("radius = 12.7e-3"), 16, "radius = 25.4e-3"));
   std::printf("  peak force: base %.1f N, v x1.46 %.1f N, m x2 %.1f N, R x2 %.1f N\n", base, faster, heavier,
               larger.peak_force);
   EXPECT_GT(faster, base);
@@ -231,8 +166,8 @@ TEST(Impact, ThesisTrendsPeakForceRisesWithVelocityMassAndRadius) {
 
 TEST(Impact, ThesisTrendsContactDurationRisesWithMass) {
   const auto duration = [](const std::string& m) {
-    return run_deck(thesis_deck("mass = " + m + "\nvelocity = 2.0",
-                                "[contact]\nk = 0.6e9\n[time]\ndt = 0.5e-6\n", "10, 8"))
+    return run_deck(thesis_3_6_deck("mass = " + m + "\nvelocity = 2.0",
+                                    "[contact]\nk = 0.6e9\n[time]\ndt = 0.5e-6\n", "10, 8"))
         .contact_duration;
   };
   const double light = duration("0.157"), medium = duration("0.314"), heavy = duration("0.628");
@@ -260,8 +195,8 @@ TEST(Impact, SimplySupportedAndClampedDifferLittleForTheSection42Plate) {
 }
 
 TEST(Impact, EpisodesAndSummaryAreConsistent) {
-  const ImpactResult r = run_deck(
-      thesis_deck("mass = 0.314\nvelocity = 2.92", "[contact]\nk = 0.6e9\n[time]\ndt = 0.5e-6\n", "8, 6"));
+  const ImpactResult r = run_deck(thesis_3_6_deck("mass = 0.314\nvelocity = 2.92",
+                                                  "[contact]\nk = 0.6e9\n[time]\ndt = 0.5e-6\n", "8, 6"));
   ASSERT_GE(r.episodes.size(), 1U);
   EXPECT_TRUE(r.complete);
   EXPECT_DOUBLE_EQ(r.contact_duration, r.episodes.front().end - r.episodes.front().start);

@@ -2,41 +2,25 @@
 // dissipation, a plate whose plies cannot crack is the elastic plate, the plies that crack first
 // are the ones plate theory says are most loaded, and the lagged step (integration = "lagged") agrees
 // with the iterated one where both run, runs where the iterations stop, and converges at first order.
-#include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
-#include "test_paths.hpp"
+#include "support/impact_decks.hpp"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace plyimpact {
 namespace {
 
 std::string example_text() {
-  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/damage-progressive.toml");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return test::example_text("damage-progressive.toml");
 }
 
 ImpactResult run(const std::string& text) {
-  const Deck deck = parse_deck(text, "damage-progressive.toml");
-  const ImpactCase impact(impact_case_description(deck));
-  return impact.run();
+  return test::run_deck(text, "damage-progressive.toml");
 }
 
-/// The line `key = value` replaced (the first occurrence of "key = ").
-std::string with(std::string text, const std::string& key, const std::string& value) {
-  const std::size_t at = text.find("\n" + key + " = ");
-  EXPECT_NE(at, std::string::npos) << key;
-  const std::size_t end = text.find('\n', at + 1);
-  return text.replace(at + 1, end - at - 1, key + " = " + value);
-}
+const auto with = test::with_key;
 
 TEST(ProgressiveImpact, EnergyBalanceClosesWithTheDamageDissipation) {
   // ½ m v0² = impactor + plate kinetic + stored strain + damage dissipation + contact work, within 1 %
@@ -103,10 +87,8 @@ TEST(ProgressiveImpact, DamageSoftensThePlate) {
 /// examples/damage-progressive-lagged.toml (7 × 7 mesh, 3 m/s, strengths lowered to the band limit, point
 /// load: no load-shape term in the energy balance) with the given integration and time step.
 std::string hard_impact(const std::string& integration, const std::string& dt) {
-  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/damage-progressive-lagged.toml");
-  std::stringstream s;
-  s << in.rdbuf();
-  return with(with(s.str(), "dt", dt), "integration", "\"" + integration + "\"");
+  return with(with(test::example_text("damage-progressive-lagged.toml"), "dt", dt), "integration",
+              "\"" + integration + "\"");
 }
 
 TEST(ProgressiveImpact, LaggedDamageAgreesWithTheIteratedSecant) {

@@ -9,6 +9,7 @@
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/deck_error.hpp"
+#include "support/impact_decks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -91,38 +92,8 @@ TEST(TimeStepControl, TheLinearAccelerationMethodHasNoEstimateAndIsRefused) {
                std::invalid_argument);
 }
 
-std::string rigid_target_deck(const std::string& time) {
-  return R"(
-[materials.m]
-E1 = 129.0e9
-E2 = 7.5e9
-G12 = 3.5e9
-nu12 = 0.33
-rho = 1540.0
-[laminate]
-material = "m"
-layup = "[0]"
-ply_thickness = 1e-3
-[plate]
-a = 0.1
-b = 0.1
-rigid = true
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-[contact]
-k = 0.6e9
-unloading = "elastic"
-[time]
-)" + time;
-}
-
-ImpactResult run_deck(const std::string& text) {
-  const Deck deck = parse_deck(text, "test.toml");
-  return ImpactCase(impact_case_description(deck)).run();
-}
+using test::rigid_target_deck;
+using test::run_deck;
 
 TEST(AdaptiveImpact, RigidTargetPeakForceConvergesWithTheToleranceAsTheErrorsOrdersPredict) {
   // Elastic Hertz impact on a rigid half-space: F_max = k^(2/5) (5 m v0²/4)^(3/5), T = 2.94328 α_m/v0.
@@ -161,39 +132,8 @@ TEST(AdaptiveImpact, RigidTargetPeakForceConvergesWithTheToleranceAsTheErrorsOrd
 
 /// The §4.2 plate and impactor on a 6 × 4 mesh, elastic contact: `time` is the [time] table's body.
 std::string plate_deck(const std::string& time) {
-  return R"(
-[materials.m]
-E1 = 129.0e9
-E2 = 7.5e9
-G12 = 3.5e9
-nu12 = 0.33
-rho = 1540.0
-[laminate]
-material = "m"
-layup = "[45/90/-45/0]3s"
-ply_thickness = 0.19375e-3
-[plate]
-a = 0.127
-b = 0.0762
-[mesh]
-nx = 6
-ny = 4
-[boundary]
-x0 = "ss"
-xa = "ss"
-y0 = "ss"
-yb = "ss"
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-nu = 0.3
-velocity = 2.92
-[contact]
-k = 0.6e9
-unloading = "elastic"
-[time]
-)" + time;
+  return test::thesis_3_6_deck("mass = 0.314\nvelocity = 2.92",
+                               "[contact]\nk = 0.6e9\nunloading = \"elastic\"\n[time]\n" + time, "6, 4");
 }
 
 TEST(AdaptiveImpact, PlateImpactAgreesWithAFineFixedStepAndKeepsTheEnergy) {
