@@ -33,6 +33,21 @@ namespace {
 /// The largest Δt the policy accepts, as a fraction of the undamaged plate's stable step 2/ω_max (CD5).
 constexpr double stable_step_fraction = 0.9;
 
+/// The lumped mass as a diagonal; throws where M is not diagonal or a DOF carries no mass.
+const Eigen::VectorXd& diagonal_mass(const MassOperator& M) {
+  if (M.diagonal().size() == 0 || !(M.diagonal().minCoeff() > 0.0))
+    throw std::invalid_argument(
+        "[damage] integration = \"explicit\" needs a diagonal mass with every DOF carrying mass: set "
+        "[mesh] mass = \"lumped\"; a laminate that is not symmetric couples its lumped mass (I1 != 0), "
+        "use integration = \"lagged\" for it");
+  return M.diagonal();
+}
+
+/// CD5: the largest Δt accepted for K0 and the lumped mass M.
+double stable_step(double omega_max) {
+  return stable_step_fraction * 2.0 / omega_max;
+}
+
 class ExplicitDamagePolicy;
 
 class ExplicitDamageStepper final : public PlateStepper {
@@ -77,23 +92,18 @@ public:
                        const ProgressiveDamageSettings& settings)
       : model_(model), options_(options), plate_(model, settings), equations_(model.size()),
         M_(model.mass(), 1e-14) {
-    if (M_.diagonal().size() == 0 || !(M_.diagonal().minCoeff() > 0.0))
-      throw std::invalid_argument(
-          "[damage] integration = \"explicit\" needs a diagonal mass with every DOF carrying mass: set "
-          "[mesh] mass = \"lumped\"; a laminate that is not symmetric couples its lumped mass (I1 != 0), "
-          "use integration = \"lagged\" for it");
     if (options.newmark.gamma != 0.5)
       throw std::invalid_argument(fmt::format(
           "[damage] integration = \"explicit\" is central differences (gamma = 0.5), got [time] gamma = {}",
           options.newmark.gamma));
-    inverse_mass_ = M_.diagonal().cwiseInverse();
+    inverse_mass_ = diagonal_mass(M_).cwiseInverse();
     omega_max_ = highest_angular_frequency(plate_.undamaged_stiffness(), M_.diagonal());
-    const double largest = stable_step_fraction * 2.0 / omega_max_;
+    const double largest = stable_step(omega_max_);
     if (options.newmark.dt > largest)
       throw std::invalid_argument(fmt::format(
           "[damage] integration = \"explicit\": time.dt = {:.4g} s is above the stable step of this plate "
-          "and mesh: set time.dt <= {:.4g} s ({} x 2/omega_max, omega_max = {:.4g} rad/s; finer elements "
-          "lower it)",
+          "and mesh: set time.dt <= {:.4g} s, or dt = \"auto\" ({} x 2/omega_max, omega_max = {:.4g} "
+          "rad/s; finer elements lower it)",
           options.newmark.dt, largest, stable_step_fraction, omega_max_));
   }
 
@@ -153,7 +163,7 @@ void ExplicitDamageStepper::check_contact_stability(long step, double t, const C
   throw NewtonFailure(fmt::format(
       "progressive damage (explicit): in step {} (t = {:.6g} s) the contact spring (secant stiffness {:.4g} "
       "N/m on the impact point's lumped mass) makes time.dt = {:.4g} s unstable: set time.dt <= {:.4g} s",
-      step, t, k_secant, dt, stable_step_fraction * 2.0 / std::sqrt(omega2)));
+      step, t, k_secant, dt, stable_step(std::sqrt(omega2))));
 }
 
 void ExplicitDamageStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) {
@@ -165,6 +175,11 @@ double ExplicitDamageStepper::kinetic_energy(const PlateState& s) const {
 }
 
 } // namespace
+
+double explicit_stable_time_step(const PlateModel& model) {
+  const MassOperator M(model.mass(), 1e-14);
+  return stable_step(highest_angular_frequency(model.stiffness(), diagonal_mass(M)));
+}
 
 std::unique_ptr<StepPolicy> explicit_damage_step_policy(const PlateModel& model,
                                                         const StepPolicyOptions& options,

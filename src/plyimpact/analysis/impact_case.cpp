@@ -72,6 +72,14 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   return s;
 }
 
+ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model) {
+  ImpactSettings s = resolved_settings(d);
+  if (s.progressive_damage && s.progressive_damage->integration == DamageIntegration::central_difference &&
+      !d.time.dt && !s.rigid_target)
+    s.dt = std::min(s.dt, explicit_stable_time_step(model)); // dt = "auto" below the stable step (CD5)
+  return s;
+}
+
 double expected_contact_radius(const ImpactCaseDescription& d) {
   return expected_contact_radius(d.impactor, resolved_contact_stiffness(d));
 }
@@ -107,8 +115,9 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 }
 
 ImpactCase::ImpactCase(ImpactCaseDescription description)
-    : description_(std::move(description)), settings_(resolved_settings(description_)),
+    : description_(std::move(description)),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
+  settings_ = resolved_settings(description_, *model_);
   require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");

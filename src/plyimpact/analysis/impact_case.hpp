@@ -79,6 +79,9 @@ struct ImpactSettings {
 /// k (given or the modified Hertz constant of the impactor on the impacted ply at the impact point).
 [[nodiscard]] double resolved_contact_stiffness(const ImpactCaseDescription& d);
 [[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d);
+/// The same with the rules that need the plate: with [damage] integration = "explicit", dt = "auto" is at
+/// most the stable step (explicit_stable_time_step, step_policy.hpp). What ImpactCase runs with.
+[[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model);
 /// The largest contact radius expected: the rigid-target Hertz estimate √(R α_m) (contact_rules.hpp) [m].
 [[nodiscard]] double expected_contact_radius(const ImpactCaseDescription& d);
 /// The element size at the impact point of a graded mesh [m] (0 for a uniform one): the deck's

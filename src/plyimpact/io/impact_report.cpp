@@ -219,7 +219,9 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
              ? fmt::format("  first ply damage        {:>12} in ply {} at {:.2f} us, {:.1f} N\n",
                            to_string(*pd.first_mode), pd.first_ply, pd.first_time * 1e6, pd.first_force)
              : std::string("  first ply damage                none\n");
-    if (r.newton)
+    if (s.progressive_damage->integration == DamageIntegration::central_difference)
+      t += fmt::format("  damage step                 explicit: no solve, dt = {:.4g} us\n", s.dt * 1e6);
+    else if (r.newton)
       t += fmt::format("  damage iterations       {:12d} solves in {} steps (at most {} in a step), {} "
                        "factorizations of K_s + c0 M\n",
                        r.newton->iterations, r.steps, r.newton->max_iterations_per_step,
