@@ -32,6 +32,19 @@ inline std::string with_key(std::string text, const std::string& key, const std:
   return text.replace(at + 1, end - at - 1, key + " = " + value);
 }
 
+/// A deck of the T300/976 damage examples with every strength 1000 times the deck's (Xt, Xc, Yt, Yc,
+/// S12, S23 as examples/damage-progressive.toml gives them): plies that never crack.
+inline std::string unbreakable_t300_976(std::string text) {
+  for (const auto& [key, value] : {std::pair{"Xt", "1.5e12"},
+                                   {"Xc", "1.2e12"},
+                                   {"Yt", "55.2e9"},
+                                   {"Yc", "294.0e9"},
+                                   {"S12", "101.1e9"},
+                                   {"S23", "32.94e9"}})
+    text = with_key(text, key, value);
+  return text;
+}
+
 /// One run of the impact case of a deck text.
 inline ImpactResult run_deck(const std::string& text, const std::string& name = "test.toml") {
   const Deck deck = parse_deck(text, name);
