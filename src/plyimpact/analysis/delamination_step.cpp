@@ -29,6 +29,7 @@
 // step keeps the energy").
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
+#include "plyimpact/analysis/stacked_plate_step.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -47,12 +48,6 @@ namespace {
 
 class DelaminationStepPolicy;
 
-/// The cohesive zone's length against the interface points' spacing [m].
-struct ProcessZone {
-  double length = 0.0;
-  double point_spacing = 0.0;
-};
-
 /// Halvings of a correction that did not lower the residual by this fraction (DelaminationStepper::advance).
 constexpr int max_halvings = 6;
 constexpr double sufficient_decrease = 1e-4;
@@ -62,22 +57,12 @@ constexpr double sufficient_decrease = 1e-4;
 constexpr int max_update_rank = 1000;
 constexpr int max_total_update_rank = 20000;
 
-class DelaminationStepper final : public PlateStepper {
+class DelaminationStepper final : public StackedPlateStepper {
 public:
   DelaminationStepper(const DelaminationStepPolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                           Eigen::VectorXd& u_next) override;
-  void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
-  [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
-  [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
-  [[nodiscard]] double dissipated_energy() const override { return dissipated_; }
-  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
-    return loading_.sampler().dot(u);
-  }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override;
-  bool delamination_areas(DelaminationAreas& out) const override;
 
 private:
   /// x = K̄⁻¹ b with the iteration matrix in use.
@@ -99,7 +84,6 @@ private:
                                const Eigen::VectorXd& uk) const;
 
   const DelaminationStepPolicy& p_;
-  ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and c = swᵀ K̄⁻¹ s_load with the matrix in use
   Eigen::SparseLU<SparseMatrix> tangent_lu_; ///< implicit: unsymmetric under mixed mode
   SpdSolver frozen_factor_;                  ///< lagged: the secant at fixed damage, symmetric positive
   bool tangent_in_use_ = false;
@@ -107,20 +91,14 @@ private:
       factored_tangents_; ///< per interface and point, in frozen_factor_
   int update_rank_ = 0;   ///< rank-one updates since its factorization
   Eigen::VectorXd kbar_diagonal_;
-  StackedPlateState committed_, trial_;
-  double trial_dissipated_ = 0.0, dissipated_ = 0.0;
   NewtonStatistics stats_;
 };
 
-class DelaminationStepPolicy final : public StepPolicy {
+class DelaminationStepPolicy final : public StackedPlatePolicy {
 public:
   DelaminationStepPolicy(const PlateModel& model, const StepPolicyOptions& options,
                          const DelaminationSettings& settings)
-      : model_(model), options_(options), settings_(settings),
-        stack_(model.mesh(), single_laminate(model), settings.stack,
-               Discretization{model.mass_kind(), model.formulation()}, [&](int k) { return supports_of(k); }),
-        top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14),
-        elastic_(options.solver, options.ordering) {
+      : StackedPlatePolicy(model, options, settings), elastic_(options.solver, options.ordering) {
     check_time_step();
     const SparseMatrix Kbar =
         stack_.evaluate(Eigen::VectorXd::Zero(stack_.size()), stack_.virgin_state()).tangent +
@@ -129,74 +107,16 @@ public:
       check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);
     elastic_.factorize(Kbar);
     elastic_diagonal_ = Kbar.diagonal();
-    map_top_to_model();
   }
 
-  [[nodiscard]] int equations() const override { return stack_.size(); }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<DelaminationStepper>(*this, impactor);
   }
-  [[nodiscard]] std::vector<std::string> warnings() const override {
-    std::vector<std::string> w;
-    if (auto zone = process_zone_warning()) w.push_back(std::move(*zone));
-    if (auto ratio = strength_ratio_warning(settings_.stack.interface)) w.push_back(std::move(*ratio));
-    return w;
-  }
 
-  const PlateModel& model_;
-  StepPolicyOptions options_;
-  DelaminationSettings settings_;
-  StackedPlateModel stack_;
-  EquationSubset top_equations_; ///< every equation of the top sub-laminate
-  MassOperator M_;
   SpdSolver elastic_;                ///< K_plates + K_penalty + c0 M, shared by the runs
   Eigen::VectorXd elastic_diagonal_; ///< its diagonal
-  std::vector<int> model_of_top_;    ///< model equation of each top sub-laminate equation (−1: none)
-
-  /// The cohesive zone l = E2 G_c / τ² (Hillerborg, M = 1) of the shorter mode against the spacing of the
-  /// interface points (half the largest element side with the nodal rule): fewer than three points in it
-  /// and the onset and growth of a delamination depend on the mesh.
-  [[nodiscard]] ProcessZone process_zone() const {
-    const CohesiveParameters& c = settings_.stack.interface;
-    double E2 = INFINITY;
-    for (const Material& m : model_.laminate().materials())
-      E2 = std::min(E2, m.E2);
-    double largest = 0.0;
-    for (int e = 0; e < model_.mesh().element_count(); ++e) {
-      const ElementCoordinates X = model_.mesh().element_coordinates(e);
-      largest = std::max(
-          {largest, X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff()});
-    }
-    return {std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
-                     cohesive_zone_length(E2, c.G_IIc, c.shear_strength)),
-            settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0};
-  }
 
 private:
-  [[nodiscard]] std::optional<std::string> process_zone_warning() const {
-    const ProcessZone z = process_zone();
-    if (z.length >= 3.0 * z.point_spacing) return std::nullopt;
-    return fmt::format(
-        "delamination: the cohesive zone of the interfaces, E2 G_c / strength^2 = {:.3g} mm in the shorter "
-        "mode, spans {:.2g} interface points ({:.3g} mm apart): fewer than 3, so the onset and growth of "
-        "delaminations depend on the mesh. Refine to elements of {:.3g} mm or less, or lower both "
-        "strengths (Turon et al. 2007: tau = sqrt(9 pi E2 G_c / (32 * 3 * {:.3g} mm))) "
-        "(docs/delamination.md)",
-        z.length * 1e3, z.length / z.point_spacing, z.point_spacing * 1e3,
-        2.0 * z.length / 3.0 * 1e3 * (settings_.stack.rule == CohesiveIntegration::nodal ? 1.0 : 1.5),
-        z.point_spacing * 1e3);
-  }
-  /// Turon et al. (2010): with S/N ≠ √(G_IIc/G_Ic) the mixed-mode law does not dissipate G_c(B) along a
-  /// crack front whose mixity changes (measured: MMB 1.23 G_c with N halved alone).
-  [[nodiscard]] static std::optional<std::string> strength_ratio_warning(const CohesiveParameters& c) {
-    const double ratio = (c.shear_strength / c.normal_strength) / std::sqrt(c.G_IIc / c.G_Ic);
-    if (std::abs(ratio - 1.0) <= 0.1) return std::nullopt;
-    return fmt::format("delamination: shear_strength / normal_strength = {:.3g} while sqrt(G_IIc / G_Ic) = "
-                       "{:.3g}: under mixed mode the interfaces then dissipate more or less than G_c (Turon "
-                       "et al. 2010; docs/delamination.md, MMB); set S = N sqrt(G_IIc / G_Ic) = {:.3g} MPa",
-                       c.shear_strength / c.normal_strength, std::sqrt(c.G_IIc / c.G_Ic),
-                       c.normal_strength * std::sqrt(c.G_IIc / c.G_Ic) * 1e-6);
-  }
   void check_time_step() const {
     const double dt = options_.newmark.dt;
     const double limit =
@@ -208,32 +128,12 @@ private:
           "the inertia of the sub-laminates, docs/delamination.md); set [time] dt <= {:.3g} or \"auto\"",
           dt, limit, limit));
   }
-  static const Laminate& single_laminate(const PlateModel& model) {
-    if (!model.single_section())
-      throw std::invalid_argument("delamination: the stacked plate needs one laminate over the whole plate; "
-                                  "[[regions]] with other laminates are not available with [delamination] "
-                                  "yet (docs/delamination.md, limits)");
-    return model.laminate();
-  }
-  [[nodiscard]] BoundaryConditions supports_of(int k) const {
-    const int bottom = static_cast<int>(settings_.stack.cuts.size());
-    return settings_.supports_on_all || k == bottom ? model_.boundary() : BoundaryConditions{};
-  }
-  void map_top_to_model() {
-    const PlateModel& top = stack_.sublaminate(0);
-    model_of_top_.assign(static_cast<std::size_t>(top.size()), -1);
-    for (int n = 0; n < model_.mesh().node_count(); ++n)
-      for (int dof = 0; dof < 5; ++dof)
-        if (const int eq = top.dofs().equation(n, dof); eq >= 0)
-          model_of_top_[static_cast<std::size_t>(eq)] = model_.dofs().equation(n, dof);
-  }
 };
 
 DelaminationStepper::DelaminationStepper(const DelaminationStepPolicy& policy, const Impactor& impactor)
-    : p_(policy), loading_(policy.stack_.sublaminate(0), policy.top_equations_, impactor,
-                           policy.options_.load, policy.stack_.size()),
+    : StackedPlateStepper(policy, impactor), p_(policy),
       frozen_factor_(policy.options_.solver, policy.options_.ordering),
-      kbar_diagonal_(policy.elastic_diagonal_), committed_(policy.stack_.virgin_state()) {
+      kbar_diagonal_(policy.elastic_diagonal_) {
   loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); });
   stats_.factorizations = 1; // the policy's elastic factor
 }
@@ -252,7 +152,7 @@ void DelaminationStepper::use_tangent(const SparseMatrix& tangent, const Eigen::
     frozen_factor_.factorize(Kbar);
     factored_tangents_.resize(static_cast<std::size_t>(p_.stack_.interface_count()));
     for (int i = 0; i < p_.stack_.interface_count(); ++i)
-      p_.stack_.interface(i).point_tangents(uk, committed_.interfaces[static_cast<std::size_t>(i)], damage,
+      p_.stack_.interface(i).point_tangents(uk, committed().interfaces[static_cast<std::size_t>(i)], damage,
                                             factored_tangents_[static_cast<std::size_t>(i)]);
     update_rank_ = 0;
   } else {
@@ -284,7 +184,7 @@ bool DelaminationStepper::update_factor(const Eigen::VectorXd& uk, CohesiveDamag
   for (int i = 0; i < p_.stack_.interface_count(); ++i) {
     const CohesiveInterface& face = p_.stack_.interface(i);
     const auto ii = static_cast<std::size_t>(i);
-    face.point_tangents(uk, committed_.interfaces[ii], damage, now);
+    face.point_tangents(uk, committed().interfaces[ii], damage, now);
     for (int p = 0; p < face.point_count(); ++p) {
       const Eigen::Matrix3d& held = factored_tangents_[ii][static_cast<std::size_t>(p)];
       const Eigen::Matrix3d D = now[static_cast<std::size_t>(p)] - held;
@@ -363,15 +263,14 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
     const Eigen::VectorXd inertia = mean_form ? p_.M_.times(nc.c0 * (uk - s.u - nc.dt * s.v))
                                               : p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
     const bool assemble_tangent = refactor && !may_update_factor();
-    StackedPlateEvaluation e = assemble_tangent ? p_.stack_.evaluate(uk, committed_, damage)
-                                                : p_.stack_.internal_force(uk, committed_, damage);
+    StackedPlateEvaluation e = assemble_tangent ? p_.stack_.evaluate(uk, committed(), damage)
+                                                : p_.stack_.internal_force(uk, committed(), damage);
     if (mean_form) e.force += start;
     const Eigen::VectorXd g = -inertia - e.force; // force-free residual
     if (iterations > 0) {
       if (converged(g, inertia, e.force, cs, uk)) {
         // Lagged: the trial states' damage already follows the converged separation (for the next step).
-        trial_ = std::move(e.trial);
-        trial_dissipated_ = e.dissipated;
+        set_trial(std::move(e.trial), e.dissipated);
         break;
       }
       // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),
@@ -390,7 +289,7 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
       start_residual = residual;
     }
     if (refactor && !update_factor(uk, damage))
-      use_tangent(assemble_tangent ? e.tangent : p_.stack_.evaluate(uk, committed_, damage).tangent, uk,
+      use_tangent(assemble_tangent ? e.tangent : p_.stack_.evaluate(uk, committed(), damage).tangent, uk,
                   damage);
     refactor = false;
     halvings = 0;
@@ -430,87 +329,10 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
 // changed or faces opened or closed, the Newmark accelerations are not the equilibrium ones.
 Eigen::VectorXd DelaminationStepper::step_start(const Eigen::VectorXd& u_n,
                                                 const ContactStep& contact) const {
-  Eigen::VectorXd start = p_.stack_.internal_force(u_n, committed_, CohesiveDamage::lagged_mean).force;
+  Eigen::VectorXd start = p_.stack_.internal_force(u_n, committed(), CohesiveDamage::lagged_mean).force;
   if (contact.previous_force() != 0.0)
     start -= contact.previous_force() * loading_.load(contact.previous_indentation());
   return start;
-}
-
-void DelaminationStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {
-  committed_ = std::move(trial_);
-  trial_ = {};
-  dissipated_ += trial_dissipated_;
-  trial_dissipated_ = 0.0;
-}
-
-double DelaminationStepper::kinetic_energy(const PlateState& s) const {
-  return p_.M_.kinetic_energy(s.v);
-}
-
-double DelaminationStepper::strain_energy(const PlateState& s, double /*force*/) const {
-  return p_.stack_.stored_energy(s.u, committed_);
-}
-
-void DelaminationStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-  out = Eigen::VectorXd::Zero(p_.model_.size());
-  for (std::size_t i = 0; i < p_.model_of_top_.size(); ++i)
-    if (const int eq = p_.model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
-}
-
-bool DelaminationStepper::delamination_areas(DelaminationAreas& out) const {
-  const StackedPlateModel& stack = p_.stack_;
-  const std::vector<std::vector<CohesiveState>>& states = committed_.interfaces;
-  out.dissipated = dissipated_;
-  out.delaminated_area.clear(); // keeps its capacity: no allocation after the first step
-  out.delaminated_area.reserve(states.size());
-  for (int i = 0; i < stack.interface_count(); ++i)
-    out.delaminated_area.push_back(stack.interface(i).damaged_area(states[static_cast<std::size_t>(i)], 1.0));
-  out.projected_area = 0.0;
-  if (stack.interface_count() == 0) return true;
-  // Every interface has the same points (same mesh and rule): the union is taken point by point.
-  const CohesiveInterface& points = stack.interface(0);
-  for (int q = 0; q < points.point_count(); ++q)
-    if (std::any_of(states.begin(), states.end(), [q](const std::vector<CohesiveState>& of_interface) {
-          return of_interface[static_cast<std::size_t>(q)].damage >= 1.0;
-        }))
-      out.projected_area += points.point_area(q);
-  return true;
-}
-
-std::optional<DelaminationResult> DelaminationStepper::delamination() const {
-  const StackedPlateModel& stack = p_.stack_;
-  DelaminationResult r;
-  DelaminationAreas areas;
-  (void)delamination_areas(areas);
-  r.delaminated_area = std::move(areas.delaminated_area);
-  r.projected_area = areas.projected_area;
-  r.dissipated = areas.dissipated;
-  const ProcessZone zone = p_.process_zone();
-  r.cohesive_zone_length = zone.length;
-  r.interface_point_spacing = zone.point_spacing;
-  for (int i = 0; i < stack.interface_count(); ++i) {
-    const CohesiveInterface& ci = stack.interface(i);
-    const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
-    r.interface_after_ply.push_back(p_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
-    double softening = 0.0;
-    const auto per_element = static_cast<std::size_t>(ci.points_per_element());
-    std::vector<double>& of_element = r.element_damage.emplace_back(states.size() / per_element, 0.0);
-    std::vector<double>& of_point = r.point_damage.emplace_back();
-    for (std::size_t q = 0; q < states.size(); ++q) {
-      const double d = states[q].damage;
-      if (d > 0.0 && d < 1.0) softening += ci.point_area(static_cast<int>(q));
-      double& largest = of_element[q / per_element];
-      largest = std::max(largest, d);
-      of_point.push_back(d);
-    }
-    r.process_zone_area.push_back(softening);
-  }
-  if (stack.interface_count() > 0)
-    for (int q = 0; q < stack.interface(0).point_count(); ++q) {
-      r.point_cells.push_back(stack.interface(0).point_cell(q));
-      r.point_area.push_back(stack.interface(0).point_area(q));
-    }
-  return r;
 }
 
 /// Steepest softening slope of the law over the pure modes [Pa/m] (DL5).
