@@ -85,6 +85,9 @@ CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& 
     jump_.push_back(jump(q.xi, q.eta));
     const Eigen::Matrix<double, 9, 1> N = q9_shape(q.xi, q.eta).N;
     shape_.push_back(N);
+    std::vector<int>& nodes = nodes_.emplace_back();
+    for (int a = 0; a < 9; ++a)
+      if (N(a) != 0.0) nodes.push_back(a);
     for (int a = 0; a < 9; ++a)
       for (int b = 0; b < 9; ++b)
         coupled_[node_pair(a, b)] |= N(a) * N(b) != 0.0; // Lobatto: a = b only
@@ -134,9 +137,21 @@ Eigen::Matrix<double, 2 * q9_dofs, 1> CohesiveInterface::element_dofs(int e, con
   return ue;
 }
 
+Eigen::Vector3d CohesiveInterface::point_separation(int q,
+                                                    const Eigen::Matrix<double, 2 * q9_dofs, 1>& ue) const {
+  const auto i = static_cast<std::size_t>(q);
+  Eigen::Vector3d delta = Eigen::Vector3d::Zero();
+  for (const int a : nodes_[i]) {
+    Eigen::Matrix<double, 10, 1> pair;
+    pair << ue.segment<5>(5 * a), ue.segment<5>(q9_dofs + 5 * a);
+    delta += shape_[i](a) * (node_jump_ * pair);
+  }
+  return delta;
+}
+
 Eigen::Vector3d CohesiveInterface::separation(int p, const Eigen::VectorXd& u) const {
   const int n = points_per_element();
-  return jump_[static_cast<std::size_t>(p % n)] * element_dofs(p / n, u);
+  return point_separation(p % n, element_dofs(p / n, u));
 }
 
 // (DL2) by node pairs: with J = (N_1 L, …, N_9 L), f_a = Lᵀ Σ_p area_p N_a τ_p and
@@ -159,7 +174,7 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const CohesiveResponse r =
-          point_response(law_, committed[p], jump_[static_cast<std::size_t>(q)] * ue, damage, loading_band_);
+          point_response(law_, committed[p], point_separation(q, ue), damage, loading_band_);
       out.trial[p] = r.state;
       out.dissipated += area_[p] * r.dissipated_energy;
       const Eigen::Matrix<double, 9, 1>& N = shape_[static_cast<std::size_t>(q)];
@@ -207,7 +222,7 @@ void CohesiveInterface::point_tangents(const Eigen::VectorXd& u, std::span<const
     for (int q = 0; q < n; ++q) {
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
-      const Eigen::Vector3d delta = jump_[static_cast<std::size_t>(q)] * ue;
+      const Eigen::Vector3d delta = point_separation(q, ue);
       // Held damage: the tangent alone, without the trial state's update.
       out[p] =
           area_[p] * (damage == CohesiveDamage::evolve ? law_.update(committed[p], delta, loading_band_)
@@ -227,9 +242,15 @@ void CohesiveInterface::jump_row(int p, int k, std::vector<std::pair<int, double
 double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,
                                         std::span<const CohesiveState> states) const {
   double energy = 0.0;
-  for (int p = 0; p < point_count(); ++p)
-    energy += area_[static_cast<std::size_t>(p)] *
-              law_.stored_energy(states[static_cast<std::size_t>(p)], separation(p, u));
+  const int n = points_per_element();
+  for (int e = 0; e < element_count_; ++e) {
+    const auto ue = element_dofs(e, u); // once per element, not per point
+    for (int q = 0; q < n; ++q) {
+      const std::size_t p =
+          static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
+      energy += area_[p] * law_.stored_energy(states[p], point_separation(q, ue));
+    }
+  }
   return energy;
 }
 

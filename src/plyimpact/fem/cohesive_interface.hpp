@@ -112,6 +112,10 @@ private:
   };
   [[nodiscard]] JumpOperator jump(double xi, double eta) const;
   [[nodiscard]] Eigen::Matrix<double, 2 * q9_dofs, 1> element_dofs(int e, const Eigen::VectorXd& u) const;
+  /// δ at point q of the rule from the element's DOFs: jump_[q] ue (DL1) as Σ_a N_a(q) L u_a over the
+  /// nodes whose shape function is not zero there (one node with the nodal rule).
+  [[nodiscard]] Eigen::Vector3d point_separation(int q,
+                                                 const Eigen::Matrix<double, 2 * q9_dofs, 1>& ue) const;
   /// Stacked equation of element e's DOF i (0–44 upper, 45–89 lower), −1 where constrained.
   [[nodiscard]] int equation(int e, int i) const {
     return equations_[static_cast<std::size_t>(e) * 2 * q9_dofs + static_cast<std::size_t>(i)];
@@ -130,6 +134,7 @@ private:
   int element_count_;
   std::vector<JumpOperator> jump_; ///< per point of the rule (same parent operator for every element)
   std::vector<Eigen::Matrix<double, 9, 1>> shape_; ///< the nodes' shape functions at each point of the rule
+  std::vector<std::vector<int>> nodes_;            ///< per point of the rule, the nodes with N_a ≠ 0 there
   std::array<bool, 81> coupled_{};                 ///< nodes a, b share a point: N_a N_b ≠ 0 (index 9a + b)
   NodeJump node_jump_;
   std::vector<int> equations_; ///< per element, its 90 stacked equations (equation())
