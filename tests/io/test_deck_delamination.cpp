@@ -80,6 +80,8 @@ TEST(DeckDelamination, ListedInterfacesAndTheOtherChoicesAreRead) {
   EXPECT_EQ(d.delamination->stack.rule, CohesiveIntegration::gauss);
   EXPECT_FALSE(d.delamination->supports_on_all);
   EXPECT_EQ(d.delamination->integration, DamageIntegration::implicit);
+  const Deck e = deck_with("integration = \"explicit\"\n" + as4_peek_law);
+  EXPECT_EQ(e.delamination->integration, DamageIntegration::central_difference);
 }
 
 TEST(DeckDelamination, InMillimetreUnitsTheLawBecomesSI) {

@@ -361,6 +361,8 @@ double largest_delamination_time_step(const Laminate& laminate, const StackSetti
 std::unique_ptr<StepPolicy> delamination_step_policy(const PlateModel& model,
                                                      const StepPolicyOptions& options,
                                                      const DelaminationSettings& settings) {
+  if (settings.integration == DamageIntegration::central_difference)
+    return explicit_delamination_step_policy(model, options, settings);
   return std::make_unique<DelaminationStepPolicy>(model, options, settings);
 }
 

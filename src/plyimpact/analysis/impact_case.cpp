@@ -58,7 +58,8 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   if (d.time.adaptive && !d.time.dt) // the automatic step is the smallest of the error-controlled ones
     s.dt = std::ldexp(s.dt, d.time.adaptive->levels - 1);
   s.adaptive = d.time.adaptive;
-  if (d.delamination && !d.time.dt && !d.laminates.empty()) // within the interfaces' limit (DL5)
+  if (d.delamination && d.delamination->integration != DamageIntegration::central_difference && !d.time.dt &&
+      !d.laminates.empty()) // within the interfaces' limit (DL5)
     s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
                                                                d.time.newmark_beta));
   s.end = d.time.end;
@@ -77,6 +78,9 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateMode
   if (s.progressive_damage && s.progressive_damage->integration == DamageIntegration::central_difference &&
       !d.time.dt && !s.rigid_target)
     s.dt = std::min(s.dt, explicit_stable_time_step(model)); // dt = "auto" below the stable step (CD5)
+  if (s.delamination && s.delamination->integration == DamageIntegration::central_difference && !d.time.dt &&
+      !s.rigid_target)
+    s.dt = std::min(s.dt, explicit_delamination_time_step(model, *s.delamination)); // the stack's (CD5)
   return s;
 }
 

@@ -126,7 +126,8 @@ struct DelaminationSettings {
   StackSettings stack;         ///< the cuts, the interface law, its integration rule
   bool supports_on_all = true; ///< the supports hold every sub-laminate; false: the bottom one only
   /// lagged: each step solved with the interfaces' damage of the last accepted step held fixed, then the
-  /// damage updated from the converged separation; implicit: the damage iterated with the step.
+  /// damage updated from the converged separation; implicit: the damage iterated with the step;
+  /// central_difference: explicit steps on the lumped mass, the law once per step.
   DamageIntegration integration = DamageIntegration::lagged;
   int max_iterations = 30;              ///< per time step
   double residual_tolerance = 1e-5;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
@@ -189,6 +190,17 @@ explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& op
 [[nodiscard]] std::unique_ptr<StepPolicy> delamination_step_policy(const PlateModel& model,
                                                                    const StepPolicyOptions& options,
                                                                    const DelaminationSettings& settings);
+/// The stacked plate with explicit central differences on the lumped mass (settings.integration =
+/// central_difference; explicit_delamination_step.cpp). Throws std::invalid_argument when the mass is not
+/// diagonal or Δt of `options` is above the stable step, which the message gives.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                                  const DelaminationSettings& settings);
+/// The largest Δt explicit_delamination_step_policy accepts: 0.9 · 2/ω_max of the elastic stack (the
+/// sub-laminates and the interfaces' penalty) with the lumped mass (CD5) [s]; what dt = "auto" becomes
+/// with [delamination] integration = "explicit".
+[[nodiscard]] double explicit_delamination_time_step(const PlateModel& model,
+                                                     const DelaminationSettings& settings);
 /// A rigid, immovable target: ws = 0.
 [[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
 

@@ -152,10 +152,27 @@ StackedPlateEvaluation StackedPlateModel::internal_force(const Eigen::VectorXd& 
 }
 
 double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
-  double energy = 0.5 * u.dot(K_plates_ * u);
+  return 0.5 * u.dot(K_plates_ * u) + interface_energy(u, state);
+}
+
+double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
+  double energy = 0.0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
     energy += interfaces_[i]->stored_energy(u, state.interfaces[i]);
   return energy;
+}
+
+double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                               Eigen::VectorXd& force, StackedPlateState& trial,
+                                               CohesiveDamage damage) const {
+  trial.interfaces.resize(interfaces_.size());
+  double dissipated = 0.0;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], force, nullptr, damage);
+    dissipated += e.dissipated;
+    trial.interfaces[i] = std::move(e.trial);
+  }
+  return dissipated;
 }
 
 int StackedPlateModel::equation(int k, int node, int dof) const {

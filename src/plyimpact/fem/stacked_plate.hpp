@@ -118,6 +118,13 @@ public:
                                                       CohesiveDamage damage = CohesiveDamage::evolve) const;
   /// Elastic energy ½ uᵀ K_plates u + the interfaces' stored energy [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
+  /// The interfaces' stored energy alone [J].
+  [[nodiscard]] double interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
+  /// The interfaces' forces at u added to `force`, their trial states from the committed ones into
+  /// `trial` (its vectors reused), and the energy dissipated reaching them returned [J]: the part of
+  /// internal_force() beyond K_plates u, for a caller that holds K_plates u (the explicit step).
+  double add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                              Eigen::VectorXd& force, StackedPlateState& trial, CohesiveDamage damage) const;
 
   /// The stacked index of DOF `dof` (0..4 = u, v, w, θx, θy) of node n in sub-laminate k (−1: restrained).
   [[nodiscard]] int equation(int k, int node, int dof) const;

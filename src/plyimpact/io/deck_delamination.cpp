@@ -94,10 +94,11 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
                      .value_or(CohesiveIntegration::nodal);
   s.supports_on_all =
       t.optional_choice<bool>("supports", {{"all", true}, {"bottom", false}}).value_or(s.supports_on_all);
-  s.integration =
-      t.optional_choice<DamageIntegration>(
-           "integration", {{"lagged", DamageIntegration::lagged}, {"implicit", DamageIntegration::implicit}})
-          .value_or(s.integration);
+  s.integration = t.optional_choice<DamageIntegration>("integration",
+                                                       {{"lagged", DamageIntegration::lagged},
+                                                        {"implicit", DamageIntegration::implicit},
+                                                        {"explicit", DamageIntegration::central_difference}})
+                      .value_or(s.integration);
   return s;
 }
 
