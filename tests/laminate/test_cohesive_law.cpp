@@ -186,6 +186,31 @@ TEST(CohesiveLawMixedMode, TuronOnsetInterpolatesSquaredStrengthsLikeBK) {
   }
 }
 
+// The update's shortcut for undamaged points rests on both onset rules lying between the pure modes'
+// onsets: below (1 − band) min(Δ⁰_I, Δ⁰_II) no mixity has started to soften or entered the loading band,
+// so the shortcut's elastic response is the full update's. Checked for both rules, with the strengths in
+// either order (S > N here; N > S with the strengths swapped).
+TEST(CohesiveLawMixedMode, TheElasticLimitIsBelowTheOnsetOfEveryMixity) {
+  for (const CohesiveOnset rule : {CohesiveOnset::turon_bk, CohesiveOnset::camanho_quadratic})
+    for (const bool swapped : {false, true}) {
+      CohesiveParameters p = as4_peek(rule);
+      if (swapped) std::swap(p.normal_strength, p.shear_strength);
+      const CohesiveLaw law(p);
+      const double band = 1e-2;
+      for (int i = 0; i <= 100; ++i) {
+        const double B = i / 100.0;
+        EXPECT_LT(law.elastic_limit(0.0), law.onset_separation(B)) << B;
+        EXPECT_LT(law.elastic_limit(band), (1.0 - band) * law.onset_separation(B))
+            << B; // the envelope at d = 0
+        const CohesiveResponse r = law.update({}, law.elastic_limit(band) * direction(B), band);
+        EXPECT_EQ(r.state.damage, 0.0);
+        EXPECT_EQ(r.dissipated_energy, 0.0);
+        EXPECT_NEAR(r.traction.norm(), p.penalty_stiffness * law.elastic_limit(band),
+                    1e-12 * p.penalty_stiffness * law.elastic_limit(band));
+      }
+    }
+}
+
 // ------------------------------------------------------------------------------------------------
 // Unloading, reloading, irreversibility
 // ------------------------------------------------------------------------------------------------

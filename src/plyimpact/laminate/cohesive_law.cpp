@@ -132,6 +132,10 @@ double CohesiveLaw::final_separation(double B) const {
   return 2.0 * critical_energy_release_rate(B) / (p_.penalty_stiffness * onset_separation(B));
 }
 
+double CohesiveLaw::elastic_limit(double loading_band) const {
+  return (1.0 - 1e-12) * (1.0 - std::max(loading_band, 0.0)) * std::min(normal_onset_, shear_onset_);
+}
+
 double CohesiveLaw::envelope_damage(double lambda, double B) const {
   const double onset = onset_separation(B);
   const double failure = final_separation(B);
@@ -165,6 +169,11 @@ CohesiveResponse CohesiveLaw::at_fixed_damage(const CohesiveState& state,
 
 CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen::Vector3d& separation,
                                      double loading_band) const {
+  // An undamaged point below the smallest onset over the mixities, min(Δ⁰_I, Δ⁰_II) (both onset rules
+  // lie between the two), and below the loading band under it: elastic, the numbers of the path below
+  // without the mixity's powers (most points of an impact, every step).
+  if (previous.damage == 0.0 && equivalent_separation(separation) < elastic_limit(loading_band))
+    return at_fixed_damage(CohesiveState{0.0, separation}, separation);
   const double K = p_.penalty_stiffness;
   const double normal = separation(2);
   // The part of the separation that damage degrades: sliding and opening, not closing.

@@ -95,6 +95,9 @@ public:
   /// Damage of the bilinear law on its softening envelope at equivalent separation λ and mixity B:
   /// d = Δᶠ(λ − Δ⁰) / (λ(Δᶠ − Δ⁰)), clamped to [0, 1] (Camanho et al. 2003; Turon et al. 2006).
   [[nodiscard]] double envelope_damage(double lambda, double B) const;
+  /// The equivalent separation below which an undamaged point is elastic whatever its mixity and stays
+  /// out of the loading band under the envelope: (1 − band) min(Δ⁰_I, Δ⁰_II), less a round-off margin [m].
+  [[nodiscard]] double elastic_limit(double loading_band) const;
 
   // --- the update at one integration point -----------------------------------------------------
 
