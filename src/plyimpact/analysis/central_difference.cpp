@@ -33,18 +33,19 @@ double stable_time_step(double omega_max) {
   return stable_step_fraction * 2.0 / omega_max;
 }
 
-double stable_time_step(const SparseMatrix& K0, const MassOperator& M, const std::string& key) {
-  return stable_time_step(highest_angular_frequency(K0, diagonal_mass(M, key)));
+double explicit_highest_frequency(const SparseMatrix& K0, const MassOperator& M, const std::string& key) {
+  return highest_angular_frequency(K0, diagonal_mass(M, key));
 }
 
 CentralDifference::CentralDifference(const SparseMatrix& K0, const MassOperator& M,
-                                     const NewmarkCoefficients& newmark, std::string key)
+                                     const NewmarkCoefficients& newmark, std::string key,
+                                     std::optional<double> omega_max)
     : key_(std::move(key)), dt_(newmark.dt), mass_(diagonal_mass(M, key_)),
       inverse_mass_(mass_.cwiseInverse()) {
   if (newmark.gamma != 0.5)
     throw std::invalid_argument(
         fmt::format("{} is central differences (gamma = 0.5), got [time] gamma = {}", key_, newmark.gamma));
-  omega_max_ = highest_angular_frequency(K0, mass_);
+  omega_max_ = omega_max ? *omega_max : highest_angular_frequency(K0, mass_);
   const double largest = stable_time_step(omega_max_);
   if (dt_ > largest)
     throw std::invalid_argument(

@@ -16,6 +16,7 @@
 // Δt √(ω_max² + ω_c²) > 2.
 #include "plyimpact/analysis/step_policy.hpp"
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -23,17 +24,20 @@ namespace plyimpact {
 
 /// CD5: the largest Δt accepted for a plate whose highest angular frequency is ω_max: 0.9 · 2/ω_max [s].
 [[nodiscard]] double stable_time_step(double omega_max);
-/// CD5 for the plate of undamaged stiffness K0 and mass M [s]. Throws std::invalid_argument, naming `key`,
-/// where M is not diagonal with mass on every DOF.
-[[nodiscard]] double stable_time_step(const SparseMatrix& K0, const MassOperator& M, const std::string& key);
+/// ω_max of K0 φ = ω² M φ for the plate of undamaged stiffness K0 and mass M [rad/s]. Throws
+/// std::invalid_argument, naming `key`, where M is not diagonal with mass on every DOF.
+[[nodiscard]] double explicit_highest_frequency(const SparseMatrix& K0, const MassOperator& M,
+                                                const std::string& key);
 
 class CentralDifference {
 public:
   /// The scheme with step `dt` on the plate of undamaged stiffness K0 and mass M. Throws
   /// std::invalid_argument, the message naming `key` (the deck key that chose the scheme), where M is
   /// not diagonal with mass on every DOF, where `gamma` is not ½, or where dt is above the stable step.
+  /// `omega_max`: ω_max of K0 and M where the caller has it (the case computed it for dt = "auto"),
+  /// else computed here.
   CentralDifference(const SparseMatrix& K0, const MassOperator& M, const NewmarkCoefficients& newmark,
-                    std::string key);
+                    std::string key, std::optional<double> omega_max = std::nullopt);
 
   [[nodiscard]] double omega_max() const { return omega_max_; }
   [[nodiscard]] double time_step() const { return dt_; }

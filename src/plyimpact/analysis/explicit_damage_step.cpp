@@ -57,7 +57,7 @@ public:
                        const ProgressiveDamageSettings& settings)
       : model_(model), options_(options), plate_(model, settings), equations_(model.size()),
         scheme_(plate_.undamaged_stiffness(), MassOperator(model.mass(), 1e-14), options.newmark,
-                explicit_key) {}
+                explicit_key, options.explicit_omega_max) {}
 
   [[nodiscard]] int equations() const override { return model_.size(); }
   [[nodiscard]] int factorizations() const override { return 0; }
@@ -106,8 +106,12 @@ double ExplicitDamageStepper::kinetic_energy(const PlateState& s) const {
 
 } // namespace
 
+double explicit_damage_highest_frequency(const PlateModel& model) {
+  return explicit_highest_frequency(model.stiffness(), MassOperator(model.mass(), 1e-14), explicit_key);
+}
+
 double explicit_stable_time_step(const PlateModel& model) {
-  return stable_time_step(model.stiffness(), MassOperator(model.mass(), 1e-14), explicit_key);
+  return stable_time_step(explicit_damage_highest_frequency(model));
 }
 
 std::unique_ptr<StepPolicy> explicit_damage_step_policy(const PlateModel& model,

@@ -58,7 +58,7 @@ public:
   ExplicitDelaminationPolicy(const PlateModel& model, const StepPolicyOptions& options,
                              const DelaminationSettings& settings)
       : StackedPlatePolicy(model, options, settings),
-        scheme_(elastic_stiffness(stack_), M_, options.newmark, explicit_key) {}
+        scheme_(elastic_stiffness(stack_), M_, options.newmark, explicit_key, options.explicit_omega_max) {}
 
   [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
@@ -100,9 +100,15 @@ double ExplicitDelaminationStepper::strain_energy(const PlateState& s, double /*
 
 } // namespace
 
-double explicit_delamination_time_step(const PlateModel& model, const DelaminationSettings& settings) {
+double explicit_delamination_highest_frequency(const PlateModel& model,
+                                               const DelaminationSettings& settings) {
   const StackedPlateModel stack = impact_stack(model, settings);
-  return stable_time_step(elastic_stiffness(stack), MassOperator(stack.mass(), 1e-14), explicit_key);
+  return explicit_highest_frequency(elastic_stiffness(stack), MassOperator(stack.mass(), 1e-14),
+                                    explicit_key);
+}
+
+double explicit_delamination_time_step(const PlateModel& model, const DelaminationSettings& settings) {
+  return stable_time_step(explicit_delamination_highest_frequency(model, settings));
 }
 
 std::unique_ptr<StepPolicy> explicit_delamination_step_policy(const PlateModel& model,

@@ -1,4 +1,5 @@
 #include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/analysis/central_difference.hpp"
 
 #include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/analysis/guards.hpp"
@@ -73,15 +74,24 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   return s;
 }
 
-ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model) {
+std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const PlateModel& model) {
+  if (d.plate.rigid) return std::nullopt;
+  if (d.delamination && d.delamination->integration == DamageIntegration::central_difference)
+    return explicit_delamination_highest_frequency(model, *d.delamination);
+  if (d.progressive_damage && d.progressive_damage->integration == DamageIntegration::central_difference)
+    return explicit_damage_highest_frequency(model);
+  return std::nullopt;
+}
+
+ImpactSettings resolved_settings(const ImpactCaseDescription& d, std::optional<double> explicit_omega_max) {
   ImpactSettings s = resolved_settings(d);
-  if (s.progressive_damage && s.progressive_damage->integration == DamageIntegration::central_difference &&
-      !d.time.dt && !s.rigid_target)
-    s.dt = std::min(s.dt, explicit_stable_time_step(model)); // dt = "auto" below the stable step (CD5)
-  if (s.delamination && s.delamination->integration == DamageIntegration::central_difference && !d.time.dt &&
-      !s.rigid_target)
-    s.dt = std::min(s.dt, explicit_delamination_time_step(model, *s.delamination)); // the stack's (CD5)
+  if (explicit_omega_max && !d.time.dt) // dt = "auto" below the stable step (CD5)
+    s.dt = std::min(s.dt, stable_time_step(*explicit_omega_max));
   return s;
+}
+
+ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model) {
+  return resolved_settings(d, explicit_highest_frequency(d, model));
 }
 
 double expected_contact_radius(const ImpactCaseDescription& d) {
@@ -120,8 +130,9 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 
 ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(std::move(description)),
-      model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
-  settings_ = resolved_settings(description_, *model_);
+      model_(std::make_unique<PlateModel>(impact_plate_model(description_))),
+      explicit_omega_max_(explicit_highest_frequency(description_, *model_)) {
+  settings_ = resolved_settings(description_, explicit_omega_max_);
   require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
@@ -153,6 +164,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.solver = description_.solver;
   options.ordering = description_.ordering;
   options.memory_limit_bytes = description_.memory_limit_bytes;
+  options.explicit_omega_max = explicit_omega_max_;
   if (settings_.delamination)
     policy_ = delamination_step_policy(*model_, options, *settings_.delamination);
   else if (settings_.progressive_damage)

@@ -79,8 +79,15 @@ struct ImpactSettings {
 /// k (given or the modified Hertz constant of the impactor on the impacted ply at the impact point).
 [[nodiscard]] double resolved_contact_stiffness(const ImpactCaseDescription& d);
 [[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d);
-/// The same with the rules that need the plate: with [damage] integration = "explicit", dt = "auto" is at
-/// most the stable step (explicit_stable_time_step, step_policy.hpp). What ImpactCase runs with.
+/// ω_max of what an explicit step policy of `d` moves on `model` ([damage] or [delamination] integration =
+/// "explicit": the undamaged plate, or the elastic stack; step_policy.hpp) [rad/s]; empty otherwise.
+[[nodiscard]] std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d,
+                                                               const PlateModel& model);
+/// The same with the rules that need the plate: with an explicit step, dt = "auto" is at most the stable
+/// step 0.9 · 2/ω_max of `explicit_omega_max` (explicit_highest_frequency). What ImpactCase runs with.
+[[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d,
+                                               std::optional<double> explicit_omega_max);
+/// resolved_settings with explicit_highest_frequency(d, model).
 [[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model);
 /// The largest contact radius expected: the rigid-target Hertz estimate √(R α_m) (contact_rules.hpp) [m].
 [[nodiscard]] double expected_contact_radius(const ImpactCaseDescription& d);
@@ -118,6 +125,8 @@ public:
   [[nodiscard]] const ImpactSettings& settings() const { return settings_; }
   [[nodiscard]] const PlateModel& model() const { return *model_; }
   [[nodiscard]] bool nonlinear() const { return settings_.nonlinear.has_value(); }
+  /// explicit_highest_frequency of the case, computed once: its policy and its runs' settings share it.
+  [[nodiscard]] std::optional<double> explicit_omega_max() const { return explicit_omega_max_; }
   /// Equations of the time loop.
   [[nodiscard]] int equations() const { return policy_->equations(); }
   /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
@@ -127,6 +136,7 @@ private:
   ImpactCaseDescription description_;
   ImpactSettings settings_;
   std::unique_ptr<PlateModel> model_;
+  std::optional<double> explicit_omega_max_;
   std::unique_ptr<StepPolicy> policy_;
   double fundamental_period_ = 0.0;
 };

@@ -146,6 +146,9 @@ struct StepPolicyOptions {
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   FillOrdering ordering = FillOrdering::amd;
   std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
+  /// The explicit policies' ω_max (explicit_damage_highest_frequency,
+  /// explicit_delamination_highest_frequency) where the case has computed it; empty: the policy computes it.
+  std::optional<double> explicit_omega_max;
 };
 
 /// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
@@ -161,6 +164,8 @@ explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& op
 /// lumped M (CD5) [s]; what dt = "auto" becomes with [damage] integration = "explicit". Throws
 /// std::invalid_argument when the mass is not diagonal.
 [[nodiscard]] double explicit_stable_time_step(const PlateModel& model);
+/// ω_max of the undamaged `model` on its lumped mass, that step's 0.9 · 2/ω_max [rad/s].
+[[nodiscard]] double explicit_damage_highest_frequency(const PlateModel& model);
 /// Newton iterations on the non-linear plate.
 [[nodiscard]] std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options,
@@ -201,6 +206,9 @@ explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptio
 /// with [delamination] integration = "explicit".
 [[nodiscard]] double explicit_delamination_time_step(const PlateModel& model,
                                                      const DelaminationSettings& settings);
+/// ω_max of the elastic stack on its lumped mass, that step's 0.9 · 2/ω_max [rad/s].
+[[nodiscard]] double explicit_delamination_highest_frequency(const PlateModel& model,
+                                                             const DelaminationSettings& settings);
 /// A rigid, immovable target: ws = 0.
 [[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
 

@@ -94,7 +94,8 @@ HistoryLayout history_layout_of(const Deck& deck, const ImpactSettings& s) {
 
 ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const ImpactRunOptions& options) {
   ImpactRunOutcome out;
-  out.settings = resolved_settings(impact_case_description(deck, impact.nonlinear()), impact.model());
+  out.settings =
+      resolved_settings(impact_case_description(deck, impact.nonlinear()), impact.explicit_omega_max());
   out.settings.mesh = impact.settings().mesh; // the mesh the shared case runs on
   out.history_layout = history_layout_of(deck, out.settings);
   if (out.settings.dt != impact.settings().dt)
