@@ -17,6 +17,7 @@
 // with the iterate's strain. K̄ is refactored with the iterate's secant where a crack opened or closed
 // (semi-smooth Newton on the modes) or the iterations slow down. The law is called once per step, at the
 // accepted u_{n+1}, for d_{n+1} and the dissipation.
+#include "plyimpact/analysis/damaged_plate_step.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -32,56 +33,35 @@ namespace {
 
 class DamageStepPolicy;
 
-class DamageStepper final : public PlateStepper {
+class DamageStepper final : public DamagedPlateStepper {
 public:
   DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                           Eigen::VectorXd& u_next) override;
   void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
-  [[nodiscard]] double strain_energy(const PlateState& /*s*/, double /*force*/) const override {
-    return field_.stored_energy(); // ½ uᵀ K_s(d) u of the accepted state
-  }
-  [[nodiscard]] double dissipated_energy() const override { return field_.dissipated().sum(); }
-  [[nodiscard]] const DamageField* damage() const override { return &field_; }
-  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override { return sw().dot(u); }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
-  [[nodiscard]] const Eigen::VectorXd& sw() const { return loading_.sampler(); }
   void refactor(const SparseMatrix& K);
   [[nodiscard]] bool lagged() const;
 
   const DamageStepPolicy& p_;
-  ContactLoading loading_;
   SpdSolver factor_;
-  DamageField field_;
   Eigen::VectorXd kbar_diagonal_;
-  Eigen::VectorXd f_int_;
   NewtonStatistics stats_;
 };
 
-class DamageStepPolicy final : public StepPolicy {
+class DamageStepPolicy final : public DamagedPlatePolicy {
 public:
   DamageStepPolicy(const PlateModel& model, const StepPolicyOptions& options,
                    const ProgressiveDamageSettings& settings)
-      : model_(model), options_(options), plate_(model, settings), equations_(model.size()),
-        M_(model.mass(), 1e-14) {}
+      : DamagedPlatePolicy(model, options, settings), M_(model.mass(), 1e-14) {}
 
-  [[nodiscard]] int equations() const override { return model_.size(); }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<DamageStepper>(*this, impactor);
   }
-  [[nodiscard]] std::vector<std::string> warnings() const override {
-    if (auto w = plate_.strength_reduction_warning()) return {std::move(*w)};
-    return {};
-  }
 
-  const PlateModel& model_;
-  StepPolicyOptions options_;
-  DamagedPlateModel plate_;
-  EquationSubset equations_;
   MassOperator M_;
 };
 
@@ -90,9 +70,8 @@ bool DamageStepper::lagged() const {
 }
 
 DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor)
-    : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
-      factor_(policy.options_.solver, policy.options_.ordering), field_(policy.plate_.virgin_field()),
-      f_int_(Eigen::VectorXd::Zero(policy.equations())) {
+    : DamagedPlateStepper(policy, impactor), p_(policy),
+      factor_(policy.options_.solver, policy.options_.ordering) {
   const SparseMatrix& K0 = p_.plate_.undamaged_stiffness();
   if (policy.options_.memory_limit_bytes)
     check_factor_memory(estimate_factor_memory(K0 + p_.options_.newmark.c0 * p_.M_.matrix()),
@@ -155,7 +134,7 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
                    : "set [damage] integration = \"lagged\" (no iteration on the damage; its energy balance "
                      "error shrinks with time.dt), or reduce time.dt"));
     const Eigen::VectorXd u_hat = uk + factor_.solve(g);
-    cs = loading_.solve(contact, sw().dot(u_hat));
+    cs = loading_.solve(contact, loading_.sampler().dot(u_hat));
     Eigen::VectorXd u_iterate = u_hat;
     loading_.add_response(cs.alpha, cs.force, u_iterate);
     const double correction = (u_iterate - uk).norm();

@@ -7,6 +7,7 @@
 // no crack closes a step late (what pumped energy in the lagged step). The impactor keeps its implicit
 // Newmark update through the scalar contact problem of SPEC §4 with the plate's compliance 0.
 #include "plyimpact/analysis/central_difference.hpp"
+#include "plyimpact/analysis/damaged_plate_step.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 
@@ -19,7 +20,7 @@ constexpr const char* explicit_key = "[damage] integration = \"explicit\"";
 
 class ExplicitDamagePolicy;
 
-class ExplicitDamageStepper final : public PlateStepper {
+class ExplicitDamageStepper final : public DamagedPlateStepper {
 public:
   ExplicitDamageStepper(const ExplicitDamagePolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
@@ -30,56 +31,33 @@ public:
   }
   void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
-  [[nodiscard]] double strain_energy(const PlateState& /*s*/, double /*force*/) const override {
-    return field_.stored_energy(); // ½ uᵀ K_s(d) u of the accepted state
-  }
-  [[nodiscard]] double dissipated_energy() const override { return field_.dissipated().sum(); }
-  [[nodiscard]] const DamageField* damage() const override { return &field_; }
-  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
-    return loading_.sampler().dot(u);
-  }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   /// No solve and no factorization: all zero.
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return NewtonStatistics{}; }
 
 private:
   const ExplicitDamagePolicy& p_;
-  ContactLoading loading_;
-  DamageField field_;
-  Eigen::VectorXd f_int_; ///< f_int(u_{n+1}) of the last advance()
   Eigen::VectorXd a_next_;
   double contact_flexibility_ = 0.0; ///< sᵀM⁻¹s, 1 / the mass the contact spring moves [1/kg]
 };
 
-class ExplicitDamagePolicy final : public StepPolicy {
+class ExplicitDamagePolicy final : public DamagedPlatePolicy {
 public:
   ExplicitDamagePolicy(const PlateModel& model, const StepPolicyOptions& options,
                        const ProgressiveDamageSettings& settings)
-      : model_(model), options_(options), plate_(model, settings), equations_(model.size()),
+      : DamagedPlatePolicy(model, options, settings),
         scheme_(plate_.undamaged_stiffness(), MassOperator(model.mass(), 1e-14), options.newmark,
                 explicit_key, options.explicit_omega_max) {}
 
-  [[nodiscard]] int equations() const override { return model_.size(); }
   [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<ExplicitDamageStepper>(*this, impactor);
   }
-  [[nodiscard]] std::vector<std::string> warnings() const override {
-    if (auto w = plate_.strength_reduction_warning()) return {std::move(*w)};
-    return {};
-  }
 
-  const PlateModel& model_;
-  StepPolicyOptions options_;
-  DamagedPlateModel plate_;
-  EquationSubset equations_;
   CentralDifference scheme_;
 };
 
 ExplicitDamageStepper::ExplicitDamageStepper(const ExplicitDamagePolicy& policy, const Impactor& impactor)
-    : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
-      field_(policy.plate_.virgin_field()), f_int_(Eigen::VectorXd::Zero(policy.equations())),
-      a_next_(Eigen::VectorXd::Zero(policy.equations())),
+    : DamagedPlateStepper(policy, impactor), p_(policy), a_next_(Eigen::VectorXd::Zero(policy.equations())),
       contact_flexibility_(policy.scheme_.flexibility(loading_.sampler())) {}
 
 ContactSolution ExplicitDamageStepper::advance(long step, double t, const PlateState& s,
