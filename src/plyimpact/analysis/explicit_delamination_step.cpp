@@ -9,8 +9,9 @@
 // Nothing is solved: faces that clap after the impactor leaves, which cost the Newton policy ~10 solves
 // a step, cost one evaluation here. The stable step (CD5) comes from the elastic stack, K_plates plus the
 // interfaces' penalty K (which also holds closed faces apart); softening only lowers the frequencies. The
-// penalty usually sets it: two sub-laminates of masses per area m_u, m_l on a spring K per area vibrate at
-// ω² = K (1/m_u + 1/m_l), docs/delamination.md "The explicit step".
+// shear penalty usually sets it: it moves each face by its translation and its rotation times half its
+// thickness, and with the Mindlin rotary inertia ρh³/12 the faces of masses per area m_u, m_l vibrate at
+// ω² ≥ 4 K (1/m_u + 1/m_l) (DL9, docs/delamination.md "The explicit step").
 #include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/stacked_plate_step.hpp"
 #include "plyimpact/analysis/step_policy.hpp"

@@ -126,12 +126,22 @@ StackedPlateEvaluation StackedPlateModel::assemble(const Eigen::VectorXd& u,
                                                    CohesiveDamage damage) const {
   StackedPlateEvaluation out;
   out.force = K_plates_ * u;
-  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
-    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], out.force, tangent, damage);
-    out.dissipated += e.dissipated;
-    out.trial.interfaces.push_back(std::move(e.trial));
-  }
+  out.dissipated = add_interfaces(u, committed, out.force, out.trial, tangent, damage);
   return out;
+}
+
+double StackedPlateModel::add_interfaces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                         Eigen::VectorXd& force, StackedPlateState& trial,
+                                         std::vector<Eigen::Triplet<double>>* tangent,
+                                         CohesiveDamage damage) const {
+  trial.interfaces.resize(interfaces_.size());
+  double dissipated = 0.0;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], force, tangent, damage);
+    dissipated += e.dissipated;
+    trial.interfaces[i] = std::move(e.trial);
+  }
+  return dissipated;
 }
 
 StackedPlateEvaluation StackedPlateModel::evaluate(const Eigen::VectorXd& u,
@@ -165,14 +175,7 @@ double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const Stack
 double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
                                                Eigen::VectorXd& force, StackedPlateState& trial,
                                                CohesiveDamage damage) const {
-  trial.interfaces.resize(interfaces_.size());
-  double dissipated = 0.0;
-  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
-    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], force, nullptr, damage);
-    dissipated += e.dissipated;
-    trial.interfaces[i] = std::move(e.trial);
-  }
-  return dissipated;
+  return add_interfaces(u, committed, force, trial, nullptr, damage);
 }
 
 int StackedPlateModel::equation(int k, int node, int dof) const {

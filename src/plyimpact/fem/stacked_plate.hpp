@@ -134,6 +134,11 @@ private:
   [[nodiscard]] StackedPlateEvaluation assemble(const Eigen::VectorXd& u, const StackedPlateState& committed,
                                                 std::vector<Eigen::Triplet<double>>* tangent,
                                                 CohesiveDamage damage) const;
+  /// The interfaces' forces added to `force`, their trial states into `trial`, their tangents' triplets
+  /// into `tangent` unless it is null; returns the energy dissipated reaching the trial states [J].
+  double add_interfaces(const Eigen::VectorXd& u, const StackedPlateState& committed, Eigen::VectorXd& force,
+                        StackedPlateState& trial, std::vector<Eigen::Triplet<double>>* tangent,
+                        CohesiveDamage damage) const;
   /// The matrices `of` the sub-laminates placed on the diagonal of the stacked numbering.
   [[nodiscard]] SparseMatrix block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const;
 
