@@ -57,6 +57,36 @@ BENCHMARK(BM_Impact_Section36_15x11_FullEvent)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
+/// A velocity study on the §3.6 plate (15×11, the deck's point load, Δt = 1 µs, whole events): the case
+/// built once, 16 velocities from 1 to 4 m/s, then one more (2.5 m/s); arg 1: each run through the plate's
+/// impulse response at the contact point (contact_point_response.hpp), arg 0: each run solved in full. The
+/// time includes the case's set-up and, with arg 1, the impulse run. Counter `next_case_ms`: the wall time
+/// of the last run alone, once the response is there (the marginal cost of a case in a long sweep).
+void BM_Impact_Section36_VelocityStudy(benchmark::State& state) {
+  const bool contact_point = state.range(0) != 0;
+  RunRequest request;
+  request.history_every = 0;
+  request.contact_point_response = contact_point;
+  Impactor imp;
+  double peak = 0.0, next_case = 0.0;
+  for (auto _ : state) {
+    const ImpactCase impact(impact_case_description(section36(15, 11, std::nullopt)));
+    imp = impact.settings().impactor;
+    for (int i = 0; i < 16; ++i) {
+      imp.velocity = 1.0 + 0.2 * i;
+      request.impactor = imp;
+      peak = impact.run(request).peak_force;
+    }
+    imp.velocity = 2.5;
+    request.impactor = imp;
+    next_case = impact.run(request).wall_time;
+    benchmark::DoNotOptimize(peak);
+  }
+  state.counters["peak_force_4mps_N"] = peak;
+  state.counters["next_case_ms"] = next_case * 1e3;
+}
+BENCHMARK(BM_Impact_Section36_VelocityStudy)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 /// Setup cost: assembly, factorization of K̄ and the fundamental period for the end rule.
 void BM_Impact_Section36_15x11_Setup(benchmark::State& state) {
   const ImpactCaseDescription description = impact_case_description(section36(15, 11, std::nullopt));

@@ -376,6 +376,34 @@ TEST(SweepRun, SharedFactorizationGivesTheStandAloneNumbersBitForBit) {
               a[5]["results"]["peak_force"].get<double>());
 }
 
+TEST(SweepRun, ContactPointResponseGivesTheFullRunsNumbersToRounding) {
+  // A point load with the trapezoidal rule: the impactor cases follow the plate through its impulse
+  // response at the impact point (analysis/contact_point_response.hpp) unless plate_response = "full";
+  // the two tables agree to rounding and each record says which was used. A moved impact point gets
+  // its own response.
+  const std::string point = "[contact]\nload = \"point\"\n";
+  const std::vector<std::string> set = {"impactor.velocity=1,3", "impactor.mass=0.1,1.0",
+                                        "impactor.x=0.05,0.0635"};
+  const Sweep automatic = Sweep::from_text(plate_deck(point), "deck.toml", set);
+  const Sweep full =
+      Sweep::from_text(plate_deck(point + "[sweep]\nplate_response = \"full\"\n"), "deck.toml", set);
+  int fa = 0, ff = 0;
+  const auto a = run_in_process(automatic, scratch("contact-point"), 1, true, &fa);
+  const auto b = run_in_process(full, scratch("contact-point-full"), 1, true, &ff);
+  ASSERT_EQ(a.size(), 8U);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(a[i]["results"]["plate_response"], "contact point");
+    EXPECT_EQ(b[i]["results"]["plate_response"], "full");
+    EXPECT_EQ(a[i]["results"]["steps"], b[i]["results"]["steps"]);
+    EXPECT_EQ(a[i]["results"]["time_of_peak_force"], b[i]["results"]["time_of_peak_force"]);
+    for (const char* key : {"peak_force", "peak_contact_deflection", "max_indentation", "rebound_velocity"}) {
+      const double x = a[i]["results"][key].get<double>(), y = b[i]["results"][key].get<double>();
+      EXPECT_NEAR(x, y, 1e-10 * std::abs(y)) << key;
+    }
+  }
+}
+
 std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
   std::istringstream in(text);

@@ -194,6 +194,8 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   loop.adaptive = settings_.adaptive;
   loop.fundamental_period = fundamental_period_;
   loop.cancel = request.cancel;
+  loop.contact_point_response = request.contact_point_response && request.observers.empty() &&
+                                request.history_every == 0 && request.field_times.empty();
   if (!settings_.rigid_target && !settings_.nonlinear)
     loop.linear_thickness = impacted_laminate(description_).thickness();
   // Guards that warn (docs/robustness.md): a Δt too coarse for the contact, an impact point on an

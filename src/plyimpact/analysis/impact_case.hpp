@@ -108,6 +108,11 @@ struct RunRequest {
   int history_every = 1;                     ///< ImpactResult::history every k-th step; 0: none
   std::vector<double> field_times;           ///< ImpactResult::fields at these times [s]
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
+  /// Follow the plate at the contact point alone, through its impulse response there (computed once per
+  /// impact point and shared by the case's runs; contact_point_response.hpp), where that is exact: the
+  /// linear plate under a point load, the trapezoidal rule, fixed Δt. Only when nothing looks at the
+  /// plate: no observers, no history, no fields. ImpactResult::contact_point_response says whether it was.
+  bool contact_point_response = false;
 };
 
 class ImpactCase {

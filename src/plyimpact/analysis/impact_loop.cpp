@@ -201,9 +201,12 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     control.emplace(nc, *s.adaptive,
                     rigid_target_indentation(imp.mass, imp.velocity, k, contact_exponent(imp.nose)));
   }
-  const std::unique_ptr<PlateStepper> plate = policy.start(imp);
-  const auto n = static_cast<Eigen::Index>(policy.equations());
-  const bool rigid = n == 0;
+  std::unique_ptr<PlateStepper> plate;
+  if (s.contact_point_response && !control) plate = policy.start_at_contact_point(imp);
+  if (!plate) plate = policy.start(imp);
+  const auto equations = static_cast<Eigen::Index>(policy.equations());
+  const bool rigid = equations == 0;
+  const Eigen::Index n = plate->contact_point_only() ? 1 : equations; // the state's size
 
   HertzContact law(k, contact, contact_exponent(imp.nose));
   NewmarkStepper impactor(nc, imp.mass, 0.0, imp.velocity);
@@ -212,7 +215,8 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
   ImpactResult r;
   r.warnings = s.warnings;
-  r.dofs = static_cast<int>(n);
+  r.dofs = static_cast<int>(equations);
+  r.contact_point_response = plate->contact_point_only();
   r.inplane_eliminated = policy.inplane_eliminated();
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
   double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0, law_work = 0.0;

@@ -36,6 +36,9 @@ struct LoopSettings {
   /// target): a peak deflection above guards.hpp's max_linear_deflection of it warns [m].
   std::optional<double> linear_thickness;
   std::vector<std::string> warnings; ///< found before the run (guards.hpp): start ImpactResult::warnings
+  /// the plate followed at the contact point alone (StepPolicy::start_at_contact_point) where the policy
+  /// can; the observers must not ask for the field
+  bool contact_point_response = false;
 };
 
 /// Runs one impact event. The result's summary values are filled in; histories are the observers' job.

@@ -132,6 +132,9 @@ struct ImpactResult {
   std::vector<std::string> warnings; ///< guards.hpp: coarse Δt, mesh, cut-short or suspect run, w/h
   double wall_time = 0.0;            ///< [s]
   int dofs = 0;                      ///< equations in the time loop
+  /// the plate was followed at the contact point alone, through its impulse response there
+  /// (contact_point_response.hpp), instead of solved with K̄ every step
+  bool contact_point_response = false;
   bool inplane_eliminated = false;
   std::optional<NewtonStatistics> newton; ///< geometrically non-linear and progressive-damage runs
   std::optional<ProgressiveDamageResult> progressive; ///< progressive-damage runs only

@@ -1,6 +1,7 @@
 // The linear step policy (SPEC §4): K̄ = K + M/(βΔt²) factored once per case; each step one
 // back-substitution for the load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a), the exact scalar
 // contact solve with ws = sᵀû + c Fc, c = sᵀK̄⁻¹s, and u_{n+1} = û + Fc K̄⁻¹ s_load.
+#include "plyimpact/analysis/contact_point_response.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -38,8 +39,13 @@ public:
   [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override { return sw().dot(u); }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
   void set_time_step_level(int level) override;
+  /// The step with a given contact force instead of the contact problem (the impulse run of
+  /// contact_point_response.hpp).
+  void load_step(const PlateState& s, double force, Eigen::VectorXd& u_next);
 
 private:
+  /// û = K̄⁻¹ M (c0 u + c2 v + c3 a) into u_hat_: one back-substitution.
+  void predict(const PlateState& s);
   [[nodiscard]] const Eigen::VectorXd& sw() const { return loadings_.front()->sampler(); }
 
   const LinearStepPolicy& p_;
@@ -79,6 +85,7 @@ public:
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<LinearStepper>(*this, impactor);
   }
+  [[nodiscard]] std::unique_ptr<PlateStepper> start_at_contact_point(const Impactor& impactor) const override;
 
   [[nodiscard]] double time_one_solve(int repeats) const override {
     if (equations() == 0) return 0.0;
@@ -148,6 +155,16 @@ private:
         dt, held, factor_memory_.factor_nonzeros, bytes / 1e6, *options_.memory_limit_bytes / 1e6));
   }
 
+  /// The impulse response at (x, y), computed on first use and kept for the runs that follow.
+  [[nodiscard]] std::shared_ptr<const ContactPointResponse>
+  contact_point_response(const Impactor& impactor) const;
+
+  struct PointResponse {
+    double x = 0.0, y = 0.0; ///< the impact point [m]
+    std::shared_ptr<const ContactPointResponse> response;
+  };
+  mutable std::mutex responses_mutex_;
+  mutable std::vector<PointResponse> responses_;
   /// of level 0's factor (when the case has a memory limit), set once by its factorization in the constructor
   mutable FactorMemoryEstimate factor_memory_;
   mutable std::array<std::once_flag, max_levels> once_;
@@ -177,15 +194,19 @@ void LinearStepper::set_time_step_level(int level) {
   level_ = level;
 }
 
-ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateState& s,
-                                       const ContactStep& contact, Eigen::VectorXd& u_next) {
+void LinearStepper::predict(const PlateState& s) {
   const TimeStepLevel& level = p_.level(level_);
   const NewmarkCoefficients& nc = level.newmark;
-  const ContactLoading& loading = *loadings_[static_cast<std::size_t>(level_)];
-  // 1. Load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a): one back-substitution.
   predictor_ = nc.c0 * s.u + nc.c2 * s.v + nc.c3 * s.a;
   p_.M_.apply(predictor_, rhs_);
   level.factor.solve(rhs_, u_hat_, workspace_);
+}
+
+ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateState& s,
+                                       const ContactStep& contact, Eigen::VectorXd& u_next) {
+  const ContactLoading& loading = *loadings_[static_cast<std::size_t>(level_)];
+  // 1. Load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a): one back-substitution.
+  predict(s);
   // 2. Scalar contact problem with ws affine in Fc.
   const ContactSolution cs = loading.solve(contact, sw().dot(u_hat_));
   alpha_ = cs.alpha;
@@ -193,6 +214,12 @@ ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateS
   u_next = u_hat_;
   loading.add_response(cs.alpha, cs.force, u_next);
   return cs;
+}
+
+void LinearStepper::load_step(const PlateState& s, double force, Eigen::VectorXd& u_next) {
+  predict(s);
+  u_next = u_hat_;
+  loadings_[static_cast<std::size_t>(level_)]->add_response(0.0, force, u_next);
 }
 
 double LinearStepper::kinetic_energy(const PlateState& s) const {
@@ -206,6 +233,57 @@ double LinearStepper::strain_energy(const PlateState& s, double force) const {
 
 void LinearStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
   p_.equations_.expand(u, out);
+}
+
+/// The plate from rest under F_1 = 1 and no force after it, one step per call (CP1's g).
+class ImpulseRun {
+public:
+  ImpulseRun(const LinearStepPolicy& policy, const Impactor& impactor)
+      : stepper_(policy, impactor),
+        nc_(policy.level(0).newmark), s_{Eigen::VectorXd::Zero(policy.equations()),
+                                         Eigen::VectorXd::Zero(policy.equations()),
+                                         Eigen::VectorXd::Zero(policy.equations())},
+        u_next_(policy.equations()), a_next_(policy.equations()) {}
+
+  /// One step with the contact force `force`, the loop's Newmark update; swᵀu after it.
+  double operator()(double force) {
+    stepper_.load_step(s_, force, u_next_);
+    stepper_.next_acceleration(nc_, s_, u_next_, a_next_);
+    s_.v += nc_.c6 * s_.a + nc_.c7 * a_next_;
+    s_.u.swap(u_next_);
+    s_.a.swap(a_next_);
+    return stepper_.contact_deflection(s_.u);
+  }
+
+private:
+  LinearStepper stepper_;
+  NewmarkCoefficients nc_;
+  PlateState s_;
+  Eigen::VectorXd u_next_, a_next_;
+};
+
+std::shared_ptr<const ContactPointResponse>
+LinearStepPolicy::contact_point_response(const Impactor& impactor) const {
+  const std::lock_guard lock(responses_mutex_);
+  for (const PointResponse& r : responses_)
+    if (r.x == impactor.x && r.y == impactor.y) return r.response;
+  auto run = std::make_shared<ImpulseRun>(*this, impactor);
+  auto response = std::make_shared<const ContactPointResponse>([run](double force) { return (*run)(force); });
+  responses_.push_back({impactor.x, impactor.y, response});
+  return response;
+}
+
+std::unique_ptr<PlateStepper> LinearStepPolicy::start_at_contact_point(const Impactor& impactor) const {
+  // Exact only where the load does not depend on the indentation, and the energy known only with the
+  // trapezoidal rule (contact_point_response.hpp).
+  const NewmarkCoefficients& nc = options_.newmark;
+  if (options_.load != ContactLoad::point || nc.beta != 0.25 || nc.gamma != 0.5 || equations() == 0)
+    return nullptr;
+  auto loading = std::make_shared<ContactLoading>(model_, equations_, impactor, options_.load);
+  loading->set_solver([&factor = level(0).factor](const Eigen::VectorXd& b) { return factor.solve(b); });
+  return std::make_unique<ContactPointStepper>(
+      contact_point_response(impactor),
+      [loading](const ContactStep& contact, double w_hat) { return loading->solve(contact, w_hat); });
 }
 
 } // namespace

@@ -12,6 +12,9 @@
 //                      the interfaces soften and the iterations slow down.
 //   RigidTarget        no plate (closed-form checks of the contact law).
 //
+// The linear policy can also start a stepper that follows the contact point alone through the plate's
+// impulse response (contact_point_response.hpp), for runs that look at nothing else.
+//
 // A policy is built once per case (it owns what does not depend on the impactor: matrices and their
 // factorization) and starts a PlateStepper for each run (what does: the contact point and load).
 #include "plyimpact/analysis/contact_load.hpp"
@@ -68,6 +71,9 @@ public:
   [[nodiscard]] virtual const DamageField* damage() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
+  /// True when the plate state is the contact point's alone, (ws, ẇs, ẅs) (contact_point_response.hpp):
+  /// no field, and the plate's energy all in strain_energy().
+  [[nodiscard]] virtual bool contact_point_only() const { return false; }
   /// u in the model's numbering.
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
   /// The next steps are Δt/2^level long, Δt of StepPolicyOptions::newmark (error-controlled runs, only
@@ -102,6 +108,13 @@ public:
   /// it; the case then assembles them, modal_analysis.hpp) [s].
   [[nodiscard]] virtual std::optional<double> fundamental_period() const { return std::nullopt; }
   [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor) const = 0;
+  /// A stepper that follows only the contact point through the plate's impulse response there, computed
+  /// once per impact point and shared by the runs (contact_point_response.hpp); nullptr where that is not
+  /// exact (every policy but the linear plate under a point load with the trapezoidal rule).
+  [[nodiscard]] virtual std::unique_ptr<PlateStepper>
+  start_at_contact_point(const Impactor& /*impactor*/) const {
+    return nullptr;
+  }
   /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
   [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
   /// What the policy changed about the case that the user must know (e.g. strengths lowered to a band

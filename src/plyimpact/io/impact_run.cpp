@@ -112,6 +112,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   run.history_every = 0; // history.csv is streamed to the folder below, never kept in memory
   run.field_times = deck.field_times;
   run.observers = options.observers;
+  // ImpactCase::run checks the rest (no observers, no history, no fields)
+  run.contact_point_response = options.contact_point_response && !options.output_dir;
   std::optional<DamageTracker> damage;
   if (!criteria.empty() && plate)
     run.observers.push_back(&damage.emplace(model, criteria, damage_options_from_deck(deck)));

@@ -26,6 +26,9 @@ struct ImpactRunOptions {
   bool pictures = true;                      ///< damage maps (gnuplot) in the results folder
   std::vector<ImpactObserver*> observers;    ///< more observers (progress display)
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
+  /// RunRequest::contact_point_response: where nothing else looks at the plate (no folder, no damage
+  /// criteria, no probes, no observers), follow it at the contact point alone when that is exact
+  bool contact_point_response = false;
 };
 
 // NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's move does not throw

@@ -57,11 +57,12 @@ constexpr std::array<Column, 14> result_columns{{
 /// Columns added later, after `error`, so that every earlier column keeps its place (scripts that read
 /// the table by position). Empty where they do not apply: onset damage and threshold runs compute no
 /// dissipation or damaged area; runs without [delamination] no delaminated area.
-constexpr std::array<Column, 4> later_columns{{
+constexpr std::array<Column, 5> later_columns{{
     {"damage_dissipation_J", "damage_dissipation"},
     {"damage_area_m2", "damage_area"},
     {"delamination_dissipation_J", "delamination_dissipation"},
     {"delamination_area_m2", "delamination_area"},
+    {"plate_response", "plate_response"},
 }};
 
 std::string csv_field(const std::string& s) {
@@ -323,6 +324,7 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   const ThresholdResult r = search_threshold(impact, criterion, to);
   results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
   results["threshold_criterion"] = criterion.name;
+  results["plate_response"] = "full"; // every trial looks at the plies' stresses or damage
   if (r.damage)
     put_damage_reached(results, criterion.name, *r.damage);
   else
@@ -355,6 +357,8 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
   results["contacts"] = r.episodes.size();
   results["steps"] = r.steps;
   results["dt"] = o.settings.dt;
+  // how the plate was solved: every step with K̄, or through its impulse response at the contact point
+  results["plate_response"] = r.contact_point_response ? "contact point" : "full";
   if (r.progressive) { // ply damage (docs/progressive_damage.md); absent for onset runs
     results["damage_dissipation"] = r.progressive->dissipated.sum();
     results["damage_area"] = r.progressive->projected_damage_area;
@@ -407,6 +411,8 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
     run.history = options_.case_folders; // the table needs no history
     run.pictures = false;
     run.cancel = options_.cancel;
+    // where exact and nothing looks at the field (ImpactCase::run)
+    run.contact_point_response = sweep_.spec().contact_point_response;
     const ImpactRunOutcome outcome = run_impact(deck, *cache_->impact, run);
     if (options_.cancel != nullptr && options_.cancel->load() && !outcome.result.complete)
       return std::nullopt;

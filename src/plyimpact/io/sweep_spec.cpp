@@ -261,13 +261,15 @@ namespace {
 void read_sweep_table(const toml::table& sweep, const std::string& source, SweepSpec& spec) {
   const auto at = [&](const toml::node& n) { return located(source, n.source()); };
   const TableReader table(sweep, "sweep", source);
-  table.only({"mode", "analysis", "values", "random"});
+  table.only({"mode", "analysis", "values", "random", "plate_response"});
   if (const auto mode = table.optional_choice<SweepMode>(
           "mode", {{"product", SweepMode::product}, {"zip", SweepMode::zip}}))
     spec.mode = *mode;
   if (const auto kind = table.optional_choice<AnalysisKind>(
           "analysis", {{"impact", AnalysisKind::impact}, {"threshold", AnalysisKind::threshold}}))
     spec.analysis = *kind;
+  if (const auto response = table.optional_choice<bool>("plate_response", {{"auto", true}, {"full", false}}))
+    spec.contact_point_response = *response;
   if (const toml::node* v = sweep.get("values")) {
     const toml::table* t = v->as_table();
     if (t == nullptr)

@@ -53,6 +53,10 @@ struct SweepSpec {
   std::vector<RandomParameter> random;          ///< in the order written
   long samples = 0;                             ///< Monte Carlo samples per grid point (0: none)
   std::uint64_t seed = 0;
+  /// plate_response = "auto": impact cases that look at nothing but the contact point follow the plate
+  /// through its impulse response there where that is exact (analysis/contact_point_response.hpp);
+  /// "full": every case solves the plate every step
+  bool contact_point_response = true;
 };
 
 /// One case of a sweep: its index and the value of every swept key (axes, then random keys).
