@@ -31,16 +31,31 @@ std::size_t ContactPointResponse::length() const {
 ContactPointStepper::ContactPointStepper(std::shared_ptr<const ContactPointResponse> response,
                                          ContactSolve solve)
     : response_(std::move(response)), g_(response_->at_least(1)), solve_(std::move(solve)) {
-  forces_.reserve(g_->size() + 1);
-  forces_.push_back(0.0); // F_0: the plate starts at rest
+  reversed_forces_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(g_->size()) + 1); // F = 0 from rest
+}
+
+void ContactPointStepper::store_force(long k, double force) {
+  const Eigen::Index size = reversed_forces_.size();
+  if (k >= size) { // grow at the front: the stored forces keep their distance from the end
+    Eigen::VectorXd longer = Eigen::VectorXd::Zero(std::max<Eigen::Index>(2 * size, k + 1));
+    longer.tail(size) = reversed_forces_;
+    reversed_forces_.swap(longer);
+  }
+  reversed_forces_(reversed_forces_.size() - 1 - k) = force;
 }
 
 double ContactPointStepper::free_deflection(long n, const std::vector<double>& g) const {
+  // Over a span of steps k ∈ [b, e) in contact, Σ g_{n−k} F_k = Σ_{j=n−e+1..n−b} g_j F_{n−j}: with F
+  // stored in reverse (F_{n−j} at size − 1 − n + j) both ranges increase with j.
+  const Eigen::Index last = reversed_forces_.size() - 1;
   double w = 0.0;
   for (const Span& span : in_contact_) {
     const long end = std::min(span.end, n); // F_n itself is the unknown of the step
-    for (long k = span.begin; k < end; ++k)
-      w += g[static_cast<std::size_t>(n - k)] * forces_[static_cast<std::size_t>(k)];
+    if (end <= span.begin) continue;
+    const long j0 = n - end + 1;
+    const auto length = static_cast<Eigen::Index>(end - span.begin);
+    const Eigen::Map<const Eigen::VectorXd> response(g.data() + j0, length);
+    w += response.dot(reversed_forces_.segment(last - n + j0, length));
   }
   return w;
 }
@@ -52,8 +67,7 @@ ContactSolution ContactPointStepper::advance(long step, double /*t*/, const Plat
   const std::vector<double>& g = *g_;
   const double w_hat = free_deflection(step, g); // (CP1) without the step's own force
   const ContactSolution cs = solve_(contact, w_hat);
-  forces_.resize(n + 1);
-  forces_[n] = cs.force;
+  store_force(step, cs.force);
   if (cs.force != 0.0) {
     if (in_contact_.empty() || in_contact_.back().end < step)
       in_contact_.push_back({step, step + 1});

@@ -79,7 +79,11 @@ private:
   std::shared_ptr<const ContactPointResponse> response_;
   std::shared_ptr<const std::vector<double>> g_;
   ContactSolve solve_;
-  std::vector<double> forces_; ///< F_k at index k (F_0 = 0)
+  /// F_k of step k at index size − 1 − k, in reverse order, so that the sum (CP1) over a span is the dot
+  /// product of two contiguous, increasing ranges (vectorised by Eigen); grown at the front when full
+  Eigen::VectorXd reversed_forces_;
+  /// F_k into reversed_forces_, growing it when k is beyond its size.
+  void store_force(long k, double force);
   struct Span {
     long begin = 0, end = 0; ///< steps [begin, end) with F ≠ 0
   };
