@@ -59,7 +59,8 @@ public:
   ExplicitDelaminationPolicy(const PlateModel& model, const StepPolicyOptions& options,
                              const DelaminationSettings& settings)
       : StackedPlatePolicy(model, options, settings),
-        scheme_(elastic_stiffness(stack_), M_, options.newmark, explicit_key, options.explicit_omega_max) {}
+        scheme_(elastic_stiffness(stack_), M_, options.newmark, explicit_key, options.explicit_omega_max),
+        K_plates_by_rows_(stack_.plate_stiffness()) {}
 
   [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
@@ -67,6 +68,9 @@ public:
   }
 
   CentralDifference scheme_;
+  /// K_plates stored by rows for the step's product: each entry of K u is one sequential sum over its row,
+  /// in the order (and so with the bits) of the column-wise product, without scattering into K u
+  Eigen::SparseMatrix<double, Eigen::RowMajor> K_plates_by_rows_;
 };
 
 ExplicitDelaminationStepper::ExplicitDelaminationStepper(const ExplicitDelaminationPolicy& policy,
@@ -80,7 +84,7 @@ ContactSolution ExplicitDelaminationStepper::advance(long step, double t, const 
   p_.scheme_.predict(s, u_next);                                                 // CD1
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
   p_.scheme_.check_contact(step, t, cs, contact, contact_flexibility_);          // CD6
-  Ku_.noalias() = p_.stack_.plate_stiffness() * u_next;
+  Ku_.noalias() = p_.K_plates_by_rows_ * u_next;
   f_ = Ku_;
   StackedPlateState trial;
   const double dissipated =
