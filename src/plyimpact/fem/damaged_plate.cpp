@@ -284,6 +284,7 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
   if (K0_.nonZeros() != pattern.nonZeros())
     throw std::logic_error("damaged plate: the stiffness does not have the model's sparsity pattern");
   slot_ = element_slots(model, K0_);
+  K0_by_rows_ = K0_;
 }
 
 DamagedPlateModel::~DamagedPlateModel() = default;
@@ -425,7 +426,7 @@ void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t 
 
 Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
                                                   DamageField& field) const {
-  Eigen::VectorXd f = K0_ * u;
+  Eigen::VectorXd f = K0_by_rows_ * u;
   for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
     add_section_force(field, slot, evaluate_element(field.active_[slot].element, u, dt, field), f);
   return f;
@@ -468,7 +469,7 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
 }
 
 Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const {
-  Eigen::VectorXd f = K0_ * u;
+  Eigen::VectorXd f = K0_by_rows_ * u;
   for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
     add_section_force(field, slot, frozen_sections(field, slot, u), f);
   return f;

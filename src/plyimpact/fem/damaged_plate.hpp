@@ -182,6 +182,9 @@ private:
   const PlateModel& model_;
   ProgressiveDamageSettings settings_;
   SparseMatrix K0_;
+  /// K0 stored by rows for K0 u: each entry one sequential sum over its row, the bits of the column-wise
+  /// product without its scatter
+  Eigen::SparseMatrix<double, Eigen::RowMajor> K0_by_rows_;
   std::vector<double> length_, area_;
   std::vector<int> class_of_element_; ///< length class of each element
   std::vector<double> class_length_;  ///< L_c of each class (0: the deck's strengths)
