@@ -9,6 +9,12 @@
 //                                      (unit point load at the plate centre)
 //   ordering/<ordering>/<nx>x<ny>      one solve with CHOLMOD's simplicial LDLᵀ of K̄ in the AMD, METIS
 //                                      or NESDIS ordering; nnz_L of that factor
+//   mixed_precision/<nx>x<ny>          K̄ x = f to double accuracy with a single-precision factor (Eigen's
+//                                      SimplicialLDLT<float>, AMD) and iterative refinement: residual in
+//                                      double, correction by the float factor, until the residual is that of
+//                                      the double solve; counters: refinements, error against the double
+//                                      solve
+//   float_solve/<nx>x<ny>              one solve with that float factor alone (the floor of the above)
 //
 // for meshes 15×11 (the thesis's), 30×22, 60×44, 120×88 and both SpdSolver backends (CHOLMOD
 // supernodal LLᵀ, Eigen SimplicialLDLT). Counters: dofs = model.size(), nnz_K = stored non-zeros of
@@ -24,6 +30,7 @@
 #include "plyimpact/laminate/layup.hpp"
 
 #include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -188,6 +195,66 @@ void ordering(benchmark::State& state, int nx, int ny, FillOrdering fill) {
   state.counters["nnz_L"] = static_cast<double>(solver.factor_nonzeros() + c.Keff.rows());
 }
 
+/// The single-precision factor of K̄ and the double solve it must match.
+struct MixedPrecision {
+  Eigen::SparseMatrix<float> Kbar;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<float>> factor;
+  Eigen::VectorXd exact;        ///< CHOLMOD's double solve
+  double target_residual = 0.0; ///< ‖f − K̄ x‖ of that solve
+
+  explicit MixedPrecision(const Case& c) : Kbar(c.Keff.cast<float>()) {
+    factor.compute(Kbar);
+    if (factor.info() != Eigen::Success) throw std::runtime_error("float factor of K̄ failed");
+    SpdSolver solver(SparseSolverKind::cholmod_simplicial, FillOrdering::amd);
+    solver.factorize(c.Keff);
+    exact = solver.solve(c.f);
+    target_residual = (c.f - c.Keff * exact).norm();
+  }
+
+  /// x with ‖f − K̄ x‖ ≤ 2 × the double solve's residual; returns the number of float solves.
+  int solve(const Case& c, Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+    x.setZero();
+    r = c.f;
+    for (int k = 1; k <= 20; ++k) {
+      x += factor.solve(r.cast<float>()).cast<double>();
+      r = c.f - c.Keff * x;
+      if (r.norm() <= 2.0 * target_residual) return k;
+    }
+    return -1; // did not reach double accuracy
+  }
+};
+
+void mixed_precision(benchmark::State& state, int nx, int ny) {
+  const Case& c = get_case(nx, ny);
+  const MixedPrecision mp(c);
+  Eigen::VectorXd x(c.f.size()), r(c.f.size());
+  int solves = 0;
+  for (auto _ : state) {
+    solves = mp.solve(c, x, r);
+    benchmark::DoNotOptimize(x.data());
+    benchmark::ClobberMemory();
+  }
+  set_size_counters(state, c);
+  state.counters["float_solves"] = solves;
+  state.counters["error_vs_double"] = (x - mp.exact).norm() / mp.exact.norm();
+  state.counters["nnz_L"] =
+      static_cast<double>(mp.factor.matrixL().nestedExpression().nonZeros() + c.f.size());
+}
+
+void float_solve(benchmark::State& state, int nx, int ny) {
+  const Case& c = get_case(nx, ny);
+  const MixedPrecision mp(c);
+  const Eigen::VectorXf f = c.f.cast<float>();
+  Eigen::VectorXf x(f.size());
+  for (auto _ : state) {
+    x = mp.factor.solve(f);
+    benchmark::DoNotOptimize(x.data());
+    benchmark::ClobberMemory();
+  }
+  set_size_counters(state, c);
+  state.counters["error_vs_double"] = (x.cast<double>() - mp.exact).norm() / mp.exact.norm();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -227,6 +294,15 @@ int main(int argc, char** argv) {
           ny, fill)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
+  for (const auto& [nx, ny] : meshes) {
+    const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
+    benchmark::RegisterBenchmark(("mixed_precision/" + mesh).c_str(), mixed_precision, nx, ny)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("float_solve/" + mesh).c_str(), float_solve, nx, ny)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
