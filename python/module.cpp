@@ -167,6 +167,34 @@ SweepOutput run_sweep(const Deck& deck, const std::vector<std::string>& set_opti
   return out;
 }
 
+/// A plate built once (its matrices, factorization and, for a linear plate under a point load, its
+/// impulse response at the impact point) and run for decks that differ only in the impactor and contact.k:
+/// the engine's ImpactCase, without history or output folder.
+class ImpactStudy {
+public:
+  ImpactStudy(const Deck& deck, bool nonlinear) {
+    plyimpact::require_sections(deck, plyimpact::AnalysisKind::impact);
+    plyimpact::check_memory_before_assembly(deck);
+    const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
+    plyimpact::check_memory_before_assembly(description);
+    case_ = std::make_unique<plyimpact::ImpactCase>(description);
+  }
+
+  /// summary.json's text of `deck` run on this plate, with "plate_response" added.
+  [[nodiscard]] std::string run(const Deck& deck) const {
+    plyimpact::ImpactRunOptions options;
+    options.history = false;
+    options.contact_point_response = true;
+    const plyimpact::ImpactRunOutcome out = plyimpact::run_impact(deck, *case_, options);
+    nlohmann::json summary = out.summary;
+    summary["plate_response"] = out.result.contact_point_response ? "contact point" : "full";
+    return summary.dump();
+  }
+
+private:
+  std::unique_ptr<plyimpact::ImpactCase> case_;
+};
+
 } // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -218,6 +246,19 @@ PYBIND11_MODULE(_core, m) {
       py::arg("deck"), py::arg("output_dir") = py::none(), py::arg("overwrite") = false,
       py::arg("nonlinear") = false, py::arg("history") = true,
       "Runs the deck's impact; returns (summary JSON text, notes, history column names, history rows).");
+  py::class_<ImpactStudy>(m, "ImpactStudy", "A plate built once, run for many impactors")
+      .def(py::init([](const Deck& deck, bool nonlinear) {
+             const py::gil_scoped_release release;
+             return std::make_unique<ImpactStudy>(deck, nonlinear);
+           }),
+           py::arg("deck"), py::arg("nonlinear") = false)
+      .def(
+          "run",
+          [](const ImpactStudy& study, const Deck& deck) {
+            const py::gil_scoped_release release;
+            return study.run(deck);
+          },
+          py::arg("deck"), "summary.json text of `deck`'s impactor on the study's plate");
   m.def(
       "run_plate_analysis",
       [](const Deck& deck, const std::string& kind, const std::optional<std::filesystem::path>& output_dir,

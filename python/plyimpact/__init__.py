@@ -39,6 +39,7 @@ __all__ = [
     "FolderHoldsResults",
     "FolderInUse",
     "ImpactRun",
+    "ImpactStudy",
     "Laminate",
     "deck",
     "impact",
@@ -225,6 +226,31 @@ def impact(
     out = None if output_dir is None else os.fspath(output_dir)
     summary, notes, columns, rows = _core.run_impact(d._core, out, overwrite, nonlinear, history)
     return ImpactRun(json.loads(summary), list(notes), list(columns), rows)
+
+
+class ImpactStudy:
+    """A plate built once and hit by many impactors: the matrices, the factorization and, for a linear
+    plate under a point load with the trapezoidal rule, the plate's impulse response at the impact point
+    (one run's worth of work) are kept, so each further impactor on a linear plate costs a convolution
+    (docs/sweep.md, "Reusing the plate's response"). ``run`` takes the keys of ``[impactor]`` and
+    ``contact_k`` and returns summary.json's dict with ``plate_response`` ("contact point" or "full").
+    The time step must not change between runs: give ``[time] dt`` a number, not "auto"."""
+
+    def __init__(self, case: Deck | str | os.PathLike[str], *, nonlinear: bool = False):
+        self.deck = case if isinstance(case, Deck) else load(case)
+        self._core = _core.ImpactStudy(self.deck._core, nonlinear)
+
+    def run(self, *, contact_k: float | None = None, **impactor: Any) -> dict[str, Any]:
+        """The impact of the study's plate by the deck's impactor with ``impactor`` keys replaced
+        (``velocity=3.0``, ``mass=0.5``, ...) and ``contact_k`` as ``[contact] k``."""
+        values: dict[str, Any] = {f"impactor.{k}": v for k, v in impactor.items()}
+        if contact_k is not None:
+            values["contact.k"] = contact_k
+        d = self.deck.replace(values) if values else self.deck
+        return json.loads(self._core.run(d._core))
+
+    def __repr__(self) -> str:
+        return f"<plyimpact.ImpactStudy {self.deck.source!r}>"
 
 
 class Laminate:

@@ -239,3 +239,36 @@ def test_an_edited_deck_keeps_its_gmsh_mesh_file(examples):
     thin_w = plyimpact.static(base)["center_deflection"]
     thick_w = plyimpact.static(thick)["center_deflection"]
     assert 0.1 < thick_w / thin_w < 0.2
+
+
+def test_impact_study_runs_many_impactors_on_one_plate(examples):
+    """ImpactStudy keeps the plate: on the thesis's linear plate under a point force every impactor
+    after the first goes through the plate's impulse response at the impact point (a convolution,
+    docs/sweep.md), which must give each impactor's own full run to rounding; a deck with the Hertz
+    pressure (not a convolution) runs in full and gives the full run's numbers bit for bit."""
+    deck = plyimpact.load("examples/thesis-4.2-velocity-2.92.toml")
+    study = plyimpact.ImpactStudy(deck)
+    for velocity, mass in [(2.92, None), (1.0, None), (2.0, 1.0)]:
+        impactor = {"velocity": velocity} if mass is None else {"velocity": velocity, "mass": mass}
+        r = study.run(**impactor)
+        full = plyimpact.impact(deck.replace(impactor=impactor), history=False)
+        assert r["plate_response"] == "contact point"
+        assert r["steps"] == full["steps"]
+        assert r["time_of_peak_force"] == full["time_of_peak_force"]
+        for key in ["peak_force", "peak_contact_deflection", "max_indentation", "rebound_velocity"]:
+            assert r[key] == pytest.approx(full[key], rel=1e-10), key
+    pressure = deck.replace({"contact.load": "hertz-pressure"})
+    r = plyimpact.ImpactStudy(pressure).run(velocity=1.5)
+    full = plyimpact.impact(pressure.replace({"impactor.velocity": 1.5}), history=False)
+    assert r["plate_response"] == "full"
+    assert r["peak_force"] == full["peak_force"]
+    assert r["rebound_velocity"] == full["rebound_velocity"]
+
+
+def test_impact_study_refuses_another_time_step(examples):
+    """A study's plate is factored for one Δt: an impactor whose dt = "auto" resolves to another step is
+    refused with the engine's message, not run on the wrong factor."""
+    deck = plyimpact.load("examples/thesis-4.2-velocity-2.92.toml").replace({"time.dt": "auto"})
+    study = plyimpact.ImpactStudy(deck)
+    with pytest.raises(ValueError, match="same time step"):
+        study.run(velocity=0.5, mass=5.0)
