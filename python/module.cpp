@@ -187,7 +187,7 @@ public:
     options.contact_point_response = true;
     const plyimpact::ImpactRunOutcome out = plyimpact::run_impact(deck, *case_, options);
     nlohmann::json summary = out.summary;
-    summary["plate_response"] = out.result.contact_point_response ? "contact point" : "full";
+    summary["plate_response"] = plyimpact::plate_response_name(out.result);
     return summary.dump();
   }
 

@@ -23,14 +23,8 @@ std::shared_ptr<const std::vector<double>> ContactPointResponse::at_least(std::s
   return g_;
 }
 
-std::size_t ContactPointResponse::length() const {
-  const std::lock_guard lock(mutex_);
-  return g_->size();
-}
-
-ContactPointStepper::ContactPointStepper(std::shared_ptr<const ContactPointResponse> response,
-                                         ContactSolve solve)
-    : response_(std::move(response)), g_(response_->at_least(1)), solve_(std::move(solve)) {
+ContactPointStepper::ContactPointStepper(std::shared_ptr<const ContactPointResponse> response)
+    : response_(std::move(response)), g_(response_->at_least(1)) {
   reversed_forces_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(g_->size()) + 1); // F = 0 from rest
 }
 
@@ -66,7 +60,7 @@ ContactSolution ContactPointStepper::advance(long step, double /*t*/, const Plat
   if (g_->size() <= n) g_ = response_->at_least(n + 1);
   const std::vector<double>& g = *g_;
   const double w_hat = free_deflection(step, g); // (CP1) without the step's own force
-  const ContactSolution cs = solve_(contact, w_hat);
+  const ContactSolution cs = contact.solve(w_hat, g[0]);
   store_force(step, cs.force);
   if (cs.force != 0.0) {
     if (in_contact_.empty() || in_contact_.back().end < step)

@@ -41,8 +41,6 @@ public:
 
   /// g_0 … g_{n−1} at least (more: the series grows by max(256 steps, a sixteenth) at a time).
   [[nodiscard]] std::shared_ptr<const std::vector<double>> at_least(std::size_t n) const;
-  /// Steps of the impulse run computed so far (each one back-substitution with K̄).
-  [[nodiscard]] std::size_t length() const;
 
 private:
   mutable std::mutex mutex_;
@@ -50,13 +48,12 @@ private:
   mutable std::shared_ptr<const std::vector<double>> g_ = std::make_shared<const std::vector<double>>();
 };
 
-/// A run's plate through (CP1): the loop's plate state is the contact point's (ws, ẇs, ẅs) alone. `solve`
-/// is the scalar contact problem of the step with the full run's compliance (ContactLoading::solve).
+/// A run's plate through (CP1): the loop's plate state is the contact point's (ws, ẇs, ẅs) alone. The
+/// scalar contact problem of each step has the compliance g_0 = swᵀK̄⁻¹s, the same double as the full run's
+/// (ContactLoading's for the point load: the same vectors, the same dot product).
 class ContactPointStepper final : public PlateStepper {
 public:
-  using ContactSolve = std::function<ContactSolution(const ContactStep&, double w_hat)>;
-
-  ContactPointStepper(std::shared_ptr<const ContactPointResponse> response, ContactSolve solve);
+  explicit ContactPointStepper(std::shared_ptr<const ContactPointResponse> response);
 
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                           Eigen::VectorXd& u_next) override;
@@ -78,7 +75,6 @@ private:
 
   std::shared_ptr<const ContactPointResponse> response_;
   std::shared_ptr<const std::vector<double>> g_;
-  ContactSolve solve_;
   /// F_k of step k at index size − 1 − k, in reverse order, so that the sum (CP1) over a span is the dot
   /// product of two contiguous, increasing ranges (vectorised by Eigen); grown at the front when full
   Eigen::VectorXd reversed_forces_;

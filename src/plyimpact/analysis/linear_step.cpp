@@ -279,11 +279,7 @@ std::unique_ptr<PlateStepper> LinearStepPolicy::start_at_contact_point(const Imp
   const NewmarkCoefficients& nc = options_.newmark;
   if (options_.load != ContactLoad::point || nc.beta != 0.25 || nc.gamma != 0.5 || equations() == 0)
     return nullptr;
-  auto loading = std::make_shared<ContactLoading>(model_, equations_, impactor, options_.load);
-  loading->set_solver([&factor = level(0).factor](const Eigen::VectorXd& b) { return factor.solve(b); });
-  return std::make_unique<ContactPointStepper>(
-      contact_point_response(impactor),
-      [loading](const ContactStep& contact, double w_hat) { return loading->solve(contact, w_hat); });
+  return std::make_unique<ContactPointStepper>(contact_point_response(impactor));
 }
 
 } // namespace

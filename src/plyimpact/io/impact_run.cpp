@@ -92,6 +92,10 @@ HistoryLayout history_layout_of(const Deck& deck, const ImpactSettings& s) {
 
 } // namespace
 
+const char* plate_response_name(const ImpactResult& result) {
+  return result.contact_point_response ? "contact point" : "full";
+}
+
 ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const ImpactRunOptions& options) {
   ImpactRunOutcome out;
   out.settings =

@@ -43,6 +43,10 @@ struct ImpactRunOutcome {
   nlohmann::json summary;
 };
 
+/// How a run solved its plate, as the sweep's records and Python's ImpactStudy name it: "contact point"
+/// (through its impulse response there, analysis/contact_point_response.hpp) or "full" (every step).
+[[nodiscard]] const char* plate_response_name(const ImpactResult& result);
+
 /// Runs the impact of `deck` on `impact`, which was built from this deck or from one with the same
 /// plate and time step (its factorization is reused; the deck's impactor and contact stiffness are
 /// used). Throws std::invalid_argument when the time steps differ.

@@ -358,7 +358,7 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
   results["steps"] = r.steps;
   results["dt"] = o.settings.dt;
   // how the plate was solved: every step with K̄, or through its impulse response at the contact point
-  results["plate_response"] = r.contact_point_response ? "contact point" : "full";
+  results["plate_response"] = plate_response_name(r);
   if (r.progressive) { // ply damage (docs/progressive_damage.md); absent for onset runs
     results["damage_dissipation"] = r.progressive->dissipated.sum();
     results["damage_area"] = r.progressive->projected_damage_area;
