@@ -358,11 +358,18 @@ double largest_delamination_time_step(const Laminate& laminate, const StackSetti
   return limit;
 }
 
-std::unique_ptr<StepPolicy> delamination_step_policy(const PlateModel& model,
-                                                     const StepPolicyOptions& options,
-                                                     const DelaminationSettings& settings) {
+std::unique_ptr<StepPolicy>
+delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                         const DelaminationSettings& settings,
+                         const std::optional<ProgressiveDamageSettings>& ply_damage) {
+  if (ply_damage && (settings.integration != DamageIntegration::central_difference ||
+                     ply_damage->integration != DamageIntegration::central_difference))
+    throw std::invalid_argument(
+        "ply damage and delamination run together with explicit steps only: [damage] integration = "
+        "\"explicit\" and [delamination] integration = \"explicit\" (docs/delamination.md, \"Ply damage "
+        "and delamination together\")");
   if (settings.integration == DamageIntegration::central_difference)
-    return explicit_delamination_step_policy(model, options, settings);
+    return explicit_delamination_step_policy(model, options, settings, ply_damage);
   return std::make_unique<DelaminationStepPolicy>(model, options, settings);
 }
 

@@ -144,13 +144,11 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
             ? "progressive damage needs a plate: a rigid target has no plies to crack"
             : "progressive damage is not available with the geometrically non-linear plate yet: use one or "
               "the other (docs/progressive_damage.md, limits)");
-  if (settings_.delamination &&
-      (settings_.rigid_target || settings_.nonlinear || settings_.progressive_damage))
+  if (settings_.delamination && (settings_.rigid_target || settings_.nonlinear))
     throw std::invalid_argument(
         settings_.rigid_target ? "delamination needs a plate: a rigid target has no interfaces to open"
                                : "delamination is not available together with the geometrically non-linear "
-                                 "plate or the progressive ply damage yet: use one at a time "
-                                 "(docs/delamination.md, limits)");
+                                 "plate yet: use one at a time (docs/delamination.md, limits)");
   if (settings_.rigid_target) {
     if (settings_.nonlinear)
       throw std::invalid_argument(
@@ -166,7 +164,8 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.memory_limit_bytes = description_.memory_limit_bytes;
   options.explicit_omega_max = explicit_omega_max_;
   if (settings_.delamination)
-    policy_ = delamination_step_policy(*model_, options, *settings_.delamination);
+    policy_ =
+        delamination_step_policy(*model_, options, *settings_.delamination, settings_.progressive_damage);
   else if (settings_.progressive_damage)
     policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage);
   else if (settings_.nonlinear)

@@ -140,7 +140,7 @@ public:
     return *strain_;
   }
   [[nodiscard]] double dissipated_energy() const override { return stepper_.dissipated_energy(); }
-  [[nodiscard]] const DamageField* damage() const override { return stepper_.damage(); }
+  [[nodiscard]] const PlyDamageView* damage() const override { return stepper_.damage(); }
   [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
     return stepper_.delamination();
   }
@@ -308,7 +308,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
     // 3. Episodes and peaks, observers, end of the event.
     event.record(t, step_nc->dt, force, alpha, ws);
-    if (const DamageField* d = plate->damage(); d && d->first_damage() && !first_damage) {
+    if (const PlyDamageView* d = plate->damage(); d && d->first_damage() && !first_damage) {
       first_damage = ProgressiveDamageResult{};
       first_damage->first_mode = d->first_damage()->mode;
       first_damage->first_ply = d->first_damage()->ply + 1;
@@ -337,7 +337,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
                                        r.time_steps->largest_error_ratio));
   }
   r.delamination = plate->delamination();
-  if (const DamageField* d = plate->damage()) {
+  if (const PlyDamageView* d = plate->damage()) {
     ProgressiveDamageResult pd = first_damage.value_or(ProgressiveDamageResult{});
     pd.dissipated = d->dissipated();
     pd.ply_damage_area = d->ply_damage_area();

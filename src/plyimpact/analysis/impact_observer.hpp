@@ -23,7 +23,7 @@ public:
   /// Energy dissipated inside the plate (ply damage) [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
   /// The plies' damage (progressive damage only).
-  [[nodiscard]] virtual const DamageField* damage() const { return nullptr; }
+  [[nodiscard]] virtual const PlyDamageView* damage() const { return nullptr; }
   /// The interfaces' areas and dissipation (stacked plate only).
   [[nodiscard]] virtual const DelaminationAreas* delamination_areas() const { return nullptr; }
   /// The interfaces' whole state (stacked plate only), computed at each call: for occasional outputs.
@@ -53,7 +53,7 @@ public:
   /// Energy dissipated by ply damage [J] (0 without progressive damage).
   [[nodiscard]] double plate_dissipated_energy() const { return plate ? plate->dissipated_energy() : 0.0; }
   /// The plies' damage, or null without progressive damage.
-  [[nodiscard]] const DamageField* damage() const { return plate ? plate->damage() : nullptr; }
+  [[nodiscard]] const PlyDamageView* damage() const { return plate ? plate->damage() : nullptr; }
   /// The interfaces' whole state, or nothing unless the plate is stacked (computed at each call).
   [[nodiscard]] std::optional<DelaminationResult> delamination() const {
     return plate ? plate->delamination() : std::nullopt;

@@ -16,7 +16,7 @@ ImpactSample history_sample(const StepView& v) {
   h.plate_strain = v.plate_strain_energy();
   h.impactor_energy = v.impactor_energy;
   h.contact_work = v.contact_work;
-  if (const DamageField* d = v.damage()) {
+  if (const PlyDamageView* d = v.damage()) {
     h.damage_dissipation = d->dissipated().sum();
     h.damage_area = d->projected_damage_area();
     h.ply_damage_area = d->ply_damage_area();

@@ -68,7 +68,7 @@ public:
   /// Energy dissipated inside the plate (ply damage) up to the last accepted step [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
   /// The plies' damage after the last accepted step (progressive damage only).
-  [[nodiscard]] virtual const DamageField* damage() const { return nullptr; }
+  [[nodiscard]] virtual const PlyDamageView* damage() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
   /// True when the plate state is the contact point's alone, (ws, ẇs, ẅs) (contact_point_response.hpp):
@@ -205,15 +205,21 @@ explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& op
 /// The laminate of `model` (one laminate, no regions) cut into sub-laminates tied by cohesive interfaces
 /// (delamination_step.cpp). The supports of `model` hold the sub-laminates that `settings` names. Throws
 /// std::invalid_argument for a plate with regions of other laminates.
-[[nodiscard]] std::unique_ptr<StepPolicy> delamination_step_policy(const PlateModel& model,
-                                                                   const StepPolicyOptions& options,
-                                                                   const DelaminationSettings& settings);
+/// With `ply_damage` the plies crack too: explicit central differences only (both settings'
+/// integration central_difference), otherwise std::invalid_argument.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                         const DelaminationSettings& settings,
+                         const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt);
 /// The stacked plate with explicit central differences on the lumped mass (settings.integration =
 /// central_difference; explicit_delamination_step.cpp). Throws std::invalid_argument when the mass is not
 /// diagonal or Δt of `options` is above the stable step, which the message gives.
+/// With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the stepper's
+/// damage() is the plies' damage of the whole laminate.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                                  const DelaminationSettings& settings);
+                                  const DelaminationSettings& settings,
+                                  const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt);
 /// The largest Δt explicit_delamination_step_policy accepts: 0.9 · 2/ω_max of the elastic stack (the
 /// sub-laminates and the interfaces' penalty) with the lumped mass (CD5) [s]; what dt = "auto" becomes
 /// with [delamination] integration = "explicit".

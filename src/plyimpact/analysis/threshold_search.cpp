@@ -93,7 +93,7 @@ public:
   explicit DamageWatch(const DamageCriterion& criterion) : criterion_(criterion) {}
 
   void on_step(const StepView& v) override {
-    const DamageField* field = v.damage();
+    const PlyDamageView* field = v.damage();
     if (reached || field == nullptr) return;
     area_ = field->projected_damage_area();
     if (criterion_.kind == DamageCriterion::Kind::damage_area) {
@@ -114,9 +114,9 @@ public:
 private:
   /// damage-area: the run's first damage; first damage: the first element and ply (in the field's
   /// order) with d > 0 in a mode of the criterion, nullopt when there is none.
-  [[nodiscard]] std::optional<DamageReached> where(const DamageField& field, const StepView& v) const {
+  [[nodiscard]] std::optional<DamageReached> where(const PlyDamageView& field, const StepView& v) const {
     if (criterion_.kind == DamageCriterion::Kind::damage_area && field.first_damage()) {
-      const DamageField::FirstDamage& f = *field.first_damage();
+      const PlyDamageView::FirstDamage& f = *field.first_damage();
       return DamageReached{f.mode, f.ply + 1, f.element + 1, v.t, v.force, area_};
     }
     for (const ElementPlyDamage& e : field.element_ply_damage())

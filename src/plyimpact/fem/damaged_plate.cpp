@@ -575,6 +575,7 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
       throw std::logic_error("damaged plate: commit of an element whose trial state was not evaluated");
   std::fill(field.ply_area_.begin(), field.ply_area_.end(), 0.0);
   field.projected_area_ = 0.0;
+  field.damaged_points_.clear();
   double growth = 0.0;
   const double threshold = settings_.area_threshold;
   for (DamageField::ActiveElement& a : field.active_) {
@@ -598,7 +599,10 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
         if (damaged) field.ply_area_[k] += ops.w[p];
         any = any || damaged;
       }
-      if (any) field.projected_area_ += ops.w[p];
+      if (any) {
+        field.projected_area_ += ops.w[p];
+        field.damaged_points_.push_back({a.element, static_cast<int>(p), ops.w[p]});
+      }
     }
     a.committed.swap(a.trial);
     a.pristine = a.pristine_trial;

@@ -195,18 +195,57 @@ private:
   std::vector<ElementSlots> slot_; ///< (i, j) of Kₑ → index in K0_ values
 };
 
+/// What a run reports of its plies' damage at the last commit: the energies, the areas and the maps. One
+/// plate's DamageField, or the sub-laminates' fields of a stacked plate seen as one laminate
+/// (StackedDamageField, fem/stacked_damage.hpp).
+class PlyDamageView {
+public:
+  /// Mode, element and ply of the first damage (d > 0), once it has appeared.
+  struct FirstDamage {
+    DamageMode mode;
+    int element = 0, ply = 0;
+  };
+
+  virtual ~PlyDamageView() = default;
+  /// Energy dissipated by damage up to the last commit, per mode [J].
+  [[nodiscard]] virtual const PerDamageMode& dissipated() const = 0;
+  /// Elastic energy stored in the plies at the last commit, ½ uᵀ K_s(d) u [J].
+  [[nodiscard]] virtual double stored_energy() const = 0;
+  /// Damaged area of each ply at the last commit (points with a damage variable ≥ area_threshold) [m²].
+  [[nodiscard]] virtual const std::vector<double>& ply_damage_area() const = 0;
+  /// Projected damaged area (union over the plies, what a C-scan of ply damage shows) [m²].
+  [[nodiscard]] virtual double projected_damage_area() const = 0;
+  /// Number of elements that evaluate the law.
+  [[nodiscard]] virtual int active_elements() const = 0;
+  /// Per element and ply, the largest damage of each mode (committed), for maps and ParaView.
+  [[nodiscard]] virtual std::vector<ElementPlyDamage> element_ply_damage() const = 0;
+  [[nodiscard]] virtual const std::optional<FirstDamage>& first_damage() const = 0;
+
+protected:
+  PlyDamageView() = default;
+  PlyDamageView(const PlyDamageView&) = default;
+  PlyDamageView(PlyDamageView&&) = default;
+  PlyDamageView& operator=(const PlyDamageView&) = default;
+  PlyDamageView& operator=(PlyDamageView&&) = default;
+};
+
+/// An integration point that was damaged at the last commit (some ply's damage variable ≥ area_threshold).
+struct DamagedPoint {
+  int element = 0;
+  int point = 0;     ///< 0..8, the element's 3×3 Gauss points
+  double area = 0.0; ///< the point's share of the element's area [m²]
+};
+
 /// The damage state of one run: committed per-point states of the active elements, their trial
 /// responses, and the energies and areas that follow.
-class DamageField {
+class DamageField final : public PlyDamageView {
 public:
-  /// Energy dissipated by damage up to the last commit, per mode [J].
-  [[nodiscard]] const PerDamageMode& dissipated() const { return dissipated_; }
-  /// Elastic energy stored in the plate at the last commit, ½ uᵀ K_s(d) u [J].
-  [[nodiscard]] double stored_energy() const { return stored_energy_; }
-  /// Damaged area of each ply at the last commit (points with a damage variable ≥ area_threshold) [m²].
-  [[nodiscard]] const std::vector<double>& ply_damage_area() const { return ply_area_; }
-  /// Projected damaged area (union over the plies, what a C-scan of ply damage shows) [m²].
-  [[nodiscard]] double projected_damage_area() const { return projected_area_; }
+  [[nodiscard]] const PerDamageMode& dissipated() const override { return dissipated_; }
+  [[nodiscard]] double stored_energy() const override { return stored_energy_; }
+  [[nodiscard]] const std::vector<double>& ply_damage_area() const override { return ply_area_; }
+  [[nodiscard]] double projected_damage_area() const override { return projected_area_; }
+  /// The points whose union is projected_damage_area().
+  [[nodiscard]] const std::vector<DamagedPoint>& damaged_points() const { return damaged_points_; }
   /// Growth of the damage since the last mark_factorized(): the sum over the accepted steps of the
   /// largest increment of any damage variable in the step (an upper bound of the largest growth).
   [[nodiscard]] double growth_since_factorization() const { return growth_; }
@@ -214,16 +253,9 @@ public:
   /// True when a lagged evaluation (frozen_internal_force) has changed the loaded modes (a crack opened or
   /// closed) of some point since the last call of this function.
   [[nodiscard]] bool take_modes_changed() { return std::exchange(modes_changed_, false); }
-  /// Number of elements that evaluate the law.
-  [[nodiscard]] int active_elements() const { return static_cast<int>(active_.size()); }
-  /// Per element and ply, the largest damage of each mode (committed), for maps and ParaView.
-  [[nodiscard]] std::vector<ElementPlyDamage> element_ply_damage() const;
-  /// Mode, element and ply of the first damage (d > 0) and the time it appeared, once it has.
-  struct FirstDamage {
-    DamageMode mode;
-    int element = 0, ply = 0;
-  };
-  [[nodiscard]] const std::optional<FirstDamage>& first_damage() const { return first_; }
+  [[nodiscard]] int active_elements() const override { return static_cast<int>(active_.size()); }
+  [[nodiscard]] std::vector<ElementPlyDamage> element_ply_damage() const override;
+  [[nodiscard]] const std::optional<FirstDamage>& first_damage() const override { return first_; }
 
 private:
   friend class DamagedPlateModel;
@@ -251,6 +283,7 @@ private:
   double stored_energy_ = 0.0;
   std::vector<double> ply_area_;
   double projected_area_ = 0.0;
+  std::vector<DamagedPoint> damaged_points_;
   double growth_ = 0.0;
   bool modes_changed_ = false;
   std::optional<FirstDamage> first_;

@@ -74,11 +74,6 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
   t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
           "penalty_stiffness", "onset", "integration", "points", "supports"});
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
-  if (d.damage.progressive)
-    t.fail_here(
-        "[delamination] and [damage] model = \"progressive\" do not run together yet: the stacked plate "
-        "tracks the interfaces, the progressive model the plies; use one at a time "
-        "(docs/delamination.md, limits)");
   if (d.nonlinear)
     t.fail_here("[delamination] is not available with the geometrically non-linear plate (nonlinear = true) "
                 "yet: use one at a time (docs/delamination.md, limits)");
@@ -99,6 +94,11 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
                                                         {"implicit", DamageIntegration::implicit},
                                                         {"explicit", DamageIntegration::central_difference}})
                       .value_or(s.integration);
+  if (d.damage.progressive && (s.integration != DamageIntegration::central_difference ||
+                               d.damage.progressive->integration != DamageIntegration::central_difference))
+    t.fail_here("[delamination] with [damage] model = \"progressive\" runs with explicit steps only: set "
+                "integration = \"explicit\" in both tables (docs/delamination.md, \"Ply damage and "
+                "delamination together\")");
   return s;
 }
 

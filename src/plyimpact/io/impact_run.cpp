@@ -50,7 +50,7 @@ private:
     // A progressive run's plate has a damage field from the first frame on (virgin: all zero), a stacked
     // plate its interfaces.
     std::optional<std::vector<ElementPlyDamage>> plies;
-    if (const DamageField* field = v.damage()) plies = field->element_ply_damage();
+    if (const PlyDamageView* field = v.damage()) plies = field->element_ply_damage();
     const std::optional<DelaminationResult> interfaces = v.delamination();
     series_.write(v.step, v.t, v.plate_displacement(), onsets, plies ? &*plies : nullptr,
                   interfaces ? &*interfaces : nullptr);
