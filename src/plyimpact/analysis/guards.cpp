@@ -86,14 +86,21 @@ std::optional<std::string> energy_balance_reason(double energy_error, double ini
                                                  double velocity, double k, double dt, double exponent) {
   if (!(energy_error > energy_balance_tolerance)) return std::nullopt;
   const double t_c = hertz_contact_time(mass, velocity, k, exponent);
-  return fmt::format("energy balance error {:.3g} J, {:.3g} % of the initial kinetic energy {:.4g} J "
-                     "(tolerance {:.3g} %): the time integration created or lost energy and the results "
-                     "are not trustworthy. The Hertz contact time estimate is t_c = {:.4g} s, {:.3g} steps "
-                     "of time.dt = {:.4g} s: lower [time] dt to t_c/{:.0f} = {:.4g} s or less, or set "
-                     "dt = \"auto\"",
-                     energy_error * initial_energy, 100.0 * energy_error, initial_energy,
-                     100.0 * energy_balance_tolerance, t_c, t_c / dt, dt, min_steps_per_contact,
-                     t_c / min_steps_per_contact);
+  const std::string what = fmt::format(
+      "energy balance error {:.3g} J, {:.3g} % of the initial kinetic energy {:.4g} J (tolerance {:.3g} %): "
+      "the time integration created or lost energy and the results are not trustworthy. The Hertz contact "
+      "time estimate is t_c = {:.4g} s, {:.3g} steps of time.dt = {:.4g} s",
+      energy_error * initial_energy, 100.0 * energy_error, initial_energy, 100.0 * energy_balance_tolerance,
+      t_c, t_c / dt, dt);
+  if (t_c / dt < min_steps_per_contact)
+    return fmt::format("{}: lower [time] dt to t_c/{:.0f} = {:.4g} s or less, or set dt = \"auto\"", what,
+                       min_steps_per_contact, t_c / min_steps_per_contact);
+  // The contact is resolved: the error comes from what changes within a step (damage, interfaces,
+  // contact episodes), which a shorter step resolves too.
+  return fmt::format("{}, enough for the contact: what changes within a step (ply damage, interfaces that "
+                     "break, repeated contacts) made the error; run again with [time] dt = {:.4g} s (half) "
+                     "and compare",
+                     what, 0.5 * dt);
 }
 
 std::optional<std::string> large_deflection_warning(double peak_deflection, double thickness) {
