@@ -35,6 +35,12 @@ std::string without_ply_damage(const std::string& text) {
   return text.substr(0, from) + text.substr(to);
 }
 
+/// The example's run to 100 µs, once for the tests that read it.
+const ImpactResult& run_to_100us() {
+  static const ImpactResult r = test::run_deck(example_to_100us());
+  return r;
+}
+
 double relative(double a, double b) {
   return std::abs(a - b) / std::max(std::abs(b), 1e-300);
 }
@@ -43,7 +49,9 @@ TEST(DelaminationWithPlyDamage, PliesThatNeverCrackLeaveTheDelaminationOnlyStack
   // Strengths 1000 times the deck's: no ply point leaves the undamaged section, each sub-laminate's
   // internal force is K_k u_k, the rows of K_plates, summed in the same order. So the run is the
   // delamination-only explicit run, the interfaces' softening included, to round-off.
-  const std::string strong = with(test::unbreakable_t300_976(example_to_100us()), "oversize", "\"error\"");
+  // One step for both (dt = "auto" halves the stable step for the plies with the interfaces).
+  const std::string strong =
+      with(with(test::unbreakable_t300_976(example_to_100us()), "oversize", "\"error\""), "dt", "9.0e-9");
   const ImpactResult both = test::run_deck(strong);
   const ImpactResult interfaces_only = test::run_deck(without_ply_damage(strong));
   std::printf(
@@ -64,7 +72,7 @@ TEST(DelaminationWithPlyDamage, PliesAndInterfacesCloseOneEnergyBalance) {
   // The impactor's loss = plate kinetic + stored energy + contact loss + ply damage + interface
   // dissipation. Both mechanisms take a share of several % of the impact energy, so leaving either out
   // of the balance would show as an error of that size; the explicit step closes it to round-off.
-  const ImpactResult r = test::run_deck(example_to_100us());
+  const ImpactResult& r = run_to_100us();
   ASSERT_TRUE(r.progressive && r.delamination);
   const double e0 = 0.5 * 0.03 * 3.0 * 3.0;
   const double plies = r.progressive->dissipated.sum(), interfaces = r.delamination->dissipated;
@@ -83,7 +91,8 @@ TEST(DelaminationWithPlyDamage, TheSubLaminatesPliesAreTheLaminatesPlies) {
   // under the impactor, where the matrix cracks first, as on the single laminate
   // (examples/damage-progressive-explicit.toml). The projected area is the union over every ply of every
   // sub-laminate: no smaller than any ply's area and no larger than their sum.
-  const ImpactResult r = test::run_deck(example_to_100us());
+  const ImpactResult& r = run_to_100us();
+  ASSERT_TRUE(r.progressive);
   const ProgressiveDamageResult& pd = *r.progressive;
   ASSERT_EQ(pd.ply_damage_area.size(), 4U);
   EXPECT_EQ(pd.first_ply, 4);
@@ -101,6 +110,14 @@ TEST(DelaminationWithPlyDamage, TheSubLaminatesPliesAreTheLaminatesPlies) {
     plies_seen[e.ply] = true;
   }
   EXPECT_TRUE(plies_seen[0] && plies_seen[1] && plies_seen[2] && plies_seen[3]);
+}
+
+TEST(DelaminationWithPlyDamage, TheAutomaticStepIsHalfTheStacksStableStep) {
+  const ImpactCaseDescription d = impact_case_description(parse_deck(example_to_100us(), "both.toml"));
+  const PlateModel model = impact_plate_model(d);
+  EXPECT_DOUBLE_EQ(resolved_settings(d, model).dt,
+                   plies_with_interfaces_step_fraction *
+                       explicit_delamination_time_step(model, *d.delamination));
 }
 
 TEST(DelaminationWithPlyDamage, ImplicitStepsAreRefusedWithTheSettingToUse) {

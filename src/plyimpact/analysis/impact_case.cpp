@@ -86,7 +86,9 @@ std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d,
 ImpactSettings resolved_settings(const ImpactCaseDescription& d, std::optional<double> explicit_omega_max) {
   ImpactSettings s = resolved_settings(d);
   if (explicit_omega_max && !d.time.dt) // dt = "auto" below the stable step (CD5)
-    s.dt = std::min(s.dt, stable_time_step(*explicit_omega_max));
+    s.dt = std::min(s.dt,
+                    stable_time_step(*explicit_omega_max) *
+                        (d.delamination && d.progressive_damage ? plies_with_interfaces_step_fraction : 1.0));
   return s;
 }
 
