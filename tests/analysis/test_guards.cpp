@@ -203,7 +203,8 @@ const std::vector<GuardCase>& guard_cases() {
       {"energy balance error above 1 % with the contact resolved: suspect, with half the step to try",
        // The same impactor with Δt = 1 µs: 1 683 steps per contact, so Δt of the contact is not the cause.
        [] { return warning_of(energy_balance_reason(0.02, 22.05, 6.14, 2.68, 0.6e9, 1e-6)); },
-       {"2 % of the initial kinetic energy 22.05 J", "1.68e+03 steps of time.dt = 1e-06 s, enough for the contact",
+       {"2 % of the initial kinetic energy 22.05 J",
+        "1.68e+03 steps of time.dt = 1e-06 s, enough for the contact",
         "run again with [time] dt = 5e-07 s (half)"}},
       {"energy balance error of 0.99 %: not suspect",
        [] { return warning_of(energy_balance_reason(0.0099, 22.05, 6.14, 2.68, 0.6e9, 1e-6)); },
