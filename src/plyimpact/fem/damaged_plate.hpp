@@ -209,8 +209,6 @@ public:
   virtual ~PlyDamageView() = default;
   /// Energy dissipated by damage up to the last commit, per mode [J].
   [[nodiscard]] virtual const PerDamageMode& dissipated() const = 0;
-  /// Elastic energy stored in the plies at the last commit, ½ uᵀ K_s(d) u [J].
-  [[nodiscard]] virtual double stored_energy() const = 0;
   /// Damaged area of each ply at the last commit (points with a damage variable ≥ area_threshold) [m²].
   [[nodiscard]] virtual const std::vector<double>& ply_damage_area() const = 0;
   /// Projected damaged area (union over the plies, what a C-scan of ply damage shows) [m²].
@@ -241,7 +239,8 @@ struct DamagedPoint {
 class DamageField final : public PlyDamageView {
 public:
   [[nodiscard]] const PerDamageMode& dissipated() const override { return dissipated_; }
-  [[nodiscard]] double stored_energy() const override { return stored_energy_; }
+  /// Elastic energy stored in the plate at the last commit, ½ uᵀ K_s(d) u [J].
+  [[nodiscard]] double stored_energy() const { return stored_energy_; }
   [[nodiscard]] const std::vector<double>& ply_damage_area() const override { return ply_area_; }
   [[nodiscard]] double projected_damage_area() const override { return projected_area_; }
   /// The points whose union is projected_damage_area().

@@ -15,7 +15,6 @@ void StackedDamageField::gather(const std::vector<DamageField>& parts) {
     throw std::logic_error("stacked damage: one damage field per sub-laminate expected");
   parts_ = &parts;
   dissipated_ = {};
-  stored_energy_ = 0.0;
   active_elements_ = 0;
   std::fill(ply_area_.begin(), ply_area_.end(), 0.0);
   for (const int i : marked_)
@@ -26,7 +25,6 @@ void StackedDamageField::gather(const std::vector<DamageField>& parts) {
     const DamageField& part = parts[k];
     for (const DamageMode m : all_damage_modes)
       dissipated_[m] += part.dissipated()[m];
-    stored_energy_ += part.stored_energy();
     active_elements_ += part.active_elements();
     const std::vector<double>& area = part.ply_damage_area();
     for (std::size_t j = 0; j < area.size(); ++j)

@@ -1,9 +1,9 @@
 #pragma once
 // The plies' damage of a stacked plate (fem/stacked_plate.hpp) whose sub-laminates each carry a damage
 // field (fem/damaged_plate.hpp), seen as the one laminate they were cut from: sub-laminate k's ply j is
-// the laminate's ply first_ply[k] + j, the energies are the sums over the sub-laminates, and the projected
-// area is the union over every ply of every sub-laminate. The sub-laminates share the mesh and its 3×3
-// Gauss points, so the union is taken point by point.
+// the laminate's ply first_ply[k] + j, the dissipated energies are the sums over the sub-laminates, and the
+// projected area is the union over every ply of every sub-laminate. The sub-laminates share the mesh and its
+// 3×3 Gauss points, so the union is taken point by point.
 #include "plyimpact/fem/damaged_plate.hpp"
 
 #include <vector>
@@ -21,7 +21,6 @@ public:
   void gather(const std::vector<DamageField>& parts);
 
   [[nodiscard]] const PerDamageMode& dissipated() const override { return dissipated_; }
-  [[nodiscard]] double stored_energy() const override { return stored_energy_; }
   [[nodiscard]] const std::vector<double>& ply_damage_area() const override { return ply_area_; }
   [[nodiscard]] double projected_damage_area() const override { return projected_area_; }
   [[nodiscard]] int active_elements() const override { return active_elements_; }
@@ -34,7 +33,6 @@ private:
   std::vector<int> first_ply_;
   const std::vector<DamageField>* parts_ = nullptr;
   PerDamageMode dissipated_;
-  double stored_energy_ = 0.0;
   std::vector<double> ply_area_;
   double projected_area_ = 0.0;
   int active_elements_ = 0;
