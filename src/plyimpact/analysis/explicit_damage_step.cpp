@@ -62,14 +62,12 @@ ExplicitDamageStepper::ExplicitDamageStepper(const ExplicitDamagePolicy& policy,
 
 ContactSolution ExplicitDamageStepper::advance(long step, double t, const PlateState& s,
                                                const ContactStep& contact, Eigen::VectorXd& u_next) {
-  const double dt = p_.scheme_.time_step();
   p_.scheme_.predict(s, u_next);                                                 // CD1
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
   p_.scheme_.check_contact(step, t, cs, contact, contact_flexibility_);          // CD6
-  f_int_ = p_.plate_.internal_force(u_next, dt, field_);
   // An element the screen left out that has reached a Hashin surface at u_{n+1} joins, and the law is
   // evaluated again at the same u_{n+1} (no solve: the displacement does not depend on it).
-  if (p_.plate_.activate_reached(u_next, field_)) f_int_ = p_.plate_.internal_force(u_next, dt, field_);
+  f_int_ = p_.plate_.explicit_internal_force(u_next, p_.scheme_.time_step(), field_);
   p_.scheme_.accelerate(cs.force * loading_.load(cs.alpha) - f_int_, step, t, a_next_); // CD3
   return cs;
 }

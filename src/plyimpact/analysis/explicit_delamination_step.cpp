@@ -153,10 +153,7 @@ void ExplicitDelaminationStepper::damaged_plate_forces(const Eigen::VectorXd& u)
     const DamagedPlateModel& part = *p_.damaged_[k];
     const Eigen::Index first = p_.stack_.offset(static_cast<int>(k));
     u_parts_[k] = u.segment(first, part.size());
-    f_parts_[k] = part.internal_force(u_parts_[k], dt, fields_[k]);
-    // An element the screen left out that has reached a Hashin surface joins (explicit_damage_step.cpp).
-    if (part.activate_reached(u_parts_[k], fields_[k]))
-      f_parts_[k] = part.internal_force(u_parts_[k], dt, fields_[k]);
+    f_parts_[k] = part.explicit_internal_force(u_parts_[k], dt, fields_[k]);
     Ku_.segment(first, part.size()) = f_parts_[k];
   }
 }

@@ -568,6 +568,13 @@ bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& 
   return reached;
 }
 
+Eigen::VectorXd DamagedPlateModel::explicit_internal_force(const Eigen::VectorXd& u, double dt,
+                                                           DamageField& field) const {
+  Eigen::VectorXd f = internal_force(u, dt, field);
+  if (activate_reached(u, field)) f = internal_force(u, dt, field);
+  return f;
+}
+
 void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int,
                                DamageField& field) const {
   for (const DamageField::ActiveElement& a : field.active_)

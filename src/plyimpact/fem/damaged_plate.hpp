@@ -131,6 +131,10 @@ public:
   [[nodiscard]] Eigen::VectorXd internal_force(const Eigen::VectorXd& u, double dt, DamageField& field) const;
   /// K_s with the trial damage of the last internal_force() (K0 where no element is active).
   [[nodiscard]] SparseMatrix secant_stiffness(const DamageField& field) const;
+  /// The explicit step's evaluation: internal_force() at u, and again when an element the screen left out
+  /// has reached a Hashin surface at u (activate_reached(); no solve, u does not depend on it).
+  [[nodiscard]] Eigen::VectorXd explicit_internal_force(const Eigen::VectorXd& u, double dt,
+                                                        DamageField& field) const;
   /// Activates the inactive elements that have reached a Hashin surface at u. True when there were any:
   /// the trial did not evaluate them, and the step must be iterated again.
   [[nodiscard]] bool activate_reached(const Eigen::VectorXd& u, DamageField& field) const;
