@@ -262,31 +262,23 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   const std::vector<std::pair<int, int>> meshes{{15, 11}, {30, 22}, {60, 44}, {120, 88}};
   const std::vector<SparseSolverKind> kinds{SparseSolverKind::cholmod, SparseSolverKind::simplicial_ldlt};
+  // Every benchmark here reports milliseconds of wall time.
+  const auto in_ms = [](const std::string& name, auto&&... args) {
+    benchmark::RegisterBenchmark(name.c_str(), std::forward<decltype(args)>(args)...)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  };
   for (const auto& [nx, ny] : meshes) {
     const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
-    benchmark::RegisterBenchmark(("assemble_K/" + mesh).c_str(), assemble_K, nx, ny)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
-    benchmark::RegisterBenchmark(("assemble_M/" + mesh).c_str(), assemble_M, nx, ny)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
-    benchmark::RegisterBenchmark(("mixed_precision/" + mesh).c_str(), mixed_precision, nx, ny)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
-    benchmark::RegisterBenchmark(("float_solve/" + mesh).c_str(), float_solve, nx, ny)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
+    in_ms("assemble_K/" + mesh, assemble_K, nx, ny);
+    in_ms("assemble_M/" + mesh, assemble_M, nx, ny);
+    in_ms("mixed_precision/" + mesh, mixed_precision, nx, ny);
+    in_ms("float_solve/" + mesh, float_solve, nx, ny);
     for (const SparseSolverKind kind : kinds) {
       const std::string tag = std::string(backend_name(kind)) + "/" + mesh;
-      benchmark::RegisterBenchmark(("factor_K/" + tag).c_str(), factor, nx, ny, kind, false)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      benchmark::RegisterBenchmark(("factor_Keff/" + tag).c_str(), factor, nx, ny, kind, true)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      benchmark::RegisterBenchmark(("solve/" + tag).c_str(), solve, nx, ny, kind)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
+      in_ms("factor_K/" + tag, factor, nx, ny, kind, false);
+      in_ms("factor_Keff/" + tag, factor, nx, ny, kind, true);
+      in_ms("solve/" + tag, solve, nx, ny, kind);
     }
   }
   const std::vector<std::pair<FillOrdering, std::string>> orderings{
@@ -295,11 +287,7 @@ int main(int argc, char** argv) {
       {FillOrdering::nested_dissection, "NESDIS"}};
   for (const auto& [nx, ny] : meshes)
     for (const auto& [fill, name] : orderings)
-      benchmark::RegisterBenchmark(
-          ("ordering/" + name + "/" + std::to_string(nx) + "x" + std::to_string(ny)).c_str(), ordering, nx,
-          ny, fill)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
+      in_ms("ordering/" + name + "/" + std::to_string(nx) + "x" + std::to_string(ny), ordering, nx, ny, fill);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
