@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""Ply damage and delamination over impact energy: the documented trends of docs/notes/impact-experiments.md §3.
+
+Runs examples/impact-delamination-damage.toml (a [0/90]s T300/976 plate, 12 mm, 30 g impactor, both
+mechanisms, explicit steps) at five velocities to the end of the event (`end = "auto"`), prints the table
+of docs/notes/impact-experiments.md §3 and draws docs/images/damage-trends.png with gnuplot.
+
+    python3 docs/notes/decks/damage_trends.py [--program build/release/plyimpact] [--out /tmp/damage-trends]
+
+About 40 minutes of run time (1.3 to 21 minutes a case; two at a time). A case whose summary.json is already in
+OUT/v<velocity> is read, not run again (delete OUT to start over).
+"""
+import argparse
+import concurrent.futures
+import csv
+import json
+import pathlib
+import re
+import subprocess
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+VELOCITIES = ["1.0", "1.5", "2.0", "2.5", "3.0"]
+
+
+def deck_for(velocity: str) -> str:
+    text = (ROOT / "examples/impact-delamination-damage.toml").read_text()
+    text, n_v = re.subn(r"(?m)^velocity = 3\.0\b", f"velocity = {velocity}", text)
+    text, n_end = re.subn(r"(?m)^end = 1\.5e-4\b", 'end = "auto"', text)
+    if n_v != 1 or n_end != 1:
+        raise SystemExit("examples/impact-delamination-damage.toml changed: velocity or end not found")
+    return text
+
+
+def run_case(program: str, out: pathlib.Path, velocity: str) -> pathlib.Path:
+    case = out / f"v{velocity}"
+    if (case / "summary.json").exists():
+        return case
+    case.mkdir(parents=True, exist_ok=True)
+    deck = out / f"v{velocity}.toml"
+    deck.write_text(deck_for(velocity))
+    subprocess.run([program, "impact", str(deck), "-o", str(case), "--overwrite", "-q"], check=True)
+    return case
+
+
+def first_time(history, column):
+    """Time [µs] and force [N] of the first row where `column` is positive, or None."""
+    for row in history:
+        if float(row[column]) > 0.0:
+            return float(row["t_s"]) * 1e6, float(row["force_N"])
+    return None
+
+
+def row_of(case: pathlib.Path) -> dict:
+    s = json.loads((case / "summary.json").read_text())
+    with open(case / "history.csv", newline="") as f:
+        history = list(csv.DictReader(f))
+    by_mode = s["damage"]["dissipated_energy_by_mode"]
+    first = s["damage"]["first_damage"]
+    return {
+        "energy_mJ": s["initial_energy"] * 1e3,
+        "velocity": s["impact_velocity"],
+        "peak_N": s["peak_force"],
+        "absorbed_mJ": s["absorbed_energy"] * 1e3 if s["absorbed_energy"] is not None else float("nan"),
+        "contact_mJ": s["contact_dissipation"] * 1e3,
+        "matrix_mJ": (by_mode["matrix-tension"] + by_mode["matrix-compression"]) * 1e3,
+        "fibre_mJ": (by_mode["fibre-tension"] + by_mode["fibre-compression"]) * 1e3,
+        "interfaces_mJ": s["delamination"]["dissipated_energy_J"] * 1e3,
+        "first_ply": f'{first["mode"]}, ply {first["ply"]}, {first["time"] * 1e6:.1f} µs, {first["contact_force"]:.0f} N'
+        if first
+        else "none",
+        "first_interface": first_time(history, "delamination_dissipation_J"),
+        "first_delaminated": first_time(history, "delamination_area_m2"),
+        "delaminated_mm2": s["delamination"]["projected_delaminated_area_m2"] * 1e6,
+        "damaged_mm2": s["damage"]["projected_damage_area"] * 1e6,
+        "balance": s["energy_balance_error"],
+        "history": history,
+    }
+
+
+def at(point):
+    return "none" if point is None else f"{point[0]:.1f} µs, {point[1]:.0f} N"
+
+
+def print_table(rows):
+    print("| impact energy | peak force | absorbed | contact law | plies: matrix / fibre | interfaces | "
+          "first ply damage | interfaces start to dissipate | first delaminated point | delaminated | "
+          "ply damage (d ≥ 0.5) | balance error |")
+    print("|---:|---:|---:|---:|---:|---:|---|---|---|---:|---:|---:|")
+    for r in rows:
+        print(f'| {r["energy_mJ"]:.1f} mJ ({r["velocity"]:g} m/s) | {r["peak_N"]:.1f} N | {r["absorbed_mJ"]:.2f} mJ | '
+              f'{r["contact_mJ"]:.2f} mJ | {r["matrix_mJ"]:.2f} / {r["fibre_mJ"]:.2f} mJ | {r["interfaces_mJ"]:.2f} mJ | '
+              f'{r["first_ply"]} | {at(r["first_interface"])} | {at(r["first_delaminated"])} | '
+              f'{r["delaminated_mm2"]:.2f} mm² | {r["damaged_mm2"]:.1f} mm² | {r["balance"]:.1e} |')
+
+
+def draw(rows, out: pathlib.Path, png: pathlib.Path):
+    for r in rows:  # force history, every 20th row
+        with open(out / f'force-{r["velocity"]:g}.dat', "w") as f:
+            for row in r["history"][::20]:
+                f.write(f'{float(row["t_s"]) * 1e6} {row["force_N"]}\n')
+    with open(out / "energies.dat", "w") as f:
+        f.write("# E0 contact matrix fibre interfaces absorbed [mJ]\n")
+        for r in rows:
+            f.write(f'{r["energy_mJ"]} {r["contact_mJ"]} {r["matrix_mJ"]} {r["fibre_mJ"]} {r["interfaces_mJ"]} '
+                    f'{r["absorbed_mJ"]}\n')
+    curves = ", ".join(
+        f"'{out}/force-{r['velocity']:g}.dat' using 1:2 with lines lw 2 title '{r['energy_mJ']:.0f} mJ'" for r in reversed(rows))
+    script = f"""
+set terminal pngcairo size 1400,560 font 'DejaVu Sans,12'
+set output '{png}'
+set multiplot layout 1,2 title '[0/90]s T300/976, 12 mm, 30 g: ply damage and delamination together (explicit steps)'
+set title 'contact force, first 800 µs'
+set xlabel 'time [µs]'
+set xrange [0:800]
+set ylabel 'contact force [N]'
+set key top right
+set grid
+plot {curves}
+set title 'where the impact energy goes (end of the event)'
+set xlabel 'impact energy [mJ]'
+set xrange [*:*]
+set ylabel 'energy [mJ]'
+set key top left
+set style data histograms
+set style histogram rowstacked
+set style fill solid 0.85 border -1
+set boxwidth 0.7
+set yrange [0:*]
+plot '{out}/energies.dat' using 2:xtic(sprintf('%.0f', $1)) title 'contact law (indentation)', \\
+     '' using 3 title 'plies: matrix', '' using 4 title 'plies: fibre', '' using 5 title 'interfaces', \\
+     '' using ($6) with linespoints lw 2 pt 7 lc rgb 'black' title 'absorbed = ½m(v₀² − v_r²)'
+unset multiplot
+"""
+    subprocess.run(["gnuplot"], input=script, text=True, check=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--program", default=str(ROOT / "build/release/plyimpact"))
+    parser.add_argument("--out", default="/tmp/damage-trends")
+    parser.add_argument("--png", default=str(ROOT / "docs/images/damage-trends.png"))
+    args = parser.parse_args()
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        cases = list(pool.map(lambda v: run_case(args.program, out, v), VELOCITIES))
+    rows = [row_of(c) for c in cases]
+    print_table(rows)
+    draw(rows, out, pathlib.Path(args.png))
+
+
+if __name__ == "__main__":
+    main()
