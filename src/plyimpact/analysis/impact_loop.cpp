@@ -184,6 +184,19 @@ void check_after_run(ImpactResult& r, const StepView& end, double e0, double law
       r.warnings.push_back(std::move(*w));
 }
 
+/// When the plies first cracked, and when each mode first appeared: the step where `d` first shows it.
+void record_damage_onsets(const PlyDamageView& d, double t, double force, ProgressiveDamageResult& out) {
+  if (d.first_damage() && !out.first_mode) {
+    out.first_mode = d.first_damage()->mode;
+    out.first_ply = d.first_damage()->ply + 1;
+    out.first_time = t;
+    out.first_force = force;
+  }
+  for (std::size_t m = 0; m < out.first_by_mode.size(); ++m)
+    if (const auto& first = d.first_damage_by_mode()[m]; first && !out.first_by_mode[m])
+      out.first_by_mode[m] = FirstDamageOfMode{first->ply + 1, t, force};
+}
+
 } // namespace
 
 ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, double k,
@@ -221,7 +234,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
   double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0, law_work = 0.0;
   ImpactEvent event(r, s);
-  std::optional<ProgressiveDamageResult> first_damage; ///< when and where the plies first cracked
+  ProgressiveDamageResult damage_onsets; ///< when and where the plies first cracked, per mode too
   PlateAccess plate_access(*plate, state, force);
 
   StepView view;
@@ -308,13 +321,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
     // 3. Episodes and peaks, observers, end of the event.
     event.record(t, step_nc->dt, force, alpha, ws);
-    if (const PlyDamageView* d = plate->damage(); d && d->first_damage() && !first_damage) {
-      first_damage = ProgressiveDamageResult{};
-      first_damage->first_mode = d->first_damage()->mode;
-      first_damage->first_ply = d->first_damage()->ply + 1;
-      first_damage->first_time = t;
-      first_damage->first_force = force;
-    }
+    if (const PlyDamageView* d = plate->damage()) record_damage_onsets(*d, t, force, damage_onsets);
     view.dt = step_nc->dt;
     update_view(step, t);
     for (ImpactObserver* o : observers)
@@ -338,7 +345,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   }
   r.delamination = plate->delamination();
   if (const PlyDamageView* d = plate->damage()) {
-    ProgressiveDamageResult pd = first_damage.value_or(ProgressiveDamageResult{});
+    ProgressiveDamageResult pd = damage_onsets;
     pd.dissipated = d->dissipated();
     pd.ply_damage_area = d->ply_damage_area();
     pd.projected_damage_area = d->projected_damage_area();

@@ -599,8 +599,12 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
             const double d = a.trial[i].regularised_damage[m];
             growth = std::max(growth, d - a.committed[i].regularised_damage[m]);
             damaged = damaged || d >= threshold;
-            if (d > 0.0 && !field.first_)
-              field.first_ = DamageField::FirstDamage{m, a.element, static_cast<int>(k)};
+            if (d > 0.0) {
+              const DamageField::FirstDamage here{m, a.element, static_cast<int>(k)};
+              if (!field.first_) field.first_ = here;
+              auto& of_mode = field.first_by_mode_[static_cast<std::size_t>(m)];
+              if (!of_mode) of_mode = here;
+            }
           }
         }
         if (damaged) field.ply_area_[k] += ops.w[p];

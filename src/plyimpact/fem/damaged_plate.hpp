@@ -28,6 +28,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -209,6 +210,8 @@ public:
     DamageMode mode;
     int element = 0, ply = 0;
   };
+  /// Per mode (indexed by DamageMode), the first damage of that mode (d > 0), once it has appeared.
+  using FirstDamageByMode = std::array<std::optional<FirstDamage>, 4>;
 
   virtual ~PlyDamageView() = default;
   /// Energy dissipated by damage up to the last commit, per mode [J].
@@ -222,6 +225,7 @@ public:
   /// Per element and ply, the largest damage of each mode (committed), for maps and ParaView.
   [[nodiscard]] virtual std::vector<ElementPlyDamage> element_ply_damage() const = 0;
   [[nodiscard]] virtual const std::optional<FirstDamage>& first_damage() const = 0;
+  [[nodiscard]] virtual const FirstDamageByMode& first_damage_by_mode() const = 0;
 
 protected:
   PlyDamageView() = default;
@@ -259,6 +263,7 @@ public:
   [[nodiscard]] int active_elements() const override { return static_cast<int>(active_.size()); }
   [[nodiscard]] std::vector<ElementPlyDamage> element_ply_damage() const override;
   [[nodiscard]] const std::optional<FirstDamage>& first_damage() const override { return first_; }
+  [[nodiscard]] const FirstDamageByMode& first_damage_by_mode() const override { return first_by_mode_; }
 
 private:
   friend class DamagedPlateModel;
@@ -290,6 +295,7 @@ private:
   double growth_ = 0.0;
   bool modes_changed_ = false;
   std::optional<FirstDamage> first_;
+  FirstDamageByMode first_by_mode_;
 };
 
 } // namespace plyimpact

@@ -6,6 +6,18 @@
 
 namespace plyimpact {
 
+namespace {
+
+/// `into` becomes `first` (a sub-laminate's), its ply numbered in the laminate, unless it already holds one.
+void take_first(const std::optional<PlyDamageView::FirstDamage>& first, int first_ply,
+                std::optional<PlyDamageView::FirstDamage>& into) {
+  if (into || !first) return;
+  into = *first;
+  into->ply += first_ply;
+}
+
+} // namespace
+
 StackedDamageField::StackedDamageField(std::vector<int> first_ply, int plies, int elements)
     : first_ply_(std::move(first_ply)), ply_area_(static_cast<std::size_t>(plies), 0.0),
       counted_(static_cast<std::size_t>(elements) * 9, 0) {}
@@ -36,10 +48,9 @@ void StackedDamageField::gather(const std::vector<DamageField>& parts) {
       marked_.push_back(i);
       projected_area_ += p.area;
     }
-    if (!first_ && part.first_damage()) {
-      first_ = *part.first_damage();
-      first_->ply += first_ply_[k];
-    }
+    take_first(part.first_damage(), first_ply_[k], first_);
+    for (std::size_t m = 0; m < first_by_mode_.size(); ++m)
+      take_first(part.first_damage_by_mode()[m], first_ply_[k], first_by_mode_[m]);
   }
 }
 

@@ -28,6 +28,8 @@ public:
   [[nodiscard]] std::vector<ElementPlyDamage> element_ply_damage() const override;
   /// The first sub-laminate's first damage, in the step it first appeared anywhere.
   [[nodiscard]] const std::optional<FirstDamage>& first_damage() const override { return first_; }
+  /// Per mode, the same: the first sub-laminate's, in the step the mode first appeared anywhere.
+  [[nodiscard]] const FirstDamageByMode& first_damage_by_mode() const override { return first_by_mode_; }
 
 private:
   std::vector<int> first_ply_;
@@ -37,6 +39,7 @@ private:
   double projected_area_ = 0.0;
   int active_elements_ = 0;
   std::optional<FirstDamage> first_;
+  FirstDamageByMode first_by_mode_;
   std::vector<unsigned char> counted_; ///< [element · 9 + point]: already in projected_area_
   std::vector<int> marked_;            ///< the entries of counted_ set by the last gather()
 };

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -67,6 +68,21 @@ std::string millimetres_squared(const std::vector<double>& areas) {
   for (const double a : areas)
     list += fmt::format("{}{:.1f}", list.empty() ? "" : ", ", a * 1e6);
   return list;
+}
+
+/// One line per damage mode that appeared, in the order they appeared (report.txt).
+std::string first_damage_by_mode_text(const ProgressiveDamageResult& pd) {
+  std::vector<DamageMode> seen;
+  for (const DamageMode m : all_damage_modes)
+    if (pd.first_by_mode[static_cast<std::size_t>(m)]) seen.push_back(m);
+  const auto first = [&](DamageMode m) { return *pd.first_by_mode[static_cast<std::size_t>(m)]; };
+  std::stable_sort(seen.begin(), seen.end(),
+                   [&](DamageMode a, DamageMode b) { return first(a).time < first(b).time; });
+  std::string text;
+  for (const DamageMode m : seen)
+    text += fmt::format("    {:<20} first in ply {} at {:.2f} us, {:.1f} N\n", to_string(m), first(m).ply,
+                        first(m).time * 1e6, first(m).force);
+  return text;
 }
 
 std::string delamination_text(const DelaminationResult& d, double penalty_stiffness) {
@@ -147,6 +163,12 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
                            {"ply", pd.first_ply},
                            {"time", pd.first_time},
                            {"contact_force", pd.first_force}};
+    for (const DamageMode m : all_damage_modes) {
+      const auto& first = pd.first_by_mode[static_cast<std::size_t>(m)];
+      d["first_damage_by_mode"][std::string(to_string(m))] =
+          first ? nlohmann::json{{"ply", first->ply}, {"time", first->time}, {"contact_force", first->force}}
+                : nlohmann::json(nullptr);
+    }
     d["active_elements"] = pd.active_elements;
     d["iterations"] = r.newton->iterations;
     d["max_iterations_per_step"] = r.newton->max_iterations_per_step;
@@ -219,6 +241,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
              ? fmt::format("  first ply damage        {:>12} in ply {} at {:.2f} us, {:.1f} N\n",
                            to_string(*pd.first_mode), pd.first_ply, pd.first_time * 1e6, pd.first_force)
              : std::string("  first ply damage                none\n");
+    t += first_damage_by_mode_text(pd);
     if (s.progressive_damage->integration == DamageIntegration::central_difference)
       t += fmt::format("  damage step                 explicit: no solve, dt = {:.4g} us\n", s.dt * 1e6);
     else if (r.newton)
