@@ -50,6 +50,16 @@ def first_time(history, column):
     return None
 
 
+def first_fibre(damage):
+    """Time [µs] and force [N] of the first fibre damage (either mode), or None."""
+    firsts = [damage["first_damage_by_mode"][m] for m in ("fibre-tension", "fibre-compression")]
+    firsts = [f for f in firsts if f is not None]
+    if not firsts:
+        return None
+    f = min(firsts, key=lambda f: f["time"])
+    return f["time"] * 1e6, f["contact_force"]
+
+
 def row_of(case: pathlib.Path) -> dict:
     s = json.loads((case / "summary.json").read_text())
     with open(case / "history.csv", newline="") as f:
@@ -68,6 +78,7 @@ def row_of(case: pathlib.Path) -> dict:
         "first_ply": f'{first["mode"]}, ply {first["ply"]}, {first["time"] * 1e6:.1f} µs, {first["contact_force"]:.0f} N'
         if first
         else "none",
+        "first_fibre": first_fibre(s["damage"]),
         "first_interface": first_time(history, "delamination_dissipation_J"),
         "first_delaminated": first_time(history, "delamination_area_m2"),
         "delaminated_mm2": s["delamination"]["projected_delaminated_area_m2"] * 1e6,
@@ -83,13 +94,13 @@ def at(point):
 
 def print_table(rows):
     print("| impact energy | peak force | absorbed | contact law | plies: matrix / fibre | interfaces | "
-          "first ply damage | interfaces start to dissipate | first delaminated point | delaminated | "
-          "ply damage (d ≥ 0.5) | balance error |")
-    print("|---:|---:|---:|---:|---:|---:|---|---|---|---:|---:|---:|")
+          "first ply damage | interfaces start to dissipate | first delaminated point | first fibre damage | "
+          "delaminated | ply damage (d ≥ 0.5) | balance error |")
+    print("|---:|---:|---:|---:|---:|---:|---|---|---|---|---:|---:|---:|")
     for r in rows:
         print(f'| {r["energy_mJ"]:.1f} mJ ({r["velocity"]:g} m/s) | {r["peak_N"]:.1f} N | {r["absorbed_mJ"]:.2f} mJ | '
               f'{r["contact_mJ"]:.2f} mJ | {r["matrix_mJ"]:.2f} / {r["fibre_mJ"]:.2f} mJ | {r["interfaces_mJ"]:.2f} mJ | '
-              f'{r["first_ply"]} | {at(r["first_interface"])} | {at(r["first_delaminated"])} | '
+              f'{r["first_ply"]} | {at(r["first_interface"])} | {at(r["first_delaminated"])} | {at(r["first_fibre"])} | '
               f'{r["delaminated_mm2"]:.2f} mm² | {r["damaged_mm2"]:.1f} mm² | {r["balance"]:.1e} |')
 
 
