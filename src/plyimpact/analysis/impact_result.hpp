@@ -50,7 +50,6 @@ struct NewtonStatistics {
   int factor_updates = 0;          ///< refreshes of K̄ by a rank update of its factor instead
 };
 
-/// The plies' damage at the end of a progressive-damage run (fem/damaged_plate.hpp).
 /// When a damage mode first appeared (d > 0 at some point) in a run.
 struct FirstDamageOfMode {
   int ply = 0;        ///< 1-based
@@ -58,6 +57,7 @@ struct FirstDamageOfMode {
   double force = 0.0; ///< contact force then [N]
 };
 
+/// The plies' damage at the end of a progressive-damage run (fem/damaged_plate.hpp).
 struct ProgressiveDamageResult {
   PerDamageMode dissipated;                                      ///< energy dissipated per mode [J]
   std::vector<double> ply_damage_area;                           ///< damaged area of each ply [m²]
