@@ -450,6 +450,44 @@ TEST(PlyDamageHistory, DamageNeverDecreasesOnARandomStrainHistory) {
   EXPECT_EQ(initiated_modes, 4) << "the walk should visit every mode";
 }
 
+TEST(PlyDamageHistory, AdvanceIsTheUpdateWithoutItsTangentBitForBit) {
+  // The plate calls advance(), the tests and Newton iterations update(): along a random strain history that
+  // initiates and softens modes (with and without viscosity), the two give the same state, stresses, secants
+  // and dissipation to the last bit, and a point reports undamaged() exactly when its secants are C(0).
+  for (const double viscosity : {0.0, 3e-7}) {
+    const PlyDamageLaw law(t300(), {.alpha = 0.0, .viscosity = viscosity});
+    std::mt19937 rng(1995);
+    std::normal_distribution<double> step(0.0, 1.0);
+    PlyDamageState state;
+    PlyStrain e;
+    int damaged_steps = 0;
+    for (int i = 0; i < 1500; ++i) {
+      e.in_plane +=
+          Eigen::Vector3d(6e-4 * step(rng), 6e-4 * step(rng), 1e-3 * step(rng)) - 0.004 * e.in_plane;
+      e.transverse_shear += Eigen::Vector2d(5e-4 * step(rng), 5e-4 * step(rng));
+      const PlyDamageResponse full = law.update(state, e, 0.02e-3, 1e-7);
+      const PlyDamageUpdate fast = law.advance(state, e, 0.02e-3, 1e-7);
+      ASSERT_EQ(fast.state.damage.values, full.state.damage.values) << i;
+      ASSERT_EQ(fast.state.regularised_damage.values, full.state.regularised_damage.values) << i;
+      ASSERT_EQ(fast.state.max_equivalent_strain.values, full.state.max_equivalent_strain.values) << i;
+      ASSERT_EQ(fast.state.onset_equivalent_strain.values, full.state.onset_equivalent_strain.values) << i;
+      ASSERT_EQ(fast.state.onset_equivalent_stress.values, full.state.onset_equivalent_stress.values) << i;
+      ASSERT_EQ(fast.stress, full.stress) << i;
+      ASSERT_EQ(fast.transverse_shear_stress, full.transverse_shear_stress) << i;
+      ASSERT_EQ(fast.secant, full.secant) << i;
+      ASSERT_EQ(fast.transverse_shear_secant, full.transverse_shear_secant) << i;
+      ASSERT_EQ(fast.dissipation.values, full.dissipation.values) << i;
+      const bool secants_undamaged = fast.secant == law.undamaged_stiffness() &&
+                                     fast.transverse_shear_secant == law.undamaged_transverse_shear();
+      ASSERT_EQ(fast.undamaged(), secants_undamaged) << i;
+      damaged_steps += fast.undamaged() ? 0 : 1;
+      state = fast.state;
+    }
+    // The walk must leave the undamaged state early, or the comparison covered only the elastic shortcut.
+    EXPECT_GT(damaged_steps, 1000) << "viscosity " << viscosity;
+  }
+}
+
 TEST(PlyDamageHistory, ReportedDissipationIsWorkMinusStoredEnergy) {
   // Energy balance at the material point along a smooth mixed history: the sum of the reported
   // dissipation equals the work ∫σ:dε minus the final stored energy ½ε:C(d)ε (both integrated

@@ -58,16 +58,35 @@ struct DamagedPlateModel::PlyPoints {
     return ps;
   }
 
+  /// The undamaged ply's terms of add_to(), T_εᵀ Q T_ε and k t/2 T_γᵀ G T_γ: every undamaged point of the ply
+  /// adds these, computed once by the same expressions (so the sections are the same bit for bit).
+  Eigen::Matrix3d undamaged_in_plane = Eigen::Matrix3d::Zero();
+  Eigen::Matrix2d undamaged_shear_term = Eigen::Matrix2d::Zero();
+
   /// Adds this ply's point at height z, with secant stiffnesses C (in-plane) and G (transverse shear) in
   /// material axes, to the section (DP1); k is the shear correction. Only the upper triangle of the
   /// membrane–bending block: symmetric_section() completes it.
   void add_to(SectionStiffness& sec, double z_point, double k, const Eigen::Matrix3d& C,
               const Eigen::Matrix2d& G) const {
-    const Eigen::Matrix3d Cbar = T_strain.transpose() * C * T_strain;
+    add_in_plane(sec, z_point, T_strain.transpose() * C * T_strain);
+    sec.F += (weight * k) * (T_shear.transpose() * G * T_shear);
+  }
+  /// add_to() with the undamaged stiffnesses.
+  void add_undamaged_to(SectionStiffness& sec, double z_point) const {
+    add_in_plane(sec, z_point, undamaged_in_plane);
+    sec.F += undamaged_shear_term;
+  }
+  /// Caches the undamaged terms from the ply law's undamaged stiffnesses; k is the shear correction.
+  void cache_undamaged(const PlyDamageLaw& law, double k) {
+    undamaged_in_plane = T_strain.transpose() * law.undamaged_stiffness() * T_strain;
+    undamaged_shear_term = (weight * k) * (T_shear.transpose() * law.undamaged_transverse_shear() * T_shear);
+  }
+
+private:
+  void add_in_plane(SectionStiffness& sec, double z_point, const Eigen::Matrix3d& Cbar) const {
     sec.C_mb.topLeftCorner<3, 3>() += weight * Cbar;
     sec.C_mb.topRightCorner<3, 3>() += (weight * z_point) * Cbar;
     sec.C_mb.bottomRightCorner<3, 3>() += (weight * z_point * z_point) * Cbar;
-    sec.F += (weight * k) * (T_shear.transpose() * G * T_shear);
   }
 };
 
@@ -277,8 +296,13 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
     laws_.push_back(std::move(laws));
     groups_.push_back(std::move(groups));
   }
-  for (const Laminate& lam : model.laminates())
-    plies_.push_back(ply_points(lam));
+  for (std::size_t s = 0; s < model.laminates().size(); ++s) {
+    const Laminate& lam = model.laminates()[s];
+    std::vector<PlyPoints> plies = ply_points(lam);
+    for (PlyPoints& ply : plies)
+      ply.cache_undamaged(*laws_.front()[s][ply.material], lam.shear_correction());
+    plies_.push_back(std::move(plies));
+  }
   K0_ = model.stiffness();
   const SparseMatrix& pattern = model.pattern();
   if (K0_.nonZeros() != pattern.nonZeros())
@@ -388,12 +412,15 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
     for (const PlyPoints& ply : plies) {
       const PlyDamageLaw& law = *laws[ply.material];
       for (const double z : ply.z) {
-        const PlyDamageResponse r = law.update(a.committed[index], ply.strain_at(z, strain, root_k), Lc, dt);
+        const PlyDamageUpdate r = law.advance(a.committed[index], ply.strain_at(z, strain, root_k), Lc, dt);
         a.trial[index] = r.state;
         ++index;
         for (const DamageMode m : all_damage_modes)
           initiated = initiated || r.state.initiated(m);
-        ply.add_to(sec, z, k, r.secant, r.transverse_shear_secant); // (DP1)
+        if (r.undamaged())
+          ply.add_undamaged_to(sec, z); // (DP1)
+        else
+          ply.add_to(sec, z, k, r.secant, r.transverse_shear_secant); // (DP1)
         for (const DamageMode m : all_damage_modes)
           a.trial_dissipation[m] += r.dissipation[m] * ply.weight * ops.w[p];
       }

@@ -423,18 +423,15 @@ PlyDamageLaw::PlyDamageLaw(Material material, PlyDamageOptions options)
   undamaged_transverse_shear_ = degraded_transverse_shear(material_, 0.0);
 }
 
-PlyDamageResponse PlyDamageLaw::elastic_response(const PlyDamageState& previous,
-                                                 const PlyStrain& strain) const {
-  PlyDamageResponse r;
+PlyDamageUpdate PlyDamageLaw::elastic_response(const PlyDamageState& previous,
+                                               const PlyStrain& strain) const {
+  PlyDamageUpdate r;
   r.state = previous;
   r.state.strain = strain;
   r.secant = undamaged_stiffness_;
   r.transverse_shear_secant = undamaged_transverse_shear_;
   r.stress = r.secant * strain.in_plane;
   r.transverse_shear_stress = r.transverse_shear_secant * strain.transverse_shear;
-  r.tangent.setZero();
-  r.tangent.topLeftCorner<3, 3>() = r.secant;
-  r.tangent.bottomRightCorner<2, 2>() = r.transverse_shear_secant;
   return r;
 }
 
@@ -477,6 +474,44 @@ double PlyDamageLaw::max_characteristic_length() const {
 
 PlyDamageResponse PlyDamageLaw::update(const PlyDamageState& previous, const PlyStrain& strain,
                                        double characteristic_length, double dt) const {
+  PlyDamageResponse r{advance(previous, strain, characteristic_length, dt), {}};
+  r.tangent = algorithmic_tangent(previous, r, strain, characteristic_length, dt);
+  return r;
+}
+
+Eigen::Matrix<double, 5, 5> PlyDamageLaw::algorithmic_tangent(const PlyDamageState& previous,
+                                                              const PlyDamageUpdate& next,
+                                                              const PlyStrain& strain,
+                                                              double characteristic_length, double dt) const {
+  const Material& m = material_;
+  const double alpha = options_.alpha;
+  const Eigen::Vector3d& e = strain.in_plane;
+  const ActiveModes active = active_modes(m, previous.regularised_damage, e);
+  const double eta = options_.viscosity;
+  const double weight = eta > 0.0 ? dt / (eta + dt) : 1.0;
+  Eigen::Matrix<double, 5, 5> tangent = Eigen::Matrix<double, 5, 5>::Zero();
+  tangent.topLeftCorner<3, 3>() = next.secant;
+  tangent.bottomRightCorner<2, 2>() = next.transverse_shear_secant;
+  for (const DamageMode mode : all_damage_modes) {
+    // A mode grows with the strain where it had initiated, is loaded beyond its largest strain and
+    // lies on the softening branch: ∂d_I/∂κ_I there.
+    if (!active.contains(mode) || !previous.initiated(mode)) continue;
+    const double eq = equivalent_strain(mode, e, alpha);
+    const double kappa = next.state.max_equivalent_strain[mode];
+    const double onset = next.state.onset_equivalent_strain[mode];
+    const double final_strain = final_equivalent_strain(
+        toughness_[mode], next.state.onset_equivalent_stress[mode], characteristic_length);
+    if (!(eq > previous.max_equivalent_strain[mode] && kappa > onset && kappa < final_strain)) continue;
+    Eigen::Matrix<double, 1, 5> dd = Eigen::Matrix<double, 1, 5>::Zero();
+    dd.head<3>() = weight * softening_slope(kappa, onset, final_strain) *
+                   equivalent_strain_gradient(mode, e, alpha).transpose();
+    tangent += stress_sensitivity(m, next.state.regularised_damage, active, strain, mode) * dd;
+  }
+  return tangent;
+}
+
+PlyDamageUpdate PlyDamageLaw::advance(const PlyDamageState& previous, const PlyStrain& strain,
+                                      double characteristic_length, double dt) const {
   if (!(characteristic_length > 0.0))
     throw std::invalid_argument(fmt::format(
         "progressive damage: the characteristic length must be > 0 m, got {}", characteristic_length));
@@ -501,10 +536,9 @@ PlyDamageResponse PlyDamageLaw::update(const PlyDamageState& previous, const Ply
   if (virgin && below_surface(active.fibre) && below_surface(active.matrix))
     return elastic_response(previous, strain);
 
-  PlyDamageResponse r;
+  PlyDamageUpdate r;
   r.state = previous;
   r.state.strain = strain;
-  PerDamageMode growth_rate; // ∂d_I/∂κ_I · (loading), for the tangent
   for (const DamageMode mode : all_damage_modes) {
     if (!active.contains(mode)) continue;
     const double eq = equivalent_strain(mode, e, alpha);
@@ -524,14 +558,10 @@ PlyDamageResponse PlyDamageLaw::update(const PlyDamageState& previous, const Ply
     const double kappa = std::max(previous.max_equivalent_strain[mode], eq);
     r.state.max_equivalent_strain[mode] = kappa;
     r.state.damage[mode] = std::max(previous.damage[mode], softening_damage(kappa, onset, final_strain));
-    const bool loading = previous.initiated(mode) && eq > previous.max_equivalent_strain[mode] &&
-                         kappa > onset && kappa < final_strain;
-    if (loading) growth_rate[mode] = softening_slope(kappa, onset, final_strain);
   }
 
   // Viscous regularisation, backward Euler (PD12): d_v = (η d_v,n + Δt d)/(η + Δt).
   const double eta = options_.viscosity;
-  const double weight = eta > 0.0 ? dt / (eta + dt) : 1.0;
   for (const DamageMode mode : all_damage_modes) {
     const double d = r.state.damage[mode];
     r.state.regularised_damage[mode] =
@@ -554,16 +584,6 @@ PlyDamageResponse PlyDamageLaw::update(const PlyDamageState& previous, const Ply
       r.dissipation[mode] = y[mode] * (dv[mode] - previous.regularised_damage[mode]);
   }
 
-  // Algorithmic tangent: C + Σ_I ∂σ/∂d_v,I ⊗ ∂d_v,I/∂ε.
-  r.tangent.setZero();
-  r.tangent.topLeftCorner<3, 3>() = r.secant;
-  r.tangent.bottomRightCorner<2, 2>() = r.transverse_shear_secant;
-  for (const DamageMode mode : all_damage_modes) {
-    if (growth_rate[mode] == 0.0) continue;
-    Eigen::Matrix<double, 1, 5> dd = Eigen::Matrix<double, 1, 5>::Zero();
-    dd.head<3>() = weight * growth_rate[mode] * equivalent_strain_gradient(mode, e, alpha).transpose();
-    r.tangent += stress_sensitivity(m, dv, active, strain, mode) * dd;
-  }
   return r;
 }
 
