@@ -139,6 +139,15 @@ Eigen::VectorXd ContactLoading::load(double alpha) const {
   return (1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector;
 }
 
+void ContactLoading::scaled_load(double alpha, double force, Eigen::VectorXd& out) const {
+  const Bracket b = bracket(alpha);
+  if (b.weight == 0.0)
+    out.noalias() = force * load_entry(b.j).vector;
+  else
+    out.noalias() =
+        force * ((1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector);
+}
+
 double ContactLoading::load_dot(double alpha, const Eigen::VectorXd& u) const {
   const Bracket b = bracket(alpha);
   if (b.weight == 0.0) return load_entry(b.j).vector.dot(u);

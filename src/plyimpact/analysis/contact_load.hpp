@@ -57,6 +57,8 @@ public:
   void add_response(double alpha, double force, Eigen::VectorXd& u) const;
   /// s_load(α), the load of a unit contact force.
   [[nodiscard]] Eigen::VectorXd load(double alpha) const;
+  /// out = force · s_load(α), the same numbers as force * load(alpha), into a vector sized once.
+  void scaled_load(double alpha, double force, Eigen::VectorXd& out) const;
   /// s_load(α)ᵀ u, the numbers of load(alpha).dot(u) without forming the vector.
   [[nodiscard]] double load_dot(double alpha, const Eigen::VectorXd& u) const;
 

@@ -270,7 +270,7 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
     if (iterations > 0) {
       if (converged(g, inertia, e.force, cs, uk)) {
         // Lagged: the trial states' damage already follows the converged separation (for the next step).
-        set_trial(std::move(e.trial), e.dissipated);
+        set_trial(e.trial, e.dissipated);
         break;
       }
       // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),

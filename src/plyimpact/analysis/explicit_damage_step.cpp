@@ -37,6 +37,7 @@ public:
 private:
   const ExplicitDamagePolicy& p_;
   Eigen::VectorXd a_next_;
+  Eigen::VectorXd force_;            ///< Fc s_load − f_int of the step (CD3), sized once
   double contact_flexibility_ = 0.0; ///< sᵀM⁻¹s, 1 / the mass the contact spring moves [1/kg]
 };
 
@@ -58,6 +59,7 @@ public:
 
 ExplicitDamageStepper::ExplicitDamageStepper(const ExplicitDamagePolicy& policy, const Impactor& impactor)
     : DamagedPlateStepper(policy, impactor), p_(policy), a_next_(Eigen::VectorXd::Zero(policy.equations())),
+      force_(Eigen::VectorXd::Zero(policy.equations())),
       contact_flexibility_(policy.scheme_.flexibility(loading_.sampler())) {}
 
 ContactSolution ExplicitDamageStepper::advance(long step, double t, const PlateState& s,
@@ -67,8 +69,10 @@ ContactSolution ExplicitDamageStepper::advance(long step, double t, const PlateS
   p_.scheme_.check_contact(step, t, cs, contact, contact_flexibility_);          // CD6
   // An element the screen left out that has reached a Hashin surface at u_{n+1} joins, and the law is
   // evaluated again at the same u_{n+1} (no solve: the displacement does not depend on it).
-  f_int_ = p_.plate_.explicit_internal_force(u_next, p_.scheme_.time_step(), field_);
-  p_.scheme_.accelerate(cs.force * loading_.load(cs.alpha) - f_int_, step, t, a_next_); // CD3
+  p_.plate_.explicit_internal_force(u_next, p_.scheme_.time_step(), field_, f_int_);
+  loading_.scaled_load(cs.alpha, cs.force, force_);
+  force_ -= f_int_;
+  p_.scheme_.accelerate(force_, step, t, a_next_); // CD3
   return cs;
 }
 

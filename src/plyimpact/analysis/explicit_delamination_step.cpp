@@ -79,6 +79,8 @@ private:
   Eigen::VectorXd f_;         ///< f_int(u_{n+1}) of the last advance()
   double plate_energy_ = 0.0; ///< ½ uᵀ K_plates u of the accepted state
   Eigen::VectorXd a_next_;
+  Eigen::VectorXd force_;            ///< Fc s_load − f_int of the step (CD3), sized once
+  StackedPlateState trial_buffer_;   ///< storage the interfaces' trial states are written into
   double contact_flexibility_ = 0.0; ///< sᵀM⁻¹s, 1 / the mass the contact spring moves [1/kg]
   // With ply damage, per sub-laminate: its damage field, its part of u_{n+1} and its force.
   std::vector<DamageField> fields_;
@@ -133,6 +135,7 @@ ExplicitDelaminationStepper::ExplicitDelaminationStepper(const ExplicitDelaminat
                                                          const Impactor& impactor)
     : StackedPlateStepper(policy, impactor), p_(policy), Ku_(Eigen::VectorXd::Zero(policy.equations())),
       f_(Eigen::VectorXd::Zero(policy.equations())), a_next_(Eigen::VectorXd::Zero(policy.equations())),
+      force_(Eigen::VectorXd::Zero(policy.equations())),
       contact_flexibility_(policy.scheme_.flexibility(loading_.sampler())) {
   if (p_.damaged_.empty()) return;
   const StackedPlateModel& stack = p_.stack_;
@@ -153,7 +156,7 @@ void ExplicitDelaminationStepper::damaged_plate_forces(const Eigen::VectorXd& u)
     const DamagedPlateModel& part = *p_.damaged_[k];
     const Eigen::Index first = p_.stack_.offset(static_cast<int>(k));
     u_parts_[k] = u.segment(first, part.size());
-    f_parts_[k] = part.explicit_internal_force(u_parts_[k], dt, fields_[k]);
+    part.explicit_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
     Ku_.segment(first, part.size()) = f_parts_[k];
   }
 }
@@ -168,11 +171,12 @@ ContactSolution ExplicitDelaminationStepper::advance(long step, double t, const 
   else
     damaged_plate_forces(u_next);
   f_ = Ku_;
-  StackedPlateState trial;
   const double dissipated =
-      p_.stack_.add_interface_forces(u_next, committed(), f_, trial, CohesiveDamage::evolve);
-  p_.scheme_.accelerate(cs.force * loading_.load(cs.alpha) - f_, step, t, a_next_); // CD3
-  set_trial(std::move(trial), dissipated);
+      p_.stack_.add_interface_forces(u_next, committed(), f_, trial_buffer_, CohesiveDamage::evolve);
+  loading_.scaled_load(cs.alpha, cs.force, force_);
+  force_ -= f_;
+  p_.scheme_.accelerate(force_, step, t, a_next_); // CD3
+  set_trial(trial_buffer_, dissipated);
   return cs;
 }
 

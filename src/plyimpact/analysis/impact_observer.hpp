@@ -66,6 +66,9 @@ public:
 
 /// The history row of a step view.
 [[nodiscard]] ImpactSample history_sample(const StepView& v);
+/// The same sample into `out`, whose per-ply and per-interface vectors keep their storage (no allocation
+/// when their sizes do not change: a writer that formats a row per step).
+void history_sample(const StepView& v, ImpactSample& out);
 
 class ImpactObserver {
 public:

@@ -6,6 +6,11 @@ namespace plyimpact {
 
 ImpactSample history_sample(const StepView& v) {
   ImpactSample h;
+  history_sample(v, h);
+  return h;
+}
+
+void history_sample(const StepView& v, ImpactSample& h) {
   h.t = v.t;
   h.force = v.force;
   h.impactor_w = v.impactor_w;
@@ -16,6 +21,12 @@ ImpactSample history_sample(const StepView& v) {
   h.plate_strain = v.plate_strain_energy();
   h.impactor_energy = v.impactor_energy;
   h.contact_work = v.contact_work;
+  h.damage_dissipation = 0.0; // zero / empty where the run has no damage or no interfaces
+  h.damage_area = 0.0;
+  h.ply_damage_area.clear();
+  h.delamination_dissipation = 0.0;
+  h.delaminated_area = 0.0;
+  h.interface_delaminated_area.clear();
   if (const PlyDamageView* d = v.damage()) {
     h.damage_dissipation = d->dissipated().sum();
     h.damage_area = d->projected_damage_area();
@@ -26,7 +37,6 @@ ImpactSample history_sample(const StepView& v) {
     h.delaminated_area = d->projected_area;
     h.interface_delaminated_area = d->delaminated_area;
   }
-  return h;
 }
 
 FieldRecorder::FieldRecorder(std::vector<double> times) : times_(std::move(times)) {

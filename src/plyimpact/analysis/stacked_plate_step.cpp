@@ -100,8 +100,7 @@ StackedPlateStepper::StackedPlateStepper(const StackedPlatePolicy& policy, const
       base_(policy), committed_(policy.stack_.virgin_state()) {}
 
 void StackedPlateStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {
-  committed_ = std::move(trial_);
-  trial_ = {};
+  std::swap(committed_, trial_); // trial_ keeps the old states' storage for the next set_trial()
   dissipated_ += trial_dissipated_;
   trial_dissipated_ = 0.0;
 }

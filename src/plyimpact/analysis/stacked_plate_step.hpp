@@ -66,9 +66,10 @@ public:
   bool delamination_areas(DelaminationAreas& out) const override;
 
 protected:
-  /// The states (and the energy dissipated reaching them) that accept() commits.
-  void set_trial(StackedPlateState&& trial, double dissipated) {
-    trial_ = std::move(trial);
+  /// The states (and the energy dissipated reaching them) that accept() commits. Swapped in: `trial`
+  /// receives storage of earlier states to write the next trial into without allocating.
+  void set_trial(StackedPlateState& trial, double dissipated) {
+    std::swap(trial_, trial);
     trial_dissipated_ = dissipated;
   }
   [[nodiscard]] const StackedPlateState& committed() const { return committed_; }

@@ -162,7 +162,15 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
                                                std::vector<Eigen::Triplet<double>>* tangent,
                                                CohesiveDamage damage) const {
   CohesiveEvaluation out;
-  out.trial.resize(committed.size());
+  out.dissipated = assemble_into(u, committed, f, tangent, damage, out.trial);
+  return out;
+}
+
+double CohesiveInterface::assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
+                                        Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
+                                        CohesiveDamage damage, std::vector<CohesiveState>& trial) const {
+  trial.resize(committed.size());
+  double dissipated = 0.0;
   const int n = points_per_element();
   std::array<Eigen::Vector3d, 9> node_traction;
   std::array<Eigen::Matrix3d, 81> pair_tangent;
@@ -175,8 +183,8 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const CohesiveResponse r =
           point_response(law_, committed[p], point_separation(q, ue), damage, loading_band_);
-      out.trial[p] = r.state;
-      out.dissipated += area_[p] * r.dissipated_energy;
+      trial[p] = r.state;
+      dissipated += area_[p] * r.dissipated_energy;
       const Eigen::Matrix<double, 9, 1>& N = shape_[static_cast<std::size_t>(q)];
       const Eigen::Vector3d t = area_[p] * r.traction;
       for (int a = 0; a < 9; ++a)
@@ -197,7 +205,7 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
         if (coupled_[node_pair(a, b)]) add_node_block(e, a, b, pair_tangent[node_pair(a, b)], *tangent);
     }
   }
-  return out;
+  return dissipated;
 }
 
 void CohesiveInterface::add_node_block(int e, int a, int b, const Eigen::Matrix3d& C,

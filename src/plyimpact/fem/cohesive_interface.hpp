@@ -92,6 +92,11 @@ public:
   CohesiveEvaluation assemble(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
                               Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
                               CohesiveDamage damage = CohesiveDamage::evolve) const;
+  /// assemble() writing the trial states into `trial` (resized; its storage reused from step to step);
+  /// returns the energy dissipated.
+  double assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed, Eigen::VectorXd& f,
+                       std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
+                       std::vector<CohesiveState>& trial) const;
 
   /// Each point's tangent ∂τ/∂δ times its area, as assemble adds it (DL2), into `out` (one per point).
   void point_tangents(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,

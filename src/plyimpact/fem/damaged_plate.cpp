@@ -453,10 +453,16 @@ void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t 
 
 Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
                                                   DamageField& field) const {
-  Eigen::VectorXd f = K0_by_rows_ * u;
+  Eigen::VectorXd f(u.size());
+  internal_force_into(u, dt, field, f);
+  return f;
+}
+
+void DamagedPlateModel::internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field,
+                                            Eigen::VectorXd& f) const {
+  f.noalias() = K0_by_rows_ * u;
   for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
     add_section_force(field, slot, evaluate_element(field.active_[slot].element, u, dt, field), f);
-  return f;
 }
 
 DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
@@ -595,11 +601,10 @@ bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& 
   return reached;
 }
 
-Eigen::VectorXd DamagedPlateModel::explicit_internal_force(const Eigen::VectorXd& u, double dt,
-                                                           DamageField& field) const {
-  Eigen::VectorXd f = internal_force(u, dt, field);
-  if (activate_reached(u, field)) f = internal_force(u, dt, field);
-  return f;
+void DamagedPlateModel::explicit_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
+                                                Eigen::VectorXd& f) const {
+  internal_force_into(u, dt, field, f);
+  if (activate_reached(u, field)) internal_force_into(u, dt, field, f);
 }
 
 void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int,

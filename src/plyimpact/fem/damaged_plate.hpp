@@ -134,8 +134,9 @@ public:
   [[nodiscard]] SparseMatrix secant_stiffness(const DamageField& field) const;
   /// The explicit step's evaluation: internal_force() at u, and again when an element the screen left out
   /// has reached a Hashin surface at u (activate_reached(); no solve, u does not depend on it).
-  [[nodiscard]] Eigen::VectorXd explicit_internal_force(const Eigen::VectorXd& u, double dt,
-                                                        DamageField& field) const;
+  /// Into `f`, sized once by the caller: no allocation per step.
+  void explicit_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
+                               Eigen::VectorXd& f) const;
   /// Activates the inactive elements that have reached a Hashin surface at u. True when there were any:
   /// the trial did not evaluate them, and the step must be iterated again.
   [[nodiscard]] bool activate_reached(const Eigen::VectorXd& u, DamageField& field) const;
@@ -173,6 +174,8 @@ private:
   /// Adds Sᵀ w (C(d) − C0) ε_p of element `slot`'s damaged points (its sections as they stand) to f.
   void add_section_force(const DamageField& field, std::size_t slot, const PointStrains& strains,
                          Eigen::VectorXd& f) const;
+  /// internal_force() into `f` (sized by the caller).
+  void internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field, Eigen::VectorXd& f) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
   /// returns the points' strains, from which internal_force() forms the element force.
   PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;

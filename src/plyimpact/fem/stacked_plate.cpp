@@ -137,9 +137,8 @@ double StackedPlateModel::add_interfaces(const Eigen::VectorXd& u, const Stacked
   trial.interfaces.resize(interfaces_.size());
   double dissipated = 0.0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
-    CohesiveEvaluation e = interfaces_[i]->assemble(u, committed.interfaces[i], force, tangent, damage);
-    dissipated += e.dissipated;
-    trial.interfaces[i] = std::move(e.trial);
+    dissipated += interfaces_[i]->assemble_into(u, committed.interfaces[i], force, tangent, damage,
+                                                trial.interfaces[i]);
   }
   return dissipated;
 }

@@ -96,7 +96,8 @@ void HistoryCsvWriter::on_finish(const StepView& last, const ImpactResult& /*res
 }
 
 void HistoryCsvWriter::record(const StepView& v) {
-  append_history_csv_row(buffer_, history_sample(v)); // appends in place: no string per step
+  history_sample(v, sample_);
+  append_history_csv_row(buffer_, sample_); // appends in place: no string or vector per step
   last_step_ = v.step;
   if (buffer_.size() >= block_bytes || std::chrono::steady_clock::now() - last_flush_ >= flush_interval)
     flush();

@@ -81,6 +81,7 @@ private:
   int fd_ = -1;
   long last_step_ = -1;
   std::string buffer_;
+  ImpactSample sample_; ///< the row being formatted, its vectors reused from step to step
   std::chrono::steady_clock::time_point last_flush_;
 };
 
