@@ -134,9 +134,9 @@ void ContactLoading::add_response(double alpha, double force, Eigen::VectorXd& u
 }
 
 Eigen::VectorXd ContactLoading::load(double alpha) const {
-  const Bracket b = bracket(alpha);
-  if (b.weight == 0.0) return load_entry(b.j).vector;
-  return (1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector;
+  Eigen::VectorXd s_load;
+  scaled_load(alpha, 1.0, s_load); // × 1.0 is exact: the same numbers as the interpolation itself
+  return s_load;
 }
 
 void ContactLoading::scaled_load(double alpha, double force, Eigen::VectorXd& out) const {
