@@ -488,6 +488,50 @@ TEST(PlyDamageHistory, AdvanceIsTheUpdateWithoutItsTangentBitForBit) {
   }
 }
 
+TEST(PlyDamageHistory, AVirginPlyBelowEverySurfaceKeepsItsStateAndTheUndamagedStiffness) {
+  // What the plate's screen relies on when it skips the law for a virgin ply below the Hashin surfaces
+  // (fem/damaged_plate.cpp): the law's answer there is the state given, its strain replaced, with the
+  // undamaged secants to the bit and a dissipation of +0. Once a mode initiates, the state is no longer
+  // virgin, even where the strain returns to zero.
+  const PlyDamageLaw law(t300());
+  const Eigen::Matrix3d Q = reduced_stiffness(t300());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PlyDamageState state;
+  ASSERT_TRUE(state.virgin());
+  int below = 0;
+  for (int i = 0; i < 400; ++i) {
+    PlyStrain e;
+    e.in_plane << 0.01 * u(rng), 0.006 * u(rng), 0.01 * u(rng);
+    e.transverse_shear << 0.01 * u(rng), 0.01 * u(rng);
+    const Eigen::Vector3d s = Q * e.in_plane;
+    const DamageMode fibre = s(0) >= 0.0 ? DamageMode::fibre_tension : DamageMode::fibre_compression;
+    const DamageMode matrix = s(1) >= 0.0 ? DamageMode::matrix_tension : DamageMode::matrix_compression;
+    const Material m = t300();
+    if (std::max(hashin_plane_stress_index(fibre, s, m.strength, 0.0),
+                 hashin_plane_stress_index(matrix, s, m.strength, 0.0)) >= 1.0)
+      continue;
+    ++below;
+    const PlyDamageUpdate r = law.advance(state, e, 1e-3, 1e-7);
+    ASSERT_TRUE(r.state.virgin()) << i;
+    ASSERT_EQ(r.state.damage.values, state.damage.values) << i;
+    ASSERT_EQ(r.state.max_equivalent_strain.values, state.max_equivalent_strain.values) << i;
+    ASSERT_EQ(r.state.strain.in_plane, e.in_plane) << i;
+    ASSERT_EQ(r.state.strain.transverse_shear, e.transverse_shear) << i;
+    ASSERT_EQ(r.secant, law.undamaged_stiffness()) << i;
+    ASSERT_EQ(r.transverse_shear_secant, law.undamaged_transverse_shear()) << i;
+    for (const DamageMode mode : all_damage_modes)
+      ASSERT_FALSE(std::signbit(r.dissipation[mode]) || r.dissipation[mode] != 0.0) << i;
+    state = r.state;
+  }
+  EXPECT_GT(below, 100) << "the strain range leaves too few points below the surfaces";
+  PlyStrain beyond; // transverse tension at twice Yt/E2: the matrix mode initiates
+  beyond.in_plane << 0.0, 2.0 * Yt / t300().E2, 0.0;
+  const PlyDamageState cracked = law.advance(state, beyond, 1e-3, 1e-7).state;
+  EXPECT_FALSE(cracked.virgin());
+  EXPECT_FALSE(law.advance(cracked, PlyStrain{}, 1e-3, 1e-7).state.virgin());
+}
+
 TEST(PlyDamageHistory, ReportedDissipationIsWorkMinusStoredEnergy) {
   // Energy balance at the material point along a smooth mixed history: the sum of the reported
   // dissipation equals the work ∫σ:dε minus the final stored energy ½ε:C(d)ε (both integrated

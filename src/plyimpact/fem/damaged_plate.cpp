@@ -46,7 +46,8 @@ struct DamagedPlateModel::PlyPoints {
   Eigen::Matrix3d T_strain;
   Eigen::Matrix2d T_shear;
   std::array<double, 2> z{};
-  double weight = 0.0; ///< t/2
+  double weight = 0.0;   ///< t/2
+  std::size_t group = 0; ///< its Group in the section's groups (the same in every length class)
 
   /// The ply strain in material axes at height z from the generalized strains (ε0, κ, γ) of a point;
   /// root_k = √K puts the plate's transverse shear energy into the ply.
@@ -140,6 +141,21 @@ struct DamagedPlateModel::Group {
     const double matrix =
         s(1) >= 0.0 ? mt * s(1) * s(1) + shear * t2 : mc * s(1) * s(1) + mc_linear * s(1) + shear * t2;
     return std::max(fibre, matrix);
+  }
+  /// An upper bound of the undamaged plies' active Hashin index over the group's z range at a point with
+  /// membrane strain and curvature `strain`. Each branch of a pair (fibre, matrix) is convex in z and the
+  /// stress affine: the largest active index is at an end of the range or where the sign of σ11 (σ22)
+  /// changes, where both branches reduce to their shear terms.
+  [[nodiscard]] double bound(const Eigen::Matrix<double, 6, 1>& strain) const {
+    const Eigen::Vector3d s0 = at_min * strain, s1 = at_max * strain;
+    double b = std::max(index(s0), index(s1));
+    for (const int c : {0, 1})
+      if (s0(c) * s1(c) < 0.0) {
+        const double f = s0(c) / (s0(c) - s1(c)); // where σ_cc = 0
+        const double t = s0(2) + f * (s1(2) - s0(2));
+        b = std::max(b, (c == 0 ? ft_shear : shear) * t * t);
+      }
+    return b;
   }
 };
 
@@ -299,8 +315,16 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
   for (std::size_t s = 0; s < model.laminates().size(); ++s) {
     const Laminate& lam = model.laminates()[s];
     std::vector<PlyPoints> plies = ply_points(lam);
-    for (PlyPoints& ply : plies)
+    const std::vector<Group>& groups = groups_.front()[s]; // the same plies in every class
+    for (PlyPoints& ply : plies) {
       ply.cache_undamaged(*laws_.front()[s][ply.material], lam.shear_correction());
+      ply.group = static_cast<std::size_t>(std::find_if(groups.begin(), groups.end(),
+                                                        [&](const Group& g) {
+                                                          return g.material == ply.material &&
+                                                                 g.T_strain == ply.T_strain;
+                                                        }) -
+                                           groups.begin());
+    }
     plies_.push_back(std::move(plies));
   }
   K0_ = model.stiffness();
@@ -364,6 +388,8 @@ DamageField DamagedPlateModel::virgin_field() const {
   f.u_committed_ = Eigen::VectorXd::Zero(model_.size());
   for (const Laminate& lam : model_.laminates())
     f.ply_area_.resize(std::max(f.ply_area_.size(), lam.ply_count()), 0.0);
+  for (const std::vector<Group>& groups : groups_.front())
+    f.group_bound_.resize(std::max(f.group_bound_.size(), groups.size()));
   return f;
 }
 
@@ -409,9 +435,26 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
     SectionStiffness sec = empty_section();
     bool initiated = false;
     std::size_t index = first;
+    std::fill(field.group_bound_.begin(), field.group_bound_.end(), -1.0);
+    // A virgin ply whose group is below every Hashin surface: the law would answer it elastically
+    // (PlyDamageLaw::advance), so its state and the cached section terms stand for the call.
+    const auto below_surfaces = [&](const PlyPoints& ply) {
+      double& bound = field.group_bound_[ply.group];
+      if (bound < 0.0) bound = groups[ply.group].bound(strain.head<6>());
+      return bound < 1.0;
+    };
     for (const PlyPoints& ply : plies) {
       const PlyDamageLaw& law = *laws[ply.material];
       for (const double z : ply.z) {
+        if (a.committed[index].virgin() && below_surfaces(ply)) {
+          a.trial[index] = a.committed[index];
+          a.trial[index].strain = ply.strain_at(z, strain, root_k);
+          ++index;
+          ply.add_undamaged_to(sec, z); // (DP1)
+          for (const DamageMode m : all_damage_modes)
+            a.trial_dissipation[m] += 0.0; // the law's zero dissipation: -0 + 0 = +0 as with the call
+          continue;
+        }
         const PlyDamageUpdate r = law.advance(a.committed[index], ply.strain_at(z, strain, root_k), Lc, dt);
         a.trial[index] = r.state;
         ++index;
@@ -531,20 +574,9 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
 
 double DamagedPlateModel::hashin_bound(const std::vector<Group>& groups,
                                        const Eigen::Matrix<double, 6, 1>& strain) {
-  // Each branch of a pair (fibre, matrix) is convex in z and the stress affine: over the range of a group
-  // the largest active index is at an end of the range or where the sign of σ11 (σ22) changes, where
-  // both branches reduce to their shear terms.
   double bound = 0.0;
-  for (const Group& g : groups) {
-    const Eigen::Vector3d s0 = g.at_min * strain, s1 = g.at_max * strain;
-    bound = std::max({bound, g.index(s0), g.index(s1)});
-    for (const int c : {0, 1})
-      if (s0(c) * s1(c) < 0.0) {
-        const double f = s0(c) / (s0(c) - s1(c)); // where σ_cc = 0
-        const double t = s0(2) + f * (s1(2) - s0(2));
-        bound = std::max(bound, (c == 0 ? g.ft_shear : g.shear) * t * t);
-      }
-  }
+  for (const Group& g : groups)
+    bound = std::max(bound, g.bound(strain));
   return bound;
 }
 

@@ -288,8 +288,10 @@ private:
   std::vector<ActiveElement> active_;
   std::vector<int> slot_of_element_; ///< index into active_, −1 when inactive
   std::vector<double> bound_;        ///< Hashin bound of each inactive element at the last screen
-  Eigen::VectorXd u_committed_;      ///< displacement of the last commit
-  bool bounds_current_ = false;      ///< bound_ was computed at the u being committed
+  /// the point's bound of each ply group, while one point is evaluated (−1: not yet computed)
+  std::vector<double> group_bound_;
+  Eigen::VectorXd u_committed_; ///< displacement of the last commit
+  bool bounds_current_ = false; ///< bound_ was computed at the u being committed
   PerDamageMode dissipated_;
   double stored_energy_ = 0.0;
   std::vector<double> ply_area_;

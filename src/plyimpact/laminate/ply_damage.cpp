@@ -530,10 +530,7 @@ PlyDamageUpdate PlyDamageLaw::advance(const PlyDamageState& previous, const PlyS
   const auto below_surface = [&](DamageMode mode) {
     return hashin_plane_stress_index(mode, s_hat, m.strength, alpha) < 1.0;
   };
-  const bool virgin = std::all_of(all_damage_modes.begin(), all_damage_modes.end(), [&](DamageMode mode) {
-    return !previous.initiated(mode) && previous.regularised_damage[mode] == 0.0;
-  });
-  if (virgin && below_surface(active.fibre) && below_surface(active.matrix))
+  if (previous.virgin() && below_surface(active.fibre) && below_surface(active.matrix))
     return elastic_response(previous, strain);
 
   PlyDamageUpdate r;

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <stdexcept>
@@ -67,6 +68,13 @@ struct PlyDamageState {
   PlyStrain strain;                      ///< the strain of this state (start point of the next increment)
 
   [[nodiscard]] bool initiated(DamageMode mode) const { return onset_equivalent_strain[mode] > 0.0; }
+  /// No mode has initiated and no stiffness variable has moved: the law answers such a ply below every
+  /// Hashin surface with its undamaged stiffness and this state, its strain replaced.
+  [[nodiscard]] bool virgin() const {
+    return std::all_of(all_damage_modes.begin(), all_damage_modes.end(), [this](DamageMode mode) {
+      return !initiated(mode) && regularised_damage[mode] == 0.0;
+    });
+  }
 };
 
 /// Settings of the damage law.
