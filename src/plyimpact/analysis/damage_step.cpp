@@ -46,10 +46,16 @@ private:
   void refactor(const SparseMatrix& K);
   [[nodiscard]] bool lagged() const;
 
+  /// f_int at uk into f_int_: the law's trial (implicit) or the damage held at d_n (lagged).
+  void evaluate_internal_force(const Eigen::VectorXd& uk);
+
   const DamageStepPolicy& p_;
   SpdSolver factor_;
+  SpdSolver::Workspace workspace_;
   Eigen::VectorXd kbar_diagonal_;
   NewtonStatistics stats_;
+  /// The iteration's vectors, sized once: a step allocates nothing but where it refactors.
+  Eigen::VectorXd uk_, ak_, inertia_, g_, s_load_, residual_, correction_, u_iterate_;
 };
 
 class DamageStepPolicy final : public DamagedPlatePolicy {
@@ -73,6 +79,9 @@ DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& imp
     : DamagedPlateStepper(policy, impactor), p_(policy),
       factor_(policy.options_.solver, policy.options_.ordering) {
   const SparseMatrix& K0 = p_.plate_.undamaged_stiffness();
+  for (Eigen::VectorXd* v : {&uk_, &ak_, &inertia_, &g_, &s_load_, &residual_, &correction_, &u_iterate_})
+    v->resize(K0.rows());
+  f_int_.resize(K0.rows());
   if (policy.options_.memory_limit_bytes)
     check_factor_memory(estimate_factor_memory(K0 + p_.options_.newmark.c0 * p_.M_.matrix()),
                         *policy.options_.memory_limit_bytes);
@@ -95,23 +104,23 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
   if (field_.growth_since_factorization() > ds.refactor_tolerance)
     refactor(
         p_.plate_.secant_stiffness(field_)); // the committed damage's secant (sections of the last trial)
-  Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
+  Eigen::VectorXd& uk = uk_;
+  uk.noalias() = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
   ContactSolution cs;
   double previous_correction = INFINITY;
   bool refresh = false;
   int iterations = 0;
   for (;;) {
-    const Eigen::VectorXd ak = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
-    const Eigen::VectorXd inertia = p_.M_.times(ak);
-    f_int_ =
-        lagged() ? p_.plate_.frozen_internal_force(uk, field_) : p_.plate_.internal_force(uk, nc.dt, field_);
-    const Eigen::VectorXd g = -inertia - f_int_;
+    ak_.noalias() = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
+    p_.M_.apply(ak_, inertia_);
+    evaluate_internal_force(uk);
+    g_.noalias() = -inertia_ - f_int_;
     if (iterations > 0) {
-      const Eigen::VectorXd s_load = loading_.load(cs.alpha);
-      const Eigen::VectorXd residual = g + cs.force * s_load;
-      const double scale = f_int_.norm() + inertia.norm() + std::abs(cs.force) * s_load.norm();
-      if (residual.norm() <= ds.residual_tolerance * scale &&
-          residual.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm()) {
+      loading_.scaled_load(cs.alpha, 1.0, s_load_);
+      residual_.noalias() = g_ + cs.force * s_load_;
+      const double scale = f_int_.norm() + inertia_.norm() + std::abs(cs.force) * s_load_.norm();
+      if (residual_.norm() <= ds.residual_tolerance * scale &&
+          residual_.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm()) {
         // Equilibrium with the elements evaluated; an element left out that has reached a Hashin
         // surface at uk joins, and the step iterates on.
         if (lagged() || !p_.plate_.activate_reached(uk, field_)) break;
@@ -133,18 +142,18 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
           lagged() ? "reduce time.dt"
                    : "set [damage] integration = \"lagged\" (no iteration on the damage; its energy balance "
                      "error shrinks with time.dt), or reduce time.dt"));
-    const Eigen::VectorXd u_hat = uk + factor_.solve(g);
-    cs = loading_.solve(contact, loading_.sampler().dot(u_hat));
-    Eigen::VectorXd u_iterate = u_hat;
-    loading_.add_response(cs.alpha, cs.force, u_iterate);
-    const double correction = (u_iterate - uk).norm();
+    factor_.solve(g_, correction_, workspace_);
+    u_iterate_.noalias() = uk + correction_; // û, the iterate before the contact force
+    cs = loading_.solve(contact, loading_.sampler().dot(u_iterate_));
+    loading_.add_response(cs.alpha, cs.force, u_iterate_);
+    const double correction = (u_iterate_ - uk).norm();
     ++iterations;
     if (!std::isfinite(correction) || !std::isfinite(cs.force))
       throw NewtonFailure(fmt::format(
           "progressive damage: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
     const bool slow = iterations > 1 && correction > ds.refresh_ratio * previous_correction;
     previous_correction = correction;
-    uk.swap(u_iterate);
+    uk.swap(u_iterate_);
     if (slow && lagged()) {
       refresh = true; // at the next iterate, once its sections are evaluated
     } else if (slow) {
@@ -166,8 +175,15 @@ void DamageStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& 
   // Lagged damage: the law once at u_{n+1} (elements that reached a surface there join first); its
   // secant sections are those of the next step.
   (void)p_.plate_.activate_reached(u_next, field_);
-  f_int_ = p_.plate_.internal_force(u_next, p_.options_.newmark.dt, field_);
+  p_.plate_.internal_force_into(u_next, p_.options_.newmark.dt, field_, f_int_);
   p_.plate_.commit(u_next, f_int_, field_);
+}
+
+void DamageStepper::evaluate_internal_force(const Eigen::VectorXd& uk) {
+  if (lagged())
+    p_.plate_.frozen_internal_force_into(uk, field_, f_int_);
+  else
+    p_.plate_.internal_force_into(uk, p_.options_.newmark.dt, field_, f_int_);
 }
 
 double DamageStepper::kinetic_energy(const PlateState& s) const {

@@ -545,10 +545,16 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
 }
 
 Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const {
-  Eigen::VectorXd f = K0_by_rows_ * u;
+  Eigen::VectorXd f(u.size());
+  frozen_internal_force_into(u, field, f);
+  return f;
+}
+
+void DamagedPlateModel::frozen_internal_force_into(const Eigen::VectorXd& u, DamageField& field,
+                                                   Eigen::VectorXd& f) const {
+  f.noalias() = K0_by_rows_ * u;
   for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
     add_section_force(field, slot, frozen_sections(field, slot, u), f);
-  return f;
 }
 
 SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const {

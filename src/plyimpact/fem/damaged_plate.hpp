@@ -130,6 +130,8 @@ public:
   /// returns f_int = K_s(d(u)) u and keeps the trial responses in `field`. Throws BandLimitError (with
   /// the element) when a mode initiates at a point whose characteristic length is beyond its band limit.
   [[nodiscard]] Eigen::VectorXd internal_force(const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  /// internal_force() into `f` (sized once by the caller): the same numbers without a new vector.
+  void internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field, Eigen::VectorXd& f) const;
   /// K_s with the trial damage of the last internal_force() (K0 where no element is active).
   [[nodiscard]] SparseMatrix secant_stiffness(const DamageField& field) const;
   /// The explicit step's evaluation: internal_force() at u, and again when an element the screen left out
@@ -144,6 +146,8 @@ public:
   /// cracks) chosen by the strain at u, K_s(d_n, u) u; the sections are kept, so secant_stiffness() is
   /// the matrix of the last call. No law update.
   [[nodiscard]] Eigen::VectorXd frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const;
+  /// frozen_internal_force() into `f` (sized once by the caller).
+  void frozen_internal_force_into(const Eigen::VectorXd& u, DamageField& field, Eigen::VectorXd& f) const;
   /// Accepts the trial state of the last internal_force() at u (f_int its result): commits it, adds its
   /// dissipation, updates the areas and the stored energy, and activates the elements near a surface.
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int, DamageField& field) const;
@@ -174,8 +178,6 @@ private:
   /// Adds Sᵀ w (C(d) − C0) ε_p of element `slot`'s damaged points (its sections as they stand) to f.
   void add_section_force(const DamageField& field, std::size_t slot, const PointStrains& strains,
                          Eigen::VectorXd& f) const;
-  /// internal_force() into `f` (sized by the caller).
-  void internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field, Eigen::VectorXd& f) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
   /// returns the points' strains, from which internal_force() forms the element force.
   PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
