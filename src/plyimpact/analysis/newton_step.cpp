@@ -52,6 +52,9 @@ private:
   long last_refactor_ = 0;
   bool refresh_ = false; ///< the last step needed more than one solve: refactor at uₙ first
   NewtonStatistics stats_;
+  SpdSolver::Workspace workspace_;
+  /// The iteration's vectors, sized once: a step allocates nothing but where it refactors.
+  Eigen::VectorXd uk_, ak_, inertia_, g_, s_load_, residual_, correction_, u_iterate_;
 };
 
 class NewtonStepPolicy final : public StepPolicy {
@@ -81,6 +84,8 @@ NewtonStepper::NewtonStepper(const NewtonStepPolicy& policy, const Impactor& imp
       factor_(policy.options_.solver, policy.options_.ordering),
       f_int_(Eigen::VectorXd::Zero(policy.equations())),
       f_int_previous_step_(Eigen::VectorXd::Zero(policy.equations())) {
+  for (Eigen::VectorXd* v : {&uk_, &ak_, &inertia_, &g_, &s_load_, &residual_, &correction_, &u_iterate_})
+    v->resize(policy.equations());
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
   if (policy.options_.memory_limit_bytes)
     check_factor_memory(estimate_factor_memory(p_.plate_.tangent_stiffness(at_rest) +
@@ -106,23 +111,24 @@ ContactSolution NewtonStepper::advance(long step, double t, const PlateState& s,
     last_refactor_ = step;
   }
   // Newton iterations on (u, Fc); start from constant acceleration (a_{n+1} = aₙ).
-  Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
+  Eigen::VectorXd& uk = uk_;
+  uk.noalias() = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
   ContactSolution cs;
   double previous_correction = INFINITY;
   int iterations = 0; // linear solves in this step
   for (;;) {
-    const Eigen::VectorXd ak = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
-    const Eigen::VectorXd inertia = p_.M_.times(ak);
-    f_int_ = p_.plate_.internal_force(uk);
-    const Eigen::VectorXd g = -inertia - f_int_; // force-free residual
+    ak_.noalias() = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
+    p_.M_.apply(ak_, inertia_);
+    p_.plate_.internal_force(uk, f_int_);
+    g_.noalias() = -inertia_ - f_int_; // force-free residual
     // Converged: the residual is small, and so is the next correction, estimated without a solve
     // by the diagonal of K̄ (δ ≈ diag(K̄)⁻¹ r).
     if (iterations > 0) {
-      const Eigen::VectorXd s_load = loading_.load(cs.alpha);
-      const Eigen::VectorXd residual = g + cs.force * s_load;
-      const double scale = f_int_.norm() + inertia.norm() + std::abs(cs.force) * s_load.norm();
-      if (residual.norm() <= ns.residual_tolerance * scale &&
-          residual.cwiseQuotient(kbar_diagonal_).norm() <= ns.displacement_tolerance * uk.norm())
+      loading_.scaled_load(cs.alpha, 1.0, s_load_);
+      residual_.noalias() = g_ + cs.force * s_load_;
+      const double scale = f_int_.norm() + inertia_.norm() + std::abs(cs.force) * s_load_.norm();
+      if (residual_.norm() <= ns.residual_tolerance * scale &&
+          residual_.cwiseQuotient(kbar_diagonal_).norm() <= ns.displacement_tolerance * uk.norm())
         break;
     }
     if (iterations == ns.max_iterations)
@@ -131,18 +137,18 @@ ContactSolution NewtonStepper::advance(long step, double t, const PlateState& s,
           "iterations; reduce time.dt",
           step, t, ns.max_iterations));
     // Plate predictor û and the exact scalar contact problem with ws affine in Fc (SPEC §4).
-    const Eigen::VectorXd u_hat = uk + factor_.solve(g);
-    cs = loading_.solve(contact, sw().dot(u_hat));
-    Eigen::VectorXd u_iterate = u_hat;
-    loading_.add_response(cs.alpha, cs.force, u_iterate);
-    const double correction = (u_iterate - uk).norm();
+    factor_.solve(g_, correction_, workspace_);
+    u_iterate_.noalias() = uk + correction_; // û, the iterate before the contact force
+    cs = loading_.solve(contact, sw().dot(u_iterate_));
+    loading_.add_response(cs.alpha, cs.force, u_iterate_);
+    const double correction = (u_iterate_ - uk).norm();
     ++iterations;
     if (!std::isfinite(correction) || !std::isfinite(cs.force))
       throw NewtonFailure(fmt::format(
           "non-linear impact: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
     const bool slow = correction > ns.refresh_ratio * previous_correction || iterations > ns.refresh_after;
     previous_correction = correction;
-    uk.swap(u_iterate);
+    uk.swap(u_iterate_);
     if (slow && iterations > 1) {
       refactor(uk); // modified Newton: a new tangent where the iterations slowed down
       previous_correction = INFINITY;

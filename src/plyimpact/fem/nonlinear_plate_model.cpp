@@ -21,12 +21,17 @@ NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure 
 }
 
 Eigen::VectorXd NonlinearPlateModel::internal_force(const Eigen::VectorXd& u) const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.size());
+  Eigen::VectorXd f(model_.size());
+  internal_force(u, f);
+  return f;
+}
+
+void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+  f.setZero(model_.size());
   for (int e = 0; e < model_.mesh().element_count(); ++e) {
     const ElementEquations& eq = model_.element_equations(e);
     scatter_add(f, eq, element_.internal_force(geometry_of(e), section_of(e), gather(u, eq)));
   }
-  return f;
 }
 
 SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) const {

@@ -19,6 +19,8 @@ public:
 
   /// f_int(u) = Σₑ ∫ Gᵀ Eᵀ S dA over the free DOFs.
   [[nodiscard]] Eigen::VectorXd internal_force(const Eigen::VectorXd& u) const;
+  /// internal_force(u) into `f` (sized once by the caller): the same numbers without a new vector.
+  void internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
   /// K_T(u) = ∂f_int/∂u, same pattern as PlateModel::stiffness().
   [[nodiscard]] SparseMatrix tangent_stiffness(const Eigen::VectorXd& u) const;
 
