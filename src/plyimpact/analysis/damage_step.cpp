@@ -17,6 +17,7 @@
 // with the iterate's strain. K̄ is refactored with the iterate's secant where a crack opened or closed
 // (semi-smooth Newton on the modes) or the iterations slow down. The law is called once per step, at the
 // accepted u_{n+1}, for d_{n+1} and the dissipation.
+#include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/damaged_plate_step.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
@@ -54,8 +55,8 @@ private:
   SpdSolver::Workspace workspace_;
   Eigen::VectorXd kbar_diagonal_;
   NewtonStatistics stats_;
-  /// The iteration's vectors, sized once: a step allocates nothing but where it refactors.
-  Eigen::VectorXd uk_, ak_, inertia_, g_, s_load_, residual_, correction_, u_iterate_;
+  ContactIteration iteration_;      ///< a step allocates nothing but where it refactors
+  mutable Eigen::VectorXd scratch_; ///< M v of the kinetic energy
 };
 
 class DamageStepPolicy final : public DamagedPlatePolicy {
@@ -77,11 +78,9 @@ bool DamageStepper::lagged() const {
 
 DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& impactor)
     : DamagedPlateStepper(policy, impactor), p_(policy),
-      factor_(policy.options_.solver, policy.options_.ordering) {
+      factor_(policy.options_.solver, policy.options_.ordering), iteration_(policy.equations()),
+      scratch_(policy.equations()) {
   const SparseMatrix& K0 = p_.plate_.undamaged_stiffness();
-  for (Eigen::VectorXd* v : {&uk_, &ak_, &inertia_, &g_, &s_load_, &residual_, &correction_, &u_iterate_})
-    v->resize(K0.rows());
-  f_int_.resize(K0.rows());
   if (policy.options_.memory_limit_bytes)
     check_factor_memory(estimate_factor_memory(K0 + p_.options_.newmark.c0 * p_.M_.matrix()),
                         *policy.options_.memory_limit_bytes);
@@ -104,28 +103,22 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
   if (field_.growth_since_factorization() > ds.refactor_tolerance)
     refactor(
         p_.plate_.secant_stiffness(field_)); // the committed damage's secant (sections of the last trial)
-  Eigen::VectorXd& uk = uk_;
-  uk.noalias() = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
+  ContactIteration& it = iteration_;
+  it.predict(s, nc);
   ContactSolution cs;
   double previous_correction = INFINITY;
   bool refresh = false;
   int iterations = 0;
   for (;;) {
-    ak_.noalias() = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
-    p_.M_.apply(ak_, inertia_);
-    evaluate_internal_force(uk);
-    g_.noalias() = -inertia_ - f_int_;
-    if (iterations > 0) {
-      loading_.scaled_load(cs.alpha, 1.0, s_load_);
-      residual_.noalias() = g_ + cs.force * s_load_;
-      const double scale = f_int_.norm() + inertia_.norm() + std::abs(cs.force) * s_load_.norm();
-      if (residual_.norm() <= ds.residual_tolerance * scale &&
-          residual_.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm()) {
-        // Equilibrium with the elements evaluated; an element left out that has reached a Hashin
-        // surface at uk joins, and the step iterates on.
-        if (lagged() || !p_.plate_.activate_reached(uk, field_)) break;
-        continue;
-      }
+    it.newmark_inertia(s, nc, p_.M_);
+    evaluate_internal_force(it.uk());
+    it.set_internal_force(f_int_);
+    if (iterations > 0 && it.converged(loading_, cs, f_int_, kbar_diagonal_, ds.residual_tolerance,
+                                       ds.displacement_tolerance)) {
+      // Equilibrium with the elements evaluated; an element left out that has reached a Hashin
+      // surface at u_k joins, and the step iterates on.
+      if (lagged() || !p_.plate_.activate_reached(it.uk(), field_)) break;
+      continue;
     }
     // Lagged: semi-smooth Newton on the crack modes (the secant at the iterate's modes is the tangent of
     // the frozen-damage problem): refactor where a crack opened or closed, or where the iterations slow.
@@ -142,18 +135,15 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
           lagged() ? "reduce time.dt"
                    : "set [damage] integration = \"lagged\" (no iteration on the damage; its energy balance "
                      "error shrinks with time.dt), or reduce time.dt"));
-    factor_.solve(g_, correction_, workspace_);
-    u_iterate_.noalias() = uk + correction_; // û, the iterate before the contact force
-    cs = loading_.solve(contact, loading_.sampler().dot(u_iterate_));
-    loading_.add_response(cs.alpha, cs.force, u_iterate_);
-    const double correction = (u_iterate_ - uk).norm();
+    const double correction =
+        it.correct([this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { factor_.solve(g, x, workspace_); },
+                   loading_, contact, cs);
     ++iterations;
     if (!std::isfinite(correction) || !std::isfinite(cs.force))
       throw NewtonFailure(fmt::format(
           "progressive damage: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
     const bool slow = iterations > 1 && correction > ds.refresh_ratio * previous_correction;
     previous_correction = correction;
-    uk.swap(u_iterate_);
     if (slow && lagged()) {
       refresh = true; // at the next iterate, once its sections are evaluated
     } else if (slow) {
@@ -163,7 +153,7 @@ ContactSolution DamageStepper::advance(long step, double t, const PlateState& s,
   }
   stats_.iterations += iterations;
   stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
-  u_next.swap(uk);
+  u_next.swap(it.uk());
   return cs;
 }
 
@@ -187,7 +177,7 @@ void DamageStepper::evaluate_internal_force(const Eigen::VectorXd& uk) {
 }
 
 double DamageStepper::kinetic_energy(const PlateState& s) const {
-  return p_.M_.kinetic_energy(s.v);
+  return p_.M_.kinetic_energy(s.v, scratch_);
 }
 
 } // namespace

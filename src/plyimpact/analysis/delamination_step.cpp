@@ -27,6 +27,7 @@
 // energy exactly, also where faces open or close inside it (with the law's end tractions the clapping
 // of delaminated faces, held apart by the penalty K, created energy: docs/delamination.md, "The lagged
 // step keeps the energy").
+#include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/stacked_plate_step.hpp"
@@ -67,8 +68,15 @@ public:
 private:
   /// x = K̄⁻¹ b with the iteration matrix in use.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n: f(u_n) − Fc_n s_n.
-  [[nodiscard]] Eigen::VectorXd step_start(const Eigen::VectorXd& u_n, const ContactStep& contact) const;
+  /// The same numbers into x (sized once), without allocating where the factor is a Cholesky one.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n, f(u_n) − Fc_n s_n, into
+  /// start_.
+  void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
+  /// f(u_k) into force_ and the trial states into trial_, their tangent returned where asked for;
+  /// returns the energy dissipated reaching the trial states.
+  double internal_force(const Eigen::VectorXd& uk, CohesiveDamage damage,
+                        std::optional<SparseMatrix>* tangent);
   /// Factors the tangent K_T + c0 M and iterates with it from now on; the lagged step records the
   /// interface points' tangents at uk that it holds (for update_factor).
   void use_tangent(const SparseMatrix& tangent, const Eigen::VectorXd& uk, CohesiveDamage damage);
@@ -78,11 +86,6 @@ private:
   bool update_factor(const Eigen::VectorXd& uk, CohesiveDamage damage);
   /// A refresh may try update_factor: the lagged step's own Cholesky factor is in use and updates are on.
   [[nodiscard]] bool may_update_factor() const;
-  /// Has the iterate converged: small residual, and a small next correction estimated without a solve.
-  [[nodiscard]] bool converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
-                               const Eigen::VectorXd& force, const ContactSolution& cs,
-                               const Eigen::VectorXd& uk) const;
-
   const DelaminationStepPolicy& p_;
   Eigen::SparseLU<SparseMatrix> tangent_lu_; ///< implicit: unsymmetric under mixed mode
   SpdSolver frozen_factor_;                  ///< lagged: the secant at fixed damage, symmetric positive
@@ -92,6 +95,12 @@ private:
   int update_rank_ = 0;   ///< rank-one updates since its factorization
   Eigen::VectorXd kbar_diagonal_;
   NewtonStatistics stats_;
+  /// The iterations' vectors and buffers, sized once: a step allocates nothing but where it refactors
+  /// (the workspaces after the factors they serve, which they must not outlive).
+  ContactIteration iteration_;
+  Eigen::VectorXd u_start_, force_, start_, previous_load_;
+  StackedPlateState trial_;
+  SpdSolver::Workspace elastic_workspace_, frozen_workspace_;
 };
 
 class DelaminationStepPolicy final : public StackedPlatePolicy {
@@ -133,7 +142,9 @@ private:
 DelaminationStepper::DelaminationStepper(const DelaminationStepPolicy& policy, const Impactor& impactor)
     : StackedPlateStepper(policy, impactor), p_(policy),
       frozen_factor_(policy.options_.solver, policy.options_.ordering),
-      kbar_diagonal_(policy.elastic_diagonal_) {
+      kbar_diagonal_(policy.elastic_diagonal_), iteration_(policy.equations()) {
+  for (Eigen::VectorXd* v : {&u_start_, &force_, &start_, &previous_load_})
+    v->resize(policy.equations());
   loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); });
   stats_.factorizations = 1; // the policy's elastic factor
 }
@@ -143,6 +154,28 @@ Eigen::VectorXd DelaminationStepper::solve(const Eigen::VectorXd& b) const {
     return p_.settings_.integration == DamageIntegration::lagged ? frozen_factor_.solve(b)
                                                                  : tangent_lu_.solve(b);
   return p_.elastic_.solve(b);
+}
+
+void DelaminationStepper::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (!tangent_in_use_)
+    p_.elastic_.solve(b, x, elastic_workspace_);
+  else if (p_.settings_.integration == DamageIntegration::lagged)
+    frozen_factor_.solve(b, x, frozen_workspace_);
+  else
+    x = tangent_lu_.solve(b);
+}
+
+double DelaminationStepper::internal_force(const Eigen::VectorXd& uk, CohesiveDamage damage,
+                                           std::optional<SparseMatrix>* tangent) {
+  if (tangent == nullptr) {
+    force_.noalias() = p_.stack_.plate_stiffness() * uk;
+    return p_.stack_.add_interface_forces(uk, committed(), force_, trial_, damage);
+  }
+  StackedPlateEvaluation e = p_.stack_.evaluate(uk, committed(), damage);
+  force_.swap(e.force);
+  std::swap(trial_, e.trial);
+  *tangent = std::move(e.tangent);
+  return e.dissipated;
 }
 
 void DelaminationStepper::use_tangent(const SparseMatrix& tangent, const Eigen::VectorXd& uk,
@@ -231,25 +264,14 @@ bool DelaminationStepper::update_factor(const Eigen::VectorXd& uk, CohesiveDamag
   return true;
 }
 
-bool DelaminationStepper::converged(const Eigen::VectorXd& g, const Eigen::VectorXd& inertia,
-                                    const Eigen::VectorXd& force, const ContactSolution& cs,
-                                    const Eigen::VectorXd& uk) const {
-  const DelaminationSettings& ds = p_.settings_;
-  const Eigen::VectorXd s_load = loading_.load(cs.alpha);
-  const Eigen::VectorXd residual = g + cs.force * s_load;
-  const double scale = force.norm() + inertia.norm() + std::abs(cs.force) * s_load.norm();
-  return residual.norm() <= ds.residual_tolerance * scale &&
-         residual.cwiseQuotient(kbar_diagonal_).norm() <= ds.displacement_tolerance * uk.norm();
-}
-
 ContactSolution DelaminationStepper::advance(long step, double t, const PlateState& s,
                                              const ContactStep& contact, Eigen::VectorXd& u_next) {
   const DelaminationSettings& ds = p_.settings_;
   const NewmarkCoefficients& nc = p_.options_.newmark;
   // Start from constant acceleration (a_{n+1} = aₙ).
-  Eigen::VectorXd uk = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
-  Eigen::VectorXd u_start; // where the last correction started
-  ContactSolution cs, cs_start;
+  ContactIteration& it = iteration_;
+  it.predict(s, nc);
+  ContactSolution cs, cs_start; // cs_start: where the last correction started, with u_start_
   double previous_correction = INFINITY, start_residual = INFINITY;
   bool refactor = false;
   int iterations = 0, halvings = 0; // linear solves in this step; halvings of the last correction
@@ -258,29 +280,33 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
   const CohesiveDamage damage = !lagged     ? CohesiveDamage::evolve
                                 : mean_form ? CohesiveDamage::lagged_mean
                                             : CohesiveDamage::lagged;
-  const Eigen::VectorXd start = mean_form ? step_start(s.u, contact) : Eigen::VectorXd();
+  if (mean_form) step_start(s.u, contact);
+  std::optional<SparseMatrix> tangent;
   for (;;) {
-    const Eigen::VectorXd inertia = mean_form ? p_.M_.times(nc.c0 * (uk - s.u - nc.dt * s.v))
-                                              : p_.M_.times(nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a);
+    if (mean_form)
+      it.inertia_of(p_.M_, nc.c0 * (it.uk() - s.u - nc.dt * s.v));
+    else
+      it.newmark_inertia(s, nc, p_.M_);
     const bool assemble_tangent = refactor && !may_update_factor();
-    StackedPlateEvaluation e = assemble_tangent ? p_.stack_.evaluate(uk, committed(), damage)
-                                                : p_.stack_.internal_force(uk, committed(), damage);
-    if (mean_form) e.force += start;
-    const Eigen::VectorXd g = -inertia - e.force; // force-free residual
+    tangent.reset();
+    const double dissipated = internal_force(it.uk(), damage, assemble_tangent ? &tangent : nullptr);
+    if (mean_form) force_ += start_;
+    it.set_internal_force(force_);
     if (iterations > 0) {
-      if (converged(g, inertia, e.force, cs, uk)) {
+      if (it.converged(loading_, cs, force_, kbar_diagonal_, ds.residual_tolerance,
+                       ds.displacement_tolerance)) {
         // Lagged: the trial states' damage already follows the converged separation (for the next step).
-        set_trial(e.trial, e.dissipated);
+        set_trial(trial_, dissipated);
         break;
       }
       // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),
       // and full corrections can cycle between its pieces; a correction that did not lower the residual
       // by the fraction sufficient_decrease is halved, up to max_halvings times (the last is kept). (An
       // exact two-cycle, equal residuals at both ends, was measured after separation.)
-      const double residual = (g + cs.force * loading_.load(cs.alpha)).norm();
+      const double residual = it.residual_norm();
       if (residual > (1.0 - sufficient_decrease) * start_residual && tangent_in_use_ &&
           halvings < max_halvings) {
-        uk = 0.5 * (u_start + uk);
+        it.uk() = 0.5 * (u_start_ + it.uk());
         cs.force = 0.5 * (cs_start.force + cs.force);
         cs.alpha = 0.5 * (cs_start.alpha + cs.alpha);
         ++halvings;
@@ -288,8 +314,8 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
       }
       start_residual = residual;
     }
-    if (refactor && !update_factor(uk, damage))
-      use_tangent(assemble_tangent ? e.tangent : p_.stack_.evaluate(uk, committed(), damage).tangent, uk,
+    if (refactor && !update_factor(it.uk(), damage))
+      use_tangent(tangent ? *tangent : p_.stack_.evaluate(it.uk(), committed(), damage).tangent, it.uk(),
                   damage);
     refactor = false;
     halvings = 0;
@@ -297,14 +323,10 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
       throw NewtonFailure(fmt::format("delamination: Newton iterations did not converge in step {} (t = "
                                       "{:.6g} s) after {} iterations; reduce time.dt",
                                       step, t, ds.max_iterations));
-    // Plate predictor û and the exact scalar contact problem with ws affine in Fc (SPEC §4).
-    u_start = uk;
+    u_start_ = it.uk();
     cs_start = cs;
-    const Eigen::VectorXd u_hat = uk + solve(g);
-    cs = loading_.solve(contact, loading_.sampler().dot(u_hat));
-    Eigen::VectorXd u_iterate = u_hat;
-    loading_.add_response(cs.alpha, cs.force, u_iterate);
-    const double correction = (u_iterate - uk).norm();
+    const double correction = it.correct(
+        [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { solve(g, x); }, loading_, contact, cs);
     ++iterations;
     if (!std::isfinite(correction) || !std::isfinite(cs.force))
       throw NewtonFailure(
@@ -312,11 +334,10 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
     refactor = iterations > 1 &&
                (correction > ds.refresh_ratio * previous_correction || iterations % ds.refresh_after == 0);
     previous_correction = refactor ? INFINITY : correction;
-    uk.swap(u_iterate);
   }
   stats_.iterations += iterations;
   stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
-  u_next.swap(uk);
+  u_next.swap(it.uk());
   return cs;
 }
 
@@ -327,12 +348,13 @@ ContactSolution DelaminationStepper::advance(long step, double t, const PlateSta
 // 2 τ̄ − τ(δ_n) (CohesiveDamage::lagged_mean), all at the held damage: the mean of the step's forces is
 // then ½ K_plates (u_n + u) + the interfaces' mean f̄ (DL6). aₙ does not enter: where the damage
 // changed or faces opened or closed, the Newmark accelerations are not the equilibrium ones.
-Eigen::VectorXd DelaminationStepper::step_start(const Eigen::VectorXd& u_n,
-                                                const ContactStep& contact) const {
-  Eigen::VectorXd start = p_.stack_.internal_force(u_n, committed(), CohesiveDamage::lagged_mean).force;
-  if (contact.previous_force() != 0.0)
-    start -= contact.previous_force() * loading_.load(contact.previous_indentation());
-  return start;
+void DelaminationStepper::step_start(const Eigen::VectorXd& u_n, const ContactStep& contact) {
+  start_.noalias() = p_.stack_.plate_stiffness() * u_n;
+  (void)p_.stack_.add_interface_forces(u_n, committed(), start_, trial_, CohesiveDamage::lagged_mean);
+  if (contact.previous_force() != 0.0) {
+    loading_.scaled_load(contact.previous_indentation(), contact.previous_force(), previous_load_);
+    start_ -= previous_load_;
+  }
 }
 
 /// Steepest softening slope of the law over the pure modes [Pa/m] (DL5).

@@ -9,6 +9,7 @@
 // and refreshed (modified Newton) only when the iterations slow down (contraction ratio above
 // `refresh_ratio` or more than `refresh_after` iterations in a step); at small Δt, c0 M dominates K̄
 // and one factorization typically serves the whole event.
+#include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -53,8 +54,8 @@ private:
   bool refresh_ = false; ///< the last step needed more than one solve: refactor at uₙ first
   NewtonStatistics stats_;
   SpdSolver::Workspace workspace_;
-  /// The iteration's vectors, sized once: a step allocates nothing but where it refactors.
-  Eigen::VectorXd uk_, ak_, inertia_, g_, s_load_, residual_, correction_, u_iterate_;
+  ContactIteration iteration_;      ///< a step allocates nothing but where it refactors
+  mutable Eigen::VectorXd scratch_; ///< M v of the kinetic energy
 };
 
 class NewtonStepPolicy final : public StepPolicy {
@@ -83,9 +84,8 @@ NewtonStepper::NewtonStepper(const NewtonStepPolicy& policy, const Impactor& imp
     : p_(policy), loading_(policy.model_, policy.equations_, impactor, policy.options_.load),
       factor_(policy.options_.solver, policy.options_.ordering),
       f_int_(Eigen::VectorXd::Zero(policy.equations())),
-      f_int_previous_step_(Eigen::VectorXd::Zero(policy.equations())) {
-  for (Eigen::VectorXd* v : {&uk_, &ak_, &inertia_, &g_, &s_load_, &residual_, &correction_, &u_iterate_})
-    v->resize(policy.equations());
+      f_int_previous_step_(Eigen::VectorXd::Zero(policy.equations())), iteration_(policy.equations()),
+      scratch_(policy.equations()) {
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
   if (policy.options_.memory_limit_bytes)
     check_factor_memory(estimate_factor_memory(p_.plate_.tangent_stiffness(at_rest) +
@@ -111,53 +111,41 @@ ContactSolution NewtonStepper::advance(long step, double t, const PlateState& s,
     last_refactor_ = step;
   }
   // Newton iterations on (u, Fc); start from constant acceleration (a_{n+1} = aₙ).
-  Eigen::VectorXd& uk = uk_;
-  uk.noalias() = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
+  ContactIteration& it = iteration_;
+  it.predict(s, nc);
   ContactSolution cs;
   double previous_correction = INFINITY;
   int iterations = 0; // linear solves in this step
   for (;;) {
-    ak_.noalias() = nc.c0 * (uk - s.u) - nc.c2 * s.v - nc.c3 * s.a;
-    p_.M_.apply(ak_, inertia_);
-    p_.plate_.internal_force(uk, f_int_);
-    g_.noalias() = -inertia_ - f_int_; // force-free residual
-    // Converged: the residual is small, and so is the next correction, estimated without a solve
-    // by the diagonal of K̄ (δ ≈ diag(K̄)⁻¹ r).
-    if (iterations > 0) {
-      loading_.scaled_load(cs.alpha, 1.0, s_load_);
-      residual_.noalias() = g_ + cs.force * s_load_;
-      const double scale = f_int_.norm() + inertia_.norm() + std::abs(cs.force) * s_load_.norm();
-      if (residual_.norm() <= ns.residual_tolerance * scale &&
-          residual_.cwiseQuotient(kbar_diagonal_).norm() <= ns.displacement_tolerance * uk.norm())
-        break;
-    }
+    it.newmark_inertia(s, nc, p_.M_);
+    p_.plate_.internal_force(it.uk(), f_int_);
+    it.set_internal_force(f_int_);
+    if (iterations > 0 &&
+        it.converged(loading_, cs, f_int_, kbar_diagonal_, ns.residual_tolerance, ns.displacement_tolerance))
+      break;
     if (iterations == ns.max_iterations)
       throw NewtonFailure(fmt::format(
           "non-linear impact: Newton iterations did not converge in step {} (t = {:.6g} s) after {} "
           "iterations; reduce time.dt",
           step, t, ns.max_iterations));
-    // Plate predictor û and the exact scalar contact problem with ws affine in Fc (SPEC §4).
-    factor_.solve(g_, correction_, workspace_);
-    u_iterate_.noalias() = uk + correction_; // û, the iterate before the contact force
-    cs = loading_.solve(contact, sw().dot(u_iterate_));
-    loading_.add_response(cs.alpha, cs.force, u_iterate_);
-    const double correction = (u_iterate_ - uk).norm();
+    const double correction =
+        it.correct([this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { factor_.solve(g, x, workspace_); },
+                   loading_, contact, cs);
     ++iterations;
     if (!std::isfinite(correction) || !std::isfinite(cs.force))
       throw NewtonFailure(fmt::format(
           "non-linear impact: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
     const bool slow = correction > ns.refresh_ratio * previous_correction || iterations > ns.refresh_after;
     previous_correction = correction;
-    uk.swap(u_iterate_);
     if (slow && iterations > 1) {
-      refactor(uk); // modified Newton: a new tangent where the iterations slowed down
+      refactor(it.uk()); // modified Newton: a new tangent where the iterations slowed down
       previous_correction = INFINITY;
     }
   }
   refresh_ = iterations > 1;
   stats_.iterations += iterations;
   stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
-  u_next.swap(uk);
+  u_next.swap(it.uk());
   return cs;
 }
 
@@ -169,7 +157,7 @@ void NewtonStepper::accept(const PlateState& before, const Eigen::VectorXd& u_ne
 }
 
 double NewtonStepper::kinetic_energy(const PlateState& s) const {
-  return p_.M_.kinetic_energy(s.v);
+  return p_.M_.kinetic_energy(s.v, scratch_);
 }
 
 } // namespace

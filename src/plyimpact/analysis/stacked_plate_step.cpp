@@ -106,7 +106,7 @@ void StackedPlateStepper::accept(const PlateState& /*before*/, const Eigen::Vect
 }
 
 double StackedPlateStepper::strain_energy(const PlateState& s, double /*force*/) const {
-  return base_.stack_.stored_energy(s.u, committed_);
+  return base_.stack_.stored_energy(s.u, committed_, scratch_);
 }
 
 void StackedPlateStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {

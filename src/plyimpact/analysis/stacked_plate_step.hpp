@@ -52,7 +52,7 @@ public:
 
   void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override {
-    return base_.M_.kinetic_energy(s.v);
+    return base_.M_.kinetic_energy(s.v, scratch_);
   }
   /// ½ uᵀ K_plates u + the interfaces' stored energy at their committed damage.
   [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
@@ -79,6 +79,7 @@ protected:
 private:
   const StackedPlatePolicy& base_;
   StackedPlateState committed_, trial_;
+  mutable Eigen::VectorXd scratch_; ///< M v and K u of the energies, sized once
   double trial_dissipated_ = 0.0, dissipated_ = 0.0;
 };
 

@@ -161,7 +161,14 @@ StackedPlateEvaluation StackedPlateModel::internal_force(const Eigen::VectorXd& 
 }
 
 double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
-  return 0.5 * u.dot(K_plates_ * u) + interface_energy(u, state);
+  Eigen::VectorXd scratch;
+  return stored_energy(u, state, scratch);
+}
+
+double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
+                                        Eigen::VectorXd& scratch) const {
+  scratch.noalias() = K_plates_ * u;
+  return 0.5 * u.dot(scratch) + interface_energy(u, state);
 }
 
 double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {

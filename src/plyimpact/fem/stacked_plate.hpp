@@ -118,6 +118,9 @@ public:
                                                       CohesiveDamage damage = CohesiveDamage::evolve) const;
   /// Elastic energy ½ uᵀ K_plates u + the interfaces' stored energy [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
+  /// The same with `scratch` for K_plates u: the numbers of stored_energy(u, state) without a new vector.
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
+                                     Eigen::VectorXd& scratch) const;
   /// The interfaces' stored energy alone [J].
   [[nodiscard]] double interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
   /// The interfaces' forces at u added to `force`, their trial states from the committed ones into
