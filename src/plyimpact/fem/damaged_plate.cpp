@@ -222,15 +222,22 @@ section_laws(const Laminate& lam, const std::vector<Material>& materials, const 
   return laws;
 }
 
-/// The laminate's plies grouped by (material, angle), each with the z range it spans: the screening bound.
-std::vector<DamagedPlateModel::Group> section_groups(const Laminate& lam,
-                                                     const std::vector<Material>& materials, double alpha) {
+/// The laminate's plies grouped by (material, angle), each group with the z range it spans (the
+/// screening bound), and the group of each ply.
+struct SectionGroups {
   std::vector<DamagedPlateModel::Group> groups;
+  std::vector<std::size_t> of_ply;
+};
+
+SectionGroups section_groups(const Laminate& lam, const std::vector<Material>& materials, double alpha) {
+  SectionGroups sg;
+  std::vector<DamagedPlateModel::Group>& groups = sg.groups;
   for (std::size_t k = 0; k < lam.ply_count(); ++k) {
     const Ply& ply = lam.plies()[k];
     auto it = std::find_if(groups.begin(), groups.end(), [&](const DamagedPlateModel::Group& g) {
       return g.material == ply.material && g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
     });
+    sg.of_ply.push_back(static_cast<std::size_t>(it - groups.begin()));
     if (it == groups.end()) {
       DamagedPlateModel::Group g;
       g.material = ply.material;
@@ -246,7 +253,7 @@ std::vector<DamagedPlateModel::Group> section_groups(const Laminate& lam,
   }
   for (DamagedPlateModel::Group& g : groups)
     g.finish(materials[g.material].strength, alpha);
-  return groups;
+  return sg;
 }
 
 } // namespace
@@ -301,13 +308,17 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
                                   "([laminate] reduced_stiffness = \"exact\"): the damage law degrades it");
   build_element_operators();
   build_length_classes();
+  std::vector<std::vector<std::size_t>> group_of_ply; // [section][ply]: the same plies in every class
   for (const double Lc : class_length_) {
     std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>> laws;
     std::vector<std::vector<Group>> groups;
+    group_of_ply.clear();
     for (const Laminate& lam : model.laminates()) {
       const std::vector<Material> materials = class_materials(lam, Lc, settings_.law.alpha);
       laws.push_back(section_laws(lam, materials, settings_.law));
-      groups.push_back(section_groups(lam, materials, settings_.law.alpha));
+      SectionGroups sg = section_groups(lam, materials, settings_.law.alpha);
+      groups.push_back(std::move(sg.groups));
+      group_of_ply.push_back(std::move(sg.of_ply));
     }
     laws_.push_back(std::move(laws));
     groups_.push_back(std::move(groups));
@@ -315,15 +326,9 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
   for (std::size_t s = 0; s < model.laminates().size(); ++s) {
     const Laminate& lam = model.laminates()[s];
     std::vector<PlyPoints> plies = ply_points(lam);
-    const std::vector<Group>& groups = groups_.front()[s]; // the same plies in every class
-    for (PlyPoints& ply : plies) {
-      ply.cache_undamaged(*laws_.front()[s][ply.material], lam.shear_correction());
-      ply.group = static_cast<std::size_t>(std::find_if(groups.begin(), groups.end(),
-                                                        [&](const Group& g) {
-                                                          return g.material == ply.material &&
-                                                                 g.T_strain == ply.T_strain;
-                                                        }) -
-                                           groups.begin());
+    for (std::size_t k = 0; k < plies.size(); ++k) {
+      plies[k].cache_undamaged(*laws_.front()[s][plies[k].material], lam.shear_correction());
+      plies[k].group = group_of_ply[s][k];
     }
     plies_.push_back(std::move(plies));
   }
