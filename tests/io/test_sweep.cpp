@@ -404,6 +404,25 @@ TEST(SweepRun, ContactPointResponseGivesTheFullRunsNumbersToRounding) {
   }
 }
 
+TEST(SweepRun, ThreadsShareOnePlateAndItsContactPointResponse) {
+  // Eight impactors on one plate, on two threads: the plate is built, K̄ factored and the contact-point
+  // response computed once for both workers (one factorization, where each worker used to make its own),
+  // and every record is the serial run's bit for bit (the response is the same sequence whichever
+  // worker extends it).
+  const Sweep s = Sweep::from_text(plate_deck("[contact]\nload = \"point\"\n"), "deck.toml",
+                                   {"impactor.velocity=1,1.5,2,3", "impactor.mass=0.1,1.0"});
+  int serial = 0, threads = 0;
+  const auto a = run_in_process(s, scratch("threads-serial"), 1, true, &serial);
+  const auto b = run_in_process(s, scratch("threads-shared"), 2, true, &threads);
+  EXPECT_EQ(serial, 1);
+  EXPECT_EQ(threads, 1);
+  ASSERT_EQ(a.size(), 8U);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i]["results"]["plate_response"], "contact point") << i;
+    EXPECT_EQ(a[i]["results"], b[i]["results"]) << i;
+  }
+}
+
 std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
   std::istringstream in(text);

@@ -3,6 +3,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -46,8 +47,10 @@ public:
   }
   /// x = A⁻¹ b by cholmod_solve2, which reuses X, Y and E when they have the right size (what
   /// cholmod_solve, and so Eigen's solve(), allocates and frees on every call).
+  /// `common` is the caller's: the factor is only read, so that threads with their own commons may
+  /// solve with it at once (CHOLMOD keeps its status and memory counts in the common).
   void solve_into(const Eigen::VectorXd& b, Eigen::VectorXd& x, cholmod_dense*& X, cholmod_dense*& Y,
-                  cholmod_dense*& E) {
+                  cholmod_dense*& E, cholmod_common& common) const {
     cholmod_dense B{};
     B.nrow = B.d = static_cast<std::size_t>(b.size());
     B.ncol = 1;
@@ -55,13 +58,10 @@ public:
     B.x = const_cast<double*>(b.data()); // read only: CHOLMOD's B is const in meaning, not in type
     B.xtype = CHOLMOD_REAL;
     B.dtype = CHOLMOD_DOUBLE;
-    if (cholmod_solve2(CHOLMOD_A, m_cholmodFactor, &B, nullptr, &X, nullptr, &Y, &E, &cholmod()) == 0 ||
+    if (cholmod_solve2(CHOLMOD_A, m_cholmodFactor, &B, nullptr, &X, nullptr, &Y, &E, &common) == 0 ||
         X == nullptr)
       throw std::runtime_error("CHOLMOD could not solve with its factor (out of memory?)");
     x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(X->x), b.size());
-  }
-  void free_dense(cholmod_dense*& D) {
-    if (D != nullptr) cholmod_free_dense(&D, &cholmod());
   }
   /// LDLᵀ ± C Cᵀ (cholmod_updown), C in the rows of A: permuted here to the factor's order (P C), as
   /// cholmod_updown works on the rows of L. False where CHOLMOD failed.
@@ -110,6 +110,8 @@ struct SpdSolver::Impl {
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> cholmod;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   CholmodLdlt cholmod_ldlt;
+  /// Eigen's CHOLMOD solves work in the factor's own common: one at a time.
+  std::mutex common_mutex;
 };
 
 SpdSolver::SpdSolver(SparseSolverKind kind, FillOrdering ordering)
@@ -142,8 +144,16 @@ void SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
 }
 
 Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const {
-  if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.solve(b);
-  if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.solve(b);
+  if (kind_ == SparseSolverKind::cholmod) {
+    const std::lock_guard lock(impl_->common_mutex);
+    return impl_->cholmod.solve(b);
+  }
+  if (kind_ == SparseSolverKind::cholmod_simplicial) {
+    Workspace w;
+    Eigen::VectorXd x(b.size());
+    solve(b, x, w);
+    return x;
+  }
   return impl_->ldlt.solve(b);
 }
 
@@ -159,27 +169,26 @@ bool SpdSolver::modify(const Eigen::SparseMatrix<double>& C, bool update) {
 }
 
 Eigen::MatrixXd SpdSolver::solve(const Eigen::MatrixXd& B) const {
+  const std::lock_guard lock(impl_->common_mutex);
   if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.solve(B);
   if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.solve(B);
   return impl_->ldlt.solve(B);
 }
 
-/// CHOLMOD's arrays for cholmod_solve2, freed by the solver's CHOLMOD that allocated them.
+/// CHOLMOD's arrays for cholmod_solve2 and the common they are allocated in, the workspace's own: solves
+/// on one factor with different workspaces may run on several threads at once.
 struct SpdSolver::Workspace::Buffers {
-  CholmodLdlt* owner = nullptr;
+  cholmod_common common{};
   cholmod_dense* X = nullptr; ///< the solution
   cholmod_dense* Y = nullptr; ///< work arrays
   cholmod_dense* E = nullptr;
-  Buffers() = default;
+  Buffers() { cholmod_start(&common); }
   Buffers(const Buffers&) = delete;
   Buffers& operator=(const Buffers&) = delete;
-  ~Buffers() { release(); }
-  void release() {
-    if (owner == nullptr) return;
-    owner->free_dense(X);
-    owner->free_dense(Y);
-    owner->free_dense(E);
-    owner = nullptr;
+  ~Buffers() {
+    for (cholmod_dense** D : {&X, &Y, &E})
+      if (*D != nullptr) cholmod_free_dense(D, &common);
+    cholmod_finish(&common);
   }
 };
 
@@ -194,9 +203,7 @@ void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w
     return;
   }
   Workspace::Buffers& buf = *w.buffers_;
-  if (buf.owner != &impl_->cholmod_ldlt) buf.release(); // filled by another solver
-  buf.owner = &impl_->cholmod_ldlt;
-  buf.owner->solve_into(b, x, buf.X, buf.Y, buf.E);
+  impl_->cholmod_ldlt.solve_into(b, x, buf.X, buf.Y, buf.E, buf.common);
 }
 
 long SpdSolver::factor_nonzeros() const {

@@ -42,8 +42,8 @@ public:
   /// Analyses the pattern (fill-reducing ordering) and factors A. Throws NotPositiveDefinite.
   void factorize(const Eigen::SparseMatrix<double>& A);
   /// Buffers that solve(b, x, workspace) keeps from one call to the next, so that a time loop solves
-  /// without allocating (CHOLMOD's solution and work arrays). Belongs to one thread and must not
-  /// outlive the solver that filled it.
+  /// without allocating (CHOLMOD's solution and work arrays, and the CHOLMOD common they live in).
+  /// Belongs to one thread; may serve several solvers.
   class Workspace {
   public:
     Workspace();
@@ -59,7 +59,9 @@ public:
     std::unique_ptr<Buffers> buffers_;
   };
 
-  /// x = A⁻¹ b with the current factor.
+  /// x = A⁻¹ b with the current factor. The solves may be called from several threads at once (runs
+  /// that share a case, io/sweep_runner.hpp): each solve(b, x, w) works in its workspace's CHOLMOD
+  /// common, the others take turns in the factor's own.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// x = A⁻¹ b into x (sized once), with the buffers of `w`: the same numbers as solve(b). With
   /// cholmod_simplicial (the time loop's default) nothing is allocated after the first call but

@@ -18,6 +18,7 @@
 #include <array>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <new>
 #include <sstream>
@@ -299,9 +300,49 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
 
 // --- one case ---------------------------------------------------------------------------------
 
+/// The impact cases the workers of one process share. A case is built once per plate key, by the first
+/// worker that asks for it (the others wait for it), run by every worker whose case has that key
+/// (ImpactCase::run is const; what it builds lazily, the factors of finer steps and the contact-point
+/// response, is built once under a lock), and freed when the last worker holding it has moved on and
+/// another case has been built since (the newest is kept, so a worker that starts late, or comes back to
+/// it, does not build it again: at most one case more than the workers hold).
+class SharedImpactCases {
+public:
+  /// The case of `key`, built by `build` unless a worker holds it; `built` says whether this call built it.
+  std::shared_ptr<const ImpactCase>
+  get(const std::string& key, const std::function<std::unique_ptr<ImpactCase>()>& build, bool& built) {
+    std::shared_ptr<Entry> entry;
+    {
+      const std::lock_guard lock(mutex_);
+      std::erase_if(entries_, [](const auto& e) { return e.second.expired(); });
+      entry = entries_[key].lock();
+      if (!entry) {
+        entry = std::make_shared<Entry>();
+        entries_[key] = entry;
+        newest_ = entry;
+      }
+    }
+    built = false;
+    std::call_once(entry->once, [&] { // a throwing build leaves it to the next caller
+      entry->impact = build();
+      built = true;
+    });
+    return {entry, entry->impact.get()}; // keeps the entry, and so the case, alive
+  }
+
+private:
+  struct Entry {
+    std::once_flag once;
+    std::unique_ptr<ImpactCase> impact;
+  };
+  std::mutex mutex_;
+  std::map<std::string, std::weak_ptr<Entry>> entries_;
+  std::shared_ptr<Entry> newest_;
+};
+
 struct SweepWorker::Cache {
   std::string key;
-  std::unique_ptr<ImpactCase> impact;
+  std::shared_ptr<const ImpactCase> impact;
 };
 
 SweepWorker::SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options)
@@ -402,9 +443,15 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
                                           resolved_settings(description).dt, size_at_impact(description));
     if (!options_.share_factorization || !cache_ || cache_->key != key) {
       cache_.reset();
-      check_memory_before_assembly(description);
-      cache_ = std::make_unique<Cache>(Cache{key, std::make_unique<ImpactCase>(description)});
-      ++factorizations_;
+      const auto build = [&description] {
+        check_memory_before_assembly(description);
+        return std::make_unique<ImpactCase>(description);
+      };
+      bool built = true;
+      cache_ = std::make_unique<Cache>(Cache{key, options_.share_factorization && options_.shared_cases
+                                                      ? options_.shared_cases->get(key, build, built)
+                                                      : std::shared_ptr<const ImpactCase>(build())});
+      if (built) ++factorizations_;
     }
     ImpactRunOptions run;
     run.output_dir = case_dir;
@@ -436,9 +483,11 @@ int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::ve
   std::atomic<int> factorizations{0};
   std::mutex error_mutex;
   std::string first_error;
+  SweepOptions worker_options = options;
+  if (!worker_options.shared_cases) worker_options.shared_cases = std::make_shared<SharedImpactCases>();
   const auto work = [&] {
     try {
-      SweepWorker worker(sweep, folder, options);
+      SweepWorker worker(sweep, folder, worker_options);
       while (options.cancel == nullptr || !options.cancel->load()) {
         const auto position = next();
         if (!position || *position >= pending.size()) break;

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,11 +21,15 @@
 
 namespace plyimpact {
 
+class SharedImpactCases;
+
 struct SweepOptions {
   bool case_folders = false;                 ///< also write DIR/cases/NNNNNN/ (summary.json, history.csv…)
-  bool share_factorization = true;           ///< reuse a worker's plate and K̄ factor across cases
+  bool share_factorization = true;           ///< reuse the plate and its K̄ factor across cases
   const std::atomic<bool>* cancel = nullptr; ///< stop taking cases; a case cut short is not recorded
   std::function<void()> on_case_recorded;    ///< after each record is on disk (any thread: thread-safe)
+  /// The cases the workers of this process share (run_sweep_cases sets it; empty: each worker its own).
+  std::shared_ptr<SharedImpactCases> shared_cases;
 };
 
 /// Thread-safe source of positions in the list of pending cases; nullopt when none is left.
@@ -89,7 +94,7 @@ public:
   SweepWorker& operator=(const SweepWorker&) = delete;
 
   [[nodiscard]] std::optional<nlohmann::json> run(std::size_t index);
-  /// How many times this worker factored K̄ (for tests and benchmarks).
+  /// How many times this worker built a plate and factored its K̄ (for tests and benchmarks).
   [[nodiscard]] int factorizations() const { return factorizations_; }
 
 private:
@@ -102,7 +107,9 @@ private:
 };
 
 /// Runs `pending` cases on `jobs` threads; each thread takes the next position from `next` and writes
-/// the case's record as soon as it is done. Returns the number of factorizations of K̄.
+/// the case's record as soon as it is done. With `options.share_factorization`, the threads share each
+/// plate (and its factor and contact-point response): the first to need it builds it, the others wait for
+/// it and run their impactors on it. Returns the number of factorizations of K̄.
 int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::vector<std::size_t>& pending,
                     int jobs, const NextCase& next, const SweepOptions& options);
 
