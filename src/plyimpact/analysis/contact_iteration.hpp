@@ -22,10 +22,6 @@ public:
 
   /// The iterate u_k.
   [[nodiscard]] Eigen::VectorXd& uk() { return uk_; }
-  /// M a(u_k) of the last inertia evaluation.
-  [[nodiscard]] const Eigen::VectorXd& inertia() const { return inertia_; }
-  /// The residual without the contact force, g = −M a(u_k) − f(u_k).
-  [[nodiscard]] const Eigen::VectorXd& force_free_residual() const { return g_; }
 
   /// u_k = uₙ + Δt vₙ + ½ Δt² aₙ: the first iterate, at constant acceleration.
   void predict(const PlateState& s, const NewmarkCoefficients& nc);

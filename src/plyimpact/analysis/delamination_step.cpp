@@ -66,10 +66,15 @@ public:
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
-  /// x = K̄⁻¹ b with the iteration matrix in use.
-  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  /// The same numbers into x (sized once), without allocating where the factor is a Cholesky one.
+  /// x = K̄⁻¹ b with the iteration matrix in use, into x (sized once), without allocating where the factor
+  /// is a Cholesky one.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// The same numbers in a new vector (the contact loading's responses).
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) {
+    Eigen::VectorXd x(b.size());
+    solve(b, x);
+    return x;
+  }
   /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n, f(u_n) − Fc_n s_n, into
   /// start_.
   void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
@@ -147,13 +152,6 @@ DelaminationStepper::DelaminationStepper(const DelaminationStepPolicy& policy, c
     v->resize(policy.equations());
   loading_.set_solver([this](const Eigen::VectorXd& b) { return solve(b); });
   stats_.factorizations = 1; // the policy's elastic factor
-}
-
-Eigen::VectorXd DelaminationStepper::solve(const Eigen::VectorXd& b) const {
-  if (tangent_in_use_)
-    return p_.settings_.integration == DamageIntegration::lagged ? frozen_factor_.solve(b)
-                                                                 : tangent_lu_.solve(b);
-  return p_.elastic_.solve(b);
 }
 
 void DelaminationStepper::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {

@@ -345,8 +345,9 @@ struct SweepWorker::Cache {
   std::shared_ptr<const ImpactCase> impact;
 };
 
-SweepWorker::SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options)
-    : sweep_(sweep), folder_(folder), options_(std::move(options)) {}
+SweepWorker::SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options,
+                         SharedImpactCases& cases)
+    : sweep_(sweep), folder_(folder), options_(std::move(options)), cases_(cases) {}
 
 SweepWorker::~SweepWorker() = default;
 
@@ -448,8 +449,8 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
         return std::make_unique<ImpactCase>(description);
       };
       bool built = true;
-      cache_ = std::make_unique<Cache>(Cache{key, options_.share_factorization && options_.shared_cases
-                                                      ? options_.shared_cases->get(key, build, built)
+      cache_ = std::make_unique<Cache>(Cache{key, options_.share_factorization
+                                                      ? cases_.get(key, build, built)
                                                       : std::shared_ptr<const ImpactCase>(build())});
       if (built) ++factorizations_;
     }
@@ -483,11 +484,10 @@ int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::ve
   std::atomic<int> factorizations{0};
   std::mutex error_mutex;
   std::string first_error;
-  SweepOptions worker_options = options;
-  if (!worker_options.shared_cases) worker_options.shared_cases = std::make_shared<SharedImpactCases>();
+  SharedImpactCases cases;
   const auto work = [&] {
     try {
-      SweepWorker worker(sweep, folder, worker_options);
+      SweepWorker worker(sweep, folder, options, cases);
       while (options.cancel == nullptr || !options.cancel->load()) {
         const auto position = next();
         if (!position || *position >= pending.size()) break;

@@ -13,7 +13,6 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,8 +27,6 @@ struct SweepOptions {
   bool share_factorization = true;           ///< reuse the plate and its K̄ factor across cases
   const std::atomic<bool>* cancel = nullptr; ///< stop taking cases; a case cut short is not recorded
   std::function<void()> on_case_recorded;    ///< after each record is on disk (any thread: thread-safe)
-  /// The cases the workers of this process share (run_sweep_cases sets it; empty: each worker its own).
-  std::shared_ptr<SharedImpactCases> shared_cases;
 };
 
 /// Thread-safe source of positions in the list of pending cases; nullopt when none is left.
@@ -88,7 +85,9 @@ private:
 /// case of the same plate and time step (Sweep::plate_key).
 class SweepWorker {
 public:
-  SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options);
+  /// `cases`: the plates this worker shares with the other workers of its process (with
+  /// options.share_factorization).
+  SweepWorker(const Sweep& sweep, const SweepFolder& folder, SweepOptions options, SharedImpactCases& cases);
   ~SweepWorker();
   SweepWorker(const SweepWorker&) = delete;
   SweepWorker& operator=(const SweepWorker&) = delete;
@@ -102,6 +101,7 @@ private:
   const Sweep& sweep_;
   const SweepFolder& folder_;
   SweepOptions options_;
+  SharedImpactCases& cases_;
   std::unique_ptr<Cache> cache_;
   int factorizations_ = 0;
 };
