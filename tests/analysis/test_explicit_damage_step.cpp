@@ -96,13 +96,14 @@ TEST(ExplicitDamageStep, AgreesWithTheIteratedSecantWhereItConverges) {
   const ImpactResult explicit_run = run(with(deck, "dt", "3.5e-8") + "integration = \"explicit\"\n");
   const double d_im = implicit_run.progressive->dissipated.sum();
   const double d_ex = explicit_run.progressive->dissipated.sum();
+  ASSERT_TRUE(implicit_run.progressive->first() && explicit_run.progressive->first());
   std::printf("[ measured ] first damage at %.5g us implicit, %.5g us explicit; dissipation %.5g J, %.5g J; "
               "force at the end %.6g N, %.6g N\n",
-              1e6 * implicit_run.progressive->first_time, 1e6 * explicit_run.progressive->first_time, d_im,
-              d_ex, implicit_run.history.back().force, explicit_run.history.back().force);
+              1e6 * implicit_run.progressive->first()->time, 1e6 * explicit_run.progressive->first()->time,
+              d_im, d_ex, implicit_run.history.back().force, explicit_run.history.back().force);
   EXPECT_EQ(explicit_run.progressive->first_mode, implicit_run.progressive->first_mode);
-  EXPECT_EQ(explicit_run.progressive->first_ply, implicit_run.progressive->first_ply);
-  EXPECT_NEAR(explicit_run.progressive->first_time, implicit_run.progressive->first_time, 0.875e-6);
+  EXPECT_EQ(explicit_run.progressive->first()->ply, implicit_run.progressive->first()->ply);
+  EXPECT_NEAR(explicit_run.progressive->first()->time, implicit_run.progressive->first()->time, 0.875e-6);
   EXPECT_NEAR(d_ex, d_im, 0.05 * d_im);
   EXPECT_NEAR(explicit_run.history.back().force, implicit_run.history.back().force,
               0.01 * implicit_run.history.back().force);

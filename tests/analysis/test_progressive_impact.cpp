@@ -49,7 +49,7 @@ TEST(ProgressiveImpact, TheBottomPlyCracksFirstInMatrixTension) {
   const ImpactResult r = run(example_text());
   ASSERT_TRUE(r.progressive && r.progressive->first_mode);
   EXPECT_EQ(*r.progressive->first_mode, DamageMode::matrix_tension);
-  EXPECT_EQ(r.progressive->first_ply, 4);
+  EXPECT_EQ(r.progressive->first()->ply, 4);
   EXPECT_GT(r.progressive->ply_damage_area[3], 0.0);
   EXPECT_EQ(r.progressive->ply_damage_area[0], 0.0); // the top ply is in compression
 }

@@ -96,8 +96,8 @@ TEST(DamageThreshold, MatrixThresholdBracketsTheTransitionOfStandAloneRuns) {
   const ImpactResult alone = ImpactCase(example_case(text, r.velocity)).run();
   ASSERT_TRUE(alone.progressive->first_mode.has_value());
   EXPECT_EQ(*alone.progressive->first_mode, r.damage->mode);
-  EXPECT_EQ(alone.progressive->first_ply, r.damage->ply);
-  EXPECT_EQ(alone.progressive->first_time, r.damage->time);
+  EXPECT_EQ(alone.progressive->first()->ply, r.damage->ply);
+  EXPECT_EQ(alone.progressive->first()->time, r.damage->time);
   EXPECT_EQ(r.damage->mode, DamageMode::matrix_tension); // the bottom 0° ply, as at 2 m/s
   EXPECT_EQ(r.damage->ply, 4);
   // The same search again on the same case: the same trials, bit for bit.

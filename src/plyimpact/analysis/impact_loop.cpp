@@ -184,17 +184,13 @@ void check_after_run(ImpactResult& r, const StepView& end, double e0, double law
       r.warnings.push_back(std::move(*w));
 }
 
-/// When the plies first cracked, and when each mode first appeared: the step where `d` first shows it.
+/// When each mode first appeared, and which mode the plies first cracked in: the step where `d` first
+/// shows it.
 void record_damage_onsets(const PlyDamageView& d, double t, double force, ProgressiveDamageResult& out) {
-  if (d.first_damage() && !out.first_mode) {
-    out.first_mode = d.first_damage()->mode;
-    out.first_ply = d.first_damage()->ply + 1;
-    out.first_time = t;
-    out.first_force = force;
-  }
-  for (std::size_t m = 0; m < out.first_by_mode.size(); ++m)
+  for (const DamageMode m : all_damage_modes)
     if (const auto& first = d.first_damage_by_mode()[m]; first && !out.first_by_mode[m])
       out.first_by_mode[m] = FirstDamageOfMode{first->ply + 1, t, force};
+  if (d.first_damage() && !out.first_mode) out.first_mode = d.first_damage()->mode;
 }
 
 } // namespace

@@ -59,16 +59,20 @@ struct FirstDamageOfMode {
 
 /// The plies' damage at the end of a progressive-damage run (fem/damaged_plate.hpp).
 struct ProgressiveDamageResult {
-  PerDamageMode dissipated;                                      ///< energy dissipated per mode [J]
-  std::vector<double> ply_damage_area;                           ///< damaged area of each ply [m²]
-  double projected_damage_area = 0.0;                            ///< union over the plies [m²]
-  std::vector<ElementPlyDamage> element_ply_damage;              ///< largest d per mode, element and ply
-  std::optional<DamageMode> first_mode;                          ///< mode of the first damage (d > 0)
-  int first_ply = 0;                                             ///< its ply, 1-based
-  double first_time = 0.0;                                       ///< [s]
-  double first_force = 0.0;                                      ///< contact force then [N]
-  std::array<std::optional<FirstDamageOfMode>, 4> first_by_mode; ///< indexed by DamageMode
-  int active_elements = 0;                                       ///< elements that evaluated the law
+  PerDamageMode dissipated;                                     ///< energy dissipated per mode [J]
+  std::vector<double> ply_damage_area;                          ///< damaged area of each ply [m²]
+  double projected_damage_area = 0.0;                           ///< union over the plies [m²]
+  std::vector<ElementPlyDamage> element_ply_damage;             ///< largest d per mode, element and ply
+  std::optional<DamageMode> first_mode;                         ///< mode of the first damage (d > 0)
+  ByDamageMode<std::optional<FirstDamageOfMode>> first_by_mode; ///< each mode's first damage
+  int active_elements = 0;                                      ///< elements that evaluated the law
+
+  /// Ply, time and force of the first damage: those of the first damage of its mode, which appeared
+  /// in the same step (at the same ply: the fields find both in one pass, fem/damaged_plate.hpp).
+  [[nodiscard]] std::optional<FirstDamageOfMode> first() const {
+    if (!first_mode) return std::nullopt;
+    return first_by_mode[*first_mode];
+  }
 };
 
 /// The interfaces' areas and dissipation after a step of a run on the stacked plate (issue 19).

@@ -677,7 +677,7 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
             if (d > 0.0) {
               const DamageField::FirstDamage here{m, a.element, static_cast<int>(k)};
               if (!field.first_) field.first_ = here;
-              auto& of_mode = field.first_by_mode_[static_cast<std::size_t>(m)];
+              auto& of_mode = field.first_by_mode_[m];
               if (!of_mode) of_mode = here;
             }
           }

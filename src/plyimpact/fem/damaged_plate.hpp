@@ -215,8 +215,8 @@ public:
     DamageMode mode;
     int element = 0, ply = 0;
   };
-  /// Per mode (indexed by DamageMode), the first damage of that mode (d > 0), once it has appeared.
-  using FirstDamageByMode = std::array<std::optional<FirstDamage>, 4>;
+  /// Per mode, the first damage of that mode (d > 0), once it has appeared.
+  using FirstDamageByMode = ByDamageMode<std::optional<FirstDamage>>;
 
   virtual ~PlyDamageView() = default;
   /// Energy dissipated by damage up to the last commit, per mode [J].

@@ -49,7 +49,7 @@ void StackedDamageField::gather(const std::vector<DamageField>& parts) {
       projected_area_ += p.area;
     }
     take_first(part.first_damage(), first_ply_[k], first_);
-    for (std::size_t m = 0; m < first_by_mode_.size(); ++m)
+    for (const DamageMode m : all_damage_modes)
       take_first(part.first_damage_by_mode()[m], first_ply_[k], first_by_mode_[m]);
   }
 }

@@ -74,8 +74,8 @@ std::string millimetres_squared(const std::vector<double>& areas) {
 std::string first_damage_by_mode_text(const ProgressiveDamageResult& pd) {
   std::vector<DamageMode> seen;
   for (const DamageMode m : all_damage_modes)
-    if (pd.first_by_mode[static_cast<std::size_t>(m)]) seen.push_back(m);
-  const auto first = [&](DamageMode m) { return *pd.first_by_mode[static_cast<std::size_t>(m)]; };
+    if (pd.first_by_mode[m]) seen.push_back(m);
+  const auto first = [&](DamageMode m) { return *pd.first_by_mode[m]; };
   std::stable_sort(seen.begin(), seen.end(),
                    [&](DamageMode a, DamageMode b) { return first(a).time < first(b).time; });
   std::string text;
@@ -158,13 +158,13 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
     d["ply_damage_area"] = pd.ply_damage_area;
     d["area_threshold"] = s.progressive_damage->area_threshold;
     d["first_damage"] = nullptr;
-    if (pd.first_mode)
+    if (const auto first = pd.first())
       d["first_damage"] = {{"mode", std::string(to_string(*pd.first_mode))},
-                           {"ply", pd.first_ply},
-                           {"time", pd.first_time},
-                           {"contact_force", pd.first_force}};
+                           {"ply", first->ply},
+                           {"time", first->time},
+                           {"contact_force", first->force}};
     for (const DamageMode m : all_damage_modes) {
-      const auto& first = pd.first_by_mode[static_cast<std::size_t>(m)];
+      const auto& first = pd.first_by_mode[m];
       d["first_damage_by_mode"][std::string(to_string(m))] =
           first ? nlohmann::json{{"ply", first->ply}, {"time", first->time}, {"contact_force", first->force}}
                 : nlohmann::json(nullptr);
@@ -237,10 +237,10 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                      pd.dissipated[DamageMode::matrix_compression]);
     t += fmt::format("  projected damage area   {:12.2f} mm^2 (points with d >= {})\n",
                      pd.projected_damage_area * 1e6, s.progressive_damage->area_threshold);
-    t += pd.first_mode
-             ? fmt::format("  first ply damage        {:>12} in ply {} at {:.2f} us, {:.1f} N\n",
-                           to_string(*pd.first_mode), pd.first_ply, pd.first_time * 1e6, pd.first_force)
-             : std::string("  first ply damage                none\n");
+    const auto first = pd.first();
+    t += first ? fmt::format("  first ply damage        {:>12} in ply {} at {:.2f} us, {:.1f} N\n",
+                             to_string(*pd.first_mode), first->ply, first->time * 1e6, first->force)
+               : std::string("  first ply damage                none\n");
     t += first_damage_by_mode_text(pd);
     if (s.progressive_damage->integration == DamageIntegration::central_difference)
       t += fmt::format("  damage step                 explicit: no solve, dt = {:.4g} us\n", s.dt * 1e6);

@@ -37,12 +37,17 @@ inline constexpr std::array<DamageMode, 4> all_damage_modes{
 /// "fibre-tension", "fibre-compression", "matrix-tension", "matrix-compression".
 [[nodiscard]] std::string_view to_string(DamageMode mode);
 
-/// One number per damage mode (damage variables, equivalent strains, dissipated energies...).
-struct PerDamageMode {
-  std::array<double, 4> values{};
+/// One T per damage mode, indexed by the mode.
+template <class T>
+struct ByDamageMode {
+  std::array<T, 4> values{};
 
-  [[nodiscard]] double& operator[](DamageMode mode) { return values[static_cast<std::size_t>(mode)]; }
-  [[nodiscard]] double operator[](DamageMode mode) const { return values[static_cast<std::size_t>(mode)]; }
+  [[nodiscard]] T& operator[](DamageMode mode) { return values[static_cast<std::size_t>(mode)]; }
+  [[nodiscard]] const T& operator[](DamageMode mode) const { return values[static_cast<std::size_t>(mode)]; }
+};
+
+/// One number per damage mode (damage variables, equivalent strains, dissipated energies...).
+struct PerDamageMode : ByDamageMode<double> {
   [[nodiscard]] double sum() const { return values[0] + values[1] + values[2] + values[3]; }
 };
 
