@@ -55,6 +55,52 @@ TEST_P(SpdSolverBackends, WorkspaceSolveGivesTheNumbersOfThePlainSolve) {
   }
 }
 
+TEST_P(SpdSolverBackends, AMatrixOfTheAnalysedPatternReusesTheAnalysisAndGetsTheFreshFactor) {
+  // A refreshed K̄ (other numbers on the same mesh: here another Δt) is factored with the ordering and
+  // symbolic factor of the last analysis: its solution is bit for bit that of a solver that analyses it
+  // afresh, and it is K̄'s own (to round-off against a dense LLᵀ, far from the old matrix's solution).
+  // A matrix of another pattern, of the same size (one coupling more, v (eᵢ + eⱼ)(eᵢ + eⱼ)ᵀ, positive
+  // semi-definite) or of another size, is analysed anew: an entry outside the kept pattern would be
+  // lost and miss the dense solution by the coupling's whole effect.
+  const PlateModel model = small_plate("ss");
+  const SparseMatrix first = model.stiffness() + (4.0 / 1e-12) * model.mass();
+  const SparseMatrix refreshed = model.stiffness() + (4.0 / 4e-12) * model.mass();
+  const auto n = static_cast<int>(first.rows());
+  const double v = first.diagonal().maxCoeff();
+  SparseMatrix pair(n, n);
+  pair.insert(0, 0) = v;
+  pair.insert(0, n - 1) = v;
+  pair.insert(n - 1, 0) = v;
+  pair.insert(n - 1, n - 1) = v;
+  const SparseMatrix coupled = refreshed + pair;
+  ASSERT_GT(coupled.nonZeros(), refreshed.nonZeros()); // another pattern, the same size
+  const SparseMatrix other_size = [] {
+    const PlateModel clamped = small_plate("clamped");
+    return SparseMatrix(clamped.stiffness() + (4.0 / 1e-12) * clamped.mass());
+  }();
+  ASSERT_NE(other_size.rows(), first.rows());
+
+  SpdSolver solver(GetParam());
+  solver.factorize(first);
+  for (const SparseMatrix* A : {&refreshed, &coupled, &other_size, &refreshed}) {
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A->rows(), -1.0, 2.0);
+    const Eigen::VectorXd dense = Eigen::MatrixXd(*A).llt().solve(b);
+    solver.factorize(*A);
+    SpdSolver fresh(GetParam());
+    fresh.factorize(*A);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_EQ(x, fresh.solve(b)) << "matrix of " << A->nonZeros() << " entries";
+    EXPECT_LT((x - dense).norm(), 1e-11 * dense.norm()) << "matrix of " << A->nonZeros() << " entries";
+  }
+  // The couplings and the step matter: each matrix's solution is far from the others'.
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  const Eigen::VectorXd x_first = Eigen::MatrixXd(first).llt().solve(b);
+  const Eigen::VectorXd x_refreshed = Eigen::MatrixXd(refreshed).llt().solve(b);
+  const Eigen::VectorXd x_coupled = Eigen::MatrixXd(coupled).llt().solve(b);
+  EXPECT_GT((x_refreshed - x_first).norm(), 1e-3 * x_refreshed.norm());
+  EXPECT_GT((x_coupled - x_refreshed).norm(), 1e-3 * x_refreshed.norm());
+}
+
 TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
   // A plate with free edges has six rigid-body motions: K is singular.
   const PlateModel model = small_plate("00000");

@@ -3,7 +3,9 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
@@ -31,9 +33,71 @@ void use_one_ordering(cholmod_common& common, FillOrdering ordering) {
   common.postorder = 1;
 }
 
+/// The sparsity pattern of a compressed matrix (column starts and row indices): a matrix of the same
+/// pattern can be factored with the ordering and symbolic factor of the one analysed before.
+class SparsityPattern {
+public:
+  [[nodiscard]] bool matches(const Eigen::SparseMatrix<double>& A) const {
+    return A.isCompressed() && A.rows() == rows_ && A.cols() + 1 == std::ssize(starts_) &&
+           std::equal(starts_.begin(), starts_.end(), A.outerIndexPtr()) &&
+           A.nonZeros() == std::ssize(rows_of_entries_) &&
+           std::equal(rows_of_entries_.begin(), rows_of_entries_.end(), A.innerIndexPtr());
+  }
+  /// Remembers A's pattern (none when A is not compressed: such a matrix is always analysed anew).
+  void remember(const Eigen::SparseMatrix<double>& A) {
+    rows_ = A.rows();
+    starts_.clear();
+    rows_of_entries_.clear();
+    if (!A.isCompressed()) return;
+    starts_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1);
+    rows_of_entries_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  }
+
+private:
+  Eigen::Index rows_ = -1;
+  std::vector<int> starts_, rows_of_entries_;
+};
+
+/// A CHOLMOD factorization (Eigen's wrapper `Factorization`) that analyses a pattern once: the
+/// fill-reducing ordering and the symbolic factor are kept, and a matrix of the same pattern (a
+/// refreshed K̄ of a damaged or non-linear plate) is factored from a copy of them, numbers only. The
+/// analysis is deterministic, so the factor is the one a fresh analysis would give, bit for bit.
+template <class Factorization>
+class CholmodOnceAnalysed : public Factorization {
+public:
+  CholmodOnceAnalysed() = default;
+  CholmodOnceAnalysed(const CholmodOnceAnalysed&) = delete;
+  CholmodOnceAnalysed& operator=(const CholmodOnceAnalysed&) = delete;
+  CholmodOnceAnalysed(CholmodOnceAnalysed&&) = delete;
+  CholmodOnceAnalysed& operator=(CholmodOnceAnalysed&&) = delete;
+  ~CholmodOnceAnalysed() {
+    if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
+  }
+
+  /// Analyses A unless it has the pattern analysed last, then factors it.
+  void analyse_and_factor(const Eigen::SparseMatrix<double>& A) {
+    if (symbolic_ != nullptr && pattern_.matches(A)) {
+      cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
+      this->m_cholmodFactor = cholmod_copy_factor(symbolic_, &this->cholmod());
+      if (this->m_cholmodFactor == nullptr) throw std::bad_alloc();
+    } else {
+      this->analyzePattern(A);
+      if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
+      symbolic_ = cholmod_copy_factor(this->m_cholmodFactor, &this->cholmod());
+      if (symbolic_ == nullptr) throw std::bad_alloc();
+      pattern_.remember(A);
+    }
+    this->factorize(A);
+  }
+
+private:
+  cholmod_factor* symbolic_ = nullptr; ///< the analysis of pattern_, never factored
+  SparsityPattern pattern_;
+};
+
 /// CHOLMOD's simplicial LDLᵀ, with access to the pivots D (the first entry of each column of the
 /// simplicial factor) for the same positive-definiteness checks as Eigen's LDLᵀ.
-class CholmodLdlt : public Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> {
+class CholmodLdlt : public CholmodOnceAnalysed<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>> {
 public:
   CholmodLdlt() { use_one_ordering(cholmod(), FillOrdering::amd); } // as SimplicialLDLT, memory estimate
   [[nodiscard]] Eigen::VectorXd pivots() const {
@@ -107,8 +171,9 @@ void check_ldlt(Eigen::ComputationInfo info, const Pivots& pivots) {
 } // namespace
 
 struct SpdSolver::Impl {
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> cholmod;
+  CholmodOnceAnalysed<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>> cholmod;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  SparsityPattern ldlt_pattern; ///< what `ldlt` analysed
   CholmodLdlt cholmod_ldlt;
   /// Eigen's CHOLMOD solves work in the factor's own common: one at a time.
   std::mutex common_mutex;
@@ -129,17 +194,22 @@ SpdSolver& SpdSolver::operator=(SpdSolver&&) noexcept = default;
 void SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (A.rows() == 0) throw NotPositiveDefinite("the system has no free degrees of freedom");
   if (kind_ == SparseSolverKind::cholmod) {
-    impl_->cholmod.compute(A);
+    impl_->cholmod.analyse_and_factor(A);
     if (impl_->cholmod.info() != Eigen::Success)
       throw NotPositiveDefinite("the matrix is not positive definite (CHOLMOD found a non-positive pivot)");
     return;
   }
   if (kind_ == SparseSolverKind::cholmod_simplicial) {
-    impl_->cholmod_ldlt.compute(A);
+    impl_->cholmod_ldlt.analyse_and_factor(A);
     check_ldlt(impl_->cholmod_ldlt.info(), [&] { return impl_->cholmod_ldlt.pivots(); });
     return;
   }
-  impl_->ldlt.compute(A);
+  if (impl_->ldlt_pattern.matches(A)) {
+    impl_->ldlt.factorize(A); // the ordering and elimination tree of the last analysis
+  } else {
+    impl_->ldlt.compute(A);
+    impl_->ldlt_pattern.remember(A);
+  }
   check_ldlt(impl_->ldlt.info(), [&] { return Eigen::VectorXd(impl_->ldlt.vectorD()); });
 }
 

@@ -39,7 +39,9 @@ public:
   SpdSolver(const SpdSolver&) = delete;
   SpdSolver& operator=(const SpdSolver&) = delete;
 
-  /// Analyses the pattern (fill-reducing ordering) and factors A. Throws NotPositiveDefinite.
+  /// Analyses the pattern (fill-reducing ordering, symbolic factor) and factors A. A matrix with the
+  /// pattern of the one analysed last (a refreshed K̄: same mesh, new numbers) is factored with that
+  /// analysis, numbers only; the factor is the same, bit for bit. Throws NotPositiveDefinite.
   void factorize(const Eigen::SparseMatrix<double>& A);
   /// Buffers that solve(b, x, workspace) keeps from one call to the next, so that a time loop solves
   /// without allocating (CHOLMOD's solution and work arrays, and the CHOLMOD common they live in).
