@@ -101,6 +101,28 @@ TEST_P(SpdSolverBackends, AMatrixOfTheAnalysedPatternReusesTheAnalysisAndGetsThe
   EXPECT_GT((x_coupled - x_refreshed).norm(), 1e-3 * x_refreshed.norm());
 }
 
+TEST_P(SpdSolverBackends, TheAnalysisTellsTheSizeOfTheFactorBeforeItIsMade) {
+  // The memory guard reads the factor's size from the analysis (analysis/guards.hpp): for the simplicial
+  // factors it is the count of the factor made after it, which reuses that analysis; a supernodal factor
+  // stores its supernodes whole, at least the lower triangle of the matrix. Fill-in makes the factor
+  // larger than the matrix's lower triangle.
+  const PlateModel model = small_plate("ss");
+  const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
+  const long lower = (Kbar.nonZeros() - Kbar.rows()) / 2;
+  SpdSolver solver(GetParam());
+  const long analysed = solver.analyse(Kbar);
+  EXPECT_GT(analysed, lower);
+  EXPECT_EQ(solver.analyse(Kbar), analysed);
+  solver.factorize(Kbar);
+  if (GetParam() != SparseSolverKind::cholmod) {
+    EXPECT_EQ(solver.factor_nonzeros(), analysed);
+  }
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(Kbar.rows(), -1.0, 2.0);
+  SpdSolver fresh(GetParam());
+  fresh.factorize(Kbar);
+  EXPECT_EQ(solver.solve(b), fresh.solve(b));
+}
+
 TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
   // A plate with free edges has six rigid-body motions: K is singular.
   const PlateModel model = small_plate("00000");

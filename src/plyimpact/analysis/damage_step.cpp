@@ -81,8 +81,8 @@ DamageStepper::DamageStepper(const DamageStepPolicy& policy, const Impactor& imp
       factor_(policy.options_.solver, policy.options_.ordering), iteration_(policy.equations()),
       scratch_(policy.equations()) {
   const SparseMatrix& K0 = p_.plate_.undamaged_stiffness();
-  if (policy.options_.memory_limit_bytes)
-    check_factor_memory(estimate_factor_memory(K0 + p_.options_.newmark.c0 * p_.M_.matrix()),
+  if (policy.options_.memory_limit_bytes) // from the analysis that refactor() then reuses
+    check_factor_memory(estimate_factor_memory(factor_, K0 + p_.options_.newmark.c0 * p_.M_.matrix()),
                         *policy.options_.memory_limit_bytes);
   refactor(K0);
 }

@@ -118,7 +118,7 @@ public:
         stack_.evaluate(Eigen::VectorXd::Zero(stack_.size()), stack_.virgin_state()).tangent +
         options.newmark.c0 * M_.matrix();
     if (options.memory_limit_bytes)
-      check_factor_memory(estimate_factor_memory(Kbar), *options.memory_limit_bytes);
+      check_factor_memory(estimate_factor_memory(elastic_, Kbar), *options.memory_limit_bytes);
     elastic_.factorize(Kbar);
     elastic_diagonal_ = Kbar.diagonal();
   }

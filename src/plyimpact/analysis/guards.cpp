@@ -1,6 +1,5 @@
 #include "plyimpact/analysis/guards.hpp"
 
-#include <Eigen/SparseCholesky>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -113,26 +112,23 @@ std::optional<std::string> large_deflection_warning(double peak_deflection, doub
       peak_deflection * 1e3, peak_deflection / thickness, thickness * 1e3, max_linear_deflection);
 }
 
-namespace {
-
-/// SimplicialLDLT whose symbolic analysis (column counts of L) is readable before factorization.
-class SymbolicLDLT : public Eigen::SimplicialLDLT<SparseMatrix> {
-public:
-  explicit SymbolicLDLT(const SparseMatrix& A) { analyzePattern(A); }
-  [[nodiscard]] long factor_nonzeros() const { return m_matrix.outerIndexPtr()[m_matrix.outerSize()]; }
-};
-
-} // namespace
-
-FactorMemoryEstimate estimate_factor_memory(const SparseMatrix& A) {
+FactorMemoryEstimate estimate_factor_memory(const SparseMatrix& A, long factor_nonzeros) {
   FactorMemoryEstimate e;
   e.equations = A.rows();
   e.matrix_nonzeros = A.nonZeros();
-  e.factor_nonzeros = SymbolicLDLT(A).factor_nonzeros();
+  e.factor_nonzeros = factor_nonzeros;
   constexpr double bytes_per_nonzero = 8.0 + 4.0; // double value + int row index
   // L and D, plus A and the K, M it is made of (three matrices of A's pattern).
   e.bytes = bytes_per_nonzero * static_cast<double>(e.factor_nonzeros + e.equations + 3 * e.matrix_nonzeros);
   return e;
+}
+
+FactorMemoryEstimate estimate_factor_memory(const SparseMatrix& A) {
+  return estimate_factor_memory(A, SpdSolver(SparseSolverKind::simplicial_ldlt).analyse(A));
+}
+
+FactorMemoryEstimate estimate_factor_memory(SpdSolver& solver, const SparseMatrix& A) {
+  return estimate_factor_memory(A, solver.analyse(A));
 }
 
 void check_factor_memory(const FactorMemoryEstimate& e, double available_bytes) {

@@ -9,6 +9,7 @@
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/mesh.hpp"
 #include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/spd_solver.hpp"
 
 #include <Eigen/Core>
 #include <initializer_list>
@@ -98,7 +99,13 @@ struct FactorMemoryEstimate {
   double bytes = 0.0;       ///< 12 bytes (value + row index) per non-zero of L, D, A and K, M copies
 };
 
+/// The estimate for a factor of `factor_nonzeros` entries below the diagonal.
+[[nodiscard]] FactorMemoryEstimate estimate_factor_memory(const SparseMatrix& A, long factor_nonzeros);
+/// The estimate from an analysis of A (Eigen's LDLᵀ, AMD), made for it alone.
 [[nodiscard]] FactorMemoryEstimate estimate_factor_memory(const SparseMatrix& A);
+/// The estimate from `solver`'s own analysis of A, which its factorization of A then reuses (the
+/// ordering is not computed twice).
+[[nodiscard]] FactorMemoryEstimate estimate_factor_memory(SpdSolver& solver, const SparseMatrix& A);
 
 /// Throws InsufficientMemory with the estimate when estimate.bytes > available_bytes.
 void check_factor_memory(const FactorMemoryEstimate& estimate, double available_bytes);

@@ -130,12 +130,12 @@ private:
   [[nodiscard]] std::unique_ptr<TimeStepLevel> factor_level(const NewmarkCoefficients& newmark,
                                                             bool check_memory) const {
     const SparseMatrix Kbar = K_ + newmark.c0 * M_.matrix(); // effective stiffness, factored once
-    if (check_memory && options_.memory_limit_bytes) {
-      factor_memory_ = estimate_factor_memory(Kbar);
-      check_factor_memory(factor_memory_, *options_.memory_limit_bytes);
-    }
     auto level = std::make_unique<TimeStepLevel>(
         TimeStepLevel{newmark, SpdSolver(options_.solver, options_.ordering)});
+    if (check_memory && options_.memory_limit_bytes) { // from the analysis that the factorization reuses
+      factor_memory_ = estimate_factor_memory(level->factor, Kbar);
+      check_factor_memory(factor_memory_, *options_.memory_limit_bytes);
+    }
     level->factor.factorize(Kbar);
     return level;
   }

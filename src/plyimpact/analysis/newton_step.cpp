@@ -87,9 +87,9 @@ NewtonStepper::NewtonStepper(const NewtonStepPolicy& policy, const Impactor& imp
       f_int_previous_step_(Eigen::VectorXd::Zero(policy.equations())), iteration_(policy.equations()),
       scratch_(policy.equations()) {
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
-  if (policy.options_.memory_limit_bytes)
-    check_factor_memory(estimate_factor_memory(p_.plate_.tangent_stiffness(at_rest) +
-                                               p_.options_.newmark.c0 * p_.M_.matrix()),
+  if (policy.options_.memory_limit_bytes) // from the analysis that refactor() then reuses
+    check_factor_memory(estimate_factor_memory(factor_, p_.plate_.tangent_stiffness(at_rest) +
+                                                            p_.options_.newmark.c0 * p_.M_.matrix()),
                         *policy.options_.memory_limit_bytes);
   refactor(at_rest);
 }

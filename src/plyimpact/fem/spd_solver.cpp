@@ -74,19 +74,30 @@ public:
     if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
   }
 
-  /// Analyses A unless it has the pattern analysed last, then factors it.
-  void analyse_and_factor(const Eigen::SparseMatrix<double>& A) {
-    if (symbolic_ != nullptr && pattern_.matches(A)) {
-      cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
-      this->m_cholmodFactor = cholmod_copy_factor(symbolic_, &this->cholmod());
-      if (this->m_cholmodFactor == nullptr) throw std::bad_alloc();
-    } else {
+  /// Analyses A unless it has the pattern analysed last; returns the entries its factor will hold
+  /// below the diagonal (simplicial: from the column counts; supernodal: the supernodes' whole size).
+  long analyse(const Eigen::SparseMatrix<double>& A) {
+    if (symbolic_ == nullptr || !pattern_.matches(A)) {
       this->analyzePattern(A);
       if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
       symbolic_ = cholmod_copy_factor(this->m_cholmodFactor, &this->cholmod());
       if (symbolic_ == nullptr) throw std::bad_alloc();
       pattern_.remember(A);
     }
+    if (symbolic_->is_super != 0) return static_cast<long>(symbolic_->xsize);
+    const auto* count = static_cast<const int*>(symbolic_->ColCount);
+    long below = 0;
+    for (std::size_t j = 0; j < symbolic_->n; ++j)
+      below += count[j] - 1;
+    return below;
+  }
+
+  /// Factors A, with the analysis of its pattern (analysed first if it is not the pattern analysed last).
+  void analyse_and_factor(const Eigen::SparseMatrix<double>& A) {
+    (void)analyse(A);
+    cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
+    this->m_cholmodFactor = cholmod_copy_factor(symbolic_, &this->cholmod());
+    if (this->m_cholmodFactor == nullptr) throw std::bad_alloc();
     this->factorize(A);
   }
 
@@ -170,9 +181,15 @@ void check_ldlt(Eigen::ComputationInfo info, const Pivots& pivots) {
 
 } // namespace
 
+/// Eigen's SimplicialLDLT, whose analysis (the column counts of L) can be read before the factorization.
+class EigenLdlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> {
+public:
+  [[nodiscard]] long analysed_nonzeros() const { return m_matrix.outerIndexPtr()[m_matrix.outerSize()]; }
+};
+
 struct SpdSolver::Impl {
   CholmodOnceAnalysed<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>> cholmod;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  EigenLdlt ldlt;
   SparsityPattern ldlt_pattern; ///< what `ldlt` analysed
   CholmodLdlt cholmod_ldlt;
   /// Eigen's CHOLMOD solves work in the factor's own common: one at a time.
@@ -191,6 +208,17 @@ SpdSolver::~SpdSolver() = default;
 SpdSolver::SpdSolver(SpdSolver&&) noexcept = default;
 SpdSolver& SpdSolver::operator=(SpdSolver&&) noexcept = default;
 
+long SpdSolver::analyse(const Eigen::SparseMatrix<double>& A) {
+  if (A.rows() == 0) throw NotPositiveDefinite("the system has no free degrees of freedom");
+  if (kind_ == SparseSolverKind::cholmod) return impl_->cholmod.analyse(A);
+  if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.analyse(A);
+  if (!impl_->ldlt_pattern.matches(A)) {
+    impl_->ldlt.analyzePattern(A);
+    impl_->ldlt_pattern.remember(A);
+  }
+  return impl_->ldlt.analysed_nonzeros();
+}
+
 void SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (A.rows() == 0) throw NotPositiveDefinite("the system has no free degrees of freedom");
   if (kind_ == SparseSolverKind::cholmod) {
@@ -204,12 +232,8 @@ void SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
     check_ldlt(impl_->cholmod_ldlt.info(), [&] { return impl_->cholmod_ldlt.pivots(); });
     return;
   }
-  if (impl_->ldlt_pattern.matches(A)) {
-    impl_->ldlt.factorize(A); // the ordering and elimination tree of the last analysis
-  } else {
-    impl_->ldlt.compute(A);
-    impl_->ldlt_pattern.remember(A);
-  }
+  (void)analyse(A);
+  impl_->ldlt.factorize(A); // with the ordering and elimination tree of the analysis
   check_ldlt(impl_->ldlt.info(), [&] { return Eigen::VectorXd(impl_->ldlt.vectorD()); });
 }
 

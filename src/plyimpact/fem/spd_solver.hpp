@@ -43,6 +43,10 @@ public:
   /// pattern of the one analysed last (a refreshed K̄: same mesh, new numbers) is factored with that
   /// analysis, numbers only; the factor is the same, bit for bit. Throws NotPositiveDefinite.
   void factorize(const Eigen::SparseMatrix<double>& A);
+  /// The analysis alone (unless A has the pattern analysed last): returns the entries the factor of A
+  /// will hold below its diagonal, so that its memory is known before it is made (analysis/guards.hpp);
+  /// factorize(A) then reuses the analysis.
+  [[nodiscard]] long analyse(const Eigen::SparseMatrix<double>& A);
   /// Buffers that solve(b, x, workspace) keeps from one call to the next, so that a time loop solves
   /// without allocating (CHOLMOD's solution and work arrays, and the CHOLMOD common they live in).
   /// Belongs to one thread; may serve several solvers.
