@@ -123,6 +123,34 @@ TEST_P(SpdSolverBackends, TheAnalysisTellsTheSizeOfTheFactorBeforeItIsMade) {
   EXPECT_EQ(solver.solve(b), fresh.solve(b));
 }
 
+TEST_P(SpdSolverBackends, ASolverThatAdoptsAnotherOnesAnalysisGetsTheFreshFactor) {
+  // The factors of K̄ at two time-step levels (analysis/linear_step.cpp): the second solver takes the
+  // first one's analysis and factors its own matrix of the same pattern, bit for bit as a solver that
+  // analyses it afresh; a matrix of another pattern is still analysed anew. Only a solver of the same
+  // kind and ordering can lend its analysis.
+  const PlateModel model = small_plate("ss");
+  const SparseMatrix level0 = model.stiffness() + (4.0 / 4e-12) * model.mass();
+  const SparseMatrix level1 = model.stiffness() + (4.0 / 1e-12) * model.mass();
+  const PlateModel clamped = small_plate("clamped");
+  const SparseMatrix other = clamped.stiffness() + (4.0 / 1e-12) * clamped.mass();
+  SpdSolver first(GetParam());
+  first.factorize(level0);
+  SpdSolver second(GetParam());
+  second.adopt_analysis_of(first);
+  for (const SparseMatrix* A : {&level1, &other}) {
+    second.factorize(*A);
+    SpdSolver fresh(GetParam());
+    fresh.factorize(*A);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A->rows(), -1.0, 2.0);
+    EXPECT_EQ(second.solve(b), fresh.solve(b));
+  }
+  const SparseSolverKind another = GetParam() == SparseSolverKind::cholmod
+                                       ? SparseSolverKind::cholmod_simplicial
+                                       : SparseSolverKind::cholmod;
+  SpdSolver mismatched(another);
+  EXPECT_THROW(mismatched.adopt_analysis_of(first), std::invalid_argument);
+}
+
 TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
   // A plate with free edges has six rigid-body motions: K is singular.
   const PlateModel model = small_plate("00000");

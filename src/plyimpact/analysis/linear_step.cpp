@@ -132,6 +132,7 @@ private:
     const SparseMatrix Kbar = K_ + newmark.c0 * M_.matrix(); // effective stiffness, factored once
     auto level = std::make_unique<TimeStepLevel>(
         TimeStepLevel{newmark, SpdSolver(options_.solver, options_.ordering)});
+    if (levels_[0]) level->factor.adopt_analysis_of(levels_[0]->factor); // one pattern, one ordering
     if (check_memory && options_.memory_limit_bytes) { // from the analysis that the factorization reuses
       factor_memory_ = estimate_factor_memory(level->factor, Kbar);
       check_factor_memory(factor_memory_, *options_.memory_limit_bytes);

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <stdexcept>
@@ -37,6 +38,8 @@ void use_one_ordering(cholmod_common& common, FillOrdering ordering) {
 /// pattern can be factored with the ordering and symbolic factor of the one analysed before.
 class SparsityPattern {
 public:
+  SparsityPattern() = default;
+  explicit SparsityPattern(const Eigen::SparseMatrix<double>& A) { remember(A); }
   [[nodiscard]] bool matches(const Eigen::SparseMatrix<double>& A) const {
     return A.isCompressed() && A.rows() == rows_ && A.cols() + 1 == std::ssize(starts_) &&
            std::equal(starts_.begin(), starts_.end(), A.outerIndexPtr()) &&
@@ -74,15 +77,25 @@ public:
     if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
   }
 
+  /// Takes `other`'s analysis (a copy of its symbolic factor, its pattern shared), if it has one.
+  void adopt_analysis_of(const CholmodOnceAnalysed& other) {
+    if (other.symbolic_ == nullptr) return;
+    cholmod_factor* copy = cholmod_copy_factor(other.symbolic_, &this->cholmod());
+    if (copy == nullptr) throw std::bad_alloc();
+    if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
+    symbolic_ = copy;
+    pattern_ = other.pattern_;
+  }
+
   /// Analyses A unless it has the pattern analysed last; returns the entries its factor will hold
   /// below the diagonal (simplicial: from the column counts; supernodal: the supernodes' whole size).
   long analyse(const Eigen::SparseMatrix<double>& A) {
-    if (symbolic_ == nullptr || !pattern_.matches(A)) {
+    if (symbolic_ == nullptr || !pattern_->matches(A)) {
       this->analyzePattern(A);
       if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &this->cholmod());
       symbolic_ = cholmod_copy_factor(this->m_cholmodFactor, &this->cholmod());
       if (symbolic_ == nullptr) throw std::bad_alloc();
-      pattern_.remember(A);
+      pattern_ = std::make_shared<const SparsityPattern>(A);
     }
     if (symbolic_->is_super != 0) return static_cast<long>(symbolic_->xsize);
     const auto* count = static_cast<const int*>(symbolic_->ColCount);
@@ -102,8 +115,8 @@ public:
   }
 
 private:
-  cholmod_factor* symbolic_ = nullptr; ///< the analysis of pattern_, never factored
-  SparsityPattern pattern_;
+  cholmod_factor* symbolic_ = nullptr;             ///< the analysis of pattern_, never factored
+  std::shared_ptr<const SparsityPattern> pattern_; ///< shared by the solvers that adopted the analysis
 };
 
 /// CHOLMOD's simplicial LDLᵀ, with access to the pivots D (the first entry of each column of the
@@ -207,6 +220,15 @@ SpdSolver::SpdSolver(SparseSolverKind kind, FillOrdering ordering)
 SpdSolver::~SpdSolver() = default;
 SpdSolver::SpdSolver(SpdSolver&&) noexcept = default;
 SpdSolver& SpdSolver::operator=(SpdSolver&&) noexcept = default;
+
+void SpdSolver::adopt_analysis_of(const SpdSolver& other) {
+  if (other.kind_ != kind_ || other.ordering_ != ordering_)
+    throw std::invalid_argument(
+        "SpdSolver: an analysis is adopted from a solver of the same kind and ordering");
+  if (kind_ == SparseSolverKind::cholmod) impl_->cholmod.adopt_analysis_of(other.impl_->cholmod);
+  if (kind_ == SparseSolverKind::cholmod_simplicial)
+    impl_->cholmod_ldlt.adopt_analysis_of(other.impl_->cholmod_ldlt);
+}
 
 long SpdSolver::analyse(const Eigen::SparseMatrix<double>& A) {
   if (A.rows() == 0) throw NotPositiveDefinite("the system has no free degrees of freedom");

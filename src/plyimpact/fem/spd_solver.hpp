@@ -47,6 +47,10 @@ public:
   /// will hold below its diagonal, so that its memory is known before it is made (analysis/guards.hpp);
   /// factorize(A) then reuses the analysis.
   [[nodiscard]] long analyse(const Eigen::SparseMatrix<double>& A);
+  /// Takes the analysis `other` made last (same kind and ordering), so that a matrix of its pattern is
+  /// factored here without being ordered again: the factors of K̄ at each time-step level, all of one
+  /// pattern. Eigen's LDLᵀ cannot share its analysis and makes its own.
+  void adopt_analysis_of(const SpdSolver& other);
   /// Buffers that solve(b, x, workspace) keeps from one call to the next, so that a time loop solves
   /// without allocating (CHOLMOD's solution and work arrays, and the CHOLMOD common they live in).
   /// Belongs to one thread; may serve several solvers.
