@@ -115,7 +115,8 @@ public:
   start_at_contact_point(const Impactor& /*impactor*/) const {
     return nullptr;
   }
-  /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
+  /// Seconds for one triangular solve pair with the factor of K̄, as the time loop solves (into kept
+  /// buffers; median of `repeats`; benchmarks).
   [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
   /// What the policy changed about the case that the user must know (e.g. strengths lowered to a band
   /// limit), for the run's warnings.
