@@ -111,6 +111,10 @@ public:
     cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
     this->m_cholmodFactor = cholmod_copy_factor(symbolic_, &this->cholmod());
     if (this->m_cholmodFactor == nullptr) throw std::bad_alloc();
+    // The state analyzePattern() leaves, which an adopted analysis never went through (Eigen checks it
+    // in builds with assertions).
+    this->m_isInitialized = true;
+    this->m_analysisIsOk = 1;
     this->factorize(A);
   }
 
