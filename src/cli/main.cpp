@@ -140,7 +140,10 @@ int run_impact(const Options& o) {
   options.observers = {&progress};
   const ImpactRunOutcome run = run_impact(deck, impact, options);
   const ImpactResult& r = run.result;
-  if (r.newton && impact.settings().nonlinear)
+  if (impact.settings().nonlinear && impact.settings().integration == Integrator::central_difference)
+    fmt::print("non-linear ({}): explicit central differences, {} steps, nothing factored\n",
+               to_string(impact.settings().nonlinear->measure), r.steps);
+  else if (r.newton && impact.settings().nonlinear)
     fmt::print("non-linear ({}): {} Newton iterations in {} steps ({:.2f} per step, at most {}), {} "
                "factorizations of K_T + c0 M\n",
                to_string(impact.settings().nonlinear->measure), r.newton->iterations, r.steps,

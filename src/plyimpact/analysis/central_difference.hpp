@@ -1,6 +1,6 @@
 #pragma once
 // Explicit central differences on a lumped mass, what the explicit step policies share (the ply damage
-// of explicit_damage_step.cpp, the interfaces of explicit_delamination_step.cpp):
+// and elastic plates of central_difference_step.cpp, the interfaces of explicit_delamination_step.cpp):
 //
 //   u_{n+1} = uₙ + Δt vₙ + ½Δt² aₙ                                    (CD1: Newmark with β = 0)
 //   Fc_{n+1} = F(α),  α = w_i,n+1 − sᵀu_{n+1}                         (CD2: u_{n+1} does not depend on
@@ -15,6 +15,7 @@
 // step checks with the secant k_c of the contact law (CD6), stopping the run, with the step to use, where
 // Δt √(ω_max² + ω_c²) > 2.
 #include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/mechanical_model.hpp"
 
 #include <optional>
 #include <string>
@@ -28,6 +29,15 @@ namespace plyimpact {
 /// std::invalid_argument, naming `key`, where M is not diagonal with mass on every DOF.
 [[nodiscard]] double explicit_highest_frequency(const SparseMatrix& K0, const MassOperator& M,
                                                 const std::string& key);
+/// ω_max of `model`'s virgin undeformed stiffness on its mass (the bound CD5 takes) [rad/s]; throws as above.
+[[nodiscard]] double explicit_highest_frequency(const MechanicalModel& model, const std::string& key);
+
+/// Central differences (CD1 to CD6) on any plate model with a diagonal mass: the one explicit step
+/// policy (central_difference_step.cpp). `key` is the deck key that chose it, for its messages. Throws
+/// std::invalid_argument where the mass is not diagonal or Δt of `options` is above the stable step.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+central_difference_step_policy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
+                               std::string key);
 
 class CentralDifference {
 public:

@@ -2,8 +2,8 @@
 // What the step policies of the plate whose plies crack share (fem/damaged_plate.hpp;
 // docs/progressive_damage.md): the damaged plate built once per case with its warnings, and in each run
 // the contact on the plate and the damage field, whose committed state gives the energies. Iterations
-// with the secant (damage_step.cpp) and explicit central differences (explicit_damage_step.cpp) differ
-// only in how a step is solved.
+// with the secant (damage_step.cpp) and explicit central differences (central_difference_step.cpp, on any
+// model of fem/mechanical_model.hpp) differ only in how a step is solved.
 #include "plyimpact/analysis/step_policy.hpp"
 
 #include <string>

@@ -27,6 +27,7 @@
 // energy exactly, also where faces open or close inside it (with the law's end tractions the clapping
 // of delaminated faces, held apart by the penalty K, created energy: docs/delamination.md, "The lagged
 // step keeps the energy").
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
@@ -382,12 +383,12 @@ std::unique_ptr<StepPolicy>
 delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                          const DelaminationSettings& settings,
                          const std::optional<ProgressiveDamageSettings>& ply_damage) {
-  if (ply_damage && (settings.integration != DamageIntegration::central_difference ||
-                     ply_damage->integration != DamageIntegration::central_difference))
-    throw std::invalid_argument(
-        "ply damage and delamination run together with explicit steps only: [damage] integration = "
-        "\"explicit\" and [delamination] integration = \"explicit\" (docs/delamination.md, \"Ply damage "
-        "and delamination together\")");
+  const ModelKind kind{false, false, ply_damage.has_value(), true};
+  const Integrator integrator =
+      resolve_integrator(kind, TimeIntegration::newmark,
+                         ply_damage ? std::optional(integrator_of(ply_damage->integration)) : std::nullopt,
+                         integrator_of(settings.integration));
+  if (auto why = refusal(kind, integrator)) throw std::invalid_argument(*why); // capabilities.hpp
   if (settings.integration == DamageIntegration::central_difference)
     return explicit_delamination_step_policy(model, options, settings, ply_damage);
   return std::make_unique<DelaminationStepPolicy>(model, options, settings);

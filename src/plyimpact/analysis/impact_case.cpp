@@ -1,4 +1,5 @@
 #include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/central_difference.hpp"
 
 #include "plyimpact/analysis/contact_rules.hpp"
@@ -22,6 +23,29 @@ const Laminate& impacted_laminate(const ImpactCaseDescription& d) {
   for (const Region& r : d.regions)
     if (r.contains(d.impactor.x, d.impactor.y)) lam = &d.laminates[static_cast<std::size_t>(r.laminate)];
   return *lam;
+}
+
+/// The deck key that chooses explicit steps for the elastic and the von Kármán plate, for messages.
+constexpr const char* explicit_time_key = "[time] integration = \"explicit\"";
+
+/// The plate that [time] integration = "explicit" moves when it has no laws with a state: elastic, or
+/// von Kármán with `nonlinear`.
+std::unique_ptr<MechanicalModel> explicit_plate_model(const ImpactCaseDescription& d,
+                                                      const PlateModel& model) {
+  if (d.nonlinear) return von_karman_plate_model(model, d.nonlinear->measure);
+  return elastic_plate_model(model);
+}
+
+/// `d` where its plate model runs with its integrator (the one table of what runs, capabilities.hpp);
+/// throws std::invalid_argument with the reason otherwise, before anything is assembled.
+ImpactCaseDescription supported(ImpactCaseDescription d) {
+  require_supported(d);
+  if (d.time.adaptive && case_integrator(d) == Integrator::central_difference)
+    throw std::invalid_argument(
+        "time.adaptive factors K̄ at each step level, but [time] integration = \"explicit\" solves nothing "
+        "and needs every step below the stable one: remove adaptive = true, or use integration = "
+        "\"implicit\"");
+  return d;
 }
 
 MeshUsed mesh_used(const PlateModel& model, bool graded) {
@@ -59,6 +83,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   if (d.time.adaptive && !d.time.dt) // the automatic step is the smallest of the error-controlled ones
     s.dt = std::ldexp(s.dt, d.time.adaptive->levels - 1);
   s.adaptive = d.time.adaptive;
+  s.integration = case_integrator(d);
   if (d.delamination && d.delamination->integration != DamageIntegration::central_difference && !d.time.dt &&
       !d.laminates.empty()) // within the interfaces' limit (DL5)
     s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
@@ -76,6 +101,8 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
 
 std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const PlateModel& model) {
   if (d.plate.rigid) return std::nullopt;
+  if (!d.delamination && !d.progressive_damage && d.time.integration == TimeIntegration::central_difference)
+    return explicit_highest_frequency(*explicit_plate_model(d, model), explicit_time_key);
   if (d.delamination && d.delamination->integration == DamageIntegration::central_difference)
     return explicit_delamination_highest_frequency(model, *d.delamination);
   if (d.progressive_damage && d.progressive_damage->integration == DamageIntegration::central_difference)
@@ -131,7 +158,7 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 }
 
 ImpactCase::ImpactCase(ImpactCaseDescription description)
-    : description_(std::move(description)),
+    : description_(supported(std::move(description))),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))),
       explicit_omega_max_(explicit_highest_frequency(description_, *model_)) {
   settings_ = resolved_settings(description_, explicit_omega_max_);
@@ -140,21 +167,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
   check_end_after_first_step(settings_.dt, settings_.end); // before the factorization
   if (!(settings_.impactor.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");
-  if (settings_.progressive_damage && (settings_.rigid_target || settings_.nonlinear))
-    throw std::invalid_argument(
-        settings_.rigid_target
-            ? "progressive damage needs a plate: a rigid target has no plies to crack"
-            : "progressive damage is not available with the geometrically non-linear plate yet: use one or "
-              "the other (docs/progressive_damage.md, limits)");
-  if (settings_.delamination && (settings_.rigid_target || settings_.nonlinear))
-    throw std::invalid_argument(
-        settings_.rigid_target ? "delamination needs a plate: a rigid target has no interfaces to open"
-                               : "delamination is not available together with the geometrically non-linear "
-                                 "plate yet: use one at a time (docs/delamination.md, limits)");
   if (settings_.rigid_target) {
-    if (settings_.nonlinear)
-      throw std::invalid_argument(
-          "non-linear impact needs a plate: a rigid target has no deflection to stiffen");
     policy_ = rigid_target_policy();
     return;
   }
@@ -170,6 +183,9 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
         delamination_step_policy(*model_, options, *settings_.delamination, settings_.progressive_damage);
   else if (settings_.progressive_damage)
     policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage);
+  else if (case_integrator(description_) == Integrator::central_difference)
+    policy_ = central_difference_step_policy(explicit_plate_model(description_, *model_), options,
+                                             explicit_time_key);
   else if (settings_.nonlinear)
     policy_ = newton_step_policy(*model_, options, *settings_.nonlinear);
   else

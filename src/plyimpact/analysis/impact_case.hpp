@@ -10,6 +10,7 @@
 // The model (linear or geometrically non-linear), the contact law, the contact load and the time step
 // are chosen here, once. Runs that change only the impactor (velocity, mass, radius, contact stiffness)
 // reuse the plate and its factorization.
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/impact_loop.hpp"
 #include "plyimpact/analysis/impact_observer.hpp"
 #include "plyimpact/analysis/parameters.hpp"
@@ -69,7 +70,8 @@ struct ImpactSettings {
   std::optional<double> end; ///< [s]; empty: SPEC §4 end-of-event rule
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
-  std::optional<AdaptiveTimeStep> adaptive; ///< engaged: dt is the largest of the error-controlled steps
+  std::optional<AdaptiveTimeStep> adaptive;      ///< engaged: dt is the largest of the error-controlled steps
+  Integrator integration = Integrator::implicit; ///< the one integrator of the plate (capabilities.hpp)
   bool rigid_target = false;
   std::optional<NonlinearImpactSettings> nonlinear;
   std::optional<ProgressiveDamageSettings> progressive_damage;

@@ -71,6 +71,16 @@ struct AdaptiveTimeStep {
   int levels = 8;          ///< the smallest step is dt / 2^(levels − 1)
 };
 
+/// How the plate moves from step to step (`[time] integration`, docs/deck.md; analysis/capabilities.hpp).
+enum class TimeIntegration {
+  /// Newmark's implicit average acceleration (2.11)–(2.16): one factor of K̄ for the linear plate,
+  /// Newton iterations for the others ([damage] and [delamination] choose implicit or lagged).
+  newmark,
+  /// Explicit central differences on the lumped mass (analysis/central_difference.hpp): the model's
+  /// internal force once per step, nothing solved, a step below the stable one 0.9 · 2/ω_max.
+  central_difference,
+};
+
 /// Newmark time stepping (2.11)–(2.16).
 struct TimeStepping {
   std::optional<double> dt;  ///< [s]; empty = "auto"
@@ -78,6 +88,7 @@ struct TimeStepping {
   double newmark_beta = 0.25;
   double newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  TimeIntegration integration = TimeIntegration::newmark;
   /// engaged: error-controlled steps (impact_loop.hpp): dt is the largest step, halved where the
   /// estimated local error of the indentation exceeds the tolerance
   std::optional<AdaptiveTimeStep> adaptive;

@@ -54,7 +54,7 @@ public:
   virtual ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                                   Eigen::VectorXd& u_next) = 0;
   /// a_{n+1} of the step advance() has just solved: Newmark's (2.11) from u_{n+1}, unless the plate
-  /// has it from its equation of motion (the explicit step of explicit_damage_step.cpp).
+  /// has it from its equation of motion (the explicit steps of central_difference_step.cpp).
   virtual void next_acceleration(const NewmarkCoefficients& nc, const PlateState& s,
                                  const Eigen::VectorXd& u_next, Eigen::VectorXd& a_next) const {
     a_next = nc.c0 * (u_next - s.u) - nc.c2 * s.v - nc.c3 * s.a;
@@ -169,8 +169,9 @@ struct StepPolicyOptions {
 [[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options);
 /// The plate whose plies crack with explicit central differences on the lumped mass (settings.integration
-/// = central_difference; explicit_damage_step.cpp). Throws std::invalid_argument when the mass is not
-/// diagonal or Δt of `options` is above the stable step, which the message gives.
+/// = central_difference; central differences on the damaging plate, central_difference_step.cpp). Throws
+/// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
+/// message gives.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                             const ProgressiveDamageSettings& settings);

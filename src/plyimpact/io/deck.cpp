@@ -177,6 +177,12 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("delamination")) d.delamination = read_delamination(*t, d);
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
+  if (d.time.adaptive && d.time.integration == TimeIntegration::central_difference)
+    top.optional_table("time")->fail_at(
+        "adaptive",
+        "time.adaptive factors K̄ at each step level, but integration = \"explicit\" solves nothing "
+        "and needs every step below the stable one: remove adaptive = true, or use integration = "
+        "\"implicit\"");
   if (d.time.adaptive && (!d.damage.criteria.empty() || d.damage.progressive || d.delamination))
     top.optional_table("time")->fail_at(
         "adaptive", "time.adaptive controls the error of the contact force only: the ply criteria, the "

@@ -1,5 +1,6 @@
 #include "plyimpact/io/deck_tables.hpp"
 
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
@@ -126,11 +127,20 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
                                               p.area_threshold));
     p.reduce_strengths_above_band_limit =
         t.optional_choice<bool>("oversize", {{"error", false}, {"reduce-strength", true}}).value_or(false);
+    // [time] integration = "explicit" makes the plies' step explicit too (the plate steps with one).
     p.integration = t.optional_choice<DamageIntegration>(
                          "integration", {{"implicit", DamageIntegration::implicit},
                                          {"lagged", DamageIntegration::lagged},
                                          {"explicit", DamageIntegration::central_difference}})
-                        .value_or(p.integration);
+                        .value_or(d.time.integration == TimeIntegration::central_difference
+                                      ? DamageIntegration::central_difference
+                                      : p.integration);
+    try {
+      (void)resolve_integrator(ModelKind{false, d.nonlinear, true, false}, d.time.integration,
+                               integrator_of(p.integration), std::nullopt);
+    } catch (const std::invalid_argument& e) {
+      t.fail_at("integration", e.what());
+    }
     damage.progressive = p;
   } else {
     for (const char* key :

@@ -1,5 +1,6 @@
 // [delamination] (docs/deck.md, docs/delamination.md): where the laminate may delaminate, the cohesive law
 // of its interfaces, and how the stacked plate is held and stepped.
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/fem/stacked_plate.hpp"
 #include "plyimpact/io/deck_tables.hpp"
 
@@ -74,9 +75,6 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
   t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
           "penalty_stiffness", "onset", "integration", "points", "supports"});
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
-  if (d.nonlinear)
-    t.fail_here("[delamination] is not available with the geometrically non-linear plate (nonlinear = true) "
-                "yet: use one at a time (docs/delamination.md, limits)");
   if (!d.regions.empty())
     t.fail_here(
         "[delamination] needs one laminate over the whole plate: [[region]] tables with other laminates "
@@ -89,16 +87,25 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
                      .value_or(CohesiveIntegration::nodal);
   s.supports_on_all =
       t.optional_choice<bool>("supports", {{"all", true}, {"bottom", false}}).value_or(s.supports_on_all);
+  // [time] integration = "explicit" makes the interfaces' step explicit too (the plate steps with one).
   s.integration = t.optional_choice<DamageIntegration>("integration",
                                                        {{"lagged", DamageIntegration::lagged},
                                                         {"implicit", DamageIntegration::implicit},
                                                         {"explicit", DamageIntegration::central_difference}})
-                      .value_or(s.integration);
-  if (d.damage.progressive && (s.integration != DamageIntegration::central_difference ||
-                               d.damage.progressive->integration != DamageIntegration::central_difference))
-    t.fail_here("[delamination] with [damage] model = \"progressive\" runs with explicit steps only: set "
-                "integration = \"explicit\" in both tables (docs/delamination.md, \"Ply damage and "
-                "delamination together\")");
+                      .value_or(d.time.integration == TimeIntegration::central_difference
+                                    ? DamageIntegration::central_difference
+                                    : s.integration);
+  // The one table of what runs (analysis/capabilities.hpp).
+  const ModelKind kind{false, d.nonlinear, d.damage.progressive.has_value(), true};
+  try {
+    const Integrator integrator = resolve_integrator(
+        kind, d.time.integration,
+        d.damage.progressive ? std::optional(integrator_of(d.damage.progressive->integration)) : std::nullopt,
+        integrator_of(s.integration));
+    if (auto why = refusal(kind, integrator)) t.fail_here(fmt::format("[delamination]: {}", *why));
+  } catch (const std::invalid_argument& e) {
+    t.fail_here(fmt::format("[delamination]: {}", e.what()));
+  }
   return s;
 }
 

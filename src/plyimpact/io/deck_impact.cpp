@@ -167,8 +167,13 @@ std::optional<AdaptiveTimeStep> read_adaptive_time_step(const TableReader& t) {
 } // namespace
 
 TimeStepping read_time(const TableReader& t) {
-  t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps", "adaptive", "tolerance", "levels"});
+  t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps", "adaptive", "tolerance", "levels",
+          "integration"});
   TimeStepping ts;
+  ts.integration =
+      t.optional_choice<TimeIntegration>("integration", {{"implicit", TimeIntegration::newmark},
+                                                         {"explicit", TimeIntegration::central_difference}})
+          .value_or(ts.integration);
   ts.dt = t.positive_or_auto("dt", "s");
   ts.end = t.positive_or_auto("end", "s");
   ts.newmark_beta = t.optional_positive("newmark_beta", "-").value_or(0.25);

@@ -122,6 +122,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["contacts"] = r.episodes.size();
   j["steps"] = r.steps;
   j["dt"] = s.dt;
+  j["integration"] = std::string(to_string(s.integration)); // the plate's integrator (capabilities.hpp)
   j["end_time"] = r.end_time;
   j["complete"] = r.complete;
   j["incomplete_reason"] = or_null(r.incomplete_reason);

@@ -1,0 +1,185 @@
+// The table of plate models × time integrators (capabilities.hpp).
+#include "plyimpact/analysis/capabilities.hpp"
+
+#include "plyimpact/analysis/impact_case.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <stdexcept>
+
+namespace plyimpact {
+
+namespace {
+
+/// Cells of one row: implicit, lagged, central differences.
+struct Row {
+  ModelKind model;
+  std::array<Capability, 3> cells;
+};
+
+constexpr std::string_view no_state = "– (no law with a state to lag)";
+constexpr std::string_view damage_not_built =
+    "not built yet: the layered section whose plies crack (fem/damaged_plate.hpp) has linear kinematics only";
+constexpr std::string_view stack_not_built =
+    "not built yet: the stacked plate's sub-laminates (fem/stacked_plate.hpp) have linear kinematics only";
+constexpr std::string_view damaged_stack_implicit =
+    "not built yet: the stack of sub-laminates whose plies crack is composed by the explicit step alone "
+    "(explicit_delamination_step.cpp); set integration = \"explicit\" in [damage] and [delamination]";
+
+constexpr Capability runs(std::string_view how) {
+  return {true, how};
+}
+constexpr Capability refused(std::string_view why) {
+  return {false, why};
+}
+
+// clang-format off
+constexpr std::array<Row, 9> table{{
+  {{false, false, false, false}, {runs("linear Newmark, K̄ factored once (linear_step.cpp)"),
+                                  refused(no_state),
+                                  runs("central differences (central_difference_step.cpp)")}},
+  {{false, true, false, false},  {runs("Newton–Newmark, modified Newton (newton_step.cpp)"),
+                                  refused(no_state),
+                                  runs("central differences (central_difference_step.cpp)")}},
+  {{false, false, true, false},  {runs("Newton–Newmark on the secant (damage_step.cpp)"),
+                                  runs("Newton–Newmark, damage of the step before (damage_step.cpp)"),
+                                  runs("central differences (central_difference_step.cpp)")}},
+  {{false, false, false, true},  {runs("Newton–Newmark (delamination_step.cpp)"),
+                                  runs("Newton–Newmark, interfaces of the step before (delamination_step.cpp)"),
+                                  runs("central differences (explicit_delamination_step.cpp)")}},
+  {{false, false, true, true},   {refused(damaged_stack_implicit),
+                                  refused(damaged_stack_implicit),
+                                  runs("central differences (explicit_delamination_step.cpp)")}},
+  {{false, true, true, false},   {refused(damage_not_built), refused(damage_not_built), refused(damage_not_built)}},
+  {{false, true, false, true},   {refused(stack_not_built), refused(stack_not_built), refused(stack_not_built)}},
+  {{false, true, true, true},    {refused(stack_not_built), refused(stack_not_built), refused(stack_not_built)}},
+  {{true, false, false, false},  {runs("the impactor alone (rigid_target_step.cpp)"),
+                                  refused(no_state),
+                                  runs("the impactor alone (rigid_target_step.cpp)")}},
+}};
+// clang-format on
+
+bool same(const ModelKind& a, const ModelKind& b) {
+  return a.rigid_target == b.rigid_target && a.von_karman == b.von_karman && a.ply_damage == b.ply_damage &&
+         a.interfaces == b.interfaces;
+}
+
+/// A rigid target with anything that needs a plate: the physical reason, else empty.
+std::optional<std::string_view> rigid_target_conflict(const ModelKind& m) {
+  if (!m.rigid_target) return std::nullopt;
+  if (m.ply_damage) return "progressive damage needs a plate: a rigid target has no plies to crack";
+  if (m.interfaces) return "delamination needs a plate: a rigid target has no interfaces to open";
+  if (m.von_karman) return "non-linear impact needs a plate: a rigid target has no deflection to stiffen";
+  return std::nullopt;
+}
+
+std::size_t column(Integrator i) {
+  return static_cast<std::size_t>(i);
+}
+
+} // namespace
+
+std::string_view to_string(Integrator i) {
+  switch (i) {
+  case Integrator::implicit:
+    return "implicit";
+  case Integrator::lagged:
+    return "lagged";
+  case Integrator::central_difference:
+    return "explicit";
+  }
+  return "?";
+}
+
+std::string model_name(const ModelKind& m) {
+  if (m.rigid_target) return "rigid target";
+  std::string name = m.von_karman ? "von Kármán plate" : "elastic plate";
+  if (m.ply_damage && m.interfaces) return name + " with ply damage and interfaces";
+  if (m.ply_damage) return name + " with ply damage";
+  if (m.interfaces) return name + " with interfaces";
+  return name;
+}
+
+Capability capability(const ModelKind& m, Integrator i) {
+  if (const auto why = rigid_target_conflict(m)) return refused(*why);
+  for (const Row& row : table)
+    if (same(row.model, m)) return row.cells[column(i)];
+  return refused("not in the table");
+}
+
+std::optional<std::string> refusal(const ModelKind& m, Integrator i) {
+  if (const auto why = rigid_target_conflict(m)) return std::string(*why);
+  const Capability c = capability(m, i);
+  if (c.runs) return std::nullopt;
+  return fmt::format("the {} does not run with {} steps: {} (docs/deck.md, \"What runs\")", model_name(m),
+                     to_string(i), c.detail);
+}
+
+std::string capability_table_markdown() {
+  std::string md = "| model | `implicit` | `lagged` | `explicit` |\n|---|---|---|---|\n";
+  for (const Row& row : table) {
+    md += "| " + model_name(row.model);
+    for (const Capability& c : row.cells)
+      md += fmt::format(" | {}{}", c.runs ? "runs: " : "", c.detail);
+    md += " |\n";
+  }
+  return md;
+}
+
+std::string integrators_that_run(const ModelKind& m) {
+  std::string list;
+  for (const Integrator i : {Integrator::implicit, Integrator::lagged, Integrator::central_difference})
+    if (capability(m, i).runs) list += (list.empty() ? "" : ", ") + std::string(to_string(i));
+  return list.empty() ? "none" : list;
+}
+
+Integrator integrator_of(DamageIntegration i) {
+  switch (i) {
+  case DamageIntegration::implicit:
+    return Integrator::implicit;
+  case DamageIntegration::lagged:
+    return Integrator::lagged;
+  case DamageIntegration::central_difference:
+    return Integrator::central_difference;
+  }
+  return Integrator::implicit;
+}
+
+Integrator resolve_integrator(const ModelKind& m, TimeIntegration time, std::optional<Integrator> damage,
+                              std::optional<Integrator> interfaces) {
+  const auto differ = [&](std::string_view first, Integrator a, std::string_view second, Integrator b) {
+    return std::invalid_argument(
+        fmt::format("the plate steps with one integrator, but {} = \"{}\" and {} = \"{}\" differ: give "
+                    "them the same value (the {} runs with: {})",
+                    first, to_string(a), second, to_string(b), model_name(m), integrators_that_run(m)));
+  };
+  if (damage && interfaces && *damage != *interfaces)
+    throw differ("[damage] integration", *damage, "[delamination] integration", *interfaces);
+  const std::optional<Integrator> laws = damage ? damage : interfaces;
+  if (time == TimeIntegration::central_difference) {
+    if (laws && *laws != Integrator::central_difference)
+      throw differ("[time] integration", Integrator::central_difference,
+                   damage ? "[damage] integration" : "[delamination] integration", *laws);
+    return Integrator::central_difference;
+  }
+  return laws.value_or(Integrator::implicit);
+}
+
+ModelKind model_kind(const ImpactCaseDescription& d) {
+  return {d.plate.rigid, d.nonlinear.has_value(), d.progressive_damage.has_value(),
+          d.delamination.has_value()};
+}
+
+Integrator case_integrator(const ImpactCaseDescription& d) {
+  std::optional<Integrator> damage, interfaces;
+  if (d.progressive_damage) damage = integrator_of(d.progressive_damage->integration);
+  if (d.delamination) interfaces = integrator_of(d.delamination->integration);
+  return resolve_integrator(model_kind(d), d.time.integration, damage, interfaces);
+}
+
+void require_supported(const ImpactCaseDescription& d) {
+  if (auto why = refusal(model_kind(d), case_integrator(d))) throw std::invalid_argument(*why);
+}
+
+} // namespace plyimpact

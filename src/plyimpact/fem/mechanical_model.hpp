@@ -1,0 +1,88 @@
+#pragma once
+// The one interface through which a time integrator drives a plate model (issue 49; docs/architecture.md,
+// "Models and integrators"). After OOFEM's split of an engineering model from its elements: the model is
+// built once per case and shared by the runs (matrices, the laws' constants); each run holds a
+// ModelState, the committed state of the model's integration points, from which a trial is evaluated at
+// any displacement and then either committed or dropped.
+//
+//   MechanicalModel   what does not change during a run: the equations it moves (model numbering ↔ the
+//                     integrator's), the mass over them, the stiffness of the virgin undeformed model (the
+//                     bound of its highest frequency), the warnings its construction raised.
+//   ModelState        one run's state: the trial internal force f_int(u) from the committed state, the
+//                     commit, the stored and dissipated energies, and the results observers look at
+//                     (the plies' damage), asked for by type.
+//
+// Behind it: the elastic plate (f_int = K u), the von Kármán plate (NonlinearPlateModel) and the plate
+// whose plies crack (DamagedPlateModel with its DamageField).
+#include "plyimpact/fem/damaged_plate.hpp"
+#include "plyimpact/fem/equation_subset.hpp"
+#include "plyimpact/fem/nonlinear_plate_element.hpp"
+#include "plyimpact/fem/plate_model.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace plyimpact {
+
+/// One run's state of a model's integration points.
+class ModelState {
+public:
+  virtual ~ModelState() = default;
+  ModelState() = default;
+  ModelState(const ModelState&) = delete;
+  ModelState& operator=(const ModelState&) = delete;
+
+  /// f_int(u) of a trial state: the laws advanced from the committed state to u over a step of dt (the
+  /// viscous regularisation's time), into `f` (sized by the caller; no allocation). Does not commit.
+  virtual void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) = 0;
+  /// The trial state of the last internal_force() at u, whose force was f, becomes the committed one.
+  virtual void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) = 0;
+  /// Energy stored in the plate in the committed state [J].
+  [[nodiscard]] virtual double stored_energy() const = 0;
+  /// Energy the model's laws have dissipated up to the committed state [J].
+  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
+  /// The plies' damage of the committed state, for a model whose plies crack; otherwise nullptr.
+  [[nodiscard]] virtual const PlyDamageView* ply_damage() const { return nullptr; }
+};
+
+/// A plate model as an integrator sees it (built once per case, shared by the runs).
+class MechanicalModel {
+public:
+  virtual ~MechanicalModel() = default;
+  MechanicalModel() = default;
+  MechanicalModel(const MechanicalModel&) = delete;
+  MechanicalModel& operator=(const MechanicalModel&) = delete;
+
+  /// The plate whose mesh and numbering the contact samples.
+  [[nodiscard]] virtual const PlateModel& plate() const = 0;
+  /// The equations the integrator moves, a subset of the plate's (the in-plane DOFs are left out where
+  /// they are exactly decoupled from bending).
+  [[nodiscard]] virtual const EquationSubset& equations() const = 0;
+  [[nodiscard]] int size() const { return equations().size(); }
+  /// The mass matrix over equations().
+  [[nodiscard]] virtual const SparseMatrix& mass() const = 0;
+  /// The stiffness of the virgin, undeformed model over equations(): the highest frequency of the model
+  /// is bounded with it (damage only lowers the stiffness; membrane tension adds little at w ~ h).
+  [[nodiscard]] virtual const SparseMatrix& initial_stiffness() const = 0;
+  /// A run's state: virgin and undeformed.
+  [[nodiscard]] virtual std::unique_ptr<ModelState> virgin_state() const = 0;
+  /// What building the model changed about the case that the user must know (strengths lowered to a band
+  /// limit).
+  [[nodiscard]] virtual std::vector<std::string> warnings() const { return {}; }
+};
+
+/// The linear elastic plate: f_int = K u, over its bending equations when the in-plane DOFs are exactly
+/// decoupled (bending_equations_if_decoupled), else over all.
+[[nodiscard]] std::unique_ptr<MechanicalModel> elastic_plate_model(const PlateModel& plate);
+/// The geometrically non-linear plate of SPEC §8 (NonlinearPlateModel), over all equations. Its stored
+/// energy is the work of the internal forces, ∫ f_intᵀ du, trapezoidal from commit to commit.
+[[nodiscard]] std::unique_ptr<MechanicalModel> von_karman_plate_model(const PlateModel& plate,
+                                                                      StrainMeasure measure);
+/// The plate whose plies crack (DamagedPlateModel, docs/progressive_damage.md), over all equations; a
+/// trial evaluates the law at u, again where an element the screen had left out has reached a Hashin
+/// surface at u (DamagedPlateModel::explicit_internal_force).
+[[nodiscard]] std::unique_ptr<MechanicalModel>
+damaging_plate_model(const PlateModel& plate, const ProgressiveDamageSettings& settings);
+
+} // namespace plyimpact

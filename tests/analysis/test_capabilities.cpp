@@ -1,0 +1,102 @@
+// The one table of plate models × time integrators (analysis/capabilities.hpp; issue 49): the facade and
+// the deck refuse exactly the pairs the table refuses, with its reason; one integrator for the whole
+// plate; [time] integration = "explicit" makes the laws' steps explicit; docs/deck.md lists the table
+// as the code has it.
+#include "plyimpact/analysis/capabilities.hpp"
+#include "support/impact_decks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace plyimpact {
+namespace {
+
+const auto with = test::with_key;
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The message of the std::invalid_argument or DeckError that `f` throws ("" when it does not throw).
+template <class F>
+std::string refusal_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Capabilities, DeckMdListsTheTableAsTheCodeHasIt) {
+  const std::string doc = read(std::string(PLYIMPACT_SOURCE_DIR) + "/docs/deck.md");
+  const std::string table = capability_table_markdown();
+  EXPECT_NE(doc.find(table), std::string::npos) << "docs/deck.md must hold, verbatim:\n" << table;
+}
+
+TEST(Capabilities, EveryModelRunsWithSomeIntegratorOrSaysWhyNot) {
+  for (const bool karman : {false, true})
+    for (const bool damage : {false, true})
+      for (const bool interfaces : {false, true}) {
+        const ModelKind m{false, karman, damage, interfaces};
+        for (const Integrator i :
+             {Integrator::implicit, Integrator::lagged, Integrator::central_difference}) {
+          const Capability c = capability(m, i);
+          EXPECT_FALSE(c.detail.empty()) << model_name(m) << " / " << to_string(i);
+          EXPECT_EQ(refusal(m, i).has_value(), !c.runs);
+        }
+      }
+  // The pairs this issue opened: explicit steps for the elastic and the von Kármán plate.
+  EXPECT_TRUE(capability({false, false, false, false}, Integrator::central_difference).runs);
+  EXPECT_TRUE(capability({false, true, false, false}, Integrator::central_difference).runs);
+  // A rigid target refuses what needs a plate, with the physical reason, whatever the integrator.
+  EXPECT_NE(refusal({true, false, true, false}, Integrator::implicit).value_or("").find("no plies to crack"),
+            std::string::npos);
+}
+
+TEST(Capabilities, TheFacadeRefusesWhatTheTableRefusesWithItsReason) {
+  // von Kármán kinematics with plies that crack: not built yet, and the message says so from the table.
+  ImpactCaseDescription d =
+      impact_case_description(parse_deck(test::example_text("damage-progressive.toml"), "d.toml"));
+  d.nonlinear = NonlinearImpactSettings{};
+  const std::string why = refusal_of([&] { const ImpactCase c(d); });
+  EXPECT_NE(why.find(std::string(capability({false, true, true, false}, Integrator::implicit).detail)),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("von Kármán plate with ply damage"), std::string::npos) << why;
+}
+
+TEST(Capabilities, ThePlateStepsWithOneIntegrator) {
+  // [time] integration = "explicit" with the plies' own step set to another: refused at the deck's key.
+  const std::string damage = test::example_text("damage-progressive.toml");
+  const std::string conflict = with(damage, "end", "1.5e-4\nintegration = \"explicit\"") +
+                               "integration = \"lagged\"\n"; // appended to [damage], the last table
+  const std::string why = refusal_of([&] { (void)parse_deck(conflict, "c.toml"); });
+  EXPECT_NE(why.find("[time] integration = \"explicit\" and [damage] integration = \"lagged\" differ"),
+            std::string::npos)
+      << why;
+  // Left out, the plies' step follows [time]: explicit.
+  const Deck deck = parse_deck(with(damage, "end", "1.5e-4\nintegration = \"explicit\""), "e.toml");
+  ASSERT_TRUE(deck.damage.progressive.has_value());
+  EXPECT_EQ(deck.damage.progressive->integration, DamageIntegration::central_difference);
+  // The same conflict built in code (Python, sweeps) is refused by the facade.
+  ImpactCaseDescription d = impact_case_description(parse_deck(damage, "d.toml"));
+  d.time.integration = TimeIntegration::central_difference;
+  EXPECT_NE(refusal_of([&] { const ImpactCase c(d); }).find("differ"), std::string::npos);
+}
+
+TEST(Capabilities, ExplicitStepsRefuseErrorControlledSteps) {
+  const std::string deck =
+      with(test::example_text("impact-adaptive-steps.toml"), "adaptive", "true\nintegration = \"explicit\"");
+  const std::string why = refusal_of([&] { (void)parse_deck(deck, "a.toml"); });
+  EXPECT_NE(why.find("remove adaptive = true"), std::string::npos) << why;
+}
+
+} // namespace
+} // namespace plyimpact
