@@ -15,6 +15,7 @@
 #include "test_paths.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fmt/format.h>
 
@@ -216,6 +217,42 @@ TEST(GmshGeometry, TheExampleDeckMeshesTheGeometryBesideIt) {
   ASSERT_TRUE(deck.file_mesh);
   EXPECT_EQ(deck.file_mesh->node_set("clamps").size(), 4U);
   EXPECT_NEAR(deck.file_mesh->bounds().x_max, a, 1e-12);
+}
+
+} // namespace
+} // namespace plyimpact
+
+namespace plyimpact {
+namespace {
+
+// gmsh runs in a child process (io/child_process.hpp; docs/robustness.md, "gmsh in a child process").
+
+TEST(GmshIsolation, AGeometryThatEndsTheProcessIsRefusedNotObeyed) {
+  // `Exit;` makes gmsh call exit(0): before, the program ended with status 0 and wrote nothing.
+  const fs::path dir = scratch("gmsh-exit");
+  std::ofstream(dir / "exits.geo") << "Point(1) = {0, 0, 0};\nExit;\n";
+  try {
+    (void)mesh_gmsh_geometry(dir / "exits.geo", GeometryMeshing{});
+    ADD_FAILURE() << "expected MeshFileError";
+  } catch (const MeshFileError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("exits.geo: error: gmsh: it ended the process itself with exit code 0"),
+              std::string::npos)
+        << what;
+  }
+}
+
+TEST(GmshIsolation, AFifoGivenAsTheMeshFileIsRefusedWithoutBlocking) {
+  const fs::path dir = scratch("gmsh-fifo");
+  const fs::path fifo = dir / "mesh.msh";
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    (void)read_gmsh_mesh(fifo);
+    ADD_FAILURE() << "expected MeshFileError";
+  } catch (const MeshFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
 }
 
 } // namespace

@@ -1,14 +1,18 @@
 #include "plyimpact/io/gmsh_mesh.hpp"
 
+#include "plyimpact/io/child_process.hpp"
 #include "plyimpact/io/gmsh_api.hpp"
+#include "plyimpact/io/system_memory.hpp"
 
 #include "plyimpact/fem/shape_functions.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -215,13 +219,31 @@ void read_groups(const std::filesystem::path& file, RawMesh& m,
   }
 }
 
+/// How the triangles become quadrilaterals.
+enum class QuadMeshing {
+  /// gmsh's default: the triangles paired into quadrilaterals (Blossom matching); the better mesh, but
+  /// gmsh 4.8 aborts from inside its threads where the matching fails (an ASTM rig struck 7.5 mm from the
+  /// window's edge: docs/robustness.md)
+  recombine,
+  /// no pairing: every triangle split into three quadrilaterals, always all quadrilaterals, at twice the
+  /// field's size so that the elements come out about as large as with `recombine`
+  subdivide,
+};
+
 /// Meshes the geometry gmsh has open, in QUAD9, with the size field of `how`.
-void generate_quad9(const GeometryMeshing& how) {
+void generate_quad9(const GeometryMeshing& how, QuadMeshing quads = QuadMeshing::recombine) {
   const GmshApi& gmsh = gmsh_api();
-  gmsh.set_option("Mesh.RecombineAll", 1);
+  double scale = 1.0; // of the size field
+  if (quads == QuadMeshing::subdivide) {
+    gmsh.set_option("Mesh.RecombineAll", 0);         // no pairing at all
+    gmsh.set_option("Mesh.SubdivisionAlgorithm", 1); // every triangle split into three quadrilaterals
+    scale = 2.0;
+  } else {
+    gmsh.set_option("Mesh.RecombineAll", 1);
+  }
   gmsh.set_option("Mesh.ElementOrder", 2);
   gmsh.set_option("Mesh.SecondOrderIncomplete", 0);
-  if (how.max_size) gmsh.set_option("Mesh.MeshSizeMax", *how.max_size);
+  if (how.max_size) gmsh.set_option("Mesh.MeshSizeMax", scale * *how.max_size);
   if (how.size_at_point) {
     Eigen::Vector2d at;
     if (how.refine_at) {
@@ -232,9 +254,14 @@ void generate_quad9(const GeometryMeshing& how) {
     }
     // h(d) = min(max_size, size_at_point + (growth − 1) d), as gmsh's MathEval of the distance.
     const int field = gmsh.add_field("MathEval");
-    std::string h = fmt::format("{:.17g} + {:.17g} * Sqrt((x - {:.17g})^2 + (y - {:.17g})^2)",
-                                *how.size_at_point, how.growth - 1.0, at.x(), at.y());
-    if (how.max_size) h = fmt::format("Min({:.17g}, {})", *how.max_size, h);
+    // x − a written as x + |a| for a < 0: gmsh's MathEval cannot parse "x - -0.02" (it threw from inside
+    // gmsh's threads, which aborted the program: the circular rig struck at negative x or y).
+    const auto minus = [](const char* var, double a) {
+      return fmt::format("{} {} {:.17g}", var, a < 0.0 ? '+' : '-', std::abs(a));
+    };
+    std::string h = fmt::format("{:.17g} + {:.17g} * Sqrt(({})^2 + ({})^2)", scale * *how.size_at_point,
+                                how.growth - 1.0, minus("x", at.x()), minus("y", at.y()));
+    if (how.max_size) h = fmt::format("Min({:.17g}, {})", scale * *how.max_size, h);
     gmsh.set_field_string(field, "F", h);
     gmsh.set_background_field(field);
     gmsh.set_option("Mesh.MeshSizeFromPoints", 0);
@@ -244,9 +271,9 @@ void generate_quad9(const GeometryMeshing& how) {
   gmsh.generate(2);
 }
 
-/// Reads the mesh gmsh holds after `load` (opening a .msh, or meshing a .geo).
+/// Reads the mesh gmsh holds after `load` (opening a .msh, or meshing a .geo), in this process.
 template <class Load>
-RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
+RawMesh read_raw_here(const std::filesystem::path& file, const Load& load) {
   std::optional<GmshSession> session;
   try {
     session.emplace();
@@ -271,6 +298,108 @@ RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
   }
 }
 
+// RawMesh as bytes, from the child process that meshed it to the caller: counts, then the arrays.
+
+template <class T>
+void put(std::string& out, const T* data, std::size_t n) {
+  const std::uint64_t count = n;
+  out.append(reinterpret_cast<const char*>(&count), sizeof count);
+  out.append(reinterpret_cast<const char*>(data), n * sizeof(T));
+}
+
+template <class T>
+std::vector<T> get(const std::string& in, std::size_t& at) {
+  std::uint64_t count = 0;
+  std::memcpy(&count, in.data() + at, sizeof count);
+  at += sizeof count;
+  std::vector<T> out(count);
+  std::memcpy(out.data(), in.data() + at, count * sizeof(T));
+  at += count * sizeof(T);
+  return out;
+}
+
+template <class T>
+void put_sets(std::string& out, const std::map<std::string, std::vector<T>>& sets) {
+  const std::uint64_t count = sets.size();
+  out.append(reinterpret_cast<const char*>(&count), sizeof count);
+  for (const auto& [name, items] : sets) {
+    put(out, name.data(), name.size());
+    put(out, items.data(), items.size());
+  }
+}
+
+template <class T>
+std::map<std::string, std::vector<T>> get_sets(const std::string& in, std::size_t& at) {
+  std::uint64_t count = 0;
+  std::memcpy(&count, in.data() + at, sizeof count);
+  at += sizeof count;
+  std::map<std::string, std::vector<T>> sets;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::vector<char> name = get<char>(in, at);
+    sets.emplace(std::string(name.begin(), name.end()), get<T>(in, at));
+  }
+  return sets;
+}
+
+std::string to_bytes(const RawMesh& m) {
+  std::string out;
+  std::vector<double> xy; // Eigen's vectors are not trivially copyable: their coordinates are
+  xy.reserve(2 * m.nodes.size());
+  for (const Eigen::Vector2d& p : m.nodes)
+    xy.insert(xy.end(), {p.x(), p.y()});
+  put(out, xy.data(), xy.size());
+  put(out, m.elements.data(), m.elements.size());
+  put(out, m.element_tags.data(), m.element_tags.size());
+  put_sets(out, m.edge_sets);
+  put_sets(out, m.node_sets);
+  return out;
+}
+
+RawMesh from_bytes(const std::string& in) {
+  std::size_t at = 0;
+  RawMesh m;
+  const std::vector<double> xy = get<double>(in, at);
+  for (std::size_t i = 0; i + 1 < xy.size(); i += 2)
+    m.nodes.emplace_back(xy[i], xy[i + 1]);
+  m.elements = get<ElementNodes>(in, at);
+  m.element_tags = get<std::size_t>(in, at);
+  m.edge_sets = get_sets<EdgeSegment>(in, at);
+  m.node_sets = get_sets<int>(in, at);
+  return m;
+}
+
+/// The limits of the child that runs gmsh: two minutes (a plate meshes in well under a second), and the
+/// memory available to the run on top of what the caller's address space already holds.
+IsolationLimits gmsh_limits() {
+  IsolationLimits limits;
+  limits.time = gmsh_time_limit;
+  std::optional<double> available;
+  try {
+    available = available_memory_bytes();
+  } catch (const std::invalid_argument&) { // a malformed override: the memory guard says so later
+  }
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  if (available && (statm >> pages))
+    limits.memory_bytes =
+        pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE)) + static_cast<std::uint64_t>(*available);
+  return limits;
+}
+
+/// read_raw_here in a child process (docs/robustness.md, "gmsh in a child process"): gmsh's aborts,
+/// crashes, Exit commands, prompts and endless loops end the child, never the caller, and become a
+/// MeshFileError that names the file and says what happened.
+template <class Load>
+RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
+  try {
+    return from_bytes(run_in_child_process([&] { return to_bytes(read_raw_here(file, load)); },
+                                           fmt::format("{}: error: gmsh", file.string()), gmsh_limits()));
+  } catch (const IsolatedWorkError& e) {
+    if (e.thrown_by_work()) throw MeshFileError(e.what()); // read_raw_here's own message
+    throw MeshFileError(fmt::format("{} (reading or meshing it); nothing of it was used", e.what()));
+  }
+}
+
 Mesh to_mesh(RawMesh raw) {
   Mesh mesh(std::move(raw.nodes), std::move(raw.elements));
   for (auto& [name, edges] : raw.edge_sets)
@@ -283,6 +412,11 @@ Mesh to_mesh(RawMesh raw) {
 } // namespace
 
 Mesh read_gmsh_mesh(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+    throw MeshFileError( // a FIFO or a device would block the reader
+        fmt::format("{}: error: not a regular file (a FIFO, a device or a folder): give a .msh file",
+                    file.string()));
   require_msh_header(file);
   return to_mesh(read_raw(file, [&] { gmsh_api().open(file.string()); }));
 }
@@ -302,13 +436,29 @@ Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing&
   }));
 }
 
-Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build,
-                     const GeometryMeshing& how) {
-  return to_mesh(read_raw(name, [&] {
-    gmsh_api().add_model(name);
-    build();
-    generate_quad9(how);
-  }));
+Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build, const GeometryMeshing& how,
+                     std::string* note) {
+  const auto mesh_with = [&](QuadMeshing quads) {
+    return to_mesh(read_raw(name, [&] {
+      gmsh_api().add_model(name);
+      build();
+      generate_quad9(how, quads);
+    }));
+  };
+  try {
+    return mesh_with(QuadMeshing::recombine);
+  } catch (const MeshFileError& recombined) {
+    try {
+      Mesh mesh = mesh_with(QuadMeshing::subdivide);
+      if (note != nullptr)
+        *note = fmt::format("meshed by subdivision: gmsh could not pair this geometry's triangles into "
+                            "quadrilaterals ({})",
+                            recombined.what());
+      return mesh;
+    } catch (const MeshFileError&) {
+      throw recombined; // the first failure is the one to report
+    }
+  }
 }
 
 } // namespace plyimpact

@@ -12,6 +12,7 @@
 #include "plyimpact/fem/mesh.hpp"
 
 #include <Eigen/Core>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -26,8 +27,12 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// Reads a gmsh mesh file (.msh, format 2 or 4, ASCII or binary). Safe to call from several threads
-/// (gmsh holds one model: the calls are serialised). Throws MeshFileError.
+/// How long gmsh may read or mesh one file before its child process is killed (docs/robustness.md).
+inline constexpr std::chrono::seconds gmsh_time_limit{120};
+
+/// Reads a gmsh mesh file (.msh, format 2 or 4, ASCII or binary). gmsh runs in a child process
+/// (io/child_process.hpp) with a time limit (gmsh_time_limit) and the available memory: whatever it does,
+/// the caller gets the mesh or a MeshFileError. Safe to call from several threads. Throws MeshFileError.
 [[nodiscard]] Mesh read_gmsh_mesh(const std::filesystem::path& file);
 
 /// How to mesh a gmsh geometry (.geo): with a size field graded toward a point, or with the sizes the
@@ -49,8 +54,10 @@ struct GeometryMeshing {
 [[nodiscard]] Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing& how);
 
 /// Meshes the geometry that `build` adds to an empty gmsh model (built-in kernel, synchronised by
-/// `build`) as mesh_gmsh_geometry does; `name` stands for the file in messages. Throws MeshFileError.
+/// `build`) as mesh_gmsh_geometry does; `name` stands for the file in messages. Where gmsh cannot pair
+/// the triangles into quadrilaterals it meshes again by subdivision (every element split into
+/// quadrilaterals) and says so in `note`. Throws MeshFileError.
 [[nodiscard]] Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build,
-                                   const GeometryMeshing& how);
+                                   const GeometryMeshing& how, std::string* note = nullptr);
 
 } // namespace plyimpact

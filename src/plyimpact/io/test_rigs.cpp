@@ -88,16 +88,19 @@ GeometryMeshing rig_meshing(const RigSpec& spec) {
 
 Rig build_rig(const RigSpec& spec, bool static_analysis) {
   if (spec.kind == RigKind::circular) {
+    std::string note;
     Mesh mesh = mesh_gmsh_model(
-        "circular rig", [&] { add_disk(spec.diameter); }, spec.meshing);
+        "circular rig", [&] { add_disk(spec.diameter); }, spec.meshing, &note);
     BoundaryConditions bc;
     bc.set("rim", "clamped");
     std::string description =
         fmt::format("circular rig: plate clamped on a circle of {:g} mm diameter; {} elements",
                     spec.diameter * 1e3, mesh.element_count());
+    if (!note.empty()) description += "; " + note;
     return {std::move(mesh), std::move(bc), 0.0, std::nullopt, std::move(description)};
   }
-  Mesh mesh = mesh_gmsh_model("astm-d7136 rig", add_astm_coupon, spec.meshing);
+  std::string note;
+  Mesh mesh = mesh_gmsh_model("astm-d7136 rig", add_astm_coupon, spec.meshing, &note);
   BoundaryConditions bc;
   bc.set("window", static_analysis ? unilateral_support : "ss-soft");
   bc.set("clamps", "11100");
@@ -106,6 +109,7 @@ Rig build_rig(const RigSpec& spec, bool static_analysis) {
       "50 +/- 43.75) mm holding u, v, w; 16 mm hemispherical impactor; {} elements",
       static_analysis ? "unilateral: the plate may lift off" : "held in w both ways: lift-off not modelled",
       mesh.element_count());
+  if (!note.empty()) description += "; " + note;
   return {std::move(mesh), std::move(bc), 0.008, astm_d7136_energy_per_thickness, std::move(description)};
 }
 

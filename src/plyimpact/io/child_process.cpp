@@ -1,0 +1,143 @@
+// A fork that runs one piece of work and sends back its bytes (child_process.hpp).
+#include "plyimpact/io/child_process.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+
+namespace plyimpact {
+
+namespace {
+
+/// Record kinds the child writes first.
+constexpr char returned = 'R';
+constexpr char threw = 'E';
+
+/// Writes all of `bytes` to `fd` (the child's end of the pipe); false when the parent went away.
+bool write_all(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// The child: defaults for the signals the caller handles, no terminal input, the memory limit, the work,
+/// its record, and _exit (no atexit handlers or static destructors of the caller's libraries).
+[[noreturn]] void run_child(int fd, const std::function<std::string()>& work, const IsolationLimits& limits) {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  std::signal(SIGPIPE, SIG_DFL);
+  if (const int null = ::open("/dev/null", O_RDWR); null >= 0) { // no prompt, and nothing on the terminal:
+    ::dup2(null, STDIN_FILENO);                                  // what the work says comes back in
+    ::dup2(null, STDOUT_FILENO);                                 // its record (an abort's message too)
+    ::dup2(null, STDERR_FILENO);
+  }
+  if (limits.memory_bytes) {
+    const rlimit limit{*limits.memory_bytes, *limits.memory_bytes};
+    (void)::setrlimit(RLIMIT_AS, &limit);
+  }
+  std::string record;
+  try {
+    record = returned + work();
+  } catch (const std::exception& e) {
+    record = threw + std::string(e.what());
+  } catch (...) {
+    record = threw + std::string("an exception that is not a std::exception");
+  }
+  _exit(write_all(fd, record) ? 0 : 1);
+}
+
+/// What a child that returned no record did, from its wait status.
+std::string how_it_ended(int status, std::uint64_t memory_bytes_or_zero) {
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    const char* name = sigabbrev_np(sig);
+    return fmt::format("it crashed (signal {}, SIG{}: {}){}", sig, name != nullptr ? name : "?",
+                       strsignal(sig),
+                       sig == SIGKILL && memory_bytes_or_zero > 0 ? " — perhaps out of memory" : "");
+  }
+  if (WIFEXITED(status))
+    return fmt::format("it ended the process itself with exit code {} before it finished (a gmsh script's "
+                       "Exit command does that)",
+                       WEXITSTATUS(status));
+  return "it stopped for an unknown reason";
+}
+
+/// Kills and reaps the child.
+void kill_child(pid_t pid) {
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+}
+
+} // namespace
+
+std::string run_in_child_process(const std::function<std::string()>& work, const std::string& what,
+                                 const IsolationLimits& limits) {
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0)
+    throw IsolatedWorkError(fmt::format("{}: cannot create a pipe ({})", what, std::strerror(errno)), false);
+  std::fflush(nullptr); // what the caller has buffered is written once, not again by the child
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw IsolatedWorkError(fmt::format("{}: cannot start a child process ({})", what, std::strerror(errno)),
+                            false);
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    run_child(fds[1], work, limits);
+  }
+  ::close(fds[1]);
+  const auto deadline = std::chrono::steady_clock::now() + limits.time;
+  std::string bytes;
+  char buffer[65536];
+  for (;;) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      ::close(fds[0]);
+      kill_child(pid);
+      throw IsolatedWorkError(fmt::format("{}: stopped after {} s, the time limit: it would not finish", what,
+                                          limits.time.count()),
+                              false);
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 200)));
+    if (ready < 0 && errno == EINTR) { // a signal for the caller (Ctrl-C, SIGTERM): stop the child
+      ::close(fds[0]);
+      kill_child(pid);
+      throw IsolatedWorkError(fmt::format("{}: interrupted", what), false);
+    }
+    if (ready <= 0) continue;
+    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break; // end of the record (or the child is gone)
+    bytes.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const bool clean_exit = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  if (clean_exit && !bytes.empty() && bytes.front() == returned) return bytes.substr(1);
+  if (clean_exit && !bytes.empty() && bytes.front() == threw) throw IsolatedWorkError(bytes.substr(1), true);
+  throw IsolatedWorkError(fmt::format("{}: {}", what, how_it_ended(status, limits.memory_bytes.value_or(0))),
+                          false);
+}
+
+} // namespace plyimpact
