@@ -18,6 +18,7 @@
 #include "plyimpact/io/sweep_spec.hpp"
 #include "plyimpact/io/threshold_run.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -137,6 +138,9 @@ struct SweepOutput {
 /// folder, records and table.
 SweepOutput run_sweep(const Deck& deck, const std::vector<std::string>& set_options, const std::string& mode,
                       const std::filesystem::path& dir, int jobs, bool overwrite) {
+  if (jobs < 1 || jobs > plyimpact::max_sweep_jobs) // before the folder is claimed
+    throw py::value_error(
+        fmt::format("jobs must lie between 1 and {} threads, got {}", plyimpact::max_sweep_jobs, jobs));
   const plyimpact::Sweep sweep = plyimpact::Sweep::from_text(
       deck.text, deck.source, set_options,
       mode.empty()

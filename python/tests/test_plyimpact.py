@@ -203,6 +203,16 @@ def test_a_threaded_sweep_gives_the_command_lines_table(examples):
     assert list(listed["impactor.velocity"]) == [0.5, 3.0]
 
 
+def test_a_sweep_refuses_a_thread_count_it_cannot_run(examples):
+    """jobs=0, a negative count or one past the limit is refused before anything is written, naming jobs
+    and its range (0 and -3 were accepted, 100000 aborted the interpreter)."""
+    deck_path = "examples/thesis-4.2-velocity-2.92.toml"
+    for jobs in (0, -3, 100000):
+        with pytest.raises(ValueError, match="jobs must lie between 1 and 1024 threads"):
+            plyimpact.sweep(deck_path, {"impactor.velocity": [0.5, 3.0]}, jobs=jobs, output_dir=examples / "bad")
+        assert not (examples / "bad" / "sweep.csv").exists()
+
+
 @pytest.mark.parametrize("script", ["layup_study.py", "energy_sweep.py", "threshold_search.py"])
 def test_the_notebook_style_examples_run(tmp_path, script):
     """Every example of examples/python runs from the repository root and prints its table."""

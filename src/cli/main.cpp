@@ -43,6 +43,23 @@
 
 namespace {
 
+/// A command-line value that must be a positive, finite number (NaN, inf, 0 and negatives refused with
+/// what the value is).
+CLI::Validator positive_finite(const std::string& what) {
+  return {[what](const std::string& text) -> std::string {
+            std::size_t used = 0;
+            double v = 0.0;
+            try {
+              v = std::stod(text, &used);
+            } catch (const std::exception&) {
+              used = 0;
+            }
+            if (used == text.size() && std::isfinite(v) && v > 0.0) return "";
+            return "must be a positive number (" + what + "), got " + text;
+          },
+          "POSITIVE"};
+}
+
 using namespace plyimpact;
 
 struct Options {
@@ -284,7 +301,8 @@ int run(int argc, char** argv) {
       o);
   threshold->add_option("--criterion", o.criterion,
                         "criterion name (default: [threshold] or the first [damage] one)");
-  threshold->add_option("--tolerance", o.tolerance, "bracket width in m/s (default 0.01)");
+  threshold->add_option("--tolerance", o.tolerance, "bracket width in m/s (default 0.01)")
+      ->check(positive_finite("the bracket width in m/s"));
   CLI::App* stat = add_analysis(app, "static", "Static analysis (point, patch, pressure loads)", o);
   for (CLI::App* sub : {impact, stat, threshold})
     sub->add_flag("--nonlinear", o.nonlinear,
@@ -311,7 +329,8 @@ int run(int argc, char** argv) {
     std::reverse(args.begin(), args.end()); // CLI11 takes the arguments in reverse order
     app.parse(args);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; a bad command line exits 2, as a bad deck does (docs/robustness.md)
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
     if (*laminate) return run_laminate(o);

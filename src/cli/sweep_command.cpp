@@ -326,7 +326,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
                   "impact or threshold (default: [sweep] analysis, else the deck's)")
       ->check(CLI::IsMember({"impact", "threshold"}));
   sub->add_option("-j,--jobs", o.jobs, "threads per process (default: all cores; 1 per MPI rank)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, max_sweep_jobs));
   sub->add_flag("--resume", o.resume, "run only the cases without a record in DIR/cases");
   sub->add_flag("--overwrite", o.overwrite, "replace the results of another run or sweep in the folder");
   sub->add_flag("--case-folders", o.case_folders, "also write DIR/cases/NNNNNN/ with each case's results");

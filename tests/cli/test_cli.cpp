@@ -275,3 +275,31 @@ TEST(Cli, AnUnknownCommandIsNamedWithTheValidOnesAndExits2) {
 }
 
 } // namespace
+
+namespace {
+
+// Command-line values are checked like deck values: a message naming the option and exit 2, never a
+// silent replacement (threshold --tolerance -1 became 0.01) or an abort (--jobs 100000).
+
+TEST(CliOptions, AThresholdToleranceThatIsNotAPositiveNumberIsRefused) {
+  for (const char* bad : {"-1", "0", "nan", "inf", "1e-3x"}) {
+    const plyimpact::test::CommandResult r = plyimpact::test::run(
+        std::string("threshold ") + PLYIMPACT_SOURCE_DIR + "/examples/thesis-4.3.toml --tolerance " + bad);
+    EXPECT_EQ(r.status, 2) << bad << "\n" << r.out;
+    EXPECT_NE(r.out.find("--tolerance: must be a positive number (the bracket width in m/s), got"),
+              std::string::npos)
+        << r.out;
+  }
+}
+
+TEST(CliOptions, ASweepThreadCountOutsideItsRangeIsRefused) {
+  for (const char* bad : {"0", "-3", "100000"}) {
+    const plyimpact::test::CommandResult r = plyimpact::test::run(
+        std::string("sweep ") + PLYIMPACT_SOURCE_DIR + "/examples/sweep-4.2-velocity.toml --jobs " + bad);
+    EXPECT_EQ(r.status, 2) << bad << "\n" << r.out;
+    EXPECT_NE(r.out.find("--jobs"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("not in range 1 to 1024"), std::string::npos) << r.out;
+  }
+}
+
+} // namespace

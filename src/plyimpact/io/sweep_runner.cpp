@@ -481,6 +481,9 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
 
 int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::vector<std::size_t>& pending,
                     int jobs, const NextCase& next, const SweepOptions& options) {
+  if (jobs < 1 || jobs > max_sweep_jobs)
+    throw std::invalid_argument(
+        fmt::format("sweep: jobs must lie between 1 and {} threads, got {}", max_sweep_jobs, jobs));
   std::atomic<int> factorizations{0};
   std::mutex error_mutex;
   std::string first_error;

@@ -106,10 +106,15 @@ private:
   int factorizations_ = 0;
 };
 
-/// Runs `pending` cases on `jobs` threads; each thread takes the next position from `next` and writes
-/// the case's record as soon as it is done. With `options.share_factorization`, the threads share each
-/// plate (and its factor and contact-point response): the first to need it builds it, the others wait for
-/// it and run their impactors on it. Returns the number of factorizations of K̄.
+/// The most threads a sweep process starts: far beyond any machine's cores, well below what makes thread
+/// creation fail (--jobs 100000 aborted the program).
+inline constexpr int max_sweep_jobs = 1024;
+
+/// Runs `pending` cases on `jobs` threads (1 to max_sweep_jobs, else std::invalid_argument); each thread
+/// takes the next position from `next` and writes the case's record as soon as it is done. With
+/// `options.share_factorization`, the threads share each plate (and its factor and contact-point response):
+/// the first to need it builds it, the others wait for it and run their impactors on it. Returns the number
+/// of factorizations of K̄.
 int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::vector<std::size_t>& pending,
                     int jobs, const NextCase& next, const SweepOptions& options);
 
