@@ -28,8 +28,14 @@ import numpy as np
 # user has set OMP_NUM_THREADS; libgomp reads it when _core loads CHOLMOD, just below.
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 
-from . import _core  # noqa: E402 (after the OpenMP setting)
-from ._core import DeckError, FolderHoldsResults, FolderInUse
+try:
+    from . import _core  # noqa: E402 (after the OpenMP setting)
+except ImportError as missing:  # the package's files without the compiled module beside them
+    raise ImportError(
+        "plyimpact's compiled module (_core) is not built beside " + os.path.dirname(__file__) + ": build it "
+        "with `cmake --build --preset release --target plyimpact_python` (./scripts/test builds it too; "
+        "docs/python.md)") from missing
+from ._core import DeckError, FolderHoldsResults, FolderInUse  # noqa: E402
 
 __version__: str = _core.__version__
 

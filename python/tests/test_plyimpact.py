@@ -5,6 +5,7 @@ PLYIMPACT_EXE at the plyimpact executable and PLYIMPACT_SOURCE_DIR at the reposi
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
@@ -201,6 +202,18 @@ def test_a_threaded_sweep_gives_the_command_lines_table(examples):
     assert report.count("<td>ok</td>") == 8 and report.count('class="plot"') == 2
     listed = plyimpact.sweep(deck_path, {"impactor.velocity": [0.5, 3.0]}, jobs=1)
     assert list(listed["impactor.velocity"]) == [0.5, 3.0]
+
+
+def test_an_unbuilt_module_says_how_to_build_it(tmp_path):
+    """The package's files without the compiled _core beside them (what the README's first command, which
+    builds the command alone, leaves in the build tree): `import plyimpact` names the target to build
+    instead of failing later with AttributeError."""
+    shutil.copytree(SOURCE / "python/plyimpact", tmp_path / "plyimpact")
+    done = subprocess.run([sys.executable, "-c", "import plyimpact"], cwd=tmp_path, capture_output=True,
+                          text=True, env=dict(os.environ, PYTHONPATH=str(tmp_path)), check=False)
+    assert done.returncode != 0
+    assert "ImportError: plyimpact's compiled module (_core) is not built" in done.stderr, done.stderr
+    assert "--target plyimpact_python" in done.stderr
 
 
 def test_a_sweep_refuses_a_thread_count_it_cannot_run(examples):

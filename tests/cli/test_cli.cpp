@@ -303,3 +303,18 @@ TEST(CliOptions, ASweepThreadCountOutsideItsRangeIsRefused) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(CliVersion, SaysTheVersionAndTheCommitItWasBuiltFrom) {
+  // A bug report needs the commit, not just 0.1.0 (cmake/commit.cmake; "unknown" outside git).
+  const plyimpact::test::CommandResult r = plyimpact::test::run("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out.rfind(std::string("plyimpact ") + PLYIMPACT_VERSION + " (commit ", 0), 0U) << r.out;
+  const std::string commit =
+      r.out.substr(r.out.find("(commit ") + 8, r.out.find(')') - r.out.find("(commit ") - 8);
+  const bool hex = commit.size() >= 12 && commit.find_first_not_of("0123456789abcdef") >= 12;
+  EXPECT_TRUE(hex || commit == "unknown") << commit;
+}
+
+} // namespace
