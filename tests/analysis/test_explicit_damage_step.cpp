@@ -1,8 +1,9 @@
 // Progressive ply damage with explicit central differences ([damage] integration = "explicit",
-// analysis/explicit_damage_step.cpp): the highest frequency that sets the stable step against a closed
-// form, the energy balance where many points soften at once (where the implicit step stops and the
-// lagged one leaks energy), the elastic plate of the implicit scheme when nothing cracks, agreement with
-// the iterated implicit step where that one runs, and the refusals of a step that cannot be stable.
+// central differences on the damaging plate, analysis/central_difference_step.cpp): the highest frequency
+// that sets the stable step against a closed form, the energy balance where many points soften at once (where
+// the implicit step stops and the lagged one leaks energy), the elastic plate of the implicit scheme when
+// nothing cracks, agreement with the iterated implicit step where that one runs, and the refusals of a step
+// that cannot be stable.
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"

@@ -24,8 +24,8 @@ constexpr std::string_view damage_not_built =
 constexpr std::string_view stack_not_built =
     "not built yet: the stacked plate's sub-laminates (fem/stacked_plate.hpp) have linear kinematics only";
 constexpr std::string_view damaged_stack_implicit =
-    "not built yet: the stack of sub-laminates whose plies crack is composed by the explicit step alone "
-    "(explicit_delamination_step.cpp); set integration = \"explicit\" in [damage] and [delamination]";
+    "not built yet: the stack of sub-laminates whose plies crack is a model of central differences alone "
+    "(stacked_model.cpp); set integration = \"explicit\" in [damage] and [delamination]";
 
 constexpr Capability runs(std::string_view how) {
   return {true, how};
@@ -47,10 +47,10 @@ constexpr std::array<Row, 9> table{{
                                   runs("central differences (central_difference_step.cpp)")}},
   {{false, false, false, true},  {runs("Newton–Newmark (delamination_step.cpp)"),
                                   runs("Newton–Newmark, interfaces of the step before (delamination_step.cpp)"),
-                                  runs("central differences (explicit_delamination_step.cpp)")}},
+                                  runs("central differences (central_difference_step.cpp on stacked_model.cpp)")}},
   {{false, false, true, true},   {refused(damaged_stack_implicit),
                                   refused(damaged_stack_implicit),
-                                  runs("central differences (explicit_delamination_step.cpp)")}},
+                                  runs("central differences (central_difference_step.cpp on stacked_model.cpp)")}},
   {{false, true, true, false},   {refused(damage_not_built), refused(damage_not_built), refused(damage_not_built)}},
   {{false, true, false, true},   {refused(stack_not_built), refused(stack_not_built), refused(stack_not_built)}},
   {{false, true, true, true},    {refused(stack_not_built), refused(stack_not_built), refused(stack_not_built)}},

@@ -1,6 +1,6 @@
 #pragma once
 // Explicit central differences on a lumped mass, what the explicit step policies share (the ply damage
-// and elastic plates of central_difference_step.cpp, the interfaces of explicit_delamination_step.cpp):
+// elastic, damaging and stacked plates of central_difference_step.cpp, one integrator for every model):
 //
 //   u_{n+1} = uₙ + Δt vₙ + ½Δt² aₙ                                    (CD1: Newmark with β = 0)
 //   Fc_{n+1} = F(α),  α = w_i,n+1 − sᵀu_{n+1}                         (CD2: u_{n+1} does not depend on

@@ -37,8 +37,8 @@ public:
     state_->commit(u_next, f_int_);
   }
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
-  [[nodiscard]] double strain_energy(const PlateState& /*s*/, double /*force*/) const override {
-    return state_->stored_energy();
+  [[nodiscard]] double strain_energy(const PlateState& s, double /*force*/) const override {
+    return state_->stored_energy(s.u);
   }
   [[nodiscard]] double dissipated_energy() const override { return state_->dissipated_energy(); }
   [[nodiscard]] const PlyDamageView* damage() const override { return state_->ply_damage(); }
@@ -46,6 +46,10 @@ public:
     return loading_.sampler().dot(u);
   }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
+    return state_->delamination();
+  }
+  bool delamination_areas(DelaminationAreas& out) const override { return state_->delamination_areas(out); }
   /// No solve and no factorization: all zero.
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return NewtonStatistics{}; }
 
@@ -68,7 +72,7 @@ public:
                 std::move(key), options.explicit_omega_max) {}
 
   [[nodiscard]] int equations() const override { return model_->size(); }
-  [[nodiscard]] bool inplane_eliminated() const override { return !model_->equations().all(); }
+  [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
   [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<CentralDifferenceStepper>(*this, impactor);
@@ -82,8 +86,8 @@ public:
 
 CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy& policy,
                                                    const Impactor& impactor)
-    : p_(policy),
-      loading_(policy.model_->plate(), policy.model_->equations(), impactor, policy.options_.load),
+    : p_(policy), loading_(policy.model_->contact_plate(), policy.model_->contact_equations(), impactor,
+                           policy.options_.load, policy.model_->size()),
       state_(policy.model_->virgin_state()), a_next_(Eigen::VectorXd::Zero(policy.equations())),
       f_int_(Eigen::VectorXd::Zero(policy.equations())), force_(Eigen::VectorXd::Zero(policy.equations())),
       contact_flexibility_(policy.scheme_.flexibility(loading_.sampler())) {}
@@ -105,10 +109,7 @@ double CentralDifferenceStepper::kinetic_energy(const PlateState& s) const {
 }
 
 void CentralDifferenceStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-  if (p_.model_->equations().all())
-    out = u;
-  else
-    p_.model_->equations().expand(u, out);
+  p_.model_->to_model(u, out);
 }
 
 } // namespace

@@ -45,7 +45,7 @@ std::optional<std::string> strength_ratio_warning(const CohesiveParameters& c) {
 }
 
 /// The model equation of each equation of the stack's top sub-laminate (−1: none).
-std::vector<int> top_to_model(const PlateModel& model, const StackedPlateModel& stack) {
+std::vector<int> top_equations_in_model(const PlateModel& model, const StackedPlateModel& stack) {
   const PlateModel& top = stack.sublaminate(0);
   std::vector<int> of_top(static_cast<std::size_t>(top.size()), -1);
   for (int n = 0; n < model.mesh().node_count(); ++n)
@@ -65,20 +65,19 @@ StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettin
           }};
 }
 
-StackedPlatePolicy::StackedPlatePolicy(const PlateModel& model, const StepPolicyOptions& options,
-                                       const DelaminationSettings& settings)
-    : model_(model), options_(options), settings_(settings), stack_(impact_stack(model, settings)),
+StackedImpactPlate::StackedImpactPlate(const PlateModel& model, const DelaminationSettings& settings)
+    : model_(model), settings_(settings), stack_(impact_stack(model, settings)),
       top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14),
-      model_of_top_(top_to_model(model, stack_)) {}
+      model_of_top_(top_equations_in_model(model, stack_)) {}
 
-std::vector<std::string> StackedPlatePolicy::warnings() const {
+std::vector<std::string> StackedImpactPlate::stack_warnings() const {
   std::vector<std::string> w;
   if (auto zone = process_zone_warning(process_zone(), settings_.stack.rule)) w.push_back(std::move(*zone));
   if (auto ratio = strength_ratio_warning(settings_.stack.interface)) w.push_back(std::move(*ratio));
   return w;
 }
 
-ProcessZone StackedPlatePolicy::process_zone() const {
+ProcessZone StackedImpactPlate::process_zone() const {
   const CohesiveParameters& c = settings_.stack.interface;
   double E2 = INFINITY;
   for (const Material& m : model_.laminate().materials())
@@ -94,29 +93,32 @@ ProcessZone StackedPlatePolicy::process_zone() const {
           settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0};
 }
 
+void StackedImpactPlate::top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+  out = Eigen::VectorXd::Zero(model_.size());
+  for (std::size_t i = 0; i < model_of_top_.size(); ++i)
+    if (const int eq = model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
+}
+
 StackedPlateStepper::StackedPlateStepper(const StackedPlatePolicy& policy, const Impactor& impactor)
     : loading_(policy.stack_.sublaminate(0), policy.top_equations_, impactor, policy.options_.load,
                policy.stack_.size()),
-      base_(policy), committed_(policy.stack_.virgin_state()) {}
+      base_(policy), interfaces_(policy) {}
 
-void StackedPlateStepper::accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) {
+double StackedPlateStepper::strain_energy(const PlateState& s, double /*force*/) const {
+  return base_.stack_.stored_energy(s.u, interfaces_.committed(), scratch_);
+}
+
+InterfaceStates::InterfaceStates(const StackedImpactPlate& plate)
+    : plate_(plate), committed_(plate.stack_.virgin_state()) {}
+
+void InterfaceStates::accept() {
   std::swap(committed_, trial_); // trial_ keeps the old states' storage for the next set_trial()
   dissipated_ += trial_dissipated_;
   trial_dissipated_ = 0.0;
 }
 
-double StackedPlateStepper::strain_energy(const PlateState& s, double /*force*/) const {
-  return base_.stack_.stored_energy(s.u, committed_, scratch_);
-}
-
-void StackedPlateStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-  out = Eigen::VectorXd::Zero(base_.model_.size());
-  for (std::size_t i = 0; i < base_.model_of_top_.size(); ++i)
-    if (const int eq = base_.model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
-}
-
-bool StackedPlateStepper::delamination_areas(DelaminationAreas& out) const {
-  const StackedPlateModel& stack = base_.stack_;
+void InterfaceStates::areas(DelaminationAreas& out) const {
+  const StackedPlateModel& stack = plate_.stack_;
   const std::vector<std::vector<CohesiveState>>& states = committed_.interfaces;
   out.dissipated = dissipated_;
   out.delaminated_area.clear(); // keeps its capacity: no allocation after the first step
@@ -124,7 +126,7 @@ bool StackedPlateStepper::delamination_areas(DelaminationAreas& out) const {
   for (int i = 0; i < stack.interface_count(); ++i)
     out.delaminated_area.push_back(stack.interface(i).damaged_area(states[static_cast<std::size_t>(i)], 1.0));
   out.projected_area = 0.0;
-  if (stack.interface_count() == 0) return true;
+  if (stack.interface_count() == 0) return;
   // Every interface has the same points (same mesh and rule): the union is taken point by point.
   const CohesiveInterface& points = stack.interface(0);
   for (int q = 0; q < points.point_count(); ++q)
@@ -132,24 +134,23 @@ bool StackedPlateStepper::delamination_areas(DelaminationAreas& out) const {
           return of_interface[static_cast<std::size_t>(q)].damage >= 1.0;
         }))
       out.projected_area += points.point_area(q);
-  return true;
 }
 
-std::optional<DelaminationResult> StackedPlateStepper::delamination() const {
-  const StackedPlateModel& stack = base_.stack_;
+DelaminationResult InterfaceStates::result() const {
+  const StackedPlateModel& stack = plate_.stack_;
   DelaminationResult r;
   DelaminationAreas areas;
-  (void)delamination_areas(areas);
+  this->areas(areas);
   r.delaminated_area = std::move(areas.delaminated_area);
   r.projected_area = areas.projected_area;
   r.dissipated = areas.dissipated;
-  const ProcessZone zone = base_.process_zone();
+  const ProcessZone zone = plate_.process_zone();
   r.cohesive_zone_length = zone.length;
   r.interface_point_spacing = zone.point_spacing;
   for (int i = 0; i < stack.interface_count(); ++i) {
     const CohesiveInterface& ci = stack.interface(i);
     const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
-    r.interface_after_ply.push_back(base_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
+    r.interface_after_ply.push_back(plate_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
     double softening = 0.0;
     const auto per_element = static_cast<std::size_t>(ci.points_per_element());
     std::vector<double>& of_element = r.element_damage.emplace_back(states.size() / per_element, 0.0);

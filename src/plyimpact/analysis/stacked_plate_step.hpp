@@ -1,11 +1,16 @@
 #pragma once
-// What the step policies of the stacked plate share (fem/stacked_plate.hpp; docs/delamination.md): the
-// stack cut from the impact's plate, the mesh guidance and warnings, and in each run the interfaces'
-// committed states, their areas and dissipation. Newton iterations (delamination_step.cpp) and explicit
-// central differences (explicit_delamination_step.cpp) differ only in how a step is solved.
+// What the steps of the stacked plate share (fem/stacked_plate.hpp; docs/delamination.md): the stack cut
+// from the impact's plate, the mesh guidance and warnings (StackedImpactPlate), and in each run the
+// interfaces' committed states, their areas and dissipation (InterfaceStates). Newton iterations
+// (delamination_step.cpp) and the stacked model that central differences drive (stacked_model.cpp)
+// differ only in how a step is solved.
 #include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/mechanical_model.hpp"
 
+#include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -21,27 +26,66 @@ struct ProcessZone {
 /// regions of other laminates.
 [[nodiscard]] StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettings& settings);
 
-class StackedPlatePolicy : public StepPolicy {
+/// The stacked plate of an impact case, as its policies and its explicit model share it: the stack cut
+/// from the case's plate, its mass, its warnings and process zone, and the top sub-laminate's place in
+/// the case's numbering.
+class StackedImpactPlate {
 public:
-  StackedPlatePolicy(const PlateModel& model, const StepPolicyOptions& options,
-                     const DelaminationSettings& settings);
+  StackedImpactPlate(const PlateModel& model, const DelaminationSettings& settings);
 
-  [[nodiscard]] int equations() const override { return stack_.size(); }
   /// A cohesive zone spanning fewer than three interface points, and strengths whose ratio does not keep
   /// the mixed-mode toughness.
-  [[nodiscard]] std::vector<std::string> warnings() const override;
+  [[nodiscard]] std::vector<std::string> stack_warnings() const;
   /// The cohesive zone l = E2 G_c / τ² (Hillerborg, M = 1) of the shorter mode against the spacing of the
   /// interface points (half the largest element side with the nodal rule): fewer than three points in it
   /// and the onset and growth of a delamination depend on the mesh.
   [[nodiscard]] ProcessZone process_zone() const;
+  /// The top sub-laminate's displacements (stack numbering) in the case model's numbering.
+  void top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
 
   const PlateModel& model_;
-  StepPolicyOptions options_;
   DelaminationSettings settings_;
   StackedPlateModel stack_;
   EquationSubset top_equations_; ///< every equation of the top sub-laminate
   MassOperator M_;
   std::vector<int> model_of_top_; ///< model equation of each top sub-laminate equation (−1: none)
+};
+
+/// One run's interfaces: their committed states (a trial is committed with each accepted step), the
+/// energy they dissipated, their areas and the whole result.
+class InterfaceStates {
+public:
+  explicit InterfaceStates(const StackedImpactPlate& plate);
+
+  /// The states (and the energy dissipated reaching them) that accept() commits. Swapped in: `trial`
+  /// receives storage of earlier states to write the next trial into without allocating.
+  void set_trial(StackedPlateState& trial, double dissipated) {
+    std::swap(trial_, trial);
+    trial_dissipated_ = dissipated;
+  }
+  void accept();
+  [[nodiscard]] const StackedPlateState& committed() const { return committed_; }
+  [[nodiscard]] double dissipated() const { return dissipated_; }
+  /// Their areas and dissipation into `out` (its vectors reused from step to step).
+  void areas(DelaminationAreas& out) const;
+  [[nodiscard]] DelaminationResult result() const;
+
+private:
+  const StackedImpactPlate& plate_;
+  StackedPlateState committed_, trial_;
+  double trial_dissipated_ = 0.0, dissipated_ = 0.0;
+};
+
+class StackedPlatePolicy : public StepPolicy, public StackedImpactPlate {
+public:
+  StackedPlatePolicy(const PlateModel& model, const StepPolicyOptions& options,
+                     const DelaminationSettings& settings)
+      : StackedImpactPlate(model, settings), options_(options) {}
+
+  [[nodiscard]] int equations() const override { return stack_.size(); }
+  [[nodiscard]] std::vector<std::string> warnings() const override { return stack_warnings(); }
+
+  StepPolicyOptions options_;
 };
 
 /// One run on the stacked plate: the impactor's contact on the top sub-laminate and the interfaces'
@@ -50,37 +94,44 @@ class StackedPlateStepper : public PlateStepper {
 public:
   StackedPlateStepper(const StackedPlatePolicy& policy, const Impactor& impactor);
 
-  void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
+  void accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) override {
+    interfaces_.accept();
+  }
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override {
     return base_.M_.kinetic_energy(s.v, scratch_);
   }
   /// ½ uᵀ K_plates u + the interfaces' stored energy at their committed damage.
   [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
-  [[nodiscard]] double dissipated_energy() const override { return dissipated_; }
+  [[nodiscard]] double dissipated_energy() const override { return interfaces_.dissipated(); }
   [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
     return loading_.sampler().dot(u);
   }
   /// The top sub-laminate's displacements in the model's numbering.
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override;
-  bool delamination_areas(DelaminationAreas& out) const override;
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { base_.top_to_model(u, out); }
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
+    return interfaces_.result();
+  }
+  bool delamination_areas(DelaminationAreas& out) const override {
+    interfaces_.areas(out);
+    return true;
+  }
 
 protected:
-  /// The states (and the energy dissipated reaching them) that accept() commits. Swapped in: `trial`
-  /// receives storage of earlier states to write the next trial into without allocating.
-  void set_trial(StackedPlateState& trial, double dissipated) {
-    std::swap(trial_, trial);
-    trial_dissipated_ = dissipated;
-  }
-  [[nodiscard]] const StackedPlateState& committed() const { return committed_; }
+  void set_trial(StackedPlateState& trial, double dissipated) { interfaces_.set_trial(trial, dissipated); }
+  [[nodiscard]] const StackedPlateState& committed() const { return interfaces_.committed(); }
 
   ContactLoading loading_; ///< on the top sub-laminate, in the stacked numbering
 
 private:
   const StackedPlatePolicy& base_;
-  StackedPlateState committed_, trial_;
+  InterfaceStates interfaces_;
   mutable Eigen::VectorXd scratch_; ///< M v and K u of the energies, sized once
-  double trial_dissipated_ = 0.0, dissipated_ = 0.0;
 };
+
+/// The stacked plate as a model of fem/mechanical_model.hpp, for the integrators written once against it
+/// (central differences: stacked_model.cpp). With `ply_damage` each sub-laminate's plies crack too.
+[[nodiscard]] std::unique_ptr<MechanicalModel>
+stacked_plate_model(const PlateModel& model, const DelaminationSettings& settings,
+                    const std::optional<ProgressiveDamageSettings>& ply_damage);
 
 } // namespace plyimpact

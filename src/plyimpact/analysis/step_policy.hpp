@@ -214,10 +214,10 @@ delamination_step_policy(const PlateModel& model, const StepPolicyOptions& optio
                          const DelaminationSettings& settings,
                          const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt);
 /// The stacked plate with explicit central differences on the lumped mass (settings.integration =
-/// central_difference; explicit_delamination_step.cpp). Throws std::invalid_argument when the mass is not
-/// diagonal or Δt of `options` is above the stable step, which the message gives.
-/// With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the stepper's
-/// damage() is the plies' damage of the whole laminate.
+/// central_difference; central differences on the stacked model of stacked_model.cpp). Throws
+/// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
+/// message gives. With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the
+/// stepper's damage() is the plies' damage of the whole laminate.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                   const DelaminationSettings& settings,

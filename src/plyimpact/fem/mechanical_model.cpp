@@ -18,7 +18,9 @@ public:
     f.noalias() = K_ * u;
   }
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override { stored_ = 0.5 * u.dot(f); }
-  [[nodiscard]] double stored_energy() const override { return stored_; } // ½ uᵀ K u
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override {
+    return stored_; // ½ uᵀ K u
+  }
 
 private:
   const SparseMatrix& K_;
@@ -33,8 +35,16 @@ public:
     K_ = equations_.restrict(K);
     M_ = equations_.restrict(M);
   }
-  [[nodiscard]] const PlateModel& plate() const override { return plate_; }
-  [[nodiscard]] const EquationSubset& equations() const override { return equations_; }
+  [[nodiscard]] int size() const override { return equations_.size(); }
+  [[nodiscard]] const PlateModel& contact_plate() const override { return plate_; }
+  [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
+  [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
+    if (equations_.all())
+      out = u;
+    else
+      equations_.expand(u, out);
+  }
   [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
   [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return K_; }
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
@@ -61,7 +71,7 @@ public:
     u_ = u;
     f_ = f;
   }
-  [[nodiscard]] double stored_energy() const override { return stored_; }
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override { return stored_; }
 
 private:
   const NonlinearPlateModel& plate_;
@@ -73,8 +83,10 @@ class VonKarmanPlate final : public MechanicalModel {
 public:
   VonKarmanPlate(const PlateModel& plate, StrainMeasure measure)
       : nonlinear_(plate, measure), equations_(plate.size()), K_(plate.stiffness()), M_(plate.mass()) {}
-  [[nodiscard]] const PlateModel& plate() const override { return nonlinear_.linear(); }
-  [[nodiscard]] const EquationSubset& equations() const override { return equations_; }
+  [[nodiscard]] int size() const override { return equations_.size(); }
+  [[nodiscard]] const PlateModel& contact_plate() const override { return nonlinear_.linear(); }
+  [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
   [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return K_; } // K_T(0) = K
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
@@ -96,7 +108,9 @@ public:
     plate_.explicit_internal_force(u, dt, field_, f);
   }
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override { plate_.commit(u, f, field_); }
-  [[nodiscard]] double stored_energy() const override { return field_.stored_energy(); } // ½ uᵀ K_s(d) u
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override {
+    return field_.stored_energy(); // ½ uᵀ K_s(d) u
+  }
   [[nodiscard]] double dissipated_energy() const override { return field_.dissipated().sum(); }
   [[nodiscard]] const PlyDamageView* ply_damage() const override { return &field_; }
 
@@ -109,8 +123,10 @@ class DamagingPlate final : public MechanicalModel {
 public:
   DamagingPlate(const PlateModel& plate, const ProgressiveDamageSettings& settings)
       : damaged_(plate, settings), equations_(plate.size()), M_(plate.mass()) {}
-  [[nodiscard]] const PlateModel& plate() const override { return damaged_.model(); }
-  [[nodiscard]] const EquationSubset& equations() const override { return equations_; }
+  [[nodiscard]] int size() const override { return equations_.size(); }
+  [[nodiscard]] const PlateModel& contact_plate() const override { return damaged_.model(); }
+  [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
   [[nodiscard]] const SparseMatrix& initial_stiffness() const override {
     return damaged_.undamaged_stiffness();

@@ -18,8 +18,10 @@
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
 #include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/stacked_plate.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,12 +40,19 @@ public:
   virtual void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) = 0;
   /// The trial state of the last internal_force() at u, whose force was f, becomes the committed one.
   virtual void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) = 0;
-  /// Energy stored in the plate in the committed state [J].
-  [[nodiscard]] virtual double stored_energy() const = 0;
+  /// Energy stored in the plate in the committed state, whose displacement is u [J].
+  [[nodiscard]] virtual double stored_energy(const Eigen::VectorXd& u) const = 0;
   /// Energy the model's laws have dissipated up to the committed state [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
-  /// The plies' damage of the committed state, for a model whose plies crack; otherwise nullptr.
+
+  // Results observers ask for by type: empty where the model has no such part.
+  /// The plies' damage of the committed state, for a model whose plies crack.
   [[nodiscard]] virtual const PlyDamageView* ply_damage() const { return nullptr; }
+  /// The interfaces' areas and dissipation into `out` (its vectors reused from step to step); false
+  /// without interfaces.
+  virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
+  /// The interfaces of the committed state, whole.
+  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
 };
 
 /// A plate model as an integrator sees it (built once per case, shared by the runs).
@@ -54,15 +63,22 @@ public:
   MechanicalModel(const MechanicalModel&) = delete;
   MechanicalModel& operator=(const MechanicalModel&) = delete;
 
-  /// The plate whose mesh and numbering the contact samples.
-  [[nodiscard]] virtual const PlateModel& plate() const = 0;
-  /// The equations the integrator moves, a subset of the plate's (the in-plane DOFs are left out where
-  /// they are exactly decoupled from bending).
-  [[nodiscard]] virtual const EquationSubset& equations() const = 0;
-  [[nodiscard]] int size() const { return equations().size(); }
-  /// The mass matrix over equations().
+  /// Equations the integrator moves.
+  [[nodiscard]] virtual int size() const = 0;
+  /// The plate the impactor touches, whose mesh and numbering the contact samples (the top sub-laminate
+  /// of a stack).
+  [[nodiscard]] virtual const PlateModel& contact_plate() const = 0;
+  /// The equations of contact_plate() that the integrator moves, the leading block of its size()
+  /// (the in-plane DOFs are left out where they are exactly decoupled from bending).
+  [[nodiscard]] virtual const EquationSubset& contact_equations() const = 0;
+  /// True where the in-plane DOFs are left out.
+  [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
+  /// The displacement u (the integrator's numbering) in the numbering of the case's plate, for observers
+  /// (the top sub-laminate of a stack).
+  virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
+  /// The mass matrix over the integrator's equations.
   [[nodiscard]] virtual const SparseMatrix& mass() const = 0;
-  /// The stiffness of the virgin, undeformed model over equations(): the highest frequency of the model
+  /// The stiffness of the virgin, undeformed model: the highest frequency of the model
   /// is bounded with it (damage only lowers the stiffness; membrane tension adds little at w ~ h).
   [[nodiscard]] virtual const SparseMatrix& initial_stiffness() const = 0;
   /// A run's state: virgin and undeformed.

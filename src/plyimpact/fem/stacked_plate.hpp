@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -150,6 +151,31 @@ private:
   int size_ = 0;
   std::vector<std::unique_ptr<CohesiveInterface>> interfaces_;
   SparseMatrix K_plates_;
+};
+
+/// The interfaces' areas and dissipation after a step of a run on the stacked plate (issue 19).
+struct DelaminationAreas {
+  std::vector<double> delaminated_area; ///< per interface: points fully cracked (d = 1) [m²]
+  double projected_area = 0.0;          ///< union over the interfaces of the delaminated points [m²]
+  double dissipated = 0.0;              ///< energy dissipated by the interfaces [J]
+};
+
+/// The interfaces at the end of a run on the stacked plate (issue 19, docs/delamination.md).
+struct DelaminationResult {
+  std::vector<int> interface_after_ply;  ///< each interface lies after this ply (1-based, from the top)
+  std::vector<double> delaminated_area;  ///< per interface: points fully cracked (d = 1) [m²]
+  std::vector<double> process_zone_area; ///< per interface: points softening (0 < d < 1) [m²]
+  double projected_area = 0.0;           ///< union over the interfaces of the delaminated points [m²]
+  double dissipated = 0.0;               ///< energy dissipated by the interfaces [J]
+  /// per interface and element: the largest damage of its points (0 intact, 1 cracked)
+  std::vector<std::vector<double>> element_damage;
+  /// per interface and point (index e · points per element + q): the damage
+  std::vector<std::vector<double>> point_damage;
+  /// per point: the part of its element it stands for (CohesiveInterface::point_cell) [m], and its area [m²]
+  std::vector<std::array<Eigen::Vector2d, 4>> point_cells;
+  std::vector<double> point_area;
+  double cohesive_zone_length = 0.0;    ///< E2 G_c / strength² of the shorter mode (Hillerborg) [m]
+  double interface_point_spacing = 0.0; ///< the interface points' spacing in the largest element [m]
 };
 
 } // namespace plyimpact

@@ -1,0 +1,216 @@
+// The stacked plate whose interfaces delaminate (fem/stacked_plate.hpp) as a model of
+// fem/mechanical_model.hpp, which central differences drive (central_difference_step.cpp), as the
+// stacked-shell impact models of the literature run in LS-DYNA and Abaqus/Explicit. Each trial evaluates
+// the interface law once, at u, from the committed states (CohesiveDamage::evolve: the damage grows with
+// the step's own separation and its dissipation is the law's), and
+//
+//   f_int(u) = K_plates u + Σ f_coh(u; d(u))                                                     (CD3)
+//
+// Nothing is solved: faces that clap after the impactor leaves, which cost the Newton step ~10 solves a
+// step, cost one evaluation here. The stable step (CD5) comes from the elastic stack, K_plates plus the
+// interfaces' penalty K (which also holds closed faces apart); softening only lowers the frequencies. The
+// shear penalty usually sets it: it moves each face by its translation and its rotation times half its
+// thickness, and with the Mindlin rotary inertia ρh³/12 the faces of masses per area m_u, m_l vibrate at
+// ω² ≥ 4 K (1/m_u + 1/m_l) (DL9, docs/delamination.md "The explicit step").
+//
+// With ply damage (docs/delamination.md, "Ply damage and delamination together") each sub-laminate is a
+// damaged plate (fem/damaged_plate.hpp) on its own plies: K_plates u becomes Σ_k f_k(u_k; d_k), each
+// sub-laminate's law evaluated once at u as the damaging plate's trial does, and the model shows the
+// plies' damage of the whole laminate (fem/stacked_damage.hpp). Damage only softens, so the elastic
+// stack's stable step still holds.
+#include "plyimpact/analysis/central_difference.hpp"
+#include "plyimpact/analysis/stacked_plate_step.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/stacked_damage.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace plyimpact {
+
+namespace {
+
+/// The deck key that chooses explicit steps for the stacked plate, for its messages.
+constexpr const char* explicit_key = "[delamination] integration = \"explicit\"";
+
+/// K_plates + the interfaces' penalty: the stack's tangent with every interface point intact.
+SparseMatrix elastic_stiffness(const StackedPlateModel& stack) {
+  return stack.evaluate(Eigen::VectorXd::Zero(stack.size()), stack.virgin_state()).tangent;
+}
+
+/// Sub-laminate k's first ply in the laminate's numbering.
+std::vector<int> first_plies(const StackedPlateModel& stack) {
+  std::vector<int> first;
+  int ply = 0;
+  for (int k = 0; k < stack.sublaminate_count(); ++k) {
+    first.push_back(ply);
+    ply += static_cast<int>(stack.sublaminate(k).laminate().ply_count());
+  }
+  return first;
+}
+
+class StackedModel;
+
+/// One run's state: the interfaces' committed states, and with ply damage each sub-laminate's field.
+class StackedState final : public ModelState {
+public:
+  explicit StackedState(const StackedModel& model);
+  void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override;
+  void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override;
+  /// ½ uᵀ K_plates u from the product the committed trial made, + the interfaces' stored energy.
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& u) const override;
+  /// The interfaces' dissipation + the plies' (with ply damage).
+  [[nodiscard]] double dissipated_energy() const override {
+    return interfaces_.dissipated() + (plies_ ? plies_->dissipated().sum() : 0.0);
+  }
+  [[nodiscard]] const PlyDamageView* ply_damage() const override { return plies_ ? &*plies_ : nullptr; }
+  bool delamination_areas(DelaminationAreas& out) const override {
+    interfaces_.areas(out);
+    return true;
+  }
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
+    return interfaces_.result();
+  }
+
+private:
+  /// Σ_k f_k(u_k; d_k) of the damaged sub-laminates at u into Ku_ (each law once, trial states kept).
+  void damaged_plate_forces(const Eigen::VectorXd& u, double dt);
+
+  const StackedModel& m_;
+  InterfaceStates interfaces_;
+  Eigen::VectorXd Ku_;             ///< K_plates u (with ply damage: Σ_k f_k) of the last trial
+  double plate_energy_ = 0.0;      ///< ½ uᵀ K_plates u of the committed state
+  StackedPlateState trial_buffer_; ///< storage the interfaces' trial states are written into
+  // With ply damage, per sub-laminate: its damage field, its part of u and its force.
+  std::vector<DamageField> fields_;
+  std::vector<Eigen::VectorXd> u_parts_, f_parts_;
+  std::optional<StackedDamageField> plies_; ///< the fields seen as the laminate's plies
+};
+
+class StackedModel final : public MechanicalModel {
+public:
+  StackedModel(const PlateModel& model, const DelaminationSettings& settings,
+               const std::optional<ProgressiveDamageSettings>& ply_damage)
+      : plate_(model, settings), initial_(elastic_stiffness(plate_.stack_)),
+        K_plates_by_rows_(plate_.stack_.plate_stiffness()) {
+    if (!ply_damage) return;
+    for (int k = 0; k < plate_.stack_.sublaminate_count(); ++k)
+      damaged_.push_back(std::make_unique<DamagedPlateModel>(plate_.stack_.sublaminate(k), *ply_damage));
+  }
+
+  [[nodiscard]] int size() const override { return plate_.stack_.size(); }
+  [[nodiscard]] const PlateModel& contact_plate() const override { return plate_.stack_.sublaminate(0); }
+  [[nodiscard]] const EquationSubset& contact_equations() const override { return plate_.top_equations_; }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
+    plate_.top_to_model(u, out);
+  }
+  [[nodiscard]] const SparseMatrix& mass() const override { return plate_.M_.matrix(); }
+  [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return initial_; }
+  [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
+    return std::make_unique<StackedState>(*this);
+  }
+
+  /// The stack's warnings and the damaged sub-laminates' lowered strengths: once when every sub-laminate
+  /// says the same, otherwise each with its sub-laminate.
+  [[nodiscard]] std::vector<std::string> warnings() const override {
+    std::vector<std::string> w = plate_.stack_warnings();
+    std::vector<std::optional<std::string>> lowered;
+    for (const auto& part : damaged_)
+      lowered.push_back(part->strength_reduction_warning());
+    if (!lowered.empty() && lowered.front() &&
+        std::all_of(lowered.begin(), lowered.end(), [&](const auto& l) { return l == lowered.front(); })) {
+      w.push_back(*lowered.front());
+      return w;
+    }
+    for (std::size_t k = 0; k < lowered.size(); ++k)
+      if (lowered[k]) w.push_back(fmt::format("sub-laminate {}: {}", k, *lowered[k]));
+    return w;
+  }
+
+  StackedImpactPlate plate_;
+  SparseMatrix initial_; ///< K_plates + K_penalty, every interface point intact
+  /// K_plates stored by rows for the step's product: each entry of K u is one sequential sum over its row,
+  /// in the order (and so with the bits) of the column-wise product, without scattering into K u
+  Eigen::SparseMatrix<double, Eigen::RowMajor> K_plates_by_rows_;
+  /// With ply damage: sub-laminate k as a damaged plate (empty without)
+  std::vector<std::unique_ptr<DamagedPlateModel>> damaged_;
+};
+
+StackedState::StackedState(const StackedModel& model)
+    : m_(model), interfaces_(model.plate_), Ku_(Eigen::VectorXd::Zero(model.size())) {
+  if (m_.damaged_.empty()) return;
+  const StackedPlateModel& stack = m_.plate_.stack_;
+  for (int k = 0; k < stack.sublaminate_count(); ++k) {
+    const DamagedPlateModel& part = *m_.damaged_[static_cast<std::size_t>(k)];
+    fields_.push_back(part.virgin_field());
+    u_parts_.emplace_back(Eigen::VectorXd::Zero(part.size()));
+    f_parts_.emplace_back(Eigen::VectorXd::Zero(part.size()));
+  }
+  plies_.emplace(first_plies(stack), static_cast<int>(m_.plate_.model_.laminate().ply_count()),
+                 m_.plate_.model_.mesh().element_count());
+  plies_->gather(fields_);
+}
+
+void StackedState::damaged_plate_forces(const Eigen::VectorXd& u, double dt) {
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const DamagedPlateModel& part = *m_.damaged_[k];
+    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
+    u_parts_[k] = u.segment(first, part.size());
+    part.explicit_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
+    Ku_.segment(first, part.size()) = f_parts_[k];
+  }
+}
+
+void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) {
+  if (fields_.empty())
+    Ku_.noalias() = m_.K_plates_by_rows_ * u;
+  else
+    damaged_plate_forces(u, dt);
+  f = Ku_;
+  const double dissipated = m_.plate_.stack_.add_interface_forces(u, interfaces_.committed(), f,
+                                                                  trial_buffer_, CohesiveDamage::evolve);
+  interfaces_.set_trial(trial_buffer_, dissipated);
+}
+
+void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/) {
+  interfaces_.accept();
+  plate_energy_ = 0.5 * u.dot(Ku_);
+  if (fields_.empty()) return;
+  for (std::size_t k = 0; k < fields_.size(); ++k)
+    m_.damaged_[k]->commit(u_parts_[k], f_parts_[k], fields_[k]);
+  plies_->gather(fields_);
+}
+
+double StackedState::stored_energy(const Eigen::VectorXd& u) const {
+  return plate_energy_ + m_.plate_.stack_.interface_energy(u, interfaces_.committed());
+}
+
+} // namespace
+
+std::unique_ptr<MechanicalModel>
+stacked_plate_model(const PlateModel& model, const DelaminationSettings& settings,
+                    const std::optional<ProgressiveDamageSettings>& ply_damage) {
+  return std::make_unique<StackedModel>(model, settings, ply_damage);
+}
+
+double explicit_delamination_highest_frequency(const PlateModel& model,
+                                               const DelaminationSettings& settings) {
+  const StackedPlateModel stack = impact_stack(model, settings);
+  return explicit_highest_frequency(elastic_stiffness(stack), MassOperator(stack.mass(), 1e-14),
+                                    explicit_key);
+}
+
+double explicit_delamination_time_step(const PlateModel& model, const DelaminationSettings& settings) {
+  return stable_time_step(explicit_delamination_highest_frequency(model, settings));
+}
+
+std::unique_ptr<StepPolicy>
+explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                                  const DelaminationSettings& settings,
+                                  const std::optional<ProgressiveDamageSettings>& ply_damage) {
+  return central_difference_step_policy(stacked_plate_model(model, settings, ply_damage), options,
+                                        explicit_key);
+}
+
+} // namespace plyimpact
