@@ -58,7 +58,8 @@ TEST(ChildProcess, AnAbortOrACrashEndsTheChildNotTheCaller) {
 
 TEST(ChildProcess, AChildThatExitsBeforeReturningIsNamedSo) {
   const auto [what, thrown] = failure_of([]() -> std::string { std::exit(0); }); // a .geo's Exit
-  EXPECT_NE(what.find("ended the process itself with exit code 0"), std::string::npos) << what;
+  // exit code 0, unless the leak sanitizer's check at exit sets its own
+  EXPECT_NE(what.find("ended the process itself with exit code"), std::string::npos) << what;
   EXPECT_FALSE(thrown);
 }
 

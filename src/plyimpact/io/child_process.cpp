@@ -36,9 +36,10 @@ bool write_all(int fd, const std::string& bytes) {
 /// The child: defaults for the signals the caller handles, no terminal input, the memory limit, the work,
 /// its record, and _exit (no atexit handlers or static destructors of the caller's libraries).
 [[noreturn]] void run_child(int fd, const std::function<std::string()>& work, const IsolationLimits& limits) {
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  std::signal(SIGPIPE, SIG_DFL);
+  // The caller's handlers off: Ctrl-C and SIGTERM end the child, and a crash ends it on its signal even
+  // where a sanitizer had caught it to exit with a code of its own.
+  for (const int sig : {SIGINT, SIGTERM, SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+    std::signal(sig, SIG_DFL);
   if (const int null = ::open("/dev/null", O_RDWR); null >= 0) { // no prompt, and nothing on the terminal:
     ::dup2(null, STDIN_FILENO);                                  // what the work says comes back in
     ::dup2(null, STDOUT_FILENO);                                 // its record (an abort's message too)
