@@ -1,8 +1,8 @@
 // Central differences on a lumped mass for any plate model (central_difference.hpp: CD1 to CD6), written
-// once against the model interface of fem/mechanical_model.hpp: the elastic plate, the von Kármán plate
-// and the plate whose plies crack, as Abaqus/Explicit, LS-DYNA and OpenRadioss run them. The model's
-// internal force is evaluated once per step, at u_{n+1} (CD3), from the state committed at the step
-// before.
+// once against the model interface of fem/mechanical_model.hpp: the elastic plate, the von Kármán plate,
+// the plate whose plies crack and the stacked plate whose interfaces delaminate (stacked_model.cpp), as
+// Abaqus/Explicit, LS-DYNA and OpenRadioss run them. The model's internal force is evaluated once per
+// step, at u_{n+1} (CD3), from the state committed at the step before.
 //
 // Nothing is solved or iterated, so no step can stall where many points soften at once (the implicit
 // damage step's limit, docs/progressive_damage.md), and a law sees each point's strain at the step's own
