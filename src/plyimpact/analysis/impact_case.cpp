@@ -183,7 +183,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
         delamination_step_policy(*model_, options, *settings_.delamination, settings_.progressive_damage);
   else if (settings_.progressive_damage)
     policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage);
-  else if (case_integrator(description_) == Integrator::central_difference)
+  else if (settings_.integration == Integrator::central_difference)
     policy_ = central_difference_step_policy(explicit_plate_model(description_, *model_), options,
                                              explicit_time_key);
   else if (settings_.nonlinear)
