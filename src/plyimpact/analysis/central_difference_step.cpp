@@ -135,8 +135,10 @@ double explicit_stable_time_step(const PlateModel& model) {
 
 std::unique_ptr<StepPolicy> explicit_damage_step_policy(const PlateModel& model,
                                                         const StepPolicyOptions& options,
-                                                        const ProgressiveDamageSettings& settings) {
-  return central_difference_step_policy(damaging_plate_model(model, settings), options, explicit_damage_key);
+                                                        const ProgressiveDamageSettings& settings,
+                                                        Kinematics kinematics) {
+  return central_difference_step_policy(damaging_plate_model(model, settings, kinematics), options,
+                                        explicit_damage_key);
 }
 
 } // namespace plyimpact

@@ -182,7 +182,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
     policy_ =
         delamination_step_policy(*model_, options, *settings_.delamination, settings_.progressive_damage);
   else if (settings_.progressive_damage)
-    policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage);
+    policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage, settings_.nonlinear);
   else if (settings_.integration == Integrator::central_difference)
     policy_ = central_difference_step_policy(explicit_plate_model(description_, *model_), options,
                                              explicit_time_key);

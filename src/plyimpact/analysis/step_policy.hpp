@@ -5,8 +5,10 @@
 //   LinearStepPolicy   K̄ = K + c0 M factored once per case. One back-substitution for the load-free
 //                      predictor û, then ws = sᵀû + c·Fc is affine in Fc and the scalar contact problem
 //                      is solved exactly (SPEC §4).
-//   NewtonStepPolicy   geometrically non-linear plate (SPEC §8): Newton iterations on (u, Fc) with the
-//                      tangent K̄ = K_T + c0 M, refreshed when the iterations slow down (modified Newton).
+//   NewtonNewmark      any model whose force is not linear in u (the von Kármán plate, SPEC §8; the plate
+//                      whose plies crack; both): Newton iterations on (u, Fc) with K̄ = K + c0 M, K the
+//                      model's iteration matrix, refreshed when the iterations slow down (modified Newton).
+//   CentralDifference  any model with a diagonal mass: explicit steps, nothing solved.
 //   DelaminationStep   the stacked plate whose interfaces delaminate (fem/stacked_plate.hpp): Newton
 //                      iterations on (u, Fc) with the elastic K̄ factored once, the tangent's LU where
 //                      the interfaces soften and the iterations slow down.
@@ -29,6 +31,7 @@
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/fem/stacked_plate.hpp"
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -36,6 +39,8 @@
 #include <vector>
 
 namespace plyimpact {
+
+class MechanicalModel;
 
 /// Displacement, velocity and acceleration of the plate at the start of a step (policy numbering).
 struct PlateState {
@@ -174,22 +179,44 @@ struct StepPolicyOptions {
 /// message gives.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                            const ProgressiveDamageSettings& settings);
+                            const ProgressiveDamageSettings& settings,
+                            Kinematics kinematics = Kinematics::linear);
 /// The largest Δt explicit_damage_step_policy accepts on `model`: 0.9 · 2/ω_max of its undamaged K and
 /// lumped M (CD5) [s]; what dt = "auto" becomes with [damage] integration = "explicit". Throws
 /// std::invalid_argument when the mass is not diagonal.
 [[nodiscard]] double explicit_stable_time_step(const PlateModel& model);
 /// ω_max of the undamaged `model` on its lumped mass, that step's 0.9 · 2/ω_max [rad/s].
 [[nodiscard]] double explicit_damage_highest_frequency(const PlateModel& model);
-/// Newton iterations on the non-linear plate.
+/// How Newton–Newmark iterates a step (newton_newmark_step.cpp).
+struct NewtonSettings {
+  int max_iterations = 30;              ///< solves per time step
+  double residual_tolerance = 1e-4;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
+  double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
+  double refresh_ratio = 0.25; ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  int refresh_after = std::numeric_limits<int>::max(); ///< … or when a step needs more solves
+  /// At most every this many steps, refactor at uₙ after a step that needed more than one solve.
+  std::optional<long> refresh_interval;
+  std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
+  std::string advice = "reduce time.dt"; ///< what they advise
+};
+/// Newton–Newmark on any model with an iteration matrix (newton_newmark_step.cpp): the one implicit
+/// integrator of the models whose force is not linear in u.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
+                           NewtonSettings settings);
+/// Newton–Newmark on the von Kármán plate, with the tangent (the settings' measure).
 [[nodiscard]] std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options,
                                                              const NonlinearImpactSettings& settings);
-/// The plate whose plies crack (fem/damaged_plate.hpp): implicit Newmark with the secant stiffness,
-/// refactored when the damage has grown by more than the settings' tolerance (damage_step.cpp).
-[[nodiscard]] std::unique_ptr<StepPolicy> damage_step_policy(const PlateModel& model,
-                                                             const StepPolicyOptions& options,
-                                                             const ProgressiveDamageSettings& settings);
+/// The plate whose plies crack (fem/damaged_plate.hpp), von Kármán's with `large_deflection`: Newton–
+/// Newmark with the secant stiffness (the tangent of the elastic von Kármán plate plus the damaged
+/// sections' secant difference), refactored when the damage has grown by more than the settings'
+/// tolerance; central differences where settings.integration says so. Throws std::invalid_argument for a
+/// large-deflection measure other than von Kármán's.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                   const ProgressiveDamageSettings& settings,
+                   const std::optional<NonlinearImpactSettings>& large_deflection = std::nullopt);
 /// The largest time step for which the step of the stacked plate stays solvable where an interface point
 /// softens (docs/delamination.md, "Impact on the stacked plate"). The step's matrix for the opening of
 /// two neighbouring sub-laminates at a point is c0 m + K_T with c0 = 1/(β Δt²), m = m_u m_l/(m_u + m_l)

@@ -215,7 +215,7 @@ ThresholdResult find_threshold_velocity(const ImpactCase& impact, const DamageCr
     run.observers = {&watch};
     run.history_every = 0;
     run.cancel = cancel;
-    (void)impact.run(run); // a whole progressive run from the virgin plate (damage_step.cpp)
+    (void)impact.run(run); // a whole progressive run from the virgin plate (newton_newmark_step.cpp)
     if (cancel != nullptr && cancel->load()) throw std::runtime_error("threshold: interrupted");
     const bool failed = watch.reached.has_value();
     result.trials.push_back({v, failed, watch.peak_index()});

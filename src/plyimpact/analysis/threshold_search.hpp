@@ -7,7 +7,7 @@
 // On a progressive-damage plate the search can also look for damage itself (DamageCriterion): the
 // first fibre or matrix damage (some d > 0) or a projected damaged area above a limit. Each trial is
 // then a whole progressive run from the virgin plate: the damage step policy starts every run with a
-// virgin damage field and factors its own K̄ (damage_step.cpp), nothing damaged is carried between
+// virgin damage field and factors its own K̄ (newton_newmark_step.cpp), nothing damaged is carried between
 // trials.
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"

@@ -159,11 +159,45 @@ struct DamagedPlateModel::Group {
   }
 };
 
-/// The strain operators S_p and weights w_p = w det J at the 3×3 Gauss points of one element shape.
+/// The strain operators S_p, shape-function gradients and weights w_p = w det J at the 3×3 Gauss points
+/// of one element shape.
 struct DamagedPlateModel::ElementOperators {
   std::array<StrainOperator, 9> S;
+  std::array<Eigen::Matrix<double, 9, 1>, 9> dN_dx, dN_dy;
   std::array<double, 9> w{};
 };
+
+namespace {
+
+constexpr Eigen::Index w_dof(Eigen::Index node) {
+  return 5 * node + 2; // (u, v, w, θx, θy) per node
+}
+
+/// The deflection's slopes (w,x, w,y) at point p.
+Eigen::Vector2d slopes(const DamagedPlateModel::ElementOperators& ops, std::size_t p,
+                       const ElementVector& ue) {
+  Eigen::Vector2d g = Eigen::Vector2d::Zero();
+  for (Eigen::Index a = 0; a < 9; ++a) {
+    g(0) += ops.dN_dx[p](a) * ue(w_dof(a));
+    g(1) += ops.dN_dy[p](a) * ue(w_dof(a));
+  }
+  return g;
+}
+
+/// E_p = ∂e/∂uₑ at point p: S_p plus the von Kármán rows of the membrane strains (2.47).
+StrainOperator von_karman_operator(const DamagedPlateModel::ElementOperators& ops, std::size_t p,
+                                   const Eigen::Vector2d& g) {
+  StrainOperator E = ops.S[p];
+  for (Eigen::Index a = 0; a < 9; ++a) {
+    const double nx = ops.dN_dx[p](a), ny = ops.dN_dy[p](a);
+    E(0, w_dof(a)) += g(0) * nx;
+    E(1, w_dof(a)) += g(1) * ny;
+    E(2, w_dof(a)) += g(0) * ny + g(1) * nx;
+  }
+  return E;
+}
+
+} // namespace
 
 namespace {
 
@@ -265,7 +299,10 @@ void DamagedPlateModel::build_element_operators() {
     ElementOperators ops;
     for (std::size_t p = 0; p < gauss3x3.size(); ++p) {
       ops.S[p] = model_.element().strain_operator(xy, gauss3x3[p].xi, gauss3x3[p].eta);
-      ops.w[p] = gauss3x3[p].weight * point_kinematics(xy, gauss3x3[p].xi, gauss3x3[p].eta).detJ;
+      const PointKinematics k = point_kinematics(xy, gauss3x3[p].xi, gauss3x3[p].eta);
+      ops.w[p] = gauss3x3[p].weight * k.detJ;
+      ops.dN_dx[p] = k.dN_dx;
+      ops.dN_dy[p] = k.dN_dy;
     }
     operators_.push_back(ops);
   }
@@ -294,7 +331,8 @@ void DamagedPlateModel::build_length_classes() {
   }
 }
 
-DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings)
+DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings,
+                                     Kinematics kinematics)
     : model_(model), settings_(settings) {
   if (model.formulation() != ElementFormulation::mitc9)
     throw std::invalid_argument("progressive damage needs the MITC9 element ([mesh] element = \"mitc9\" or "
@@ -338,6 +376,20 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
     throw std::logic_error("damaged plate: the stiffness does not have the model's sparsity pattern");
   slot_ = element_slots(model, K0_);
   K0_by_rows_ = K0_;
+  if (kinematics == Kinematics::von_karman)
+    von_karman_ = std::make_unique<NonlinearPlateModel>(model, StrainMeasure::von_karman);
+}
+
+Eigen::Matrix<double, 8, 1> DamagedPlateModel::point_strain(const ElementOperators& ops, std::size_t p,
+                                                            const ElementVector& ue) const {
+  Eigen::Matrix<double, 8, 1> e = ops.S[p] * ue;
+  if (von_karman_) { // (2.47): the membrane strains of the slopes
+    const Eigen::Vector2d g = slopes(ops, p, ue);
+    e(0) += 0.5 * g(0) * g(0);
+    e(1) += 0.5 * g(1) * g(1);
+    e(2) += g(0) * g(1);
+  }
+  return e;
 }
 
 DamagedPlateModel::~DamagedPlateModel() = default;
@@ -416,7 +468,7 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
   a.trial_dissipation = {};
   PointStrains strains;
   for (std::size_t p = 0; p < 9; ++p) {
-    strains[p] = ops.S[p] * ue;
+    strains[p] = point_strain(ops, p, ue);
     const Eigen::Matrix<double, 8, 1>& strain = strains[p];
     const std::size_t first = p * per_point;
     if (a.pristine[p]) {
@@ -431,7 +483,8 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
         continue;
       }
       // The law integrates from the strain of the committed state: the point's strain at the last commit.
-      const Eigen::Matrix<double, 8, 1> before = ops.S[p] * model_.element_dofs(field.u_committed_, e);
+      const Eigen::Matrix<double, 8, 1> before =
+          point_strain(ops, p, model_.element_dofs(field.u_committed_, e));
       std::size_t index = first;
       for (const PlyPoints& ply : plies)
         for (const double z : ply.z)
@@ -484,16 +537,22 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
 }
 
 void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t slot,
-                                          const PointStrains& strains, Eigen::VectorXd& f) const {
+                                          const PointStrains& strains, const Eigen::VectorXd& u,
+                                          Eigen::VectorXd& f) const {
   const DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
   const ElementOperators& ops = operators_of(e);
   const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
   ElementVector fe = ElementVector::Zero();
   bool changed = false;
+  const ElementVector ue = von_karman_ ? model_.element_dofs(u, e) : ElementVector();
   for (std::size_t p = 0; p < 9; ++p) {
-    if (a.pristine_trial[p]) continue; // the undamaged section: K0 u holds it
-    fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
+    if (a.pristine_trial[p]) continue; // the undamaged section: K0 u (or f_vK) holds it
+    if (von_karman_)
+      fe.noalias() += von_karman_operator(ops, p, slopes(ops, p, ue)).transpose() *
+                      (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
+    else
+      fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
     changed = true;
   }
   if (changed) scatter_add(f, model_.element_equations(e), fe);
@@ -508,9 +567,9 @@ Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, doub
 
 void DamagedPlateModel::internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field,
                                             Eigen::VectorXd& f) const {
-  f.noalias() = K0_by_rows_ * u;
+  elastic_force(u, f);
   for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
-    add_section_force(field, slot, evaluate_element(field.active_[slot].element, u, dt, field), f);
+    add_section_force(field, slot, evaluate_element(field.active_[slot].element, u, dt, field), u, f);
 }
 
 DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
@@ -528,7 +587,7 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
   for (std::size_t p = 0; p < 9; ++p) {
     a.pristine_trial[p] = a.pristine[p];
     if (a.pristine[p]) continue; // never initiated: the undamaged section (K0 u holds it)
-    strains[p] = ops.S[p] * ue;
+    strains[p] = point_strain(ops, p, ue);
     SectionStiffness sec = empty_section();
     std::size_t index = p * 2 * plies.size();
     for (const PlyPoints& ply : plies)
@@ -557,9 +616,9 @@ Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& 
 
 void DamagedPlateModel::frozen_internal_force_into(const Eigen::VectorXd& u, DamageField& field,
                                                    Eigen::VectorXd& f) const {
-  f.noalias() = K0_by_rows_ * u;
+  elastic_force(u, f);
   for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
-    add_section_force(field, slot, frozen_sections(field, slot, u), f);
+    add_section_force(field, slot, frozen_sections(field, slot, u), u, f);
 }
 
 SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const {
@@ -583,6 +642,47 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
   return K;
 }
 
+void DamagedPlateModel::elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+  if (von_karman_)
+    von_karman_->internal_force(u, f);
+  else
+    f.noalias() = K0_by_rows_ * u;
+}
+
+SparseMatrix DamagedPlateModel::iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const {
+  if (!von_karman_) return secant_stiffness(field);
+  SparseMatrix K = von_karman_->tangent_stiffness(u);
+  if (K.nonZeros() != K0_.nonZeros())
+    throw std::logic_error("damaged plate: the tangent does not have the model's sparsity pattern");
+  double* values = K.valuePtr();
+  for (const DamageField::ActiveElement& a : field.active_) {
+    if (!a.has_sections) continue;
+    const int e = a.element;
+    const ElementOperators& ops = operators_of(e);
+    const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
+    const ElementVector ue = model_.element_dofs(u, e);
+    ElementMatrix dK = ElementMatrix::Zero();
+    bool changed = false;
+    for (std::size_t p = 0; p < 9; ++p) {
+      if (a.pristine_trial[p]) continue;
+      const Eigen::Vector2d g = slopes(ops, p, ue);
+      const StrainOperator E = von_karman_operator(ops, p, g);
+      const Section8 dC = ops.w[p] * (as_matrix(a.sections[p]) - C0);
+      dK.noalias() += E.transpose() * dC * E;
+      // (2.103): the initial-stress term of the membrane resultants' difference, on the w DOFs
+      const Eigen::Vector3d dN = (dC * point_strain(ops, p, ue)).head<3>();
+      for (Eigen::Index i = 0; i < 9; ++i)
+        for (Eigen::Index j = 0; j < 9; ++j)
+          dK(w_dof(i), w_dof(j)) +=
+              dN(0) * ops.dN_dx[p](i) * ops.dN_dx[p](j) + dN(1) * ops.dN_dy[p](i) * ops.dN_dy[p](j) +
+              dN(2) * (ops.dN_dx[p](i) * ops.dN_dy[p](j) + ops.dN_dy[p](i) * ops.dN_dx[p](j));
+      changed = true;
+    }
+    if (changed) add_element_values(values, slot_[static_cast<std::size_t>(e)], dK);
+  }
+  return K;
+}
+
 double DamagedPlateModel::hashin_bound(const std::vector<Group>& groups,
                                        const Eigen::Matrix<double, 6, 1>& strain) {
   double bound = 0.0;
@@ -597,7 +697,7 @@ double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
   const ElementVector ue = model_.element_dofs(u, e);
   double bound = 0.0;
   for (std::size_t p = 0; p < 9; ++p)
-    bound = std::max(bound, hashin_bound(groups, ops.S[p].topRows<6>() * ue));
+    bound = std::max(bound, hashin_bound(groups, point_strain(ops, p, ue).head<6>()));
   return bound;
 }
 

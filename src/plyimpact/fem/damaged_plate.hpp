@@ -16,6 +16,12 @@
 // makes the ply's shear energy the plate's (F carries the shear correction K), so the energy the law
 // reports dissipated is the energy the plate loses.
 //
+// Kinematics × section: with von Kármán kinematics (SPEC §8) the generalized strains at a point gain the
+// membrane terms of the deflection's slopes, e = S_p uₑ + (½ w,x², ½ w,y², w,x w,y, 0, …), the section is
+// the same layered damaging one, and the force of the damaged sections' difference is taken with the
+// strain's derivative E_p = ∂e/∂uₑ: f = f_vK(u) + Σ_p w_p E_pᵀ (C(d) − C0) e_p, where f_vK is the elastic
+// von Kármán plate (NonlinearPlateModel). An undamaged plate is the von Kármán plate bit for bit.
+//
 // The characteristic length of an element's points (crack band) is √(element area) (Abaqus for shells):
 // a band of damaged points one element wide dissipates G per unit crack area.
 //
@@ -23,6 +29,7 @@
 // elements), evaluate the law; the others are the elastic element. Each accepted step screens the
 // inactive elements with a bound of the Hashin indices over each ply group's thickness range
 // (docs/progressive_damage.md); an element found beyond the surface asks for the step to be solved again.
+#include "plyimpact/fem/nonlinear_plate_model.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/laminate/ply_damage.hpp"
 
@@ -71,6 +78,12 @@ enum class DamageIntegration {
   return "unknown";
 }
 
+/// The plate's kinematics under a section whose plies crack.
+enum class Kinematics {
+  linear,     ///< small deflections: the strains are linear in u
+  von_karman, ///< moderate deflections (SPEC §8): the membrane strains gain ½ w,x², ½ w,y², w,x w,y
+};
+
 /// Settings of the progressive damage of the plies.
 struct ProgressiveDamageSettings {
   PlyDamageOptions law; ///< α, viscosity η
@@ -104,13 +117,17 @@ class DamagedPlateModel {
 public:
   /// Throws std::invalid_argument when the model is not MITC9, a laminate is not `exact`, or a material
   /// misses a strength or toughness the law needs (the message names them and the deck keys).
-  DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings);
+  DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings,
+                    Kinematics kinematics = Kinematics::linear);
   ~DamagedPlateModel();
   DamagedPlateModel(const DamagedPlateModel&) = delete;
   DamagedPlateModel& operator=(const DamagedPlateModel&) = delete;
 
   [[nodiscard]] const PlateModel& model() const { return model_; }
   [[nodiscard]] const ProgressiveDamageSettings& settings() const { return settings_; }
+  [[nodiscard]] Kinematics kinematics() const {
+    return von_karman_ ? Kinematics::von_karman : Kinematics::linear;
+  }
   [[nodiscard]] int size() const { return model_.size(); }
   /// The undamaged stiffness K0 over the free DOFs (PlateModel::stiffness()).
   [[nodiscard]] const SparseMatrix& undamaged_stiffness() const { return K0_; }
@@ -134,6 +151,10 @@ public:
   void internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field, Eigen::VectorXd& f) const;
   /// K_s with the trial damage of the last internal_force() (K0 where no element is active).
   [[nodiscard]] SparseMatrix secant_stiffness(const DamageField& field) const;
+  /// The matrix of a Newton iteration at u: secant_stiffness() with linear kinematics; with von Kármán's,
+  /// the elastic plate's tangent K_T(u) plus the damaged sections' difference taken with E_p at u, and the
+  /// initial-stress term of their membrane resultants' difference.
+  [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const;
   /// The explicit step's evaluation: internal_force() at u, and again when an element the screen left out
   /// has reached a Hashin surface at u (activate_reached(); no solve, u does not depend on it).
   /// Into `f`, sized once by the caller: no allocation per step.
@@ -172,12 +193,18 @@ private:
   }
   /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
   using PointStrains = std::array<Eigen::Matrix<double, 8, 1>, 9>;
+  /// The generalized strains at point p of an element with DOFs uₑ (with the kinematics' terms).
+  [[nodiscard]] Eigen::Matrix<double, 8, 1> point_strain(const ElementOperators& ops, std::size_t p,
+                                                         const ElementVector& ue) const;
   /// The sections of active element `slot` at u with the committed damage (the lagged step); returns the
   /// strains of its damaged points (the others are left unset: their section is the undamaged one).
   PointStrains frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;
-  /// Adds Sᵀ w (C(d) − C0) ε_p of element `slot`'s damaged points (its sections as they stand) to f.
+  /// Adds E_pᵀ w (C(d) − C0) ε_p (E_p = S_p with linear kinematics) of element `slot`'s damaged points (its
+  /// sections as they stand) to f.
   void add_section_force(const DamageField& field, std::size_t slot, const PointStrains& strains,
-                         Eigen::VectorXd& f) const;
+                         const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
+  /// The force of the undamaged plate at u: K0 u, or the von Kármán plate's f_int(u).
+  void elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
   /// returns the points' strains, from which internal_force() forms the element force.
   PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
@@ -191,6 +218,7 @@ private:
 
   const PlateModel& model_;
   ProgressiveDamageSettings settings_;
+  std::unique_ptr<NonlinearPlateModel> von_karman_; ///< the elastic von Kármán plate; null: linear
   SparseMatrix K0_;
   /// K0 stored by rows for K0 u: each entry one sequential sum over its row, the bits of the column-wise
   /// product without its scatter

@@ -3,9 +3,14 @@
 
 #include "plyimpact/fem/nonlinear_plate_model.hpp"
 
+#include <stdexcept>
 #include <utility>
 
 namespace plyimpact {
+
+SparseMatrix ModelState::iteration_matrix(const Eigen::VectorXd& /*u*/) const {
+  throw std::logic_error("this model is driven by central differences only: it has no iteration matrix");
+}
 
 namespace {
 
@@ -21,6 +26,7 @@ public:
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override {
     return stored_; // ½ uᵀ K u
   }
+  [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& /*u*/) const override { return K_; }
 
 private:
   const SparseMatrix& K_;
@@ -59,24 +65,39 @@ private:
 
 // --- The von Kármán plate ---------------------------------------------------------------------------
 
-class VonKarmanState final : public ModelState {
+/// The stored energy of a plate whose forces are not linear in u: the internal forces' work, trapezoidal
+/// from commit to commit.
+class WorkOfInternalForces {
 public:
-  explicit VonKarmanState(const NonlinearPlateModel& plate)
-      : plate_(plate), u_(Eigen::VectorXd::Zero(plate.size())), f_(Eigen::VectorXd::Zero(plate.size())) {}
-  void internal_force(const Eigen::VectorXd& u, double /*dt*/, Eigen::VectorXd& f) override {
-    plate_.internal_force(u, f);
-  }
-  void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override {
-    stored_ += 0.5 * (f + f_).dot(u - u_); // the internal forces' work, trapezoidal
+  explicit WorkOfInternalForces(int size)
+      : u_(Eigen::VectorXd::Zero(size)), f_(Eigen::VectorXd::Zero(size)) {}
+  void add(const Eigen::VectorXd& u, const Eigen::VectorXd& f) {
+    work_ += 0.5 * (f + f_).dot(u - u_);
     u_ = u;
     f_ = f;
   }
-  [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override { return stored_; }
+  [[nodiscard]] double work() const { return work_; }
+
+private:
+  Eigen::VectorXd u_, f_; ///< the committed displacement and its internal force
+  double work_ = 0.0;
+};
+
+class VonKarmanState final : public ModelState {
+public:
+  explicit VonKarmanState(const NonlinearPlateModel& plate) : plate_(plate), work_(plate.size()) {}
+  void internal_force(const Eigen::VectorXd& u, double /*dt*/, Eigen::VectorXd& f) override {
+    plate_.internal_force(u, f);
+  }
+  [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override {
+    return plate_.tangent_stiffness(u); // K_T(u), consistent: quadratic convergence
+  }
+  void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override { work_.add(u, f); }
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override { return work_.work(); }
 
 private:
   const NonlinearPlateModel& plate_;
-  Eigen::VectorXd u_, f_; ///< the committed displacement and its internal force
-  double stored_ = 0.0;
+  WorkOfInternalForces work_;
 };
 
 class VonKarmanPlate final : public MechanicalModel {
@@ -103,26 +124,73 @@ private:
 
 class DamagingState final : public ModelState {
 public:
-  explicit DamagingState(const DamagedPlateModel& plate) : plate_(plate), field_(plate.virgin_field()) {}
+  explicit DamagingState(const DamagedPlateModel& plate)
+      : plate_(plate), field_(plate.virgin_field()), work_(plate.size()) {}
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override {
-    plate_.explicit_internal_force(u, dt, field_, f);
+    dt_ = dt;
+    switch (plate_.settings().integration) {
+    case DamageIntegration::central_difference:
+      plate_.explicit_internal_force(u, dt, field_, f);
+      return;
+    case DamageIntegration::implicit:
+      plate_.internal_force_into(u, dt, field_, f);
+      return;
+    case DamageIntegration::lagged: // the damage of the last commit held fixed
+      plate_.frozen_internal_force_into(u, field_, f);
+      return;
+    }
   }
-  void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override { plate_.commit(u, f, field_); }
+  void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override {
+    if (lagged()) {
+      // The law once, at u_{n+1} (elements that reached a surface there join first); its secant sections
+      // are those of the next step.
+      (void)plate_.activate_reached(u, field_);
+      law_force_.resize(u.size());
+      plate_.internal_force_into(u, dt_, field_, law_force_);
+      commit_with(u, law_force_);
+      return;
+    }
+    commit_with(u, f);
+  }
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override {
-    return field_.stored_energy(); // ½ uᵀ K_s(d) u
+    if (plate_.kinematics() == Kinematics::linear) return field_.stored_energy(); // ½ uᵀ K_s(d) u
+    return work_.work() - dissipated_energy(); // what the internal forces did not dissipate
   }
   [[nodiscard]] double dissipated_energy() const override { return field_.dissipated().sum(); }
   [[nodiscard]] const PlyDamageView* ply_damage() const override { return &field_; }
 
+  [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override {
+    return plate_.iteration_matrix(u, field_);
+  }
+  bool admit(const Eigen::VectorXd& u) override {
+    return plate_.settings().integration != DamageIntegration::implicit ||
+           !plate_.activate_reached(u, field_);
+  }
+  [[nodiscard]] bool matrix_outdated() const override {
+    return field_.growth_since_factorization() > plate_.settings().refactor_tolerance;
+  }
+  void matrix_factorized() override { field_.mark_factorized(); }
+  bool take_branch_changed() override { return lagged() && field_.take_modes_changed(); }
+  [[nodiscard]] bool matrix_of_last_trial() const override { return lagged(); }
+
 private:
+  [[nodiscard]] bool lagged() const { return plate_.settings().integration == DamageIntegration::lagged; }
+  void commit_with(const Eigen::VectorXd& u, const Eigen::VectorXd& f) {
+    plate_.commit(u, f, field_);
+    if (plate_.kinematics() != Kinematics::linear) work_.add(u, f);
+  }
+
   const DamagedPlateModel& plate_;
   DamageField field_;
+  WorkOfInternalForces work_;
+  Eigen::VectorXd law_force_; ///< the lagged step's force of the law at the commit
+  double dt_ = 0.0;           ///< of the last trial: the viscous regularisation's time at the commit
 };
 
 class DamagingPlate final : public MechanicalModel {
 public:
-  DamagingPlate(const PlateModel& plate, const ProgressiveDamageSettings& settings)
-      : damaged_(plate, settings), equations_(plate.size()), M_(plate.mass()) {}
+  DamagingPlate(const PlateModel& plate, const ProgressiveDamageSettings& settings, Kinematics kinematics)
+      : damaged_(plate, settings, kinematics), equations_(plate.size()), M_(plate.mass()) {}
   [[nodiscard]] int size() const override { return equations_.size(); }
   [[nodiscard]] const PlateModel& contact_plate() const override { return damaged_.model(); }
   [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
@@ -156,8 +224,9 @@ std::unique_ptr<MechanicalModel> von_karman_plate_model(const PlateModel& plate,
 }
 
 std::unique_ptr<MechanicalModel> damaging_plate_model(const PlateModel& plate,
-                                                      const ProgressiveDamageSettings& settings) {
-  return std::make_unique<DamagingPlate>(plate, settings);
+                                                      const ProgressiveDamageSettings& settings,
+                                                      Kinematics kinematics) {
+  return std::make_unique<DamagingPlate>(plate, settings, kinematics);
 }
 
 } // namespace plyimpact

@@ -45,6 +45,27 @@ public:
   /// Energy the model's laws have dissipated up to the committed state [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
 
+  // What Newton–Newmark iterations ask of the state (newton_newmark_step.cpp); central differences ask
+  // none of it.
+  /// The stiffness of a Newton iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
+  /// of the von Kármán plate, the secant of the damage of the last trial, K of the elastic plate.
+  /// Throws std::logic_error on a model that only central differences drive (the stacked plate).
+  [[nodiscard]] virtual SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const;
+  /// Once the iterations have found equilibrium at u: false where the trial left out a part that must
+  /// join (an element whose plies have reached a failure surface at u), and the step iterates on.
+  virtual bool admit(const Eigen::VectorXd& /*u*/) { return true; }
+  /// The refactor hint: the committed state has drifted from that of the last factored matrix (damage
+  /// grown beyond a tolerance), so the next step starts from a new one.
+  [[nodiscard]] virtual bool matrix_outdated() const { return false; }
+  /// The iteration matrix has just been factored.
+  virtual void matrix_factorized() {}
+  /// True once after a trial that changed which branch of a law holds at some point (a crack opened or
+  /// closed under lagged damage): its matrix is then factored before the next correction.
+  virtual bool take_branch_changed() { return false; }
+  /// True where the iteration matrix is that of the last trial (lagged damage): a refresh waits for the
+  /// trial at the next iterate instead of being factored at once.
+  [[nodiscard]] virtual bool matrix_of_last_trial() const { return false; }
+
   // Results observers ask for by type: empty where the model has no such part.
   /// The plies' damage of the committed state, for a model whose plies crack.
   [[nodiscard]] virtual const PlyDamageView* ply_damage() const { return nullptr; }
@@ -95,10 +116,14 @@ public:
 /// energy is the work of the internal forces, ∫ f_intᵀ du, trapezoidal from commit to commit.
 [[nodiscard]] std::unique_ptr<MechanicalModel> von_karman_plate_model(const PlateModel& plate,
                                                                       StrainMeasure measure);
-/// The plate whose plies crack (DamagedPlateModel, docs/progressive_damage.md), over all equations; a
-/// trial evaluates the law at u, again where an element the screen had left out has reached a Hashin
-/// surface at u (DamagedPlateModel::explicit_internal_force).
+/// The plate whose plies crack (DamagedPlateModel, docs/progressive_damage.md), over all equations, with
+/// `kinematics` (linear, or von Kármán: a composition). How a trial finds its damage follows
+/// settings.integration: central differences evaluate the law at u, again where an element the screen
+/// had left out has reached a Hashin surface at u (DamagedPlateModel::explicit_internal_force); the
+/// implicit step evaluates it at u and admits u once no such element is left; the lagged step holds the
+/// committed damage in its trials and evaluates the law once, at the commit.
 [[nodiscard]] std::unique_ptr<MechanicalModel>
-damaging_plate_model(const PlateModel& plate, const ProgressiveDamageSettings& settings);
+damaging_plate_model(const PlateModel& plate, const ProgressiveDamageSettings& settings,
+                     Kinematics kinematics = Kinematics::linear);
 
 } // namespace plyimpact
