@@ -356,6 +356,20 @@ void DelaminationStepper::step_start(const Eigen::VectorXd& u_n, const ContactSt
   }
 }
 
+/// The stack whose plies crack under the lagged step: Newton–Newmark on the stacked model
+/// (stacked_model.cpp), with the delamination settings' iterations.
+NewtonSettings lagged_stack_newton_settings(const DelaminationSettings& ds) {
+  NewtonSettings ns;
+  ns.max_iterations = ds.max_iterations;
+  ns.residual_tolerance = ds.residual_tolerance;
+  ns.displacement_tolerance = ds.displacement_tolerance;
+  ns.refresh_ratio = ds.refresh_ratio;
+  ns.refresh_after = ds.refresh_after;
+  ns.physics = "ply damage and delamination";
+  ns.advice = "reduce time.dt";
+  return ns;
+}
+
 /// Steepest softening slope of the law over the pure modes [Pa/m] (DL5).
 double softening_slope(const CohesiveParameters& p) {
   const double K = p.penalty_stiffness;
@@ -391,6 +405,9 @@ delamination_step_policy(const PlateModel& model, const StepPolicyOptions& optio
   if (auto why = refusal(kind, integrator)) throw std::invalid_argument(*why); // capabilities.hpp
   if (settings.integration == DamageIntegration::central_difference)
     return explicit_delamination_step_policy(model, options, settings, ply_damage);
+  if (ply_damage)
+    return newton_newmark_step_policy(stacked_plate_model(model, settings, ply_damage), options,
+                                      lagged_stack_newton_settings(settings));
   return std::make_unique<DelaminationStepPolicy>(model, options, settings);
 }
 

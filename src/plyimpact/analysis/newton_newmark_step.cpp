@@ -56,6 +56,10 @@ public:
     return loading_.sampler().dot(u);
   }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
+    return state_->delamination();
+  }
+  bool delamination_areas(DelaminationAreas& out) const override { return state_->delamination_areas(out); }
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
@@ -63,6 +67,9 @@ private:
   /// The refreshes due before step `step` from uₙ = `u`.
   void refresh_before(long step, const Eigen::VectorXd& u);
   [[noreturn]] void fail(const char* what, long step, double t) const;
+  /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n, f(u_n) − Fc_n s_n, into
+  /// start_.
+  void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
 
   const NewtonNewmarkPolicy& p_;
   ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and c = swᵀ K̄⁻¹ s_load with the current factor
@@ -70,7 +77,8 @@ private:
   SpdSolver factor_;
   SpdSolver::Workspace workspace_;
   Eigen::VectorXd kbar_diagonal_;
-  Eigen::VectorXd f_int_; ///< f_int of the last trial
+  Eigen::VectorXd f_int_; ///< f_int of the last trial (with the two-point form: f'(u) + f(u_n) − Fc_n s_n)
+  Eigen::VectorXd start_, previous_load_; ///< the two-point form's start terms
   long last_refresh_ = 0;
   bool needed_more_than_one_solve_ = false;
   NewtonStatistics stats_;
@@ -104,7 +112,8 @@ NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, co
     : p_(policy), loading_(policy.model_->contact_plate(), policy.model_->contact_equations(), impactor,
                            policy.options_.load, policy.model_->size()),
       state_(policy.model_->virgin_state()), factor_(policy.options_.solver, policy.options_.ordering),
-      f_int_(Eigen::VectorXd::Zero(policy.equations())), iteration_(policy.equations()),
+      f_int_(Eigen::VectorXd::Zero(policy.equations())), start_(Eigen::VectorXd::Zero(policy.equations())),
+      previous_load_(Eigen::VectorXd::Zero(policy.equations())), iteration_(policy.equations()),
       scratch_(policy.equations()) {
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
   if (policy.options_.memory_limit_bytes) // from the analysis that refactor() then reuses
@@ -135,6 +144,21 @@ void NewtonNewmarkStepper::refresh_before(long step, const Eigen::VectorXd& u) {
   }
 }
 
+// The trapezoidal rule over the step in its two-point form, (u − u_n)/Δt = (v_n + v)/2 and
+// M (v − v_n)/Δt = the mean of the step's forces, is
+//   Fc s + Fc_n s_n − c0 M (u − u_n − Δt v_n) − f'(u) − f(u_n) = 0,                          (DL7)
+// f' the model's end forces and f(u_n) its start force, the laws held at the committed state: where the
+// held model is linear the mean of the step's forces is then exact and the step keeps the energy, also
+// where faces open or close within it. aₙ does not enter (where the laws moved at the commit, the Newmark
+// accelerations are not the equilibrium ones).
+void NewtonNewmarkStepper::step_start(const Eigen::VectorXd& u_n, const ContactStep& contact) {
+  state_->start_force(u_n, start_);
+  if (contact.previous_force() != 0.0) {
+    loading_.scaled_load(contact.previous_indentation(), contact.previous_force(), previous_load_);
+    start_ -= previous_load_;
+  }
+}
+
 void NewtonNewmarkStepper::fail(const char* what, long step, double t) const {
   const NewtonSettings& ns = p_.settings_;
   throw NewtonFailure(
@@ -149,13 +173,21 @@ ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateSt
   // Newton iterations on (u, Fc); start from constant acceleration (a_{n+1} = aₙ).
   ContactIteration& it = iteration_;
   it.predict(s, nc);
+  const bool two_point = state_->two_point_form() && nc.beta == 0.25 && nc.gamma == 0.5;
+  if (two_point) step_start(s.u, contact);
   ContactSolution cs;
   double previous_correction = INFINITY;
   bool refresh_at_next_trial = false;
   int iterations = 0; // linear solves in this step
   for (;;) {
-    it.newmark_inertia(s, nc, p_.M_);
-    state_->internal_force(it.uk(), nc.dt, f_int_);
+    if (two_point) {
+      it.inertia_of(p_.M_, nc.c0 * (it.uk() - s.u - nc.dt * s.v));
+      state_->internal_force(it.uk(), nc.dt, f_int_);
+      f_int_ += start_;
+    } else {
+      it.newmark_inertia(s, nc, p_.M_);
+      state_->internal_force(it.uk(), nc.dt, f_int_);
+    }
     it.set_internal_force(f_int_);
     if (iterations > 0 && it.converged(loading_, cs, f_int_, kbar_diagonal_, ns.residual_tolerance,
                                        ns.displacement_tolerance)) {

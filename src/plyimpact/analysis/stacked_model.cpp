@@ -18,6 +18,13 @@
 // sub-laminate's law evaluated once at u as the damaging plate's trial does, and the model shows the
 // plies' damage of the whole laminate (fem/stacked_damage.hpp). Damage only softens, so the elastic
 // stack's stable step still holds.
+//
+// With [delamination] integration = "lagged" (ply damage: lagged too) the same model is driven by
+// Newton–Newmark (newton_newmark_step.cpp): its trials hold every law at the committed state (the plies'
+// damage d_n with their cracks' modes at u, the interfaces' end tractions 2 τ̄ − τ(δ_n) at their held
+// damage, DL6), its start force f(u_n) completes the trapezoidal two-point form (DL7), its iteration
+// matrix is K_plates + the interfaces' held tangent + the damaged sections' secant difference, and the
+// laws move once per step, at the commit (docs/delamination.md, "The lagged step").
 #include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/stacked_plate_step.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -73,9 +80,33 @@ public:
     return interfaces_.result();
   }
 
+  // Newton–Newmark with the laws of the step before held (lagged: plies and interfaces).
+  /// K_plates, the interfaces' tangent at their held damage and the damaged sections' secant difference
+  /// of the last trial, each sub-laminate on its diagonal block.
+  [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override;
+  [[nodiscard]] bool matrix_outdated() const override;
+  void matrix_factorized() override {
+    for (DamageField& field : fields_)
+      field.mark_factorized();
+  }
+  bool take_branch_changed() override {
+    bool changed = false;
+    for (DamageField& field : fields_)
+      changed = field.take_modes_changed() || changed; // every field's flag taken
+    return changed;
+  }
+  [[nodiscard]] bool matrix_of_last_trial() const override { return !fields_.empty(); }
+  [[nodiscard]] bool two_point_form() const override { return lagged(); }
+  void start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) override;
+
 private:
   /// Σ_k f_k(u_k; d_k) of the damaged sub-laminates at u into Ku_ (each law once, trial states kept).
   void damaged_plate_forces(const Eigen::VectorXd& u, double dt);
+  /// The same with each sub-laminate's damage of the last commit held (the lagged step's trial).
+  void frozen_plate_forces(const Eigen::VectorXd& u);
+  /// The lagged step's commit: each sub-laminate's law once, at u (damaged_plate_forces).
+  void plate_laws_at(const Eigen::VectorXd& u) { damaged_plate_forces(u, dt_); }
+  [[nodiscard]] bool lagged() const;
 
   const StackedModel& m_;
   InterfaceStates interfaces_;
@@ -86,6 +117,7 @@ private:
   std::vector<DamageField> fields_;
   std::vector<Eigen::VectorXd> u_parts_, f_parts_;
   std::optional<StackedDamageField> plies_; ///< the fields seen as the laminate's plies
+  double dt_ = 0.0;                         ///< of the last trial (the laws' viscous time at a commit)
 };
 
 class StackedModel final : public MechanicalModel {
@@ -98,6 +130,9 @@ public:
     for (int k = 0; k < plate_.stack_.sublaminate_count(); ++k)
       damaged_.push_back(std::make_unique<DamagedPlateModel>(plate_.stack_.sublaminate(k), *ply_damage));
   }
+
+  /// Trials hold the interfaces' (and plies') damage of the last commit: the lagged Newton–Newmark step.
+  [[nodiscard]] bool lagged() const { return plate_.settings_.integration == DamageIntegration::lagged; }
 
   [[nodiscard]] int size() const override { return plate_.stack_.size(); }
   [[nodiscard]] const PlateModel& contact_plate() const override { return plate_.stack_.sublaminate(0); }
@@ -162,18 +197,88 @@ void StackedState::damaged_plate_forces(const Eigen::VectorXd& u, double dt) {
   }
 }
 
+void StackedState::frozen_plate_forces(const Eigen::VectorXd& u) {
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const DamagedPlateModel& part = *m_.damaged_[k];
+    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
+    u_parts_[k] = u.segment(first, part.size());
+    part.frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);
+    Ku_.segment(first, part.size()) = f_parts_[k];
+  }
+}
+
+bool StackedState::lagged() const {
+  return m_.lagged();
+}
+
 void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) {
+  dt_ = dt;
   if (fields_.empty())
     Ku_.noalias() = m_.K_plates_by_rows_ * u;
+  else if (lagged())
+    frozen_plate_forces(u);
   else
     damaged_plate_forces(u, dt);
   f = Ku_;
-  const double dissipated = m_.plate_.stack_.add_interface_forces(u, interfaces_.committed(), f,
-                                                                  trial_buffer_, CohesiveDamage::evolve);
+  // Lagged: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage (DL6)
+  const double dissipated =
+      m_.plate_.stack_.add_interface_forces(u, interfaces_.committed(), f, trial_buffer_,
+                                            lagged() ? CohesiveDamage::lagged_mean : CohesiveDamage::evolve);
   interfaces_.set_trial(trial_buffer_, dissipated);
 }
 
+void StackedState::start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) {
+  // K_s(d_n) u_n of the plies and the interfaces' tractions at u_n, every law held at the committed state;
+  // the trial buffers are overwritten by the step's first trial.
+  if (fields_.empty()) {
+    f.noalias() = m_.K_plates_by_rows_ * u_n;
+  } else {
+    frozen_plate_forces(u_n);
+    f = Ku_;
+    for (DamageField& field : fields_)
+      (void)field.take_modes_changed(); // the start's modes are not a trial's
+  }
+  (void)m_.plate_.stack_.add_interface_forces(u_n, interfaces_.committed(), f, trial_buffer_,
+                                              CohesiveDamage::lagged_mean);
+}
+
+SparseMatrix StackedState::iteration_matrix(const Eigen::VectorXd& u) const {
+  const StackedPlateModel& stack = m_.plate_.stack_;
+  SparseMatrix K = stack.evaluate(u, interfaces_.committed(), CohesiveDamage::lagged_mean).tangent;
+  if (fields_.empty()) return K;
+  std::vector<Eigen::Triplet<double>> softening;
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const DamagedPlateModel& part = *m_.damaged_[k];
+    const Eigen::Index first = stack.offset(static_cast<int>(k));
+    const SparseMatrix dK =
+        part.iteration_matrix(u.segment(first, part.size()), fields_[k]) - part.undamaged_stiffness();
+    for (int j = 0; j < dK.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(dK, j); it; ++it)
+        if (it.value() != 0.0)
+          softening.emplace_back(static_cast<int>(first + it.row()), static_cast<int>(first + it.col()),
+                                 it.value());
+  }
+  SparseMatrix dK(K.rows(), K.cols());
+  dK.setFromTriplets(softening.begin(), softening.end());
+  return K + dK;
+}
+
+bool StackedState::matrix_outdated() const {
+  return std::any_of(fields_.begin(), fields_.end(), [&](const DamageField& field) {
+    return field.growth_since_factorization() > m_.damaged_.front()->settings().refactor_tolerance;
+  });
+}
+
 void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/) {
+  if (lagged() && !fields_.empty()) {
+    // The plies' laws once, at u_{n+1} (elements that reached a surface there join first).
+    for (std::size_t k = 0; k < fields_.size(); ++k) {
+      const DamagedPlateModel& part = *m_.damaged_[k];
+      u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
+      (void)part.activate_reached(u_parts_[k], fields_[k]);
+    }
+    plate_laws_at(u);
+  }
   interfaces_.accept();
   plate_energy_ = 0.5 * u.dot(Ku_);
   if (fields_.empty()) return;

@@ -65,6 +65,13 @@ public:
   /// True where the iteration matrix is that of the last trial (lagged damage): a refresh waits for the
   /// trial at the next iterate instead of being factored at once.
   [[nodiscard]] virtual bool matrix_of_last_trial() const { return false; }
+  /// True where the trials are the end forces of a step whose laws are held at the committed state, to be
+  /// solved in the trapezoidal rule's two-point form with start_force() (DL7, docs/delamination.md): the
+  /// lagged stack, whose delaminated faces clapping under the law's end tractions create energy otherwise.
+  [[nodiscard]] virtual bool two_point_form() const { return false; }
+  /// With two_point_form(): the force at the step's start u_n with the laws held at the committed state,
+  /// into `f` (sized by the caller).
+  virtual void start_force(const Eigen::VectorXd& /*u_n*/, Eigen::VectorXd& /*f*/) {}
 
   // Results observers ask for by type: empty where the model has no such part.
   /// The plies' damage of the committed state, for a model whose plies crack.

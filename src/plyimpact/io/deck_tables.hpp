@@ -68,7 +68,7 @@ void read_nonlinear_keys(const TableReader& top, Deck& d);
 
 // deck_delamination.cpp
 /// [delamination]; `d` has its laminate and [damage] already (the cuts follow the layup; progressive ply
-/// damage runs with the stacked plate in explicit steps only).
+/// damage runs with the stacked plate in explicit or lagged steps: capabilities.hpp).
 [[nodiscard]] DelaminationSettings read_delamination(const TableReader& t, const Deck& d);
 
 // deck_output.cpp
