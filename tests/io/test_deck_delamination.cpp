@@ -137,7 +137,7 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   EXPECT_NE(error_of(as4_peek_law + "penalty_stiffness = 1e12\n").find("[delamination]: "),
             std::string::npos);
   EXPECT_NE(error_of(as4_peek_law, "[damage]\nmodel = \"progressive\"\n")
-                .find("(the elastic plate with ply damage and interfaces runs with: explicit)"),
+                .find("(the elastic plate with ply damage and interfaces runs with: lagged, explicit)"),
             std::string::npos);
   EXPECT_NE(error_of(as4_peek_law + "typo = 1\n").find("typo"), std::string::npos);
 }

@@ -12,6 +12,7 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/gmsh_mesh.hpp"
 #include "support/decks.hpp"
+#include "support/gmsh_meshes.hpp"
 #include "test_paths.hpp"
 
 #include <gtest/gtest.h>
@@ -228,9 +229,12 @@ namespace {
 // gmsh runs in a child process (io/child_process.hpp; docs/robustness.md, "gmsh in a child process").
 
 TEST(GmshIsolation, AGeometryThatEndsTheProcessIsRefusedNotObeyed) {
-  // `Exit;` makes gmsh call exit(0): before, the program ended with status 0 and wrote nothing.
+  // `Exit;` makes gmsh call exit(0): before, the program ended with status 0 and wrote nothing. The .geo
+  // policy refuses the command before gmsh reads it (test_geo_script.cpp); trusted, gmsh runs it in its
+  // child process, which ends alone.
   const fs::path dir = scratch("gmsh-exit");
   std::ofstream(dir / "exits.geo") << "Point(1) = {0, 0, 0};\nExit;\n";
+  const test::TrustedGeoScripts trusted;
   try {
     (void)mesh_gmsh_geometry(dir / "exits.geo", GeometryMeshing{});
     ADD_FAILURE() << "expected MeshFileError";

@@ -3,9 +3,23 @@
 // the tests of mesh files (io/gmsh_mesh.hpp): a disk, an annulus, and a rectangle meshed by transfinite
 // lines. The options say how the surface is meshed, so that the tests can also make the meshes that
 // plyimpact must refuse.
+#include "plyimpact/io/geo_script.hpp"
+
+#include <cstdlib>
 #include <filesystem>
 
 namespace plyimpact::test {
+
+/// PLYIMPACT_TRUST_GEO=1 while it lives (the user's opt-in of io/geo_script.hpp), unset after.
+class TrustedGeoScripts {
+public:
+  TrustedGeoScripts() { ::setenv(trust_geo_variable, "1", 1); } // NOLINT(concurrency-mt-unsafe)
+  ~TrustedGeoScripts() { ::unsetenv(trust_geo_variable); }      // NOLINT(concurrency-mt-unsafe)
+  TrustedGeoScripts(const TrustedGeoScripts&) = delete;
+  TrustedGeoScripts& operator=(const TrustedGeoScripts&) = delete;
+  TrustedGeoScripts(TrustedGeoScripts&&) = delete;
+  TrustedGeoScripts& operator=(TrustedGeoScripts&&) = delete;
+};
 
 struct GmshMeshOptions {
   int order = 2;               ///< 1: 4-node elements; 2: 9-node (or 8-node, see incomplete)

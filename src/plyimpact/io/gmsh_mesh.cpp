@@ -1,5 +1,7 @@
 #include "plyimpact/io/gmsh_mesh.hpp"
 
+#include "plyimpact/io/geo_script.hpp"
+
 #include "plyimpact/io/child_process.hpp"
 #include "plyimpact/io/gmsh_api.hpp"
 #include "plyimpact/io/system_memory.hpp"
@@ -430,6 +432,7 @@ Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing&
   std::error_code ec;
   if (!std::filesystem::is_regular_file(geo, ec))
     throw MeshFileError(fmt::format("{}: error: cannot open the geometry file", geo.string()));
+  require_safe_geo(geo); // no shell command, no file written, nothing read from outside its folder
   return to_mesh(read_raw(geo, [&] {
     gmsh_api().open(geo.string());
     generate_quad9(how);
