@@ -307,6 +307,12 @@ TEST(GmshMesh, BadMeshesAreRefusedWithWhatIsWrong) {
   clockwise.clockwise = true;
   const std::string inverted = mesh_error(clockwise, "inverted");
   EXPECT_NE(inverted.find("is inverted (its nodes run clockwise"), std::string::npos) << inverted;
+  GmshMeshOptions nan_node;
+  nan_node.not_a_number = true; // before: "element is inverted or degenerate", naming no node
+  const std::string not_finite = mesh_error(nan_node, "nan");
+  EXPECT_NE(not_finite.find("has the coordinates (nan, "), std::string::npos) << not_finite;
+  EXPECT_NE(not_finite.find("every node of a mesh needs finite coordinates"), std::string::npos)
+      << not_finite;
   GmshMeshOptions folded;
   folded.degenerate = true;
   const std::string degenerate = mesh_error(folded, "degenerate");

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,14 @@ void write_mesh(const std::filesystem::path& file, const GmshMeshOptions& o,
     std::vector<double> corner, parametric;
     gmsh::model::mesh::getNode(nodes[0], corner, parametric);
     gmsh::model::mesh::setNode(nodes[8], corner, {});
+  }
+  if (o.not_a_number) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(10, tags, nodes);
+    std::vector<double> centre, parametric;
+    gmsh::model::mesh::getNode(nodes[8], centre, parametric);
+    centre[0] = std::numeric_limits<double>::quiet_NaN();
+    gmsh::model::mesh::setNode(nodes[8], centre, {});
   }
   gmsh::write(file.string());
   gmsh::finalize();

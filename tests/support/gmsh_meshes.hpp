@@ -29,6 +29,7 @@ struct GmshMeshOptions {
   double z = 0.0;              ///< the plane of the plate
   bool clockwise = false;      ///< the surface's boundary run clockwise: elements inverted
   bool degenerate = false; ///< the first element's centre node moved onto its first corner (det J = 0 there)
+  bool not_a_number = false; ///< the first element's centre node at x = NaN
 };
 
 /// A disk of radius `radius` centred at the origin, elements of about `size`; its centre is a mesh

@@ -128,6 +128,12 @@ void read_elements(const std::filesystem::path& file, RawMesh& m,
       auto [it, added] = index.try_emplace(tag, static_cast<int>(m.nodes.size()));
       if (added) {
         const std::size_t p = where.at(tag);
+        if (!std::isfinite(coords[3 * p]) || !std::isfinite(coords[3 * p + 1]) ||
+            !std::isfinite(coords[3 * p + 2]))
+          throw MeshFileError(
+              fmt::format("{}: error: node {} has the coordinates ({}, {}, {}): every node of "
+                          "a mesh needs finite coordinates",
+                          file.string(), tag, coords[3 * p], coords[3 * p + 1], coords[3 * p + 2]));
         const double z = coords[3 * p + 2];
         if (std::abs(z) > 1e-9 * std::max(size, 1e-300))
           throw MeshFileError(
