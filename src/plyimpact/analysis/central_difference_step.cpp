@@ -9,6 +9,7 @@
 // end. The impactor keeps its implicit Newmark update through the scalar contact problem of SPEC §4 with
 // the plate's compliance 0.
 #include "plyimpact/analysis/central_difference.hpp"
+#include "plyimpact/analysis/model_stepper.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
@@ -24,7 +25,7 @@ constexpr const char* explicit_damage_key = "[damage] integration = \"explicit\"
 
 class CentralDifferencePolicy;
 
-class CentralDifferenceStepper final : public PlateStepper {
+class CentralDifferenceStepper final : public ModelStepper {
 public:
   CentralDifferenceStepper(const CentralDifferencePolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
@@ -33,32 +34,13 @@ public:
                          const Eigen::VectorXd& /*u_next*/, Eigen::VectorXd& a_next) const override {
     a_next = a_next_; // CD3: from the equation of motion, not from Newmark's (2.11)
   }
-  void accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) override {
-    state_->commit(u_next, f_int_);
-  }
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
-  [[nodiscard]] double strain_energy(const PlateState& s, double /*force*/) const override {
-    return state_->stored_energy(s.u);
-  }
-  [[nodiscard]] double dissipated_energy() const override { return state_->dissipated_energy(); }
-  [[nodiscard]] const PlyDamageView* damage() const override { return state_->ply_damage(); }
-  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
-    return loading_.sampler().dot(u);
-  }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
-    return state_->delamination();
-  }
-  bool delamination_areas(DelaminationAreas& out) const override { return state_->delamination_areas(out); }
   /// No solve and no factorization: all zero.
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return NewtonStatistics{}; }
 
 private:
   const CentralDifferencePolicy& p_;
-  ContactLoading loading_;
-  std::unique_ptr<ModelState> state_;
   Eigen::VectorXd a_next_;
-  Eigen::VectorXd f_int_;            ///< f_int(u_{n+1}) of the step, sized once
   Eigen::VectorXd force_;            ///< Fc s_load − f_int of the step (CD3), sized once
   double contact_flexibility_ = 0.0; ///< sᵀM⁻¹s, 1 / the mass the contact spring moves [1/kg]
 };
@@ -86,10 +68,8 @@ public:
 
 CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy& policy,
                                                    const Impactor& impactor)
-    : p_(policy), loading_(policy.model_->contact_plate(), policy.model_->contact_equations(), impactor,
-                           policy.options_.load, policy.model_->size()),
-      state_(policy.model_->virgin_state()), a_next_(Eigen::VectorXd::Zero(policy.equations())),
-      f_int_(Eigen::VectorXd::Zero(policy.equations())), force_(Eigen::VectorXd::Zero(policy.equations())),
+    : ModelStepper(*policy.model_, policy.options_, impactor), p_(policy),
+      a_next_(Eigen::VectorXd::Zero(policy.equations())), force_(Eigen::VectorXd::Zero(policy.equations())),
       contact_flexibility_(policy.scheme_.flexibility(loading_.sampler())) {}
 
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
@@ -106,10 +86,6 @@ ContactSolution CentralDifferenceStepper::advance(long step, double t, const Pla
 
 double CentralDifferenceStepper::kinetic_energy(const PlateState& s) const {
   return p_.scheme_.kinetic_energy(s.v);
-}
-
-void CentralDifferenceStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-  p_.model_->to_model(u, out);
 }
 
 } // namespace

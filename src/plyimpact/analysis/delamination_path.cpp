@@ -1,11 +1,15 @@
 #include "plyimpact/analysis/delamination_path.hpp"
 
+#include "plyimpact/analysis/newton_solver.hpp"
+
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace plyimpact {
 
@@ -107,38 +111,66 @@ Residual residual_at(const StackedPlateModel& model, const Parametrization& load
   return {std::move(u), std::move(e), std::move(r)};
 }
 
-/// Newton's method on the free DOFs at control displacement `delta`, from the guess `u`, with a
-/// backtracking line search on ‖r‖: the law is only piecewise smooth (a point leaves or rejoins its
-/// softening envelope), and full Newton steps can cycle between the pieces. When no step length down to
-/// 1/64 lowers ‖r‖ the shortest is taken; an attempt that has not converged after max_iterations is
-/// given up, and the caller halves the step.
-std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Parametrization& loading,
-                                       const StackedPlateState& committed, Eigen::VectorXd y, double delta,
-                                       const DisplacementPathSettings& settings, int& iterations) {
-  Eigen::SparseLU<SparseMatrix> lu;
-  Residual r = residual_at(model, loading, committed, y, delta);
-  for (int k = 0; k < settings.max_iterations; ++k) {
+/// A step of the path: Newton's method on the free DOFs at control displacement `delta`, from the guess
+/// y, full Newton with the LU of the reduced tangent (unsymmetric in mixed mode) and a backtracking line
+/// search on ‖r‖: the law is only piecewise smooth (a point leaves or rejoins its softening envelope), and
+/// full Newton steps can cycle between the pieces. When no step length down to 1/64 lowers ‖r‖ the
+/// shortest is taken.
+class PathStep final : public NewtonProblem {
+public:
+  PathStep(const StackedPlateModel& model, const Parametrization& loading, const StackedPlateState& committed,
+           Eigen::VectorXd y, double delta, double tolerance)
+      : model_(model), loading_(loading), committed_(committed), y_(std::move(y)), delta_(delta),
+        tolerance_(tolerance), r_(residual_at(model, loading, committed, y_, delta)) {}
+
+  /// The residual at y was evaluated where y was set (here or by the line search).
+  Trial trial(int /*corrections*/) override {
     const double scale =
-        std::max(std::abs(loading.conjugate_force(r.evaluation.force)), r.evaluation.force.norm());
-    if (r.free.norm() <= settings.tolerance * std::max(scale, 1e-300))
-      return StepSolution{std::move(y), std::move(r.u), std::move(r.evaluation), k};
-    lu.compute(loading.reduce(r.evaluation.tangent));
-    if (lu.info() != Eigen::Success) return std::nullopt;
-    const Eigen::VectorXd minus_r = -r.free;
-    const Eigen::VectorXd dy = lu.solve(minus_r);
-    if (!dy.allFinite()) return std::nullopt;
-    ++iterations;
+        std::max(std::abs(loading_.conjugate_force(r_.evaluation.force)), r_.evaluation.force.norm());
+    return r_.free.norm() <= tolerance_ * std::max(scale, 1e-300) ? Trial::converged : Trial::iterate;
+  }
+  void refactor() override {} // full Newton: correct() factors
+  double correct() override {
+    lu_.compute(loading_.reduce(r_.evaluation.tangent));
+    if (lu_.info() != Eigen::Success) return NAN;
+    const Eigen::VectorXd minus_r = -r_.free;
+    const Eigen::VectorXd dy = lu_.solve(minus_r);
+    if (!dy.allFinite()) return NAN;
     for (double alpha = 1.0;; alpha *= 0.5) {
-      const Eigen::VectorXd trial = y + alpha * dy;
-      Residual next = residual_at(model, loading, committed, trial, delta);
-      if (next.free.norm() < (1.0 - 1e-4 * alpha) * r.free.norm() || alpha < 1.0 / 64.0) {
-        y = trial;
-        r = std::move(next);
-        break;
+      const Eigen::VectorXd trial = y_ + alpha * dy;
+      Residual next = residual_at(model_, loading_, committed_, trial, delta_);
+      if (next.free.norm() < (1.0 - 1e-4 * alpha) * r_.free.norm() || alpha < 1.0 / 64.0) {
+        y_ = trial;
+        r_ = std::move(next);
+        return alpha * dy.norm();
       }
     }
   }
-  return std::nullopt;
+  [[nodiscard]] StepSolution solution(int corrections) && {
+    return StepSolution{std::move(y_), std::move(r_.u), std::move(r_.evaluation), corrections};
+  }
+
+private:
+  const StackedPlateModel& model_;
+  const Parametrization& loading_;
+  const StackedPlateState& committed_;
+  Eigen::VectorXd y_;
+  const double delta_, tolerance_;
+  Residual r_;
+  Eigen::SparseLU<SparseMatrix> lu_;
+};
+
+/// The step to `delta` from the guess `y`; empty where the attempt has not converged after
+/// settings.max_iterations corrections (the caller halves the step). `iterations` counts the corrections.
+std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Parametrization& loading,
+                                       const StackedPlateState& committed, Eigen::VectorXd y, double delta,
+                                       const DisplacementPathSettings& settings, int& iterations) {
+  PathStep step(model, loading, committed, std::move(y), delta, settings.tolerance);
+  const NewtonControl full_newton{settings.max_iterations, INFINITY, std::numeric_limits<int>::max()};
+  const NewtonOutcome o = solve_newton(step, full_newton);
+  iterations += o.corrections;
+  if (!o.converged) return std::nullopt;
+  return std::move(step).solution(o.corrections);
 }
 
 } // namespace

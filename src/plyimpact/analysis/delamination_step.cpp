@@ -30,6 +30,7 @@
 #include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/newton_solver.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/stacked_plate_step.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -40,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -67,6 +69,7 @@ public:
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
+  class StepProblem;
   /// x = K̄⁻¹ b with the iteration matrix in use, into x (sized once), without allocating where the factor
   /// is a Cholesky one.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
@@ -263,81 +266,122 @@ bool DelaminationStepper::update_factor(const Eigen::VectorXd& uk, CohesiveDamag
   return true;
 }
 
+/// One step's Newton problem on (u, Fc) (the module comment), with the damage evolving, lagged, or lagged
+/// in the two-point form.
+class DelaminationStepper::StepProblem final : public NewtonProblem {
+public:
+  StepProblem(DelaminationStepper& stepper, long step, double t, const PlateState& s,
+              const ContactStep& contact)
+      : p_(stepper), step_(step), t_(t), s_(s), contact_(contact),
+        lagged_(stepper.p_.settings_.integration == DamageIntegration::lagged),
+        mean_form_(lagged_ && stepper.p_.options_.newmark.beta == 0.25 &&
+                   stepper.p_.options_.newmark.gamma == 0.5),
+        damage_(!lagged_     ? CohesiveDamage::evolve
+                : mean_form_ ? CohesiveDamage::lagged_mean
+                             : CohesiveDamage::lagged) {
+    p_.iteration_.predict(s, stepper.p_.options_.newmark); // constant acceleration: a_{n+1} = aₙ
+    if (mean_form_) p_.step_start(s.u, contact);
+  }
+
+  // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close), and
+  // full corrections can cycle between its pieces; a correction that did not lower the residual by the
+  // fraction sufficient_decrease is halved, up to max_halvings times (the last is kept). (An exact
+  // two-cycle, equal residuals at both ends, was measured after separation.)
+  Trial trial(int corrections) override {
+    for (;;) {
+      const double dissipated = evaluate();
+      if (corrections == 0) return Trial::iterate;
+      const DelaminationSettings& ds = p_.p_.settings_;
+      if (p_.iteration_.converged(p_.loading_, cs_, p_.force_, p_.kbar_diagonal_, ds.residual_tolerance,
+                                  ds.displacement_tolerance)) {
+        // Lagged: the trial states' damage already follows the converged separation (for the next step).
+        p_.set_trial(p_.trial_, dissipated);
+        return Trial::converged;
+      }
+      const double residual = p_.iteration_.residual_norm();
+      if (residual > (1.0 - sufficient_decrease) * start_residual_ && p_.tangent_in_use_ &&
+          halvings_ < max_halvings) {
+        p_.iteration_.uk() = 0.5 * (p_.u_start_ + p_.iteration_.uk());
+        cs_.force = 0.5 * (cs_start_.force + cs_.force);
+        cs_.alpha = 0.5 * (cs_start_.alpha + cs_.alpha);
+        ++halvings_;
+        continue;
+      }
+      start_residual_ = residual;
+      return Trial::iterate;
+    }
+  }
+  void refactor() override {
+    if (!p_.update_factor(p_.iteration_.uk(), damage_))
+      p_.use_tangent(tangent_ ? *tangent_
+                              : p_.p_.stack_.evaluate(p_.iteration_.uk(), p_.committed(), damage_).tangent,
+                     p_.iteration_.uk(), damage_);
+    refresh_pending_ = false;
+  }
+  double correct() override {
+    halvings_ = 0;
+    p_.u_start_ = p_.iteration_.uk();
+    cs_start_ = cs_;
+    const double correction = p_.iteration_.correct(
+        [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { p_.solve(g, x); }, p_.loading_, contact_, cs_);
+    return std::isfinite(cs_.force) ? correction : NAN;
+  }
+  /// The refresh waits for the next trial, which assembles the tangent where the factor cannot be updated.
+  bool defer_refresh() override { return refresh_pending_ = true; }
+  [[nodiscard]] std::string why_not_converged(int max_iterations) const override {
+    return fmt::format("delamination: Newton iterations did not converge in step {} (t = {:.6g} s) after {} "
+                       "iterations; reduce time.dt",
+                       step_, t_, max_iterations);
+  }
+  [[nodiscard]] std::string why_failed() const override {
+    return fmt::format("delamination: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step_, t_);
+  }
+  [[nodiscard]] const ContactSolution& contact_solution() const { return cs_; }
+
+private:
+  /// The force (and where a refresh waits for it, the tangent) at the iterate; the energy dissipated
+  /// reaching the trial states.
+  double evaluate() {
+    const NewmarkCoefficients& nc = p_.p_.options_.newmark;
+    ContactIteration& it = p_.iteration_;
+    if (mean_form_)
+      it.inertia_of(p_.p_.M_, nc.c0 * (it.uk() - s_.u - nc.dt * s_.v));
+    else
+      it.newmark_inertia(s_, nc, p_.p_.M_);
+    const bool assemble_tangent = refresh_pending_ && !p_.may_update_factor();
+    tangent_.reset();
+    const double dissipated = p_.internal_force(it.uk(), damage_, assemble_tangent ? &tangent_ : nullptr);
+    if (mean_form_) p_.force_ += p_.start_;
+    it.set_internal_force(p_.force_);
+    return dissipated;
+  }
+
+  DelaminationStepper& p_;
+  const long step_;
+  const double t_;
+  const PlateState& s_;
+  const ContactStep& contact_;
+  const bool lagged_, mean_form_;
+  const CohesiveDamage damage_;
+  ContactSolution cs_, cs_start_; ///< cs_start_: where the last correction started, with u_start_
+  double start_residual_ = INFINITY;
+  int halvings_ = 0; ///< of the last correction
+  bool refresh_pending_ = false;
+  std::optional<SparseMatrix> tangent_;
+};
+
 ContactSolution DelaminationStepper::advance(long step, double t, const PlateState& s,
                                              const ContactStep& contact, Eigen::VectorXd& u_next) {
   const DelaminationSettings& ds = p_.settings_;
-  const NewmarkCoefficients& nc = p_.options_.newmark;
-  // Start from constant acceleration (a_{n+1} = aₙ).
-  ContactIteration& it = iteration_;
-  it.predict(s, nc);
-  ContactSolution cs, cs_start; // cs_start: where the last correction started, with u_start_
-  double previous_correction = INFINITY, start_residual = INFINITY;
-  bool refactor = false;
-  int iterations = 0, halvings = 0; // linear solves in this step; halvings of the last correction
-  const bool lagged = ds.integration == DamageIntegration::lagged;
-  const bool mean_form = lagged && nc.beta == 0.25 && nc.gamma == 0.5;
-  const CohesiveDamage damage = !lagged     ? CohesiveDamage::evolve
-                                : mean_form ? CohesiveDamage::lagged_mean
-                                            : CohesiveDamage::lagged;
-  if (mean_form) step_start(s.u, contact);
-  std::optional<SparseMatrix> tangent;
-  for (;;) {
-    if (mean_form)
-      it.inertia_of(p_.M_, nc.c0 * (it.uk() - s.u - nc.dt * s.v));
-    else
-      it.newmark_inertia(s, nc, p_.M_);
-    const bool assemble_tangent = refactor && !may_update_factor();
-    tangent.reset();
-    const double dissipated = internal_force(it.uk(), damage, assemble_tangent ? &tangent : nullptr);
-    if (mean_form) force_ += start_;
-    it.set_internal_force(force_);
-    if (iterations > 0) {
-      if (it.converged(loading_, cs, force_, kbar_diagonal_, ds.residual_tolerance,
-                       ds.displacement_tolerance)) {
-        // Lagged: the trial states' damage already follows the converged separation (for the next step).
-        set_trial(trial_, dissipated);
-        break;
-      }
-      // Backtracking: the law is only piecewise smooth (points start or stop softening, open or close),
-      // and full corrections can cycle between its pieces; a correction that did not lower the residual
-      // by the fraction sufficient_decrease is halved, up to max_halvings times (the last is kept). (An
-      // exact two-cycle, equal residuals at both ends, was measured after separation.)
-      const double residual = it.residual_norm();
-      if (residual > (1.0 - sufficient_decrease) * start_residual && tangent_in_use_ &&
-          halvings < max_halvings) {
-        it.uk() = 0.5 * (u_start_ + it.uk());
-        cs.force = 0.5 * (cs_start.force + cs.force);
-        cs.alpha = 0.5 * (cs_start.alpha + cs.alpha);
-        ++halvings;
-        continue;
-      }
-      start_residual = residual;
-    }
-    if (refactor && !update_factor(it.uk(), damage))
-      use_tangent(tangent ? *tangent : p_.stack_.evaluate(it.uk(), committed(), damage).tangent, it.uk(),
-                  damage);
-    refactor = false;
-    halvings = 0;
-    if (iterations == ds.max_iterations)
-      throw NewtonFailure(fmt::format("delamination: Newton iterations did not converge in step {} (t = "
-                                      "{:.6g} s) after {} iterations; reduce time.dt",
-                                      step, t, ds.max_iterations));
-    u_start_ = it.uk();
-    cs_start = cs;
-    const double correction = it.correct(
-        [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { solve(g, x); }, loading_, contact, cs);
-    ++iterations;
-    if (!std::isfinite(correction) || !std::isfinite(cs.force))
-      throw NewtonFailure(
-          fmt::format("delamination: non-finite state in step {} (t = {:.6g} s); reduce time.dt", step, t));
-    refactor = iterations > 1 &&
-               (correction > ds.refresh_ratio * previous_correction || iterations % ds.refresh_after == 0);
-    previous_correction = refactor ? INFINITY : correction;
-  }
-  stats_.iterations += iterations;
-  stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
-  u_next.swap(it.uk());
-  return cs;
+  StepProblem problem(*this, step, t, s, contact);
+  const NewtonOutcome o =
+      solve_newton(problem, NewtonControl{ds.max_iterations, ds.refresh_ratio,
+                                          std::numeric_limits<int>::max(), ds.refresh_after});
+  if (!o.converged) throw NewtonFailure(o.why);
+  stats_.iterations += o.corrections;
+  stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, o.corrections);
+  u_next.swap(iteration_.uk());
+  return problem.contact_solution();
 }
 
 // The trapezoidal rule over the step in its two-point form, (u − u_n)/Δt = (v_n + v)/2 and

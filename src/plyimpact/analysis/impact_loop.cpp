@@ -3,6 +3,7 @@
 #include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/time_step_control.hpp"
+#include "plyimpact/fem/mechanical_model.hpp"
 
 #include <fmt/format.h>
 
@@ -120,6 +121,18 @@ private:
   double last_force_ = 0.0;
 };
 
+/// The plies' damage of the stepper's model after the last accepted step; null without.
+const PlyDamageView* ply_damage_of(const PlateStepper& stepper) {
+  const ModelResults* r = stepper.results();
+  return r ? r->ply_damage() : nullptr;
+}
+
+/// Its interfaces; empty without.
+std::optional<DelaminationResult> delamination_of(const PlateStepper& stepper) {
+  const ModelResults* r = stepper.results();
+  return r ? r->delamination() : std::nullopt;
+}
+
 /// The plate's part of the step view: expanded displacements and energies, computed on demand.
 class PlateAccess final : public PlateStateAccess {
 public:
@@ -140,12 +153,15 @@ public:
     return *strain_;
   }
   [[nodiscard]] double dissipated_energy() const override { return stepper_.dissipated_energy(); }
-  [[nodiscard]] const PlyDamageView* damage() const override { return stepper_.damage(); }
+  [[nodiscard]] const PlyDamageView* damage() const override { return ply_damage_of(stepper_); }
   [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
-    return stepper_.delamination();
+    return delamination_of(stepper_);
   }
   [[nodiscard]] const DelaminationAreas* delamination_areas() const override {
-    if (areas_state_ == unknown) areas_state_ = stepper_.delamination_areas(areas_) ? known : none;
+    if (areas_state_ == unknown) {
+      const ModelResults* r = stepper_.results();
+      areas_state_ = r && r->delamination_areas(areas_) ? known : none;
+    }
     return areas_state_ == known ? &areas_ : nullptr;
   }
 
@@ -317,7 +333,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
 
     // 3. Episodes and peaks, observers, end of the event.
     event.record(t, step_nc->dt, force, alpha, ws);
-    if (const PlyDamageView* d = plate->damage()) record_damage_onsets(*d, t, force, damage_onsets);
+    if (const PlyDamageView* d = ply_damage_of(*plate)) record_damage_onsets(*d, t, force, damage_onsets);
     view.dt = step_nc->dt;
     update_view(step, t);
     for (ImpactObserver* o : observers)
@@ -339,8 +355,8 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
                                        r.time_steps->steps_above_tolerance, r.time_steps->smallest_allowed_dt,
                                        r.time_steps->largest_error_ratio));
   }
-  r.delamination = plate->delamination();
-  if (const PlyDamageView* d = plate->damage()) {
+  r.delamination = delamination_of(*plate);
+  if (const PlyDamageView* d = ply_damage_of(*plate)) {
     ProgressiveDamageResult pd = damage_onsets;
     pd.dissipated = d->dissipated();
     pd.ply_damage_area = d->ply_damage_area();

@@ -22,6 +22,8 @@
 // K̄ and one factorization typically serves the whole event.
 #include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/model_stepper.hpp"
+#include "plyimpact/analysis/newton_solver.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
@@ -38,31 +40,16 @@ namespace {
 
 class NewtonNewmarkPolicy;
 
-class NewtonNewmarkStepper final : public PlateStepper {
+class NewtonNewmarkStepper final : public ModelStepper {
 public:
   NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                           Eigen::VectorXd& u_next) override;
-  void accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) override {
-    state_->commit(u_next, f_int_);
-  }
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
-  [[nodiscard]] double strain_energy(const PlateState& s, double /*force*/) const override {
-    return state_->stored_energy(s.u);
-  }
-  [[nodiscard]] double dissipated_energy() const override { return state_->dissipated_energy(); }
-  [[nodiscard]] const PlyDamageView* damage() const override { return state_->ply_damage(); }
-  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
-    return loading_.sampler().dot(u);
-  }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override;
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
-    return state_->delamination();
-  }
-  bool delamination_areas(DelaminationAreas& out) const override { return state_->delamination_areas(out); }
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
+  class StepProblem;
   void refactor(const Eigen::VectorXd& at);
   /// The refreshes due before step `step` from uₙ = `u`.
   void refresh_before(long step, const Eigen::VectorXd& u);
@@ -72,12 +59,9 @@ private:
   void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
 
   const NewtonNewmarkPolicy& p_;
-  ContactLoading loading_; ///< s_load, K̄⁻¹ s_load and c = swᵀ K̄⁻¹ s_load with the current factor
-  std::unique_ptr<ModelState> state_;
   SpdSolver factor_;
   SpdSolver::Workspace workspace_;
-  Eigen::VectorXd kbar_diagonal_;
-  Eigen::VectorXd f_int_; ///< f_int of the last trial (with the two-point form: f'(u) + f(u_n) − Fc_n s_n)
+  Eigen::VectorXd kbar_diagonal_;         // f_int_ holds with the two-point form f'(u) + f(u_n) − Fc_n s_n
   Eigen::VectorXd start_, previous_load_; ///< the two-point form's start terms
   long last_refresh_ = 0;
   bool needed_more_than_one_solve_ = false;
@@ -90,7 +74,9 @@ class NewtonNewmarkPolicy final : public StepPolicy {
 public:
   NewtonNewmarkPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                       NewtonSettings settings)
-      : model_(std::move(model)), options_(options), settings_(std::move(settings)),
+      : model_(std::move(model)), options_(options),
+        settings_(std::move(settings)), control_{settings_.max_iterations, settings_.refresh_ratio,
+                                                 settings_.refresh_after},
         M_(model_->mass(), 1e-14) {}
 
   [[nodiscard]] int equations() const override { return model_->size(); }
@@ -103,16 +89,16 @@ public:
   std::unique_ptr<const MechanicalModel> model_;
   StepPolicyOptions options_;
   NewtonSettings settings_;
+  NewtonControl control_; ///< of settings_
   /// The lumped mass is diagonal when I1 = 0; a symmetric layup gives I1 at round-off level (~1e-20),
   /// whose u–θ entries are dropped rather than turning every M·x into a sparse product.
   MassOperator M_;
 };
 
 NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor)
-    : p_(policy), loading_(policy.model_->contact_plate(), policy.model_->contact_equations(), impactor,
-                           policy.options_.load, policy.model_->size()),
-      state_(policy.model_->virgin_state()), factor_(policy.options_.solver, policy.options_.ordering),
-      f_int_(Eigen::VectorXd::Zero(policy.equations())), start_(Eigen::VectorXd::Zero(policy.equations())),
+    : ModelStepper(*policy.model_, policy.options_, impactor), p_(policy),
+      factor_(policy.options_.solver, policy.options_.ordering),
+      start_(Eigen::VectorXd::Zero(policy.equations())),
       previous_load_(Eigen::VectorXd::Zero(policy.equations())), iteration_(policy.equations()),
       scratch_(policy.equations()) {
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
@@ -165,72 +151,70 @@ void NewtonNewmarkStepper::fail(const char* what, long step, double t) const {
       fmt::format("{}: {} in step {} (t = {:.6g} s); {}", ns.physics, what, step, t, ns.advice));
 }
 
+/// One step's Newton problem on (u, Fc) (the module comment): the iterate u_k of the contact iteration,
+/// the model's trial at it, the correction with the stepper's factor and the contact solved inside it.
+class NewtonNewmarkStepper::StepProblem final : public NewtonProblem {
+public:
+  StepProblem(NewtonNewmarkStepper& stepper, const PlateState& s, const ContactStep& contact)
+      : p_(stepper), s_(s), contact_(contact),
+        two_point_(stepper.state_->two_point_form() && stepper.p_.options_.newmark.beta == 0.25 &&
+                   stepper.p_.options_.newmark.gamma == 0.5) {
+    p_.iteration_.predict(s, stepper.p_.options_.newmark); // constant acceleration: a_{n+1} = aₙ
+    if (two_point_) p_.step_start(s.u, contact);
+  }
+  Trial trial(int corrections) override {
+    const NewmarkCoefficients& nc = p_.p_.options_.newmark;
+    ContactIteration& it = p_.iteration_;
+    if (two_point_) {
+      it.inertia_of(p_.p_.M_, nc.c0 * (it.uk() - s_.u - nc.dt * s_.v));
+      p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
+      p_.f_int_ += p_.start_;
+    } else {
+      it.newmark_inertia(s_, nc, p_.p_.M_);
+      p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
+    }
+    it.set_internal_force(p_.f_int_);
+    const NewtonSettings& ns = p_.p_.settings_;
+    return corrections > 0 && it.converged(p_.loading_, cs_, p_.f_int_, p_.kbar_diagonal_,
+                                           ns.residual_tolerance, ns.displacement_tolerance)
+               ? Trial::converged
+               : Trial::iterate;
+  }
+  bool admit() override { return p_.state_->admit(p_.iteration_.uk()); }
+  void refactor() override { p_.refactor(p_.iteration_.uk()); }
+  double correct() override {
+    const double correction = p_.iteration_.correct(
+        [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { p_.factor_.solve(g, x, p_.workspace_); },
+        p_.loading_, contact_, cs_);
+    return std::isfinite(cs_.force) ? correction : NAN;
+  }
+  bool take_branch_changed() override { return p_.state_->take_branch_changed(); }
+  bool defer_refresh() override { return p_.state_->matrix_of_last_trial(); }
+  [[nodiscard]] const ContactSolution& contact_solution() const { return cs_; }
+
+private:
+  NewtonNewmarkStepper& p_;
+  const PlateState& s_;
+  const ContactStep& contact_;
+  const bool two_point_;
+  ContactSolution cs_;
+};
+
 ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateState& s,
                                               const ContactStep& contact, Eigen::VectorXd& u_next) {
-  const NewtonSettings& ns = p_.settings_;
-  const NewmarkCoefficients& nc = p_.options_.newmark;
   refresh_before(step, s.u);
-  // Newton iterations on (u, Fc); start from constant acceleration (a_{n+1} = aₙ).
-  ContactIteration& it = iteration_;
-  it.predict(s, nc);
-  const bool two_point = state_->two_point_form() && nc.beta == 0.25 && nc.gamma == 0.5;
-  if (two_point) step_start(s.u, contact);
-  ContactSolution cs;
-  double previous_correction = INFINITY;
-  bool refresh_at_next_trial = false;
-  int iterations = 0; // linear solves in this step
-  for (;;) {
-    if (two_point) {
-      it.inertia_of(p_.M_, nc.c0 * (it.uk() - s.u - nc.dt * s.v));
-      state_->internal_force(it.uk(), nc.dt, f_int_);
-      f_int_ += start_;
-    } else {
-      it.newmark_inertia(s, nc, p_.M_);
-      state_->internal_force(it.uk(), nc.dt, f_int_);
-    }
-    it.set_internal_force(f_int_);
-    if (iterations > 0 && it.converged(loading_, cs, f_int_, kbar_diagonal_, ns.residual_tolerance,
-                                       ns.displacement_tolerance)) {
-      if (state_->admit(it.uk())) break;
-      continue; // a part joined the model at u_k: the step iterates on with it
-    }
-    if (state_->take_branch_changed() || refresh_at_next_trial) {
-      refactor(it.uk());
-      previous_correction = INFINITY;
-    }
-    refresh_at_next_trial = false;
-    if (iterations == ns.max_iterations)
-      fail(fmt::format("the Newton iterations did not converge after {} solves", ns.max_iterations).c_str(),
-           step, t);
-    const double correction =
-        it.correct([this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { factor_.solve(g, x, workspace_); },
-                   loading_, contact, cs);
-    ++iterations;
-    if (!std::isfinite(correction) || !std::isfinite(cs.force)) fail("non-finite state", step, t);
-    const bool slow = correction > ns.refresh_ratio * previous_correction || iterations > ns.refresh_after;
-    previous_correction = correction;
-    if (slow && iterations > 1) {
-      if (state_->matrix_of_last_trial()) {
-        refresh_at_next_trial = true; // once the next iterate's trial has given its matrix
-      } else {
-        refactor(it.uk()); // modified Newton: a new matrix where the iterations slowed down
-        previous_correction = INFINITY;
-      }
-    }
-  }
-  needed_more_than_one_solve_ = iterations > 1;
-  stats_.iterations += iterations;
-  stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, iterations);
-  u_next.swap(it.uk());
-  return cs;
+  StepProblem problem(*this, s, contact);
+  const NewtonOutcome o = solve_newton(problem, p_.control_);
+  if (!o.converged) fail(o.why.c_str(), step, t);
+  needed_more_than_one_solve_ = o.corrections > 1;
+  stats_.iterations += o.corrections;
+  stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, o.corrections);
+  u_next.swap(iteration_.uk());
+  return problem.contact_solution();
 }
 
 double NewtonNewmarkStepper::kinetic_energy(const PlateState& s) const {
   return p_.M_.kinetic_energy(s.v, scratch_);
-}
-
-void NewtonNewmarkStepper::to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-  p_.model_->to_model(u, out);
 }
 
 /// The damage settings' iterations, with the periodic refresh of the large-deflection settings where the

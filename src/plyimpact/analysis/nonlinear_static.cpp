@@ -1,58 +1,74 @@
 #include "plyimpact/analysis/nonlinear_static.hpp"
 
-#include "plyimpact/fem/nonlinear_plate_model.hpp"
+#include "plyimpact/analysis/newton_solver.hpp"
+#include "plyimpact/fem/mechanical_model.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
 
 namespace plyimpact {
 
 namespace {
 
-struct NewtonOutcome {
-  bool converged = false;
-  int iterations = 0;
-  std::string why; ///< when not converged
-};
+/// A load step of the von Kármán plate, f_int(u) = λ f from the iterate u (updated in place), by full
+/// Newton: the tangent K_T(u) factored before every correction (its analysis reused).
+class LoadStep final : public NewtonProblem {
+public:
+  LoadStep(ModelState& plate, SpdSolver& solver, const Eigen::VectorXd& f_ext, double lambda,
+           Eigen::VectorXd& u, const NonlinearSettings& s)
+      : plate_(plate), solver_(solver), f_ext_(f_ext), lambda_(lambda), u_(u), s_(s),
+        f_norm_(lambda * f_ext.norm()), f_int_(u.size()) {}
 
-/// Full Newton from u (updated in place) towards f_int(u) = λ f.
-NewtonOutcome newton(const NonlinearPlateModel& plate, const Eigen::VectorXd& f_ext, double lambda,
-                     Eigen::VectorXd& u, const NonlinearSettings& s) {
-  NewtonOutcome out;
-  const double f_norm = lambda * f_ext.norm();
-  double du_norm = INFINITY;
-  for (int it = 0; it <= s.max_iterations; ++it) {
-    const Eigen::VectorXd r = lambda * f_ext - plate.internal_force(u);
-    const double r_norm = r.norm();
-    if (!std::isfinite(r_norm)) {
-      out.why = "the residual is not finite";
-      return out;
+  Trial trial(int corrections) override {
+    plate_.internal_force(u_, 0.0, f_int_);
+    r_ = lambda_ * f_ext_ - f_int_;
+    r_norm_ = r_.norm();
+    if (!std::isfinite(r_norm_)) {
+      why_ = "the residual is not finite";
+      return Trial::failed;
     }
-    if (r_norm <= s.residual_tolerance * f_norm && du_norm <= s.displacement_tolerance * u.norm()) {
-      out.converged = true;
-      return out;
-    }
-    if (it == s.max_iterations) {
-      out.why = fmt::format("no convergence in {} iterations (residual {:.3g} of the load)", s.max_iterations,
-                            r_norm / f_norm);
-      return out;
-    }
-    SpdSolver solver;
-    try {
-      solver.factorize(plate.tangent_stiffness(u));
-    } catch (const NotPositiveDefinite&) {
-      out.why = "the tangent stiffness is not positive definite (limit point or bifurcation)";
-      return out;
-    }
-    const Eigen::VectorXd du = solver.solve(r);
-    du_norm = du.norm();
-    u += du;
-    ++out.iterations;
+    return corrections > 0 && r_norm_ <= s_.residual_tolerance * f_norm_ &&
+                   du_norm_ <= s_.displacement_tolerance * u_.norm()
+               ? Trial::converged
+               : Trial::iterate;
   }
-  return out;
-}
+  void refactor() override {} // full Newton: correct() factors
+  double correct() override {
+    try {
+      solver_.factorize(plate_.iteration_matrix(u_)); // K_T(u)
+    } catch (const NotPositiveDefinite&) {
+      why_ = "the tangent stiffness is not positive definite (limit point or bifurcation)";
+      return NAN;
+    }
+    const Eigen::VectorXd du = solver_.solve(r_);
+    du_norm_ = du.norm();
+    if (!std::isfinite(du_norm_)) why_ = "the correction is not finite";
+    u_ += du;
+    return du_norm_;
+  }
+  [[nodiscard]] std::string why_not_converged(int max_iterations) const override {
+    return fmt::format("no convergence in {} iterations (residual {:.3g} of the load)", max_iterations,
+                       r_norm_ / f_norm_);
+  }
+  [[nodiscard]] std::string why_failed() const override { return why_; }
+
+private:
+  ModelState& plate_;
+  SpdSolver& solver_;
+  const Eigen::VectorXd& f_ext_;
+  const double lambda_;
+  Eigen::VectorXd& u_;
+  const NonlinearSettings& s_;
+  const double f_norm_;
+  Eigen::VectorXd f_int_, r_;
+  double r_norm_ = INFINITY, du_norm_ = INFINITY;
+  std::string why_;
+};
 
 /// The load factors to converge at: the given list, or `load_steps` equal increments.
 std::vector<double> load_milestones(const NonlinearSettings& s) {
@@ -80,7 +96,10 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
   require_bilateral(model.boundary(), "the non-linear static analysis");
   const std::vector<double> milestones = load_milestones(s);
   (void)factor_stiffness(model, model.stiffness()); // restraint check with advice (InsufficientRestraint)
-  const NonlinearPlateModel plate(model, s.measure);
+  const std::unique_ptr<MechanicalModel> plate = von_karman_plate_model(model, s.measure);
+  const std::unique_ptr<ModelState> state = plate->virgin_state(); // elastic: no state to commit
+  SpdSolver solver;
+  const NewtonControl full_newton{s.max_iterations, INFINITY, std::numeric_limits<int>::max()};
   const Eigen::VectorXd f = static_load_vector(model, load);
   const Eigen::Vector2d middle = model.mesh().bounds().centre();
   const PointSampler centre = model.sampler(middle.x(), middle.y());
@@ -102,8 +121,9 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
       const double target =
           (lambda + increment >= milestone * (1.0 - 1e-12)) ? milestone : lambda + increment;
       Eigen::VectorXd trial = u;
-      const NewtonOutcome o = newton(plate, f, target, trial, s);
-      r.newton_iterations += o.iterations;
+      LoadStep load_step(*state, solver, f, target, trial, s);
+      const NewtonOutcome o = solve_newton(load_step, full_newton);
+      r.newton_iterations += o.corrections;
       if (!o.converged) {
         if (++cuts_in_a_row > s.max_step_cuts)
           throw NewtonFailure(fmt::format(
@@ -114,7 +134,7 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
         ++r.step_cuts;
         continue;
       }
-      r.max_iterations_per_step = std::max(r.max_iterations_per_step, o.iterations);
+      r.max_iterations_per_step = std::max(r.max_iterations_per_step, o.corrections);
       u = std::move(trial);
       lambda = target;
       r.load_deflection.push_back({lambda, centre.value(u)});

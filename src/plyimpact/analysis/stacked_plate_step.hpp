@@ -53,7 +53,7 @@ public:
 
 /// One run's interfaces: their committed states (a trial is committed with each accepted step), the
 /// energy they dissipated, their areas and the whole result.
-class InterfaceStates {
+class InterfaceStates final : public ModelResults {
 public:
   explicit InterfaceStates(const StackedImpactPlate& plate);
 
@@ -69,6 +69,12 @@ public:
   /// Their areas and dissipation into `out` (its vectors reused from step to step).
   void areas(DelaminationAreas& out) const;
   [[nodiscard]] DelaminationResult result() const;
+
+  bool delamination_areas(DelaminationAreas& out) const override {
+    areas(out);
+    return true;
+  }
+  [[nodiscard]] std::optional<DelaminationResult> delamination() const override { return result(); }
 
 private:
   const StackedImpactPlate& plate_;
@@ -108,13 +114,7 @@ public:
   }
   /// The top sub-laminate's displacements in the model's numbering.
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { base_.top_to_model(u, out); }
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
-    return interfaces_.result();
-  }
-  bool delamination_areas(DelaminationAreas& out) const override {
-    interfaces_.areas(out);
-    return true;
-  }
+  [[nodiscard]] const ModelResults* results() const override { return &interfaces_; }
 
 protected:
   void set_trial(StackedPlateState& trial, double dissipated) { interfaces_.set_trial(trial, dissipated); }

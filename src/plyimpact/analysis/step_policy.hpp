@@ -41,6 +41,7 @@
 namespace plyimpact {
 
 class MechanicalModel;
+class ModelResults;
 
 /// Displacement, velocity and acceleration of the plate at the start of a step (policy numbering).
 struct PlateState {
@@ -70,10 +71,11 @@ public:
   [[nodiscard]] virtual double kinetic_energy(const PlateState& s) const = 0;
   /// The plate's elastic energy in state s with contact force F.
   [[nodiscard]] virtual double strain_energy(const PlateState& s, double force) const = 0;
-  /// Energy dissipated inside the plate (ply damage) up to the last accepted step [J].
+  /// Energy dissipated inside the plate (ply damage, interfaces) up to the last accepted step [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
-  /// The plies' damage after the last accepted step (progressive damage only).
-  [[nodiscard]] virtual const PlyDamageView* damage() const { return nullptr; }
+  /// What observers read of the model after the last accepted step (the plies' damage, the interfaces),
+  /// asked for by type; null for a plate that has none of it.
+  [[nodiscard]] virtual const ModelResults* results() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
   /// True when the plate state is the contact point's alone, (ws, ẇs, ẅs) (contact_point_response.hpp):
@@ -87,11 +89,6 @@ public:
     throw std::logic_error("this step policy has a fixed time step");
   }
   [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
-  /// The interfaces after the last accepted step (stacked plate only).
-  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
-  /// Their areas and dissipation into `out` (its vectors reused from step to step); false when the plate
-  /// has no interfaces.
-  virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
 };
 
 class StepPolicy {
@@ -244,7 +241,7 @@ delamination_step_policy(const PlateModel& model, const StepPolicyOptions& optio
 /// central_difference; central differences on the stacked model of stacked_model.cpp). Throws
 /// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
 /// message gives. With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the
-/// stepper's damage() is the plies' damage of the whole laminate.
+/// stepper's results() hold the plies' damage of the whole laminate.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                   const DelaminationSettings& settings,

@@ -27,14 +27,27 @@
 
 namespace plyimpact {
 
-/// One run's state of a model's integration points.
-class ModelState {
+/// What observers read of a model's committed state, asked for by type: empty where the model has no
+/// such part. A run's ModelState is one; so are the interfaces of the stacked plate's own Newton step.
+class ModelResults {
 public:
-  virtual ~ModelState() = default;
-  ModelState() = default;
-  ModelState(const ModelState&) = delete;
-  ModelState& operator=(const ModelState&) = delete;
+  virtual ~ModelResults() = default;
+  ModelResults() = default;
+  ModelResults(const ModelResults&) = delete;
+  ModelResults& operator=(const ModelResults&) = delete;
 
+  /// The plies' damage, for a model whose plies crack.
+  [[nodiscard]] virtual const PlyDamageView* ply_damage() const { return nullptr; }
+  /// The interfaces' areas and dissipation into `out` (its vectors reused from step to step); false
+  /// without interfaces.
+  virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
+  /// The interfaces, whole.
+  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
+};
+
+/// One run's state of a model's integration points.
+class ModelState : public ModelResults {
+public:
   /// f_int(u) of a trial state: the laws advanced from the committed state to u over a step of dt (the
   /// viscous regularisation's time), into `f` (sized by the caller; no allocation). Does not commit.
   virtual void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) = 0;
@@ -72,15 +85,6 @@ public:
   /// With two_point_form(): the force at the step's start u_n with the laws held at the committed state,
   /// into `f` (sized by the caller).
   virtual void start_force(const Eigen::VectorXd& /*u_n*/, Eigen::VectorXd& /*f*/) {}
-
-  // Results observers ask for by type: empty where the model has no such part.
-  /// The plies' damage of the committed state, for a model whose plies crack.
-  [[nodiscard]] virtual const PlyDamageView* ply_damage() const { return nullptr; }
-  /// The interfaces' areas and dissipation into `out` (its vectors reused from step to step); false
-  /// without interfaces.
-  virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
-  /// The interfaces of the committed state, whole.
-  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
 };
 
 /// A plate model as an integrator sees it (built once per case, shared by the runs).
