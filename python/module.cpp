@@ -66,14 +66,12 @@ struct ImpactRunOutput {
 ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem::path>& output_dir,
                            bool overwrite, bool nonlinear, bool keep_history) {
   plyimpact::require_sections(deck, plyimpact::AnalysisKind::impact);
-  plyimpact::check_memory_before_assembly(deck);
-  const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
-  plyimpact::check_memory_before_assembly(description);
+  // The case first: it refuses a mesh beyond the memory available before a folder is claimed.
+  const plyimpact::ImpactCase impact(plyimpact::impact_case_description(deck, nonlinear));
   std::optional<plyimpact::OutputLock> lock;
   if (output_dir)
     lock.emplace(plyimpact::claim_output_folder(*output_dir, "python: plyimpact.impact",
                                                 plyimpact::ClaimOptions{overwrite, {}}));
-  const plyimpact::ImpactCase impact(description);
   plyimpact::HistoryRecorder history(deck.history_every);
   plyimpact::ImpactRunOptions options;
   if (lock) options.output_dir = lock->dir();
@@ -92,9 +90,7 @@ ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem
 std::string run_threshold(const Deck& deck, const std::string& criterion_name, double tolerance,
                           bool nonlinear) {
   plyimpact::require_sections(deck, plyimpact::AnalysisKind::threshold);
-  plyimpact::check_memory_before_assembly(deck);
   const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
-  plyimpact::check_memory_before_assembly(description);
   const plyimpact::ThresholdCriterion criterion =
       plyimpact::threshold_criterion(deck, criterion_name, "criterion");
   const plyimpact::ThresholdOptions options = plyimpact::threshold_options(deck, tolerance);
@@ -178,10 +174,7 @@ class ImpactStudy {
 public:
   ImpactStudy(const Deck& deck, bool nonlinear) {
     plyimpact::require_sections(deck, plyimpact::AnalysisKind::impact);
-    plyimpact::check_memory_before_assembly(deck);
-    const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
-    plyimpact::check_memory_before_assembly(description);
-    case_ = std::make_unique<plyimpact::ImpactCase>(description);
+    case_ = std::make_unique<plyimpact::ImpactCase>(plyimpact::impact_case_description(deck, nonlinear));
   }
 
   /// summary.json's text of `deck` run on this plate, with "plate_response" added.

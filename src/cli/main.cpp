@@ -99,7 +99,9 @@ Deck read_deck_for(const Options& o, AnalysisKind kind) {
     throw DeckError(fmt::format("{}: error: {} implausible value{} refused by --strict (fix the deck, or run "
                                 "without --strict to see the results anyway)",
                                 deck.source, deck.warnings.size(), deck.warnings.size() == 1 ? "" : "s"));
-  if (kind != AnalysisKind::laminate) check_memory_before_assembly(deck);
+  // The plate analyses' mesh; an impact's is checked where the deck becomes its case.
+  if (kind == AnalysisKind::static_ || kind == AnalysisKind::modal || kind == AnalysisKind::buckling)
+    check_memory_before_assembly(deck);
   return deck;
 }
 
@@ -159,10 +161,9 @@ int run_impact(const Options& o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o, AnalysisKind::impact);
-  const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
-  check_memory_before_assembly(description); // a graded mesh: its node count
+  // The case first: it refuses a mesh beyond the memory available before a folder is claimed.
+  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
   const OutputLock lock = claim_folder(o, deck);
-  const ImpactCase impact(description);
   ImpactRunOptions options;
   options.output_dir = lock.dir();
   options.cancel = &interrupted;
@@ -211,13 +212,12 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
 
 int run_threshold(const Options& o) {
   const Deck deck = read_deck_for(o, AnalysisKind::threshold);
-  const ImpactCaseDescription description = impact_case_description(deck, o.nonlinear);
-  check_memory_before_assembly(description); // a graded mesh: its node count
-  const OutputLock lock = claim_folder(o, deck);
   const ThresholdCriterion criterion = threshold_criterion(deck, o.criterion);
   ThresholdOptions options = threshold_options(deck, o.tolerance);
   const auto t0 = std::chrono::steady_clock::now();
-  const ImpactCase impact(description);
+  // The case first: it refuses a mesh beyond the memory available before a folder is claimed.
+  const ImpactCase impact(impact_case_description(deck, o.nonlinear));
+  const OutputLock lock = claim_folder(o, deck);
   Progress progress("threshold", 1.0, progress_style(o.progress, stderr), o.progress.line_interval_s);
   options.on_trial = [&](const std::vector<ThresholdTrial>& trials) {
     const ThresholdTrial& t = trials.back();

@@ -1,11 +1,13 @@
-// The memory estimate made before assembly (io/memory_estimate.hpp): the formula's numbers for one mesh,
-// and that it errs on the large side of the exact symbolic analysis of the assembled K̄ on structured
-// meshes of several sizes and aspect ratios.
+// The memory estimate made before assembly (analysis/mesh_memory.hpp): the formula's numbers for one mesh,
+// that it errs on the large side of the exact symbolic analysis of the assembled K̄ on structured meshes of
+// several sizes and aspect ratios, that the graded mesh it sizes is the one the case builds, and that the
+// case refuses a graded mesh beyond the memory available before building anything.
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/mesh_memory.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/memory_estimate.hpp"
 #include "support/cli.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,6 +67,33 @@ x = 0.05
   EXPECT_EQ(nx * ny, mesh.element_count());
   EXPECT_EQ((2 * nx + 1) * (2 * ny + 1), mesh.node_count());
   EXPECT_GT(nx, 6);
+}
+
+TEST(MemoryEstimate, TheImpactCaseRefusesAGradedMeshBeyondTheMemoryBeforeBuildingIt) {
+  std::string text = test::small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+)");
+  // 1 µm elements at the impact point growing by 1 %: thousands of element lines each way, hundreds of
+  // gigabytes; building the mesh alone would take minutes and tens of gigabytes.
+  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-6\ngrowth = 1.01");
+  ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  d.memory_limit_bytes = 16e9;
+  const auto [nx, ny] = graded_mesh_size(d);
+  EXPECT_GT(estimate_mesh_memory(nx, ny).bytes, 16e9);
+  try {
+    const ImpactCase impact(d);
+    ADD_FAILURE() << "a graded mesh of " << nx << " x " << ny << " elements was built";
+  } catch (const InsufficientMemory& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  fmt::format("a mesh graded toward the impact point of {} x {} elements", nx, ny)),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("give a larger mesh.size_at_impact"), std::string::npos);
+  }
 }
 
 } // namespace

@@ -400,16 +400,19 @@ void DelaminationStepper::step_start(const Eigen::VectorXd& u_n, const ContactSt
   }
 }
 
-/// The stack whose plies crack under the lagged step: Newton–Newmark on the stacked model
-/// (stacked_model.cpp), with the delamination settings' iterations.
-NewtonSettings lagged_stack_newton_settings(const DelaminationSettings& ds) {
+/// The stack whose plies crack, or whose sub-laminates deflect largely, under the lagged step: Newton–
+/// Newmark on the stacked model (stacked_model.cpp), with the delamination settings' iterations; with
+/// large deflections also the periodic refresh of the non-linear settings (the tangents move with u).
+NewtonSettings lagged_stack_newton_settings(const DelaminationSettings& ds,
+                                            const std::optional<NonlinearImpactSettings>& large_deflection) {
   NewtonSettings ns;
   ns.max_iterations = ds.max_iterations;
   ns.residual_tolerance = ds.residual_tolerance;
   ns.displacement_tolerance = ds.displacement_tolerance;
   ns.refresh_ratio = ds.refresh_ratio;
   ns.refresh_after = ds.refresh_after;
-  ns.physics = "ply damage and delamination";
+  if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
+  ns.physics = large_deflection ? "non-linear delamination" : "ply damage and delamination";
   ns.advice = "reduce time.dt";
   return ns;
 }
@@ -440,18 +443,28 @@ double largest_delamination_time_step(const Laminate& laminate, const StackSetti
 std::unique_ptr<StepPolicy>
 delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                          const DelaminationSettings& settings,
-                         const std::optional<ProgressiveDamageSettings>& ply_damage) {
-  const ModelKind kind{false, false, ply_damage.has_value(), true};
+                         const std::optional<ProgressiveDamageSettings>& ply_damage,
+                         const std::optional<NonlinearImpactSettings>& large_deflection) {
+  const ModelKind kind{false, large_deflection.has_value(), ply_damage.has_value(), true};
   const Integrator integrator =
       resolve_integrator(kind, TimeIntegration::newmark,
                          ply_damage ? std::optional(integrator_of(ply_damage->integration)) : std::nullopt,
                          integrator_of(settings.integration));
   if (auto why = refusal(kind, integrator)) throw std::invalid_argument(*why); // capabilities.hpp
+  std::optional<StrainMeasure> measure;
+  if (large_deflection) {
+    if (ply_damage && large_deflection->measure != StrainMeasure::von_karman)
+      throw std::invalid_argument(
+          "progressive damage takes the von Kármán strains of a non-linear plate: set strain_measure = "
+          "\"von-karman\" (the Green–Lagrange measure is not built for the layered section whose plies "
+          "crack)");
+    measure = large_deflection->measure;
+  }
   if (settings.integration == DamageIntegration::central_difference)
-    return explicit_delamination_step_policy(model, options, settings, ply_damage);
-  if (ply_damage)
-    return newton_newmark_step_policy(stacked_plate_model(model, settings, ply_damage), options,
-                                      lagged_stack_newton_settings(settings));
+    return explicit_delamination_step_policy(model, options, settings, ply_damage, measure);
+  if (ply_damage || large_deflection)
+    return newton_newmark_step_policy(stacked_plate_model(model, settings, ply_damage, measure), options,
+                                      lagged_stack_newton_settings(settings, large_deflection));
   return std::make_unique<DelaminationStepPolicy>(model, options, settings);
 }
 

@@ -1,6 +1,8 @@
 #include "plyimpact/analysis/impact_case.hpp"
+
 #include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/central_difference.hpp"
+#include "plyimpact/analysis/mesh_memory.hpp"
 
 #include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/analysis/guards.hpp"
@@ -34,6 +36,13 @@ std::unique_ptr<MechanicalModel> explicit_plate_model(const ImpactCaseDescriptio
                                                       const PlateModel& model) {
   if (d.nonlinear) return von_karman_plate_model(model, d.nonlinear->measure);
   return elastic_plate_model(model);
+}
+
+/// The description, once its mesh is known to fit in the memory available (mesh_memory.hpp): nothing is
+/// built before, whichever front end asks.
+ImpactCaseDescription within_memory(ImpactCaseDescription d) {
+  check_memory_before_assembly(d);
+  return d;
 }
 
 /// `d` where its plate model runs with its integrator (the one table of what runs, capabilities.hpp);
@@ -158,7 +167,7 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 }
 
 ImpactCase::ImpactCase(ImpactCaseDescription description)
-    : description_(supported(std::move(description))),
+    : description_(within_memory(supported(std::move(description)))),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))),
       explicit_omega_max_(explicit_highest_frequency(description_, *model_)) {
   settings_ = resolved_settings(description_, explicit_omega_max_);
@@ -179,8 +188,8 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.memory_limit_bytes = description_.memory_limit_bytes;
   options.explicit_omega_max = explicit_omega_max_;
   if (settings_.delamination)
-    policy_ =
-        delamination_step_policy(*model_, options, *settings_.delamination, settings_.progressive_damage);
+    policy_ = delamination_step_policy(*model_, options, *settings_.delamination,
+                                       settings_.progressive_damage, settings_.nonlinear);
   else if (settings_.progressive_damage)
     policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage, settings_.nonlinear);
   else if (settings_.integration == Integrator::central_difference)

@@ -25,9 +25,18 @@
 // damage, DL6), its start force f(u_n) completes the trapezoidal two-point form (DL7), its iteration
 // matrix is K_plates + the interfaces' held tangent + the damaged sections' secant difference, and the
 // laws move once per step, at the commit (docs/delamination.md, "The lagged step").
+//
+// With large deflections (nonlinear = true) each sub-laminate is a von Kármán plate on its own mid-plane
+// (NonlinearPlateModel; with ply damage DamagedPlateModel with Kinematics::von_karman): K_plates u becomes
+// Σ_k f_k(u_k), the iteration matrix gains each sub-laminate's K_T(u_k) − K_k, and the plates' stored
+// energy is the work of their internal forces, trapezoidal from commit to commit. Tied faces move as one
+// laminate's: with u_k = u₀ − z_k w' the membrane strain u_k' + ½ w'² − (z − z_k) w'' of sub-laminate k is
+// the whole laminate's u₀' + ½ w'² − z w'' at every height z, so a stack whose interfaces hold is the
+// von Kármán laminate (tests/analysis/test_stacked_von_karman.cpp).
 #include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/stacked_plate_step.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/nonlinear_plate_model.hpp"
 #include "plyimpact/fem/stacked_damage.hpp"
 
 #include <fmt/format.h>
@@ -106,13 +115,21 @@ private:
   void frozen_plate_forces(const Eigen::VectorXd& u);
   /// The lagged step's commit: each sub-laminate's law once, at u (damaged_plate_forces).
   void plate_laws_at(const Eigen::VectorXd& u) { damaged_plate_forces(u, dt_); }
+  /// Σ_k f_k(u_k) of the elastic von Kármán sub-laminates at u into Ku_.
+  void von_karman_plate_forces(const Eigen::VectorXd& u);
+  /// K_plates u, or the von Kármán sub-laminates' forces, or the damaged ones' (held where lagged), into Ku_.
+  void plate_forces(const Eigen::VectorXd& u, double dt);
+  /// The damaged (or von Kármán) sub-laminates' iteration matrices less their elastic K_k, each on its
+  /// diagonal block.
+  [[nodiscard]] SparseMatrix sublaminate_corrections(const Eigen::VectorXd& u) const;
   [[nodiscard]] bool lagged() const;
 
   const StackedModel& m_;
   InterfaceStates interfaces_;
-  Eigen::VectorXd Ku_;             ///< K_plates u (with ply damage: Σ_k f_k) of the last trial
-  double plate_energy_ = 0.0;      ///< ½ uᵀ K_plates u of the committed state
-  StackedPlateState trial_buffer_; ///< storage the interfaces' trial states are written into
+  Eigen::VectorXd Ku_; ///< K_plates u (with ply damage or large deflections: Σ_k f_k) of the last trial
+  double plate_energy_ = 0.0;       ///< ½ uᵀ K_plates u of the committed state (linear kinematics)
+  WorkOfInternalForces plate_work_; ///< ∫ Σ_k f_kᵀ du_k up to the committed state (large deflections)
+  StackedPlateState trial_buffer_;  ///< storage the interfaces' trial states are written into
   // With ply damage, per sub-laminate: its damage field, its part of u and its force.
   std::vector<DamageField> fields_;
   std::vector<Eigen::VectorXd> u_parts_, f_parts_;
@@ -123,13 +140,22 @@ private:
 class StackedModel final : public MechanicalModel {
 public:
   StackedModel(const PlateModel& model, const DelaminationSettings& settings,
-               const std::optional<ProgressiveDamageSettings>& ply_damage)
+               const std::optional<ProgressiveDamageSettings>& ply_damage,
+               std::optional<StrainMeasure> large_deflection)
       : plate_(model, settings), initial_(elastic_stiffness(plate_.stack_)),
-        K_plates_by_rows_(plate_.stack_.plate_stiffness()) {
-    if (!ply_damage) return;
-    for (int k = 0; k < plate_.stack_.sublaminate_count(); ++k)
-      damaged_.push_back(std::make_unique<DamagedPlateModel>(plate_.stack_.sublaminate(k), *ply_damage));
+        K_plates_by_rows_(plate_.stack_.plate_stiffness()), large_deflection_(large_deflection) {
+    const Kinematics kinematics = large_deflection ? Kinematics::von_karman : Kinematics::linear;
+    for (int k = 0; k < plate_.stack_.sublaminate_count(); ++k) {
+      const PlateModel& part = plate_.stack_.sublaminate(k);
+      if (ply_damage)
+        damaged_.push_back(std::make_unique<DamagedPlateModel>(part, *ply_damage, kinematics));
+      else if (large_deflection)
+        von_karman_.push_back(std::make_unique<NonlinearPlateModel>(part, *large_deflection));
+    }
   }
+
+  /// The sub-laminates' force is not linear in u: their stored energy is the work of their forces.
+  [[nodiscard]] bool large_deflection() const { return large_deflection_.has_value(); }
 
   /// Trials hold the interfaces' (and plies') damage of the last commit: the lagged Newton–Newmark step.
   [[nodiscard]] bool lagged() const { return plate_.settings_.integration == DamageIntegration::lagged; }
@@ -168,14 +194,22 @@ public:
   /// K_plates stored by rows for the step's product: each entry of K u is one sequential sum over its row,
   /// in the order (and so with the bits) of the column-wise product, without scattering into K u
   Eigen::SparseMatrix<double, Eigen::RowMajor> K_plates_by_rows_;
+  std::optional<StrainMeasure> large_deflection_;
   /// With ply damage: sub-laminate k as a damaged plate (empty without)
   std::vector<std::unique_ptr<DamagedPlateModel>> damaged_;
+  /// Without ply damage but with large deflections: sub-laminate k as a von Kármán plate (empty without)
+  std::vector<std::unique_ptr<NonlinearPlateModel>> von_karman_;
 };
 
 StackedState::StackedState(const StackedModel& model)
-    : m_(model), interfaces_(model.plate_), Ku_(Eigen::VectorXd::Zero(model.size())) {
-  if (m_.damaged_.empty()) return;
+    : m_(model), interfaces_(model.plate_), Ku_(Eigen::VectorXd::Zero(model.size())),
+      plate_work_(model.size()) {
   const StackedPlateModel& stack = m_.plate_.stack_;
+  for (const auto& part : m_.von_karman_) {
+    u_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
+    f_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
+  }
+  if (m_.damaged_.empty()) return;
   for (int k = 0; k < stack.sublaminate_count(); ++k) {
     const DamagedPlateModel& part = *m_.damaged_[static_cast<std::size_t>(k)];
     fields_.push_back(part.virgin_field());
@@ -207,18 +241,34 @@ void StackedState::frozen_plate_forces(const Eigen::VectorXd& u) {
   }
 }
 
+void StackedState::von_karman_plate_forces(const Eigen::VectorXd& u) {
+  for (std::size_t k = 0; k < m_.von_karman_.size(); ++k) {
+    const NonlinearPlateModel& part = *m_.von_karman_[k];
+    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
+    u_parts_[k] = u.segment(first, part.size());
+    part.internal_force(u_parts_[k], f_parts_[k]);
+    Ku_.segment(first, part.size()) = f_parts_[k];
+  }
+}
+
 bool StackedState::lagged() const {
   return m_.lagged();
 }
 
-void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) {
-  dt_ = dt;
-  if (fields_.empty())
+void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
+  if (!m_.von_karman_.empty())
+    von_karman_plate_forces(u);
+  else if (fields_.empty())
     Ku_.noalias() = m_.K_plates_by_rows_ * u;
   else if (lagged())
     frozen_plate_forces(u);
   else
     damaged_plate_forces(u, dt);
+}
+
+void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) {
+  dt_ = dt;
+  plate_forces(u, dt);
   f = Ku_;
   // Lagged: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage (DL6)
   const double dissipated =
@@ -230,10 +280,10 @@ void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::Ve
 void StackedState::start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) {
   // K_s(d_n) u_n of the plies and the interfaces' tractions at u_n, every law held at the committed state;
   // the trial buffers are overwritten by the step's first trial.
-  if (fields_.empty()) {
+  if (fields_.empty() && m_.von_karman_.empty()) {
     f.noalias() = m_.K_plates_by_rows_ * u_n;
   } else {
-    frozen_plate_forces(u_n);
+    plate_forces(u_n, dt_); // lagged: the damage held
     f = Ku_;
     for (DamageField& field : fields_)
       (void)field.take_modes_changed(); // the start's modes are not a trial's
@@ -243,24 +293,37 @@ void StackedState::start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) {
 }
 
 SparseMatrix StackedState::iteration_matrix(const Eigen::VectorXd& u) const {
+  SparseMatrix K = m_.plate_.stack_.evaluate(u, interfaces_.committed(), CohesiveDamage::lagged_mean).tangent;
+  if (fields_.empty() && m_.von_karman_.empty()) return K;
+  return K + sublaminate_corrections(u);
+}
+
+SparseMatrix StackedState::sublaminate_corrections(const Eigen::VectorXd& u) const {
   const StackedPlateModel& stack = m_.plate_.stack_;
-  SparseMatrix K = stack.evaluate(u, interfaces_.committed(), CohesiveDamage::lagged_mean).tangent;
-  if (fields_.empty()) return K;
-  std::vector<Eigen::Triplet<double>> softening;
-  for (std::size_t k = 0; k < fields_.size(); ++k) {
-    const DamagedPlateModel& part = *m_.damaged_[k];
-    const Eigen::Index first = stack.offset(static_cast<int>(k));
-    const SparseMatrix dK =
-        part.iteration_matrix(u.segment(first, part.size()), fields_[k]) - part.undamaged_stiffness();
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto add_block = [&](int k, const SparseMatrix& dK) {
+    const Eigen::Index first = stack.offset(k);
     for (int j = 0; j < dK.outerSize(); ++j)
       for (SparseMatrix::InnerIterator it(dK, j); it; ++it)
         if (it.value() != 0.0)
-          softening.emplace_back(static_cast<int>(first + it.row()), static_cast<int>(first + it.col()),
-                                 it.value());
+          entries.emplace_back(static_cast<int>(first + it.row()), static_cast<int>(first + it.col()),
+                               it.value());
+  };
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const DamagedPlateModel& part = *m_.damaged_[k];
+    const Eigen::Index first = stack.offset(static_cast<int>(k));
+    add_block(static_cast<int>(k),
+              part.iteration_matrix(u.segment(first, part.size()), fields_[k]) - part.undamaged_stiffness());
   }
-  SparseMatrix dK(K.rows(), K.cols());
-  dK.setFromTriplets(softening.begin(), softening.end());
-  return K + dK;
+  for (std::size_t k = 0; k < m_.von_karman_.size(); ++k) { // K_T(u_k) − K_k
+    const NonlinearPlateModel& part = *m_.von_karman_[k];
+    const Eigen::Index first = stack.offset(static_cast<int>(k));
+    add_block(static_cast<int>(k),
+              part.tangent_stiffness(u.segment(first, part.size())) - part.linear().stiffness());
+  }
+  SparseMatrix dK(stack.size(), stack.size());
+  dK.setFromTriplets(entries.begin(), entries.end());
+  return dK;
 }
 
 bool StackedState::matrix_outdated() const {
@@ -280,7 +343,10 @@ void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/
     plate_laws_at(u);
   }
   interfaces_.accept();
-  plate_energy_ = 0.5 * u.dot(Ku_);
+  if (m_.large_deflection())
+    plate_work_.add(u, Ku_);
+  else
+    plate_energy_ = 0.5 * u.dot(Ku_);
   if (fields_.empty()) return;
   for (std::size_t k = 0; k < fields_.size(); ++k)
     m_.damaged_[k]->commit(u_parts_[k], f_parts_[k], fields_[k]);
@@ -288,15 +354,20 @@ void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/
 }
 
 double StackedState::stored_energy(const Eigen::VectorXd& u) const {
-  return plate_energy_ + m_.plate_.stack_.interface_energy(u, interfaces_.committed());
+  // Large deflections: what the plates' forces did not dissipate in their plies
+  const double plates = m_.large_deflection()
+                            ? plate_work_.work() - (plies_ ? plies_->dissipated().sum() : 0.0)
+                            : plate_energy_;
+  return plates + m_.plate_.stack_.interface_energy(u, interfaces_.committed());
 }
 
 } // namespace
 
 std::unique_ptr<MechanicalModel>
 stacked_plate_model(const PlateModel& model, const DelaminationSettings& settings,
-                    const std::optional<ProgressiveDamageSettings>& ply_damage) {
-  return std::make_unique<StackedModel>(model, settings, ply_damage);
+                    const std::optional<ProgressiveDamageSettings>& ply_damage,
+                    std::optional<StrainMeasure> large_deflection) {
+  return std::make_unique<StackedModel>(model, settings, ply_damage, large_deflection);
 }
 
 double explicit_delamination_highest_frequency(const PlateModel& model,
@@ -313,9 +384,10 @@ double explicit_delamination_time_step(const PlateModel& model, const Delaminati
 std::unique_ptr<StepPolicy>
 explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                   const DelaminationSettings& settings,
-                                  const std::optional<ProgressiveDamageSettings>& ply_damage) {
-  return central_difference_step_policy(stacked_plate_model(model, settings, ply_damage), options,
-                                        explicit_key);
+                                  const std::optional<ProgressiveDamageSettings>& ply_damage,
+                                  std::optional<StrainMeasure> large_deflection) {
+  return central_difference_step_policy(stacked_plate_model(model, settings, ply_damage, large_deflection),
+                                        options, explicit_key);
 }
 
 } // namespace plyimpact

@@ -129,9 +129,12 @@ private:
 };
 
 /// The stacked plate as a model of fem/mechanical_model.hpp, for the integrators written once against it
-/// (central differences: stacked_model.cpp). With `ply_damage` each sub-laminate's plies crack too.
+/// (central differences, Newton–Newmark with the laws lagged: stacked_model.cpp). With `ply_damage` each
+/// sub-laminate's plies crack too; with `large_deflection` each sub-laminate is a geometrically non-linear
+/// plate with that strain measure (von Kármán's where the plies crack).
 [[nodiscard]] std::unique_ptr<MechanicalModel>
 stacked_plate_model(const PlateModel& model, const DelaminationSettings& settings,
-                    const std::optional<ProgressiveDamageSettings>& ply_damage);
+                    const std::optional<ProgressiveDamageSettings>& ply_damage,
+                    std::optional<StrainMeasure> large_deflection = std::nullopt);
 
 } // namespace plyimpact

@@ -231,21 +231,25 @@ damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
 /// The laminate of `model` (one laminate, no regions) cut into sub-laminates tied by cohesive interfaces
 /// (delamination_step.cpp). The supports of `model` hold the sub-laminates that `settings` names. Throws
 /// std::invalid_argument for a plate with regions of other laminates.
-/// With `ply_damage` the plies crack too: explicit central differences only (both settings'
-/// integration central_difference), otherwise std::invalid_argument.
+/// With `ply_damage` the plies crack too; with `large_deflection` the sub-laminates are geometrically
+/// non-linear (stacked_plate_model). What does not run (capabilities.hpp) throws std::invalid_argument
+/// with the table's reason.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                          const DelaminationSettings& settings,
-                         const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt);
+                         const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt,
+                         const std::optional<NonlinearImpactSettings>& large_deflection = std::nullopt);
 /// The stacked plate with explicit central differences on the lumped mass (settings.integration =
 /// central_difference; central differences on the stacked model of stacked_model.cpp). Throws
 /// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
 /// message gives. With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the
-/// stepper's results() hold the plies' damage of the whole laminate.
+/// stepper's results() hold the plies' damage of the whole laminate. With `large_deflection` the
+/// sub-laminates are geometrically non-linear.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                   const DelaminationSettings& settings,
-                                  const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt);
+                                  const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt,
+                                  std::optional<StrainMeasure> large_deflection = std::nullopt);
 /// What dt = "auto" takes of the stable step when the plies crack in a stacked plate (ply damage with
 /// delamination): the balance error of the shipped example over 1.2 ms is 4.0e-3 at the stable step and
 /// 4.0e-4 at half of it, that of the two-ply stack 1.8e-2 and 2.0e-4, with the same answers otherwise

@@ -65,24 +65,6 @@ private:
 
 // --- The von Kármán plate ---------------------------------------------------------------------------
 
-/// The stored energy of a plate whose forces are not linear in u: the internal forces' work, trapezoidal
-/// from commit to commit.
-class WorkOfInternalForces {
-public:
-  explicit WorkOfInternalForces(int size)
-      : u_(Eigen::VectorXd::Zero(size)), f_(Eigen::VectorXd::Zero(size)) {}
-  void add(const Eigen::VectorXd& u, const Eigen::VectorXd& f) {
-    work_ += 0.5 * (f + f_).dot(u - u_);
-    u_ = u;
-    f_ = f;
-  }
-  [[nodiscard]] double work() const { return work_; }
-
-private:
-  Eigen::VectorXd u_, f_; ///< the committed displacement and its internal force
-  double work_ = 0.0;
-};
-
 class VonKarmanState final : public ModelState {
 public:
   explicit VonKarmanState(const NonlinearPlateModel& plate) : plate_(plate), work_(plate.size()) {}

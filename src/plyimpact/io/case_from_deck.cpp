@@ -1,6 +1,7 @@
 #include "plyimpact/io/case_from_deck.hpp"
 
 #include "plyimpact/fem/structured_mesh.hpp"
+#include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/system_memory.hpp"
 
 namespace plyimpact {
@@ -14,6 +15,7 @@ PlateModel plate_model(const Deck& deck) {
 }
 
 ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) {
+  check_memory_before_assembly(deck); // a uniform mesh, naming the deck; ImpactCase checks a graded one
   ImpactCaseDescription d;
   d.plate = deck.plate.value_or(PlateGeometry{});
   d.mesh_from_file = deck.file_mesh;

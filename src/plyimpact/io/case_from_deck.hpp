@@ -12,6 +12,8 @@ namespace plyimpact {
 [[nodiscard]] PlateModel plate_model(const Deck& deck);
 
 /// The impact case of the deck; `nonlinear` forces the geometrically non-linear plate (--nonlinear).
+/// Throws InsufficientMemory (analysis/guards.hpp) for a uniform mesh beyond the memory available
+/// (io/memory_estimate.hpp); ImpactCase refuses a graded one (analysis/mesh_memory.hpp).
 [[nodiscard]] ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear = false);
 
 /// [damage] every and delamination_ply_n as the damage tracker takes them.

@@ -1,47 +1,14 @@
 #pragma once
-// Memory a deck's mesh needs, estimated from the mesh size alone before anything is assembled
-// (docs/robustness.md): a 1000 × 1000 mesh is refused in a fraction of a second with the estimate and
-// the machine's memory, instead of growing to 15 GB or ending in std::bad_alloc. The factorization is
-// checked again, exactly, from its symbolic analysis once K̄ is assembled (analysis/guards.hpp).
-#include "plyimpact/analysis/impact_case.hpp"
+// The memory check of a deck's uniform mesh (analysis/mesh_memory.hpp), for every analysis of the deck
+// (static, modal, buckling as well as impacts), its refusal naming the deck's file. An impact case checks
+// its own mesh, uniform or graded, when it is built (ImpactCase).
+#include "plyimpact/analysis/mesh_memory.hpp"
 #include "plyimpact/io/deck.hpp"
-
-#include <array>
-#include <optional>
-#include <string>
 
 namespace plyimpact {
 
-struct MeshMemoryEstimate {
-  double nodes = 0.0;           ///< (2 nx + 1)(2 ny + 1) nine-node element nodes
-  double equations = 0.0;       ///< 5 DOFs per node (none removed by supports: an upper bound)
-  double matrix_nonzeros = 0.0; ///< of K (both triangles): 25 DOF pairs × 16 neighbour nodes per node
-  double factor_nonzeros = 0.0; ///< of L: c · n · log2(n)² (fill of AMD on a 2-D grid, fitted)
-  double bytes = 0.0;           ///< 12 bytes per non-zero of L and of K, M, K̄ (value + row index)
-};
-
-/// The fill constant c of factor_nonzeros. The symbolic analysis of K̄ (AMD ordering) of structured
-/// meshes from 4 × 4 to 48 × 48 elements gives nnz(L) / (n log2(n)²) between 0.4 and 0.65, slowly
-/// growing with n (tests/io/test_memory_estimate.cpp): c = 1 errs on the large side.
-inline constexpr double factor_fill_constant = 1.0;
-
-/// The estimate for a structured nx × ny mesh of 9-node elements.
-[[nodiscard]] MeshMemoryEstimate estimate_mesh_memory(long nx, long ny);
-/// The estimate for a mesh of 9-node elements with `nodes` nodes.
-[[nodiscard]] MeshMemoryEstimate estimate_mesh_memory(double nodes);
-
-/// The message of a refusal: the mesh, the estimate and the memory available.
-[[nodiscard]] std::string memory_refusal_message(long nx, long ny, const MeshMemoryEstimate& e,
-                                                 double available_bytes);
-
 /// For a deck with a uniform [mesh] nx × ny: throws InsufficientMemory (analysis/guards.hpp) when the
-/// estimate exceeds the available memory (io/system_memory.hpp). A graded mesh is sized from the
-/// impact: see the overload for impact cases.
+/// estimate exceeds the available memory (io/system_memory.hpp).
 void check_memory_before_assembly(const Deck& deck);
-/// Elements along x and y of an impact case's graded mesh (MeshSpec::grading engaged), from its
-/// element lines alone.
-[[nodiscard]] std::array<long, 2> graded_mesh_size(const ImpactCaseDescription& d);
-/// For an impact case with a graded mesh (graded_mesh_size; nothing is built or assembled).
-void check_memory_before_assembly(const ImpactCaseDescription& d);
 
 } // namespace plyimpact

@@ -7,7 +7,6 @@
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_run.hpp"
-#include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/results.hpp"
 #include "plyimpact/io/sweep_report.hpp"
 #include "plyimpact/io/threshold_run.hpp"
@@ -359,9 +358,7 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
   if (deck.threshold.criterion.empty() && deck.damage.criteria.empty())
     throw DeckError(fmt::format("{}: error: a threshold sweep needs [threshold] criterion", deck.source));
   const ThresholdCriterion criterion = threshold_criterion(deck, "");
-  const ImpactCaseDescription description = impact_case_description(deck);
-  check_memory_before_assembly(description);
-  const ImpactCase impact(description);
+  const ImpactCase impact(impact_case_description(deck)); // refuses a mesh beyond the memory available
   const ThresholdOptions to = threshold_options(deck);
   const ThresholdResult r = search_threshold(impact, criterion, to);
   results["threshold_velocity"] = r.found ? nlohmann::json(r.velocity) : nlohmann::json(nullptr);
@@ -428,7 +425,6 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
   try {
     const Deck deck = sweep_.deck_for(c);
     require_sections(deck, sweep_.spec().analysis);
-    check_memory_before_assembly(deck);
     std::optional<fs::path> case_dir;
     if (options_.case_folders) case_dir = folder_.path() / "cases" / fmt::format("{:06}", index);
     if (sweep_.spec().analysis == AnalysisKind::threshold) {
@@ -444,10 +440,7 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
                                           resolved_settings(description).dt, size_at_impact(description));
     if (!options_.share_factorization || !cache_ || cache_->key != key) {
       cache_.reset();
-      const auto build = [&description] {
-        check_memory_before_assembly(description);
-        return std::make_unique<ImpactCase>(description);
-      };
+      const auto build = [&description] { return std::make_unique<ImpactCase>(description); };
       bool built = true;
       cache_ = std::make_unique<Cache>(Cache{key, options_.share_factorization
                                                       ? cases_.get(key, build, built)
