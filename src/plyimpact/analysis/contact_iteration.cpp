@@ -13,9 +13,13 @@ void ContactIteration::predict(const PlateState& s, const NewmarkCoefficients& n
   uk_.noalias() = s.u + nc.dt * s.v + (0.5 * nc.dt * nc.dt) * s.a;
 }
 
-void ContactIteration::newmark_inertia(const PlateState& s, const NewmarkCoefficients& nc,
-                                       const MassOperator& M) {
-  inertia_of(M, nc.c0 * (uk_ - s.u) - nc.c2 * s.v - nc.c3 * s.a);
+void ContactIteration::step_inertia(const PlateState& s, const NewmarkCoefficients& nc, const MassOperator& M,
+                                    bool two_point) {
+  if (two_point)
+    ak_.noalias() = nc.c0 * (uk_ - s.u - nc.dt * s.v); // DL7
+  else
+    ak_.noalias() = nc.c0 * (uk_ - s.u) - nc.c2 * s.v - nc.c3 * s.a;
+  M.apply(ak_, inertia_);
 }
 
 bool ContactIteration::converged(const ContactLoading& loading, const ContactSolution& cs,

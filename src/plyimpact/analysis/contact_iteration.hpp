@@ -25,14 +25,11 @@ public:
 
   /// u_k = uₙ + Δt vₙ + ½ Δt² aₙ: the first iterate, at constant acceleration.
   void predict(const PlateState& s, const NewmarkCoefficients& nc);
-  /// M a(u_k), a = c0 (u_k − uₙ) − c2 vₙ − c3 aₙ.
-  void newmark_inertia(const PlateState& s, const NewmarkCoefficients& nc, const MassOperator& M);
-  /// M a for another form of the step's acceleration `a` (an expression in u_k).
-  template <class Acceleration>
-  void inertia_of(const MassOperator& M, const Acceleration& a) {
-    ak_.noalias() = a;
-    M.apply(ak_, inertia_);
-  }
+  /// M a(u_k): Newmark's a = c0 (u_k − uₙ) − c2 vₙ − c3 aₙ, or with `two_point` the trapezoidal rule's
+  /// two-point form a = c0 (u_k − uₙ − Δt vₙ), where aₙ does not enter (DL7; its mean force then carries
+  /// the start force, which the caller adds to the internal force).
+  void step_inertia(const PlateState& s, const NewmarkCoefficients& nc, const MassOperator& M,
+                    bool two_point);
   /// g = −M a(u_k) − f, f the internal force at u_k.
   void set_internal_force(const Eigen::VectorXd& f) { g_.noalias() = -inertia_ - f; }
 

@@ -166,8 +166,7 @@ std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Par
                                        const StackedPlateState& committed, Eigen::VectorXd y, double delta,
                                        const DisplacementPathSettings& settings, int& iterations) {
   PathStep step(model, loading, committed, std::move(y), delta, settings.tolerance);
-  const NewtonControl full_newton{settings.max_iterations, INFINITY, std::numeric_limits<int>::max()};
-  const NewtonOutcome o = solve_newton(step, full_newton);
+  const NewtonOutcome o = solve_newton(step, full_newton(settings.max_iterations));
   iterations += o.corrections;
   if (!o.converged) return std::nullopt;
   return std::move(step).solution(o.corrections);

@@ -344,10 +344,7 @@ private:
   double evaluate() {
     const NewmarkCoefficients& nc = p_.p_.options_.newmark;
     ContactIteration& it = p_.iteration_;
-    if (mean_form_)
-      it.inertia_of(p_.p_.M_, nc.c0 * (it.uk() - s_.u - nc.dt * s_.v));
-    else
-      it.newmark_inertia(s_, nc, p_.p_.M_);
+    it.step_inertia(s_, nc, p_.p_.M_, mean_form_);
     const bool assemble_tangent = refresh_pending_ && !p_.may_update_factor();
     tangent_.reset();
     const double dissipated = p_.internal_force(it.uk(), damage_, assemble_tangent ? &tangent_ : nullptr);

@@ -165,14 +165,9 @@ public:
   Trial trial(int corrections) override {
     const NewmarkCoefficients& nc = p_.p_.options_.newmark;
     ContactIteration& it = p_.iteration_;
-    if (two_point_) {
-      it.inertia_of(p_.p_.M_, nc.c0 * (it.uk() - s_.u - nc.dt * s_.v));
-      p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
-      p_.f_int_ += p_.start_;
-    } else {
-      it.newmark_inertia(s_, nc, p_.p_.M_);
-      p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
-    }
+    it.step_inertia(s_, nc, p_.p_.M_, two_point_);
+    p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
+    if (two_point_) p_.f_int_ += p_.start_;
     it.set_internal_force(p_.f_int_);
     const NewtonSettings& ns = p_.p_.settings_;
     return corrections > 0 && it.converged(p_.loading_, cs_, p_.f_int_, p_.kbar_diagonal_,

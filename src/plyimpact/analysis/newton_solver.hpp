@@ -59,6 +59,12 @@ struct NewtonControl {
   int refresh_every = 0; ///< … or after every this many corrections (0: never)
 };
 
+/// The control of a problem that factors before every correction itself (full Newton): the solver's
+/// refresh rules never fire, only its limit of `max_iterations` corrections.
+[[nodiscard]] inline NewtonControl full_newton(int max_iterations) {
+  return {max_iterations, std::numeric_limits<double>::infinity(), std::numeric_limits<int>::max(), 0};
+}
+
 struct NewtonOutcome {
   bool converged = false;
   int corrections = 0; ///< finite corrections made

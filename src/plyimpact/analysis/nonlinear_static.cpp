@@ -99,7 +99,6 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
   const std::unique_ptr<MechanicalModel> plate = von_karman_plate_model(model, s.measure);
   const std::unique_ptr<ModelState> state = plate->virgin_state(); // elastic: no state to commit
   SpdSolver solver;
-  const NewtonControl full_newton{s.max_iterations, INFINITY, std::numeric_limits<int>::max()};
   const Eigen::VectorXd f = static_load_vector(model, load);
   const Eigen::Vector2d middle = model.mesh().bounds().centre();
   const PointSampler centre = model.sampler(middle.x(), middle.y());
@@ -122,7 +121,7 @@ NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const Stat
           (lambda + increment >= milestone * (1.0 - 1e-12)) ? milestone : lambda + increment;
       Eigen::VectorXd trial = u;
       LoadStep load_step(*state, solver, f, target, trial, s);
-      const NewtonOutcome o = solve_newton(load_step, full_newton);
+      const NewtonOutcome o = solve_newton(load_step, full_newton(s.max_iterations));
       r.newton_iterations += o.corrections;
       if (!o.converged) {
         if (++cuts_in_a_row > s.max_step_cuts)

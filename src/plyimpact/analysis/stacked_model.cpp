@@ -109,15 +109,14 @@ public:
   void start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) override;
 
 private:
+  /// Σ_k f_k(u_k) into Ku_: for each sub-laminate k, its part u_k of u into u_parts_[k], then
+  /// `part_force(k)` writes f_k into f_parts_[k].
+  template <class PartForce>
+  void sublaminate_forces(const Eigen::VectorXd& u, const PartForce& part_force);
   /// Σ_k f_k(u_k; d_k) of the damaged sub-laminates at u into Ku_ (each law once, trial states kept).
   void damaged_plate_forces(const Eigen::VectorXd& u, double dt);
-  /// The same with each sub-laminate's damage of the last commit held (the lagged step's trial).
-  void frozen_plate_forces(const Eigen::VectorXd& u);
-  /// The lagged step's commit: each sub-laminate's law once, at u (damaged_plate_forces).
-  void plate_laws_at(const Eigen::VectorXd& u) { damaged_plate_forces(u, dt_); }
-  /// Σ_k f_k(u_k) of the elastic von Kármán sub-laminates at u into Ku_.
-  void von_karman_plate_forces(const Eigen::VectorXd& u);
-  /// K_plates u, or the von Kármán sub-laminates' forces, or the damaged ones' (held where lagged), into Ku_.
+  /// K_plates u, or the von Kármán sub-laminates' forces, or the damaged ones' (held where lagged: the
+  /// damage of the last commit), into Ku_.
   void plate_forces(const Eigen::VectorXd& u, double dt);
   /// The damaged (or von Kármán) sub-laminates' iteration matrices less their elastic K_k, each on its
   /// diagonal block.
@@ -128,7 +127,8 @@ private:
   InterfaceStates interfaces_;
   Eigen::VectorXd Ku_; ///< K_plates u (with ply damage or large deflections: Σ_k f_k) of the last trial
   double plate_energy_ = 0.0;       ///< ½ uᵀ K_plates u of the committed state (linear kinematics)
-  WorkOfInternalForces plate_work_; ///< ∫ Σ_k f_kᵀ du_k up to the committed state (large deflections)
+  WorkOfInternalForces plate_work_; ///< ∫ Σ_k f_kᵀ du_k up to the committed state (large deflections;
+                                    ///< sized 0 otherwise)
   StackedPlateState trial_buffer_;  ///< storage the interfaces' trial states are written into
   // With ply damage, per sub-laminate: its damage field, its part of u and its force.
   std::vector<DamageField> fields_;
@@ -203,7 +203,7 @@ public:
 
 StackedState::StackedState(const StackedModel& model)
     : m_(model), interfaces_(model.plate_), Ku_(Eigen::VectorXd::Zero(model.size())),
-      plate_work_(model.size()) {
+      plate_work_(model.large_deflection() ? model.size() : 0) {
   const StackedPlateModel& stack = m_.plate_.stack_;
   for (const auto& part : m_.von_karman_) {
     u_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
@@ -221,34 +221,20 @@ StackedState::StackedState(const StackedModel& model)
   plies_->gather(fields_);
 }
 
+template <class PartForce>
+void StackedState::sublaminate_forces(const Eigen::VectorXd& u, const PartForce& part_force) {
+  for (std::size_t k = 0; k < u_parts_.size(); ++k) {
+    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
+    u_parts_[k] = u.segment(first, u_parts_[k].size());
+    part_force(k);
+    Ku_.segment(first, f_parts_[k].size()) = f_parts_[k];
+  }
+}
+
 void StackedState::damaged_plate_forces(const Eigen::VectorXd& u, double dt) {
-  for (std::size_t k = 0; k < fields_.size(); ++k) {
-    const DamagedPlateModel& part = *m_.damaged_[k];
-    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
-    u_parts_[k] = u.segment(first, part.size());
-    part.explicit_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
-    Ku_.segment(first, part.size()) = f_parts_[k];
-  }
-}
-
-void StackedState::frozen_plate_forces(const Eigen::VectorXd& u) {
-  for (std::size_t k = 0; k < fields_.size(); ++k) {
-    const DamagedPlateModel& part = *m_.damaged_[k];
-    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
-    u_parts_[k] = u.segment(first, part.size());
-    part.frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);
-    Ku_.segment(first, part.size()) = f_parts_[k];
-  }
-}
-
-void StackedState::von_karman_plate_forces(const Eigen::VectorXd& u) {
-  for (std::size_t k = 0; k < m_.von_karman_.size(); ++k) {
-    const NonlinearPlateModel& part = *m_.von_karman_[k];
-    const Eigen::Index first = m_.plate_.stack_.offset(static_cast<int>(k));
-    u_parts_[k] = u.segment(first, part.size());
-    part.internal_force(u_parts_[k], f_parts_[k]);
-    Ku_.segment(first, part.size()) = f_parts_[k];
-  }
+  sublaminate_forces(u, [&](std::size_t k) {
+    m_.damaged_[k]->explicit_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
+  });
 }
 
 bool StackedState::lagged() const {
@@ -257,11 +243,14 @@ bool StackedState::lagged() const {
 
 void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
   if (!m_.von_karman_.empty())
-    von_karman_plate_forces(u);
+    sublaminate_forces(u,
+                       [&](std::size_t k) { m_.von_karman_[k]->internal_force(u_parts_[k], f_parts_[k]); });
   else if (fields_.empty())
     Ku_.noalias() = m_.K_plates_by_rows_ * u;
   else if (lagged())
-    frozen_plate_forces(u);
+    sublaminate_forces(u, [&](std::size_t k) {
+      m_.damaged_[k]->frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);
+    });
   else
     damaged_plate_forces(u, dt);
 }
@@ -340,7 +329,7 @@ void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/
       u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
       (void)part.activate_reached(u_parts_[k], fields_[k]);
     }
-    plate_laws_at(u);
+    damaged_plate_forces(u, dt_); // the lagged step's commit: each sub-laminate's law once, at u
   }
   interfaces_.accept();
   if (m_.large_deflection())
