@@ -11,7 +11,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,6 +64,15 @@ TEST(SvgPlot, TextIsEscapedAndEveryPointIsInsideThePicture) {
     EXPECT_LE(y, 360.0);
   }
   EXPECT_EQ(points, 3);
+}
+
+TEST(SvgPlot, APointThatIsNotFiniteIsAGapBetweenTwoLines) {
+  // Five points, the third NaN: two lines of two points each, not one line drawn across the gap.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::string svg =
+      svg_line_plot({"", "x", "y", {{"", {0.0, 1.0, nan, 3.0, 4.0}, {0.0, 1.0, 2.0, 1.0, 0.0}}}});
+  EXPECT_EQ(count(svg, "<polyline"), 2U);
+  EXPECT_EQ(count(svg, ","), 4U) << "one comma per point drawn";
 }
 
 TEST(ThinnedHistory, KeepsABoundedEvenlySpacedSubsetOfTheSteps) {
@@ -115,6 +128,49 @@ TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
   const nlohmann::json summary = nlohmann::json::parse(read(dir / "summary.json"));
   EXPECT_NE(html.find(fmt::format("{:.5g} N", summary["peak_force"].get<double>())), std::string::npos);
   EXPECT_NE(html.find("[0_2/90_4/0_2]"), std::string::npos);
+}
+
+TEST(HtmlReport, ForceDisplacementIsTheContactLoopWithoutTheReboundFlight) {
+  // The §3.6 impactor rebounds and flies back for the rest of the event, its displacement far below
+  // zero; a drop-weight report plots force against displacement while in contact only (α ≥ 0), the
+  // loading and unloading loop. So the plot's x axis ends one tick below the lowest displacement in
+  // contact (the plate springs back slightly past zero before the impactor leaves it), far above the
+  // flight's.
+  const fs::path dir = scratch("html-report-loop") / "thesis-3.6-v268";
+  ASSERT_EQ(run(std::string("impact ") + PLYIMPACT_SOURCE_DIR + "/examples/thesis-3.6-v268.toml -q -o " +
+                dir.string())
+                .status,
+            0);
+  const std::string html = read(dir / "report.html");
+  const std::size_t from = html.find("aria-label=\"Force–displacement (impactor, in contact)\"");
+  ASSERT_NE(from, std::string::npos);
+  const std::string svg = html.substr(from, html.find("</svg>", from) - from);
+  std::vector<double> ticks_mm; // the x axis's labels (text-anchor middle; the y axis's are anchored end)
+  const std::string label = "text-anchor=\"middle\">";
+  for (std::size_t at = svg.find(label); at != std::string::npos; at = svg.find(label, at + 1))
+    ticks_mm.push_back(std::stod(svg.substr(at + label.size())));
+  ASSERT_GE(ticks_mm.size(), 2U);
+  double in_contact = 0.0, overall = 0.0; // lowest impactor displacement [mm]
+  std::ifstream history(dir / "history.csv");
+  std::string line;
+  std::getline(history, line); // t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,...
+  for (; std::getline(history, line);) {
+    std::vector<double> v;
+    for (std::size_t a = 0, b = 0; v.size() < 6; a = b + 1) {
+      b = line.find(',', a);
+      v.push_back(std::stod(line.substr(a, b - a)));
+    }
+    overall = std::min(overall, 1e3 * v[2]);
+    if (v[5] >= 0.0) in_contact = std::min(in_contact, 1e3 * v[2]);
+  }
+  const double step = ticks_mm[1] - ticks_mm[0];
+  std::printf(
+      "[ measured ] x ticks %g ... %g mm; lowest impactor displacement %g mm in contact, %g mm in all\n",
+      ticks_mm.front(), ticks_mm.back(), in_contact, overall);
+  EXPECT_LE(ticks_mm.front(), in_contact);
+  EXPECT_GT(ticks_mm.front(), in_contact - step - 1e-9);
+  EXPECT_LT(overall, ticks_mm.front() - 5.0) << "the flight, left out, goes far lower";
+  EXPECT_GE(count(svg, "<polyline"), 1U);
 }
 
 TEST(HtmlReport, OpensInHeadlessChromiumWithoutConsoleErrors) {

@@ -91,6 +91,9 @@ TEST(TestRigs, TheAstmImpactorHasTheStandardsNoseAndEnergyUnlessTheDeckGivesThem
       rig_deck("impact", "preset = \"astm-d7136\"", impactor + "radius = 0.00635\nenergy = 10.0\n");
   EXPECT_DOUBLE_EQ(given.impactor->radius, 0.00635);
   EXPECT_NEAR(0.5 * 5.5 * given.impactor->velocity * given.impactor->velocity, 10.0, 1e-12);
+  // The rig's line names the energy that runs: the deck's, not the standard's 26.8 J.
+  EXPECT_EQ(given.rig_description.find("J/mm"), std::string::npos) << given.rig_description;
+  EXPECT_NE(given.rig_description.find("impact energy from [impactor]"), std::string::npos);
 }
 
 TEST(TestRigs, TheCircularRigIsTheClampedDiskOfItsOpening) {

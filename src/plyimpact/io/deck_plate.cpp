@@ -177,10 +177,14 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
     if (rig.impactor_radius > 0.0) d.impactor_defaults.radius = rig.impactor_radius;
     if (rig.energy_per_thickness && d.laminate) {
       d.impactor_defaults.energy = *rig.energy_per_thickness * d.laminate->thickness();
-      d.rig_description += fmt::format("; impact energy {:.4g} J/mm x {:.4g} mm = {:.4g} J unless [impactor] "
-                                       "gives one",
-                                       *rig.energy_per_thickness * 1e-3, d.laminate->thickness() * 1e3,
-                                       *d.impactor_defaults.energy);
+      // The standard's energy is named only where it is the one that runs.
+      const auto impactor = top.optional_table("impactor");
+      if (impactor && (impactor->has("velocity") || impactor->has("energy")))
+        d.rig_description += "; impact energy from [impactor] (the standard's C_E x h not used)";
+      else
+        d.rig_description += fmt::format(
+            "; impact energy {:.4g} J/mm x {:.4g} mm = {:.4g} J (the standard's)",
+            *rig.energy_per_thickness * 1e-3, d.laminate->thickness() * 1e3, *d.impactor_defaults.energy);
     }
   } catch (const MeshFileError& e) {
     t.fail_at("preset", fmt::format("rig.preset: gmsh could not mesh the rig: {}", e.what()));

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <string_view>
 
 namespace plyimpact {
@@ -127,6 +128,17 @@ PlotSeries series(const std::vector<ImpactSample>& history, double ImpactSample:
   return s;
 }
 
+/// Force against the impactor's displacement while it touches the plate (α ≥ 0), as a drop-weight test
+/// report plots it (ASTM D7136 §13): the loading and unloading loop; the flight after rebound, which
+/// would stretch the axis far below zero, is a gap (as in plots.cpp's force_displacement).
+PlotSeries contact_loop(const std::vector<ImpactSample>& history) {
+  PlotSeries s =
+      series(history, &ImpactSample::impactor_w, 1e3, &ImpactSample::force, 1e-3, "contact force", "#1f77b4");
+  for (std::size_t i = 0; i < history.size(); ++i)
+    if (history[i].indentation < 0.0) s.x[i] = std::numeric_limits<double>::quiet_NaN();
+  return s;
+}
+
 void curves_section(std::string& h, const std::vector<ImpactSample>& history, bool damage) {
   h += "<section id=\"curves\"><h2>Curves</h2>\n";
   h += svg_line_plot(
@@ -134,11 +146,10 @@ void curves_section(std::string& h, const std::vector<ImpactSample>& history, bo
        "time [ms]",
        "force [kN]",
        {series(history, &ImpactSample::t, 1e3, &ImpactSample::force, 1e-3, "contact force", "#1f77b4")}});
-  h += svg_line_plot({"Force–displacement (impactor)",
-                      "impactor displacement [mm]",
+  h += svg_line_plot({"Force–displacement (impactor, in contact)",
+                      "impactor displacement since first contact [mm]",
                       "force [kN]",
-                      {series(history, &ImpactSample::impactor_w, 1e3, &ImpactSample::force, 1e-3,
-                              "contact force", "#1f77b4")}});
+                      {contact_loop(history)}});
   LinePlot energy{"Energies", "time [ms]", "energy [J]", {}};
   energy.series.push_back(series(history, &ImpactSample::t, 1e3, &ImpactSample::impactor_energy, 1.0,
                                  "impactor kinetic", "#1f77b4"));

@@ -72,11 +72,16 @@ void polyline(std::string& s, const Frame& f, const PlotSeries& series) {
   const auto shown = [&series](std::size_t i) {
     return std::isfinite(series.x[i]) && std::isfinite(series.y[i]);
   };
-  if (series.line) {
+  // A point that is not finite is a gap: each run of shown points is a line of its own.
+  for (std::size_t i = 0; series.line && i < n;) {
+    if (!shown(i)) {
+      ++i;
+      continue;
+    }
     fmt::format_to(out, "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\"{} points=\"",
                    series.color, series.dashed ? " stroke-dasharray=\"6 4\"" : "");
-    for (std::size_t i = 0; i < n; ++i)
-      if (shown(i)) fmt::format_to(out, "{:.1f},{:.1f} ", f.px(series.x[i]), f.py(series.y[i]));
+    for (; i < n && shown(i); ++i)
+      fmt::format_to(out, "{:.1f},{:.1f} ", f.px(series.x[i]), f.py(series.y[i]));
     s += "\"/>\n";
   }
   if (series.markers)

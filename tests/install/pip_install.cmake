@@ -1,0 +1,27 @@
+# Install.PipInstall (tests/CMakeLists.txt): `pip install --no-build-isolation --no-index .` into a fresh
+# virtual environment that sees Debian's packages (numpy, tomli-w, setuptools), then its `plyimpact`
+# command and `import plyimpact` outside the source tree. The compiled parts come from this build
+# (PLYIMPACT_CMAKE_BUILD_DIR, setup.py), so nothing is compiled twice. -DBUILD_DIR, -DSOURCE_DIR,
+# -DWORK_DIR, -DPYTHON (Debian's interpreter).
+file(REMOVE_RECURSE ${WORK_DIR})
+execute_process(COMMAND ${PYTHON} -m venv --system-site-packages ${WORK_DIR}/venv RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "python3 -m venv failed (${rc}): scripts/install-deps installs python3-venv")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env PLYIMPACT_CMAKE_BUILD_DIR=${BUILD_DIR}
+                        ${WORK_DIR}/venv/bin/pip install --no-build-isolation --no-index ${SOURCE_DIR}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pip install failed (${rc}):\n${out}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/venv/bin/plyimpact --version OUTPUT_VARIABLE version RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR NOT version MATCHES "^plyimpact [0-9]+\\.[0-9]+\\.[0-9]+")
+  message(FATAL_ERROR "the installed command: --version gave ${rc}: ${version}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/venv/bin/python -c
+                        "import plyimpact; r = plyimpact.impact('${SOURCE_DIR}/examples/thesis-3.6-v268.toml'); print(plyimpact.__file__); print('pip-installed module: peak force %.2f N' % r['peak_force'])"
+                WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+message("${out}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "/venv/lib/python3[^/]*/site-packages/plyimpact/__init__.py")
+  message(FATAL_ERROR "import plyimpact did not load the installed package (${rc})")
+endif()
