@@ -40,6 +40,29 @@ TEST(DamageMaps, OneMapPerCriterionAndLayerWithTheFailedPoints) {
   EXPECT_GT(std::filesystem::file_size(png), 5000U); // axes, grid, points and colour bar drawn
   const std::string script = damage_map_script(mesh, {onsets[0]}, "t", "a.svg", "a.png");
   EXPECT_NE(script.find("60.000000 38.000000 12.6900"), std::string::npos); // points in mm and µs
+  EXPECT_EQ(script.find("$clamps"), std::string::npos) << "no rig, no outline";
+}
+
+TEST(DamageMaps, OnARigTheClampTipsAndTheWindowAreDrawnAndNamed) {
+  // The onsets around the clamp tips are the point supports' singular stresses: the map circles the
+  // tips, names them in its key, and dashes the window's edge (closed: its first corner again).
+  const Mesh mesh = structured_rectangle({0.150, 0.100}, 6, 4);
+  std::vector<DamageOnset> onsets(1);
+  onsets[0].ply = 1, onsets[0].x = 0.025, onsets[0].y = 0.00625, onsets[0].time = 1e-4;
+  RigOutline rig;
+  rig.window = {{0.0125, 0.0125}, {0.1375, 0.0125}, {0.1375, 0.0875}, {0.0125, 0.0875}};
+  rig.clamp_tips = {{0.025, 0.00625}, {0.125, 0.00625}, {0.125, 0.09375}, {0.025, 0.09375}};
+  const std::string script = damage_map_script(mesh, onsets, "t", "a.svg", "a.png", rig);
+  EXPECT_NE(script.find("$clamps << EOD\n25.000000 6.250000\n125.000000 6.250000\n"), std::string::npos);
+  EXPECT_NE(script.find("$window << EOD\n12.500000 12.500000\n"), std::string::npos);
+  EXPECT_NE(script.find("87.500000\n12.500000 12.500000\nEOD"), std::string::npos) << "closed";
+  EXPECT_NE(script.find(clamp_tip_note), std::string::npos);
+  const auto dir = std::filesystem::temp_directory_path() / "plyimpact-maps-rig";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const DamageMapFiles files = write_damage_maps(dir, mesh, onsets, rig);
+  EXPECT_TRUE(files.warning.empty()) << files.warning; // gnuplot draws it
+  EXPECT_EQ(files.images.size(), 2U);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 // headless Chromium without console errors (the screenshot is docs/images/report-html.png); a sweep's
 // report opened the same way (docs/images/sweep-report-html.png).
 #include "plyimpact/analysis/recorders.hpp"
+#include "plyimpact/fem/structured_mesh.hpp"
 #include "plyimpact/io/svg_plot.hpp"
 #include "support/browser.hpp"
 #include "support/cli.hpp"
@@ -73,6 +74,20 @@ TEST(SvgPlot, APointThatIsNotFiniteIsAGapBetweenTwoLines) {
       svg_line_plot({"", "x", "y", {{"", {0.0, 1.0, nan, 3.0, 4.0}, {0.0, 1.0, 2.0, 1.0, 0.0}}}});
   EXPECT_EQ(count(svg, "<polyline"), 2U);
   EXPECT_EQ(count(svg, ","), 4U) << "one comma per point drawn";
+}
+
+TEST(SvgPlot, TheOnsetMapOnARigCirclesTheClampTipsAndDashesTheWindow) {
+  const Mesh mesh = structured_rectangle({0.150, 0.100}, 6, 4);
+  RigOutline rig;
+  rig.window = {{0.0125, 0.0125}, {0.1375, 0.0125}, {0.1375, 0.0875}, {0.0125, 0.0875}};
+  rig.clamp_tips = {{0.025, 0.00625}, {0.125, 0.00625}, {0.125, 0.09375}, {0.025, 0.09375}};
+  const std::string svg = svg_onset_map(mesh, {}, 0.075, 0.05, rig);
+  EXPECT_EQ(count(svg, "class=\"clamp\""), 4U);
+  EXPECT_EQ(count(svg, "class=\"window\""), 1U);
+  EXPECT_NE(svg.find(xml_escaped(clamp_tip_note)), std::string::npos);
+  const std::string bare = svg_onset_map(mesh, {}, 0.075, 0.05);
+  EXPECT_EQ(count(bare, "class=\"clamp\""), 0U);
+  EXPECT_EQ(count(bare, "class=\"window\""), 0U);
 }
 
 TEST(ThinnedHistory, KeepsABoundedEvenlySpacedSubsetOfTheSteps) {

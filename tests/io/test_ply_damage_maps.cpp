@@ -82,7 +82,7 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 
 TEST(PlyDamageMaps, OneMapPerPlyAndTheProjectedOneEachWithAPolygonPerElementFilledWithItsValue) {
   const auto rows = written_and_read("specs");
-  const auto specs = ply_damage_map_plots(rows, Eigen::Vector2d(0.1, 0.075));
+  const auto specs = ply_damage_map_plots(rows, MapMarks{Eigen::Vector2d(0.1, 0.075), {}});
   ASSERT_EQ(specs.size(), 5U);
   const std::array<const char*, 5> names{"damage_map_ply01", "damage_map_ply02", "damage_map_ply03",
                                          "damage_map_ply04", "damage_map_projected"};
@@ -110,7 +110,18 @@ TEST(PlyDamageMaps, OneMapPerPlyAndTheProjectedOneEachWithAPolygonPerElementFill
   EXPECT_EQ(occurrences(specs[4].extra, "cb 0 "), 10U);
   EXPECT_EQ(occurrences(specs[4].extra, "cb 0.4 "), 0U);
   // Without an impact point there is no marker.
-  EXPECT_EQ(ply_damage_map_plots(rows, std::nullopt).front().curves.size(), 1U);
+  EXPECT_EQ(ply_damage_map_plots(rows, MapMarks{}).front().curves.size(), 1U);
+  // On a rig: the window's edge, closed (5 corners), and the clamp tips named as what they are.
+  RigOutline rig;
+  rig.window = {{0.0125, 0.0125}, {0.1375, 0.0125}, {0.1375, 0.0875}, {0.0125, 0.0875}};
+  rig.clamp_tips = {{0.025, 0.00625}, {0.125, 0.09375}};
+  const auto on_rig = ply_damage_map_plots(rows, MapMarks{std::nullopt, rig});
+  ASSERT_EQ(on_rig.front().curves.size(), 3U); // element centres, window, clamp tips
+  EXPECT_EQ(on_rig.front().curves[1].title, "window edge");
+  EXPECT_EQ(occurrences(on_rig.front().curves[1].data, "\n"), 6U); // header + 5 corners
+  EXPECT_EQ(on_rig.front().curves[2].title, clamp_tip_note);
+  EXPECT_NE(on_rig.front().curves[2].data.find("25.000000,6.250000\n125.000000,93.750000"),
+            std::string::npos);
 }
 
 TEST(PlyDamageMaps, AFolderWithoutDamageElementsHasNoMaps) {

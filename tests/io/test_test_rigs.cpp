@@ -77,6 +77,33 @@ TEST(TestRigs, TheAstmStaticDeckGivesTheAnswerOfTheExampleThatSpellsTheRigOut) {
   EXPECT_NE(a.at("rig").get<std::string>().find("unilateral: the plate may lift off"), std::string::npos);
 }
 
+TEST(TestRigs, TheMapsOutlineTheSupportsTheMeshHolds) {
+  // The outline drawn on the maps is where the supports are: each clamp tip is a node of the mesh's
+  // "clamps" set, each window corner a node of its "window" set, and the window is the standard's
+  // 125 x 75 mm centred on the 150 x 100 mm coupon. The circular rig's support is the mesh's rim: nothing
+  // to draw.
+  const Rig rig = build_rig(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})}, false);
+  const RigOutline outline = rig_outline(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})});
+  ASSERT_EQ(outline.clamp_tips.size(), 4U);
+  ASSERT_EQ(outline.window.size(), 4U);
+  const auto nearest = [&](const Eigen::Vector2d& p, const char* set) {
+    double gap = INFINITY;
+    for (const int n : rig.mesh.node_set(set))
+      gap = std::min(gap, (rig.mesh.node(n) - p).norm());
+    return gap;
+  };
+  for (const Eigen::Vector2d& tip : outline.clamp_tips)
+    EXPECT_LT(nearest(tip, "clamps"), 1e-12) << tip.transpose();
+  for (const Eigen::Vector2d& corner : outline.window)
+    EXPECT_LT(nearest(corner, "window"), 1e-12) << corner.transpose();
+  EXPECT_NEAR((outline.window[2] - outline.window[0]).x(), 0.125, 1e-12);
+  EXPECT_NEAR((outline.window[2] - outline.window[0]).y(), 0.075, 1e-12);
+  EXPECT_NEAR((outline.window[0] + outline.window[2]).x() / 2, 0.075, 1e-12);
+  EXPECT_NEAR((outline.window[0] + outline.window[2]).y() / 2, 0.050, 1e-12);
+  EXPECT_TRUE(rig_outline(RigSpec{RigKind::circular, 0.1, rig_meshing({})}).clamp_tips.empty());
+  EXPECT_TRUE(rig_outline(std::nullopt).window.empty());
+}
+
 TEST(TestRigs, TheAstmImpactorHasTheStandardsNoseAndEnergyUnlessTheDeckGivesThem) {
   const std::string impactor = "[impactor]\nmass = 5.5\nE = 210e9\n";
   const Deck d = rig_deck("impact", "preset = \"astm-d7136\"", impactor);

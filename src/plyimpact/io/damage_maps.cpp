@@ -32,11 +32,34 @@ std::string element_outlines(const Mesh& mesh) {
   return s;
 }
 
+/// The rig's window edge (dashed) and clamp tips (open circles, clamp_tip_note in the key) as a
+/// datablock and its plot clauses (each beginning ", "); empty without a rig.
+std::pair<std::string, std::string> rig_outline_layers(const RigOutline& rig) {
+  std::string data, clauses;
+  if (!rig.window.empty()) {
+    data += "$window << EOD\n";
+    for (std::size_t k = 0; k <= rig.window.size(); ++k)
+      data += fmt::format("{:.6f} {:.6f}\n", rig.window[k % rig.window.size()].x() * 1e3,
+                          rig.window[k % rig.window.size()].y() * 1e3);
+    data += "EOD\n";
+    clauses += ", $window using 1:2 with lines dt 2 lw 1.5 lc rgb '#000000' title 'window edge'";
+  }
+  if (!rig.clamp_tips.empty()) {
+    data += "$clamps << EOD\n";
+    for (const Eigen::Vector2d& p : rig.clamp_tips)
+      data += fmt::format("{:.6f} {:.6f}\n", p.x() * 1e3, p.y() * 1e3);
+    data += "EOD\n";
+    clauses += fmt::format(", $clamps using 1:2 with points pt 6 ps 2.4 lw 1.5 lc rgb '#000000' title '{}'",
+                           clamp_tip_note);
+  }
+  return {data, clauses};
+}
+
 } // namespace
 
 std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& points,
                               const std::string& title, const std::string& svg_path,
-                              const std::string& png_path) {
+                              const std::string& png_path, const RigOutline& rig) {
   const BoundingBox& box = mesh.bounds();
   const double x0 = box.x_min * 1e3, y0 = box.y_min * 1e3, x1 = box.x_max * 1e3, y1 = box.y_max * 1e3; // mm
   const double a = x1 - x0, b = y1 - y0;
@@ -44,6 +67,8 @@ std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& 
   for (const auto& p : points)
     s += fmt::format("{:.6f} {:.6f} {:.4f}\n", p.x * 1e3, p.y * 1e3, p.time * 1e6);
   s += "EOD\n";
+  const auto [rig_data, rig_clauses] = rig_outline_layers(rig);
+  s += rig_data;
   s += fmt::format("set title \"{}\" noenhanced\n", title);
   s += "set xlabel 'x [mm]'\nset ylabel 'y [mm]'\n";
   s += fmt::format("set xrange [{:.6f}:{:.6f}]\nset yrange [{:.6f}:{:.6f}]\nset size ratio -1\n", x0, x1, y0,
@@ -51,8 +76,10 @@ std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& 
   s += element_outlines(mesh); // thin lines; tics in mm on the axes
   s += "set xtics out nomirror\nset ytics out nomirror\n";
   s += "set cblabel 'onset time [us]'\n";
-  s += "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\nset key off\n";
-  const std::string plot = "plot $failed using 1:2:3 with points pt 5 ps 1.6 lc palette\n";
+  s += "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n";
+  s += rig_clauses.empty() ? "set key off\n" : "set key below noenhanced\n";
+  const std::string plot =
+      "plot $failed using 1:2:3 with points pt 5 ps 1.6 lc palette notitle" + rig_clauses + "\n";
   s += fmt::format("set terminal svg size 800,{} dynamic font 'Sans,11'\nset output '{}'\n",
                    static_cast<int>(800 * b / a) + 120, svg_path);
   s += plot;
@@ -63,7 +90,7 @@ std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& 
 }
 
 DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& mesh,
-                                 const std::vector<DamageOnset>& onsets) {
+                                 const std::vector<DamageOnset>& onsets, const RigOutline& rig) {
   namespace fs = std::filesystem;
   DamageMapFiles files;
   std::map<std::tuple<std::string, std::string, int>, std::vector<DamageOnset>> groups;
@@ -92,10 +119,10 @@ DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& m
     const fs::path svg_tmp = dir / (stem + ".svg.tmp"), png_tmp = dir / (stem + ".png.tmp");
     // The kept script draws to the final names; the one run here draws to temporary names first.
     write_file_atomically(
-        gp, damage_map_script(mesh, points, title, svg.filename().string(), png.filename().string()));
+        gp, damage_map_script(mesh, points, title, svg.filename().string(), png.filename().string(), rig));
     files.scripts.push_back(gp);
     if (!have_gnuplot) continue;
-    batch += damage_map_script(mesh, points, title, svg_tmp.string(), png_tmp.string()) + "reset\n";
+    batch += damage_map_script(mesh, points, title, svg_tmp.string(), png_tmp.string(), rig) + "reset\n";
     pending.push_back({svg, png, svg_tmp, png_tmp, gp});
   }
   if (pending.empty()) return files;

@@ -4,6 +4,7 @@
 // (Debian's gnuplot-nox) from a generated, self-contained script that is kept next to the images.
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/fem/mesh.hpp"
+#include "plyimpact/io/test_rigs.hpp"
 
 #include <filesystem>
 #include <string>
@@ -23,11 +24,12 @@ inline constexpr const char* damage_maps_folder = "damage_maps";
 /// Writes damage_map_<criterion>_<ply|interface><n>.{gp,svg,png} into `dir` (atomically; created when
 /// there is a map to write). An impact run passes RESULTS/damage_maps_folder.
 [[nodiscard]] DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& mesh,
-                                               const std::vector<DamageOnset>& onsets);
+                                               const std::vector<DamageOnset>& onsets,
+                                               const RigOutline& rig = {});
 
 /// The gnuplot script of one map (exposed for tests).
 [[nodiscard]] std::string damage_map_script(const Mesh& mesh, const std::vector<DamageOnset>& points,
                                             const std::string& title, const std::string& svg_path,
-                                            const std::string& png_path);
+                                            const std::string& png_path, const RigOutline& rig = {});
 
 } // namespace plyimpact

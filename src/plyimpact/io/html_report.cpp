@@ -185,7 +185,8 @@ void damage_section(std::string& h, const ImpactReportInput& in) {
     h += "</table>\n";
   }
   if (in.mesh != nullptr && in.onsets != nullptr)
-    h += svg_onset_map(*in.mesh, *in.onsets, in.settings.impactor.x, in.settings.impactor.y);
+    h += svg_onset_map(*in.mesh, *in.onsets, in.settings.impactor.x, in.settings.impactor.y,
+                       rig_outline(in.deck.rig));
   h += "</section>\n";
 }
 

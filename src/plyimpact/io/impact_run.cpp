@@ -159,8 +159,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
     folder->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
     folder->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
     if (options.pictures) {
-      const DamageMapFiles maps =
-          write_damage_maps(folder->path() / damage_maps_folder, model.mesh(), damage->onsets());
+      const DamageMapFiles maps = write_damage_maps(folder->path() / damage_maps_folder, model.mesh(),
+                                                    damage->onsets(), rig_outline(deck.rig));
       if (!maps.warning.empty()) out.notes.push_back(maps.warning);
     }
   }

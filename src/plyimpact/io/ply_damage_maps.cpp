@@ -107,11 +107,41 @@ std::string map_settings(const std::vector<const DamageElementRow*>& elements,
   return s;
 }
 
+/// The rig's window edge (dashed) and clamp tips (open circles) over a map, with clamp_tip_note in the key.
+std::vector<PlotCurve> rig_outline_curves(const RigOutline& rig) {
+  std::vector<PlotCurve> curves;
+  if (!rig.window.empty()) {
+    PlotCurve window;
+    window.data = "x_mm,y_mm\n";
+    for (std::size_t k = 0; k <= rig.window.size(); ++k) {
+      const Eigen::Vector2d& p = rig.window[k % rig.window.size()];
+      window.data += fmt::format("{:.6f},{:.6f}\n", p.x() * 1e3, p.y() * 1e3);
+    }
+    window.using_expr = "1:2";
+    window.style = "lines dt 2 lw 1.5";
+    window.colour = "#000000";
+    window.title = "window edge";
+    curves.push_back(std::move(window));
+  }
+  if (!rig.clamp_tips.empty()) {
+    PlotCurve tips;
+    tips.data = "x_mm,y_mm\n";
+    for (const Eigen::Vector2d& p : rig.clamp_tips)
+      tips.data += fmt::format("{:.6f},{:.6f}\n", p.x() * 1e3, p.y() * 1e3);
+    tips.using_expr = "1:2";
+    tips.style = "points pt 6 ps 2.4 lw 1.5";
+    tips.colour = "#000000";
+    tips.title = clamp_tip_note;
+    curves.push_back(std::move(tips));
+  }
+  return curves;
+}
+
 /// The curves of a map: the element centres in the palette (invisible; they make gnuplot draw the colour
 /// box) and the impact point (a white disc, then the marker).
 std::vector<PlotCurve> map_curves(const std::vector<const DamageElementRow*>& elements,
-                                  const std::vector<double>& values,
-                                  const std::optional<Eigen::Vector2d>& impact_point) {
+                                  const std::vector<double>& values, const MapMarks& marks) {
+  const std::optional<Eigen::Vector2d>& impact_point = marks.impact_point;
   PlotCurve centres;
   centres.data = "x_mm,y_mm,d\n";
   for (std::size_t i = 0; i < elements.size(); ++i)
@@ -134,11 +164,13 @@ std::vector<PlotCurve> map_curves(const std::vector<const DamageElementRow*>& el
     curves.push_back(disc);
     curves.push_back(cross);
   }
+  for (PlotCurve& c : rig_outline_curves(marks.rig))
+    curves.push_back(std::move(c));
   return curves;
 }
 
 PlotSpec map_spec(std::string name, std::string title, const std::vector<const DamageElementRow*>& elements,
-                  const std::vector<double>& values, const std::optional<Eigen::Vector2d>& impact_point,
+                  const std::vector<double>& values, const MapMarks& marks,
                   const MapScale& scale = ply_scale) {
   PlotSpec spec;
   spec.name = std::move(name);
@@ -147,23 +179,25 @@ PlotSpec map_spec(std::string name, std::string title, const std::vector<const D
   spec.ylabel = "y [mm]";
   spec.key = "at screen 0.98, 0.02 right bottom"; // bottom right corner, clear of the axes and labels
   spec.extra = map_settings(elements, values, scale);
-  spec.curves = map_curves(elements, values, impact_point);
+  spec.curves = map_curves(elements, values, marks);
   return spec;
 }
 
-/// The impact point of a results folder's deck.toml, or none when the deck cannot be read.
-std::optional<Eigen::Vector2d> impact_point_of(const fs::path& dir) {
+/// The impact point and the rig of a results folder's deck.toml; none when the deck cannot be read.
+MapMarks marks_of(const fs::path& dir) {
   std::ifstream in(dir / "deck.toml");
-  if (!in) return std::nullopt;
+  if (!in) return {};
   std::stringstream text;
   text << in.rdbuf();
   try {
     const Deck deck = parse_deck(text.str(), (dir / "deck.toml").string());
-    if (deck.impactor) return Eigen::Vector2d(deck.impactor->x, deck.impactor->y);
+    MapMarks marks{std::nullopt, rig_outline(deck.rig)};
+    if (deck.impactor) marks.impact_point = Eigen::Vector2d(deck.impactor->x, deck.impactor->y);
+    return marks;
   } catch (const std::exception&) {
     // A deck that no longer reads (e.g. a mesh file moved): the maps go without the marker.
   }
-  return std::nullopt;
+  return {};
 }
 
 /// The element's corner nodes 0-3 of the Q9 (counter-clockwise) as the cells ",x1,y1,…,x4,y4".
@@ -249,8 +283,7 @@ std::vector<std::pair<int, double>> projected_damage(const std::vector<DamageEle
   return out;
 }
 
-std::vector<PlotSpec> ply_damage_map_plots(const std::vector<DamageElementRow>& rows,
-                                           const std::optional<Eigen::Vector2d>& impact_point) {
+std::vector<PlotSpec> ply_damage_map_plots(const std::vector<DamageElementRow>& rows, const MapMarks& marks) {
   std::vector<PlotSpec> specs;
   if (rows.empty()) return specs;
   std::map<int, std::vector<const DamageElementRow*>> plies;
@@ -273,7 +306,7 @@ std::vector<PlotSpec> ply_damage_map_plots(const std::vector<DamageElementRow>& 
                              fmt::format("Ply {} of {} ({}): largest of d_ft, d_fc, d_mt, d_mc per element "
                                          "(max {:.3g})",
                                          ply, count, orientation, top),
-                             members, values, impact_point));
+                             members, values, marks));
   }
   std::vector<const DamageElementRow*> geometry;
   std::vector<double> values;
@@ -289,14 +322,14 @@ std::vector<PlotSpec> ply_damage_map_plots(const std::vector<DamageElementRow>& 
                            fmt::format("Projected damage: largest damage variable of any ply per element "
                                        "(max {:.3g})",
                                        top),
-                           geometry, values, impact_point));
+                           geometry, values, marks));
   return specs;
 }
 
 std::vector<PlotSpec> ply_damage_map_plots(const fs::path& dir) {
   const fs::path csv = dir / damage_elements_file;
   if (!fs::exists(csv)) return {};
-  return ply_damage_map_plots(read_damage_elements_csv(csv), impact_point_of(dir));
+  return ply_damage_map_plots(read_damage_elements_csv(csv), marks_of(dir));
 }
 
 std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result) {
@@ -369,7 +402,7 @@ std::vector<PlotSpec> delamination_map_plots(const fs::path& dir) {
   };
   const auto cracked = [](double d) { return d >= 1.0; };
   const auto softening = [](double d) { return d > 0.0 && d < 1.0; };
-  const std::optional<Eigen::Vector2d> impact_point = impact_point_of(dir);
+  const MapMarks marks = marks_of(dir);
   std::vector<PlotSpec> specs;
   for (std::size_t i = 0; i < after_ply.size(); ++i)
     specs.push_back(
@@ -377,13 +410,13 @@ std::vector<PlotSpec> delamination_map_plots(const fs::path& dir) {
                  fmt::format("Interface after ply {}: cohesive damage d per interface point "
                              "(delaminated {:.3g} mm^2, softening {:.3g} mm^2)",
                              after_ply[i], area_where(damage[i], cracked), area_where(damage[i], softening)),
-                 geometry, damage[i], impact_point, interface_scale));
+                 geometry, damage[i], marks, interface_scale));
   const std::vector<double> projected = largest_over(damage);
   specs.push_back(map_spec("delamination_map_projected",
                            fmt::format("Projected delamination (C-scan view): largest d of any interface "
                                        "(delaminated {:.3g} mm^2)",
                                        area_where(projected, cracked)),
-                           geometry, projected, impact_point, interface_scale));
+                           geometry, projected, marks, interface_scale));
   return specs;
 }
 

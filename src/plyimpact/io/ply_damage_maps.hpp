@@ -28,6 +28,7 @@
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/ply_damage_table.hpp"
+#include "plyimpact/io/test_rigs.hpp"
 
 #include <Eigen/Core>
 
@@ -67,6 +68,12 @@ struct DamageElementRow {
 /// delamination_points.csv of a stacked plate's interfaces.
 [[nodiscard]] std::string delamination_points_csv(const DelaminationResult& result);
 
+/// What a map marks besides the damage: the impact point [m] and the rig's window and clamp tips.
+struct MapMarks {
+  std::optional<Eigen::Vector2d> impact_point;
+  RigOutline rig;
+};
+
 /// Reads damage_elements.csv (columns by name). Throws std::runtime_error naming the file and the line
 /// when a column is missing or a value is not a number.
 [[nodiscard]] std::vector<DamageElementRow> read_damage_elements_csv(const std::filesystem::path& csv);
@@ -76,11 +83,12 @@ struct DamageElementRow {
 [[nodiscard]] std::vector<std::pair<int, double>> projected_damage(const std::vector<DamageElementRow>& rows);
 
 /// The damage maps of a results folder: one per ply and the projected map; none without
-/// damage_elements.csv. `impact_point` [m]: marked on every map when given.
+/// damage_elements.csv. The marks are drawn on every map.
 [[nodiscard]] std::vector<PlotSpec> ply_damage_map_plots(const std::vector<DamageElementRow>& rows,
-                                                         const std::optional<Eigen::Vector2d>& impact_point);
+                                                         const MapMarks& marks);
 
-/// The maps of results folder `dir` (reads damage_elements.csv and the impact point of deck.toml).
+/// The maps of results folder `dir` (reads damage_elements.csv, and the impact point and the rig of
+/// deck.toml).
 [[nodiscard]] std::vector<PlotSpec> ply_damage_map_plots(const std::filesystem::path& dir);
 
 /// The interfaces' maps of results folder `dir`: one per interface and the projected map (reads

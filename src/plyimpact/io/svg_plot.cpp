@@ -234,7 +234,7 @@ std::string svg_ply_stack(const Laminate& laminate) {
 }
 
 std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onsets, double impact_x,
-                          double impact_y, int width) {
+                          double impact_y, const RigOutline& rig, int width) {
   const BoundingBox& box = mesh.bounds();
   const double margin = 20.0, legend_h = 46.0;
   const double scale = (width - 2.0 * margin) / std::max(box.x_max - box.x_min, 1e-12);
@@ -257,6 +257,18 @@ std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onse
   for (const DamageOnset& o : onsets)
     fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"/>\n", X(o.x), Y(o.y),
                    ramp(t1 > t0 ? (o.time - t0) / (t1 - t0) : 0.0));
+  if (!rig.window.empty()) {
+    s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
+    for (const Eigen::Vector2d& p : rig.window)
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+    s += "\"/>\n";
+  }
+  for (const Eigen::Vector2d& p : rig.clamp_tips)
+    fmt::format_to(
+        out,
+        "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
+        "stroke-width=\"1.5\"/>\n",
+        X(p.x()), Y(p.y()));
   fmt::format_to(out,
                  "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" class=\"impact\"/>"
                  "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
@@ -270,6 +282,9 @@ std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onse
   else
     fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">onset time {:.4g} … {:.4g} µs ({} onsets)</text>\n",
                    margin + 210.0, ly + 10.0, t0 * 1e6, t1 * 1e6, onsets.size());
+  if (!rig.clamp_tips.empty())
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">○ {}; - - window edge</text>\n", margin, ly + 30.0,
+                   xml_escaped(clamp_tip_note));
   return s + "</svg>\n";
 }
 

@@ -4,6 +4,7 @@
 // no script, no external reference), sized by its viewBox.
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/fem/mesh.hpp"
+#include "plyimpact/io/test_rigs.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 
 #include <string>
@@ -42,8 +43,11 @@ struct LinePlot {
 [[nodiscard]] std::string svg_ply_stack(const Laminate& laminate);
 
 /// The plate's elements (corner to corner) with every damage onset drawn at its Gauss point, coloured by
-/// its time (legend from the first to the last onset), and the impact point marked.
+/// its time (legend from the first to the last onset), the impact point marked, and the rig's window edge
+/// and clamp tips where the plate sits on a rig (RigOutline: the onsets at the tips are the point supports'
+/// singular stresses).
 [[nodiscard]] std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onsets,
-                                        double impact_x, double impact_y, int width = 640);
+                                        double impact_x, double impact_y, const RigOutline& rig = {},
+                                        int width = 640);
 
 } // namespace plyimpact

@@ -75,6 +75,17 @@ void add_disk(double d) {
 
 } // namespace
 
+RigOutline rig_outline(const std::optional<RigSpec>& spec) {
+  if (!spec || spec->kind != RigKind::astm_d7136) return {};
+  const double x0 = (coupon_a - window_a) / 2, y0 = (coupon_b - window_b) / 2;
+  const double cx = coupon_a / 2, cy = coupon_b / 2;
+  return {{{x0, y0}, {x0 + window_a, y0}, {x0 + window_a, y0 + window_b}, {x0, y0 + window_b}},
+          {{cx - clamp_dx, cy - clamp_dy},
+           {cx + clamp_dx, cy - clamp_dy},
+           {cx + clamp_dx, cy + clamp_dy},
+           {cx - clamp_dx, cy + clamp_dy}}};
+}
+
 std::string_view to_string(RigKind kind) {
   return kind == RigKind::astm_d7136 ? "astm-d7136" : "circular";
 }

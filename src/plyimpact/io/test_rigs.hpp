@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace plyimpact {
 
@@ -36,6 +37,20 @@ struct Rig {
   std::optional<double> energy_per_thickness; ///< the standard's impact energy rule [J/m]
   std::string description;                    ///< what was built, for the reports
 };
+
+/// What the maps of a run on a rig draw of it [m]: the window's edge (a closed polygon, empty where the
+/// rig has none) and the clamp tips. The tips hold u, v, w at single nodes: point supports, whose
+/// stresses are singular, so failure criteria and ply damage light up around them whatever the impact
+/// does (docs/mesh.md, "Test rigs"). The maps mark them, with clamp_tip_note, so that they are not read
+/// as impact damage.
+struct RigOutline {
+  std::vector<Eigen::Vector2d> window;
+  std::vector<Eigen::Vector2d> clamp_tips;
+};
+inline constexpr const char* clamp_tip_note = "clamp tips (point supports: their stresses are singular)";
+/// The outline of `spec`'s rig; empty for none (no rig, or the circular rig, whose support is the mesh's
+/// edge).
+[[nodiscard]] RigOutline rig_outline(const std::optional<RigSpec>& spec);
 
 /// C_E of ASTM D7136 (6.7 J/mm, docs/mesh.md for the source) [J/m].
 inline constexpr double astm_d7136_energy_per_thickness = 6.7e3;
