@@ -7,6 +7,7 @@
 
 #include <pthread.h>
 
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -82,15 +83,20 @@ extern "C" void ignore_signal(int /*sig*/) {}
 
 TEST(ChildProcess, ASignalToTheWaitingCallerStopsTheChild) {
   // As Ctrl-C reaches the command line's handler: a handler without SA_RESTART, the signal sent to the
-  // waiting thread 0.2 s into a child that would take a minute.
+  // waiting thread into a child that would take a minute. It is sent every 0.2 s until the call returns:
+  // one that arrives before the caller waits (a fork of a sanitized process can take longer than that)
+  // interrupts nothing, and the next one must stop the child.
   struct sigaction action {};
   action.sa_handler = ignore_signal;
   struct sigaction previous {};
   ASSERT_EQ(sigaction(SIGUSR1, &action, &previous), 0);
   const pthread_t waiter = pthread_self();
-  std::thread sender([waiter] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    pthread_kill(waiter, SIGUSR1);
+  std::atomic<bool> returned = false;
+  std::thread sender([waiter, &returned] {
+    while (!returned) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      if (!returned) pthread_kill(waiter, SIGUSR1);
+    }
   });
   const auto t0 = std::chrono::steady_clock::now();
   const auto [what, thrown] = failure_of([]() -> std::string {
@@ -98,6 +104,7 @@ TEST(ChildProcess, ASignalToTheWaitingCallerStopsTheChild) {
     return "";
   });
   const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  returned = true;
   sender.join();
   sigaction(SIGUSR1, &previous, nullptr);
   EXPECT_NE(what.find("the work: interrupted"), std::string::npos) << what;
