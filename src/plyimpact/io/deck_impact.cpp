@@ -7,6 +7,10 @@
 
 namespace plyimpact::deck_tables {
 
+bool gives_impact_speed(const TableReader& impactor) {
+  return impactor.has("velocity") || impactor.has("energy");
+}
+
 namespace {
 
 /// impactor.velocity, or the velocity √(2E/m) of the impact energy impactor.energy: exactly one.
@@ -14,7 +18,7 @@ double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& in
                             const std::optional<double>& default_energy) {
   const bool velocity = t.has("velocity");
   const bool energy = t.has("energy");
-  if (!velocity && !energy && default_energy) { // the rig's rule
+  if (!gives_impact_speed(t) && default_energy) { // the rig's rule
     input.energy = default_energy;
     return std::sqrt(2.0 * *default_energy / mass);
   }

@@ -179,7 +179,7 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
       d.impactor_defaults.energy = *rig.energy_per_thickness * d.laminate->thickness();
       // The standard's energy is named only where it is the one that runs.
       const auto impactor = top.optional_table("impactor");
-      if (impactor && (impactor->has("velocity") || impactor->has("energy")))
+      if (impactor && gives_impact_speed(*impactor))
         d.rig_description += "; impact energy from [impactor] (the standard's C_E x h not used)";
       else
         d.rig_description += fmt::format(

@@ -45,6 +45,8 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
 [[nodiscard]] BoundaryConditions read_boundary(const TableReader& t, const Mesh* file_mesh);
 
 // deck_impact.cpp
+/// [impactor] gives the impact's speed itself (velocity or energy): a rig's energy rule does not apply.
+[[nodiscard]] bool gives_impact_speed(const TableReader& impactor);
 /// [impactor]; `input` receives the density and energy when the deck gives them.
 /// With `file_mesh`, the impact point defaults to the centre of its bounding box and must lie on it.
 [[nodiscard]] Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate,
