@@ -25,12 +25,15 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <atomic>
+#include <chrono>
+#include <exception>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -64,7 +67,8 @@ struct ImpactRunOutput {
 
 /// An impact run of `deck`, as `plyimpact impact DECK [-o DIR]` runs it (without the progress display).
 ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem::path>& output_dir,
-                           bool overwrite, bool nonlinear, bool keep_history) {
+                           bool overwrite, bool nonlinear, bool keep_history,
+                           const std::atomic<bool>* cancel) {
   plyimpact::require_sections(deck, plyimpact::AnalysisKind::impact);
   // The case first: it refuses a mesh beyond the memory available before a folder is claimed.
   const plyimpact::ImpactCase impact(plyimpact::impact_case_description(deck, nonlinear));
@@ -76,6 +80,7 @@ ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem
   plyimpact::ImpactRunOptions options;
   if (lock) options.output_dir = lock->dir();
   if (keep_history) options.observers.push_back(&history);
+  options.cancel = cancel;
   plyimpact::ImpactRunOutcome run = plyimpact::run_impact(deck, impact, options);
   ImpactRunOutput out;
   out.summary_json = run.summary.dump();
@@ -83,6 +88,40 @@ ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem
   out.samples = std::move(history.samples());
   out.layout = std::move(run.history_layout);
   return out;
+}
+
+/// `work()` on a thread of its own while the caller's thread, the interpreter's, checks every 20 ms for
+/// Ctrl-C (Python runs its signal handlers only there): at the first, `cancel` is set, the run finishes its
+/// step and returns what it computed, and the result says it was interrupted. Exceptions of `work` are
+/// rethrown here. The GIL is held by neither while they wait.
+template <class Work>
+auto interruptible(std::atomic<bool>& cancel, bool& interrupted, const Work& work) -> decltype(work()) {
+  decltype(work()) result{};
+  std::exception_ptr error;
+  std::atomic<bool> done{false};
+  {
+    const py::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        result = work();
+      } catch (...) {
+        error = std::current_exception();
+      }
+      done = true;
+    });
+    while (!done) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      const py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) { // KeyboardInterrupt (or another handler's exception): stop the run
+        PyErr_Clear();
+        interrupted = true;
+        cancel = true;
+      }
+    }
+    worker.join();
+  }
+  if (error) std::rethrow_exception(error);
+  return result;
 }
 
 /// The threshold search of `plyimpact threshold DECK [--criterion C] [--tolerance T]`: its summary.json
@@ -133,7 +172,8 @@ struct SweepOutput {
 /// `plyimpact sweep DECK --set … -o DIR --jobs N` on threads (MPI stays with the command line): the same
 /// folder, records and table.
 SweepOutput run_sweep(const Deck& deck, const std::vector<std::string>& set_options, const std::string& mode,
-                      const std::filesystem::path& dir, int jobs, bool overwrite) {
+                      const std::filesystem::path& dir, int jobs, bool overwrite,
+                      const std::atomic<bool>* cancel) {
   if (jobs < 1 || jobs > plyimpact::max_sweep_jobs) // before the folder is claimed
     throw py::value_error(
         fmt::format("jobs must lie between 1 and {} threads, got {}", plyimpact::max_sweep_jobs, jobs));
@@ -155,8 +195,9 @@ SweepOutput run_sweep(const Deck& deck, const std::vector<std::string>& set_opti
     return i < pending.size() ? std::optional(i) : std::nullopt;
   };
   SweepOutput out;
-  out.factorizations =
-      plyimpact::run_sweep_cases(sweep, folder, pending, jobs, next, plyimpact::SweepOptions{});
+  plyimpact::SweepOptions options;
+  options.cancel = cancel;
+  out.factorizations = plyimpact::run_sweep_cases(sweep, folder, pending, jobs, next, options);
   const plyimpact::SweepFolder::TableStatus status = folder.write_table();
   out.missing = status.missing;
   out.failed = status.failed;
@@ -231,18 +272,20 @@ PYBIND11_MODULE(_core, m) {
       "run_impact",
       [](const Deck& deck, const std::optional<std::filesystem::path>& output_dir, bool overwrite,
          bool nonlinear, bool keep_history) {
-        ImpactRunOutput out;
-        {
-          const py::gil_scoped_release release;
-          out = run_impact(deck, output_dir, overwrite, nonlinear, keep_history);
-        }
+        std::atomic<bool> cancel{false};
+        bool interrupted = false;
+        ImpactRunOutput out = interruptible(cancel, interrupted, [&] {
+          return run_impact(deck, output_dir, overwrite, nonlinear, keep_history, &cancel);
+        });
         const std::vector<std::string> columns = plyimpact::history_columns(out.layout);
         return py::make_tuple(out.summary_json, out.notes, columns,
-                              history_array(out.samples, columns.size()));
+                              history_array(out.samples, columns.size()), interrupted);
       },
       py::arg("deck"), py::arg("output_dir") = py::none(), py::arg("overwrite") = false,
       py::arg("nonlinear") = false, py::arg("history") = true,
-      "Runs the deck's impact; returns (summary JSON text, notes, history column names, history rows).");
+      "Runs the deck's impact; returns (summary JSON text, notes, history column names, history rows, "
+      "whether "
+      "Ctrl-C stopped it).");
   py::class_<ImpactStudy>(m, "ImpactStudy", "A plate built once, run for many impactors")
       .def(py::init([](const Deck& deck, bool nonlinear) {
              const py::gil_scoped_release release;
@@ -278,15 +321,15 @@ PYBIND11_MODULE(_core, m) {
       "run_sweep",
       [](const Deck& deck, const std::vector<std::string>& set_options, const std::string& mode,
          const std::filesystem::path& dir, int jobs, bool overwrite) {
-        SweepOutput out;
-        {
-          const py::gil_scoped_release release;
-          out = run_sweep(deck, set_options, mode, dir, jobs, overwrite);
-        }
-        return py::make_tuple(out.table_csv, out.factorizations, out.missing, out.failed);
+        std::atomic<bool> cancel{false};
+        bool interrupted = false;
+        const SweepOutput out = interruptible(cancel, interrupted, [&] {
+          return run_sweep(deck, set_options, mode, dir, jobs, overwrite, &cancel);
+        });
+        return py::make_tuple(out.table_csv, out.factorizations, out.missing, out.failed, interrupted);
       },
       py::arg("deck"), py::arg("set_options"), py::arg("mode"), py::arg("output_dir"), py::arg("jobs"),
       py::arg("overwrite") = false,
       "Runs a sweep on threads into output_dir (resuming its records); returns (sweep.csv text, "
-      "factorizations, cases without a record, failed cases).");
+      "factorizations, cases without a record, failed cases, whether Ctrl-C stopped it).");
 }

@@ -15,6 +15,8 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
+import numbers
 import os
 import tempfile
 import tomllib
@@ -58,6 +60,55 @@ __all__ = [
     "sweep",
     "threshold",
 ]
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Arguments of the wrong type are refused where they are given, naming the function, the argument (or the
+# deck key) and what it must be (docs/robustness.md, "Python"), not deep inside with a raw AttributeError.
+
+_PathLike = (str, bytes, os.PathLike)
+
+
+def _type_name(value: Any) -> str:
+    return type(value).__name__
+
+
+def _require(value: Any, types: Any, where: str, expected: str) -> None:
+    """Raises TypeError "where must be expected, got TYPE VALUE" unless value is one of types (bool is
+    not a number here)."""
+    if isinstance(value, bool) and bool not in (types if isinstance(types, tuple) else (types,)):
+        ok = False
+    else:
+        ok = isinstance(value, types)
+    if not ok:
+        raise TypeError(f"{where} must be {expected}, got {_type_name(value)} {value!r}")
+
+
+def _as_deck(case: Any, where: str) -> "Deck":
+    """A Deck, or the deck file a path names."""
+    if isinstance(case, Deck):
+        return case
+    _require(case, _PathLike, f"{where}: case", "a plyimpact.Deck or the path of a deck file")
+    return load(case)
+
+
+def _output_dir(output_dir: Any, where: str) -> str | None:
+    if output_dir is None:
+        return None
+    _require(output_dir, _PathLike, f"{where}: output_dir", "a folder path or None")
+    return os.fsdecode(os.fspath(output_dir))
+
+
+def _flag(value: Any, where: str) -> bool:
+    _require(value, bool, where, "True or False")
+    return value
+
+
+def _require_values(values: Any, where: str) -> None:
+    """A mapping of dotted deck keys (strings) to values."""
+    _require(values, Mapping, where, 'a mapping of dotted deck keys to values, e.g. {"impactor.velocity": 3.0}')
+    for key in values:
+        _require(key, str, f"{where}: key {key!r}", 'a dotted deck key (a string such as "impactor.velocity")')
 
 
 def _toml_text(values: Mapping[str, Any]) -> str:
@@ -120,6 +171,7 @@ class Deck:
         return self._tree
 
     def __getitem__(self, key: str) -> Any:
+        _require(key, str, "Deck[key]: key", 'a dotted deck key (a string such as "impactor.velocity")')
         node: Any = self._values()
         for part in key.split("."):
             if not isinstance(node, dict) or part not in node:
@@ -128,13 +180,14 @@ class Deck:
         return node
 
     def get(self, key: str, default: Any = None) -> Any:
+        _require(key, str, "Deck.get: key", 'a dotted deck key (a string such as "impactor.velocity")')
         try:
             return self[key]
         except KeyError:
             return default
 
-    def __contains__(self, key: str) -> bool:
-        return self.get(key, _missing) is not _missing
+    def __contains__(self, key: object) -> bool:
+        return isinstance(key, str) and self.get(key, _missing) is not _missing
 
     def keys(self) -> list[str]:
         """Every value's dotted key, in the order written."""
@@ -144,6 +197,10 @@ class Deck:
         """A new deck with values replaced: by dotted key (``{"impactor.velocity": 3.0}``) and/or by
         table (``impactor={"velocity": 3.0}``). Tables and keys that do not exist are added."""
         tree = self.to_dict()
+        if values is not None:
+            _require_values(values, "Deck.replace: values")
+        for table, entries in tables.items():
+            _require(entries, Mapping, f"Deck.replace: {table}", f'a mapping of the [{table}] keys to values, e.g. {table}={{"key": 1.0}}')
         changed = dict(values or {})
         for table, entries in tables.items():
             changed.update({f"{table}.{k}": v for k, v in _flatten(entries)})
@@ -177,11 +234,14 @@ def _anchor_mesh_file(tree: dict[str, Any], source: str) -> None:
 
 def load(path: str | os.PathLike[str]) -> Deck:
     """Reads and validates a deck file (docs/deck.md). Raises DeckError with file:line:column."""
-    return Deck(_core.load_deck(os.fspath(path)))
+    _require(path, _PathLike, "load: path", "the path of a deck file (str or os.PathLike)")
+    return Deck(_core.load_deck(os.fsdecode(os.fspath(path))))
 
 
 def parse(text: str, source: str = "<string>") -> Deck:
     """Validates deck text; ``source`` names it in messages."""
+    _require(text, str, "parse: text", "the deck's TOML text (a str)")
+    _require(source, str, "parse: source", "a name for messages (a str)")
     return Deck(_core.parse_deck(text, source))
 
 
@@ -190,6 +250,7 @@ def deck(values: Mapping[str, Any], source: str = "<dict>") -> Deck:
 
         plyimpact.deck({"materials": {"cfrp": {...}}, "laminate": {...}, "plate": {...}, ...})
     """
+    _require(values, Mapping, "deck: values", 'a mapping of tables, e.g. {"impactor": {"mass": 0.314}}')
     return parse(_toml_text(values), source)
 
 
@@ -228,10 +289,20 @@ def impact(
     With ``output_dir`` the results folder is written too (summary.json, history.csv, ...);
     ``nonlinear`` is the command's ``--nonlinear``; ``history=False`` keeps no history in memory.
     """
-    d = case if isinstance(case, Deck) else load(case)
-    out = None if output_dir is None else os.fspath(output_dir)
-    summary, notes, columns, rows = _core.run_impact(d._core, out, overwrite, nonlinear, history)
-    return ImpactRun(json.loads(summary), list(notes), list(columns), rows)
+    d = _as_deck(case, "impact")
+    out = _output_dir(output_dir, "impact")
+    flags = [_flag(v, f"impact: {k}") for k, v in (("overwrite", overwrite), ("nonlinear", nonlinear), ("history", history))]
+    summary, notes, columns, rows, interrupted = _core.run_impact(d._core, out, *flags)
+    run = ImpactRun(json.loads(summary), list(notes), list(columns), rows)
+    if interrupted:  # Ctrl-C: the run finished its step and wrote what it had (docs/python.md)
+        stopped = KeyboardInterrupt(
+            f"plyimpact.impact: interrupted at t = {run.summary.get('end_time', float('nan')):g} s after "
+            f"{run.summary.get('steps')} steps; the results so far are in this exception's .run"
+            + (f" and in {out}" if out else "")
+        )
+        stopped.run = run  # type: ignore[attr-defined]
+        raise stopped
+    return run
 
 
 class ImpactStudy:
@@ -243,14 +314,15 @@ class ImpactStudy:
     The time step must not change between runs: give ``[time] dt`` a number, not "auto"."""
 
     def __init__(self, case: Deck | str | os.PathLike[str], *, nonlinear: bool = False):
-        self.deck = case if isinstance(case, Deck) else load(case)
-        self._core = _core.ImpactStudy(self.deck._core, nonlinear)
+        self.deck = _as_deck(case, "ImpactStudy")
+        self._core = _core.ImpactStudy(self.deck._core, _flag(nonlinear, "ImpactStudy: nonlinear"))
 
     def run(self, *, contact_k: float | None = None, **impactor: Any) -> dict[str, Any]:
         """The impact of the study's plate by the deck's impactor with ``impactor`` keys replaced
         (``velocity=3.0``, ``mass=0.5``, ...) and ``contact_k`` as ``[contact] k``."""
         values: dict[str, Any] = {f"impactor.{k}": v for k, v in impactor.items()}
         if contact_k is not None:
+            _require(contact_k, numbers.Real, "ImpactStudy.run: contact_k", "a number (the contact stiffness k)")
             values["contact.k"] = contact_k
         d = self.deck.replace(values) if values else self.deck
         return json.loads(self._core.run(d._core))
@@ -271,8 +343,11 @@ class Laminate:
         if isinstance(layup, Deck):
             source = layup
         else:
+            _require(layup, str, "Laminate: layup", 'a stacking sequence (a str such as "[0/90]s") or a plyimpact.Deck')
             if material is None or ply_thickness is None:
                 raise TypeError("Laminate(layup, material, ply_thickness): give the material and the ply thickness")
+            _require(material, Mapping, "Laminate: material", 'a mapping of the material keys, e.g. {"E1": 129e9, ...}')
+            _require(ply_thickness, numbers.Real, "Laminate: ply_thickness", "a number in m")
             source = deck(
                 {
                     "analysis": "laminate",
@@ -299,13 +374,15 @@ class Laminate:
 
 def laminate(case: Deck | str | os.PathLike[str]) -> Laminate:
     """The laminate of a deck (or a deck file)."""
-    return Laminate(case if isinstance(case, Deck) else load(case))
+    return Laminate(_as_deck(case, "laminate"))
 
 
 def _plate_analysis(kind: str, case: Any, output_dir: Any, overwrite: bool, nonlinear: bool = False) -> dict[str, Any]:
-    d = case if isinstance(case, Deck) else load(case)
-    out = None if output_dir is None else os.fspath(output_dir)
-    _text, summary = _core.run_plate_analysis(d._core, kind, out, overwrite, nonlinear)
+    d = _as_deck(case, kind)
+    out = _output_dir(output_dir, kind)
+    _text, summary = _core.run_plate_analysis(
+        d._core, kind, out, _flag(overwrite, f"{kind}: overwrite"), _flag(nonlinear, f"{kind}: nonlinear")
+    )
     return json.loads(summary)
 
 
@@ -346,8 +423,12 @@ def threshold(
 
     ``criterion`` and ``tolerance`` default to the deck's [threshold] (the command's --criterion and
     --tolerance)."""
-    d = case if isinstance(case, Deck) else load(case)
-    return json.loads(_core.run_threshold(d._core, criterion, tolerance, nonlinear))
+    d = _as_deck(case, "threshold")
+    _require(criterion, str, "threshold: criterion", 'a criterion name (a str such as "hashin"), or "" for the deck\'s')
+    _require(tolerance, numbers.Real, "threshold: tolerance", "a number in m/s (0 for the deck's)")
+    if tolerance != 0 and not (math.isfinite(tolerance) and tolerance > 0):
+        raise ValueError(f"threshold: tolerance must be a positive number of m/s (or 0 for the deck's), got {tolerance!r}")
+    return json.loads(_core.run_threshold(d._core, criterion, float(tolerance), _flag(nonlinear, "threshold: nonlinear")))
 
 
 def _value_text(value: Any) -> str:
@@ -403,21 +484,38 @@ def sweep(
 
     The cases are recorded in ``output_dir`` (a temporary folder when None; a folder with records of
     the same sweep resumes them). Returns the table of sweep.csv."""
-    d = case if isinstance(case, Deck) else load(case)
+    d = _as_deck(case, "sweep")
+    if values is not None:
+        _require_values(values, "sweep: values")
+    _require(mode, str, "sweep: mode", "'product', 'zip' or '' (the deck's)")
+    _require(jobs, numbers.Integral, "sweep: jobs", "a thread count (an int from 1 to 1024)")
+    _flag(overwrite, "sweep: overwrite")
     options = []
     for key, v in (values or {}).items():
-        listed = v if isinstance(v, str) else ",".join(_value_text(x) for x in v)
+        if not isinstance(v, (str, list, tuple, range)) and not hasattr(v, "tolist"):
+            raise TypeError(
+                f"sweep: values[{key!r}] must be a list of values or a \"start:stop:count\" range, got {_type_name(v)} {v!r}"
+            )
+        listed = v if isinstance(v, str) else ",".join(_value_text(x) for x in (v.tolist() if hasattr(v, "tolist") else v))
         options.append(f"{key}={listed}")
     if mode not in ("", "product", "zip"):
         raise ValueError(f"sweep mode {mode!r}: expected 'product' or 'zip'")
 
     def run(folder: str) -> SweepTable:
-        text, factorizations, missing, failed = _core.run_sweep(d._core, options, mode, folder, jobs, overwrite)
+        text, factorizations, missing, failed, interrupted = _core.run_sweep(
+            d._core, options, mode, folder, int(jobs), overwrite
+        )
+        if interrupted:  # Ctrl-C: the cases under way finish; their records stay for a resume
+            raise KeyboardInterrupt(
+                f"plyimpact.sweep: interrupted with {missing} cases left; "
+                + (f"run it again with output_dir={output_dir!r} to resume" if output_dir is not None else
+                   "give output_dir to keep the records of an interrupted sweep")
+            )
         if missing:
             raise RuntimeError(f"sweep: {missing} cases have no record (interrupted?); run again to resume")
         return SweepTable(text, factorizations)
 
     if output_dir is not None:
-        return run(os.fspath(output_dir))
+        return run(_output_dir(output_dir, "sweep") or "")
     with tempfile.TemporaryDirectory(prefix="plyimpact-sweep-") as folder:
         return run(folder)

@@ -33,7 +33,7 @@ def run_impact(
     overwrite: bool = False,
     nonlinear: bool = False,
     history: bool = True,
-) -> tuple[str, list[str], list[str], npt.NDArray[np.float64]]: ...
+) -> tuple[str, list[str], list[str], npt.NDArray[np.float64], bool]: ...
 def run_plate_analysis(
     deck: Deck,
     kind: str,
@@ -49,4 +49,4 @@ def run_sweep(
     output_dir: str | PathLike[str],
     jobs: int,
     overwrite: bool = False,
-) -> tuple[str, int, int, int]: ...
+) -> tuple[str, int, int, int, bool]: ...

@@ -12,6 +12,7 @@
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/environment.hpp"
 #include "plyimpact/io/impact_progress.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_run.hpp"
@@ -344,7 +345,9 @@ int run(int argc, char** argv) {
     app.parse(args);
   } catch (const CLI::ParseError& e) {
     // --help and --version exit 0; a bad command line exits 2, as a bad deck does (docs/robustness.md)
-    return app.exit(e) == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);
+    fmt::print(stderr, "plyimpact: error: {}\nRun with --help for more information.\n", e.what());
+    return 2;
   }
   try {
     if (*laminate) return run_laminate(o);
@@ -361,6 +364,9 @@ int run(int argc, char** argv) {
     }
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());
+    return 2;
+  } catch (const EnvironmentValueError& e) { // a bad setting of the user's, like a bad option
+    fmt::print(stderr, "plyimpact: error: {}\n", e.what());
     return 2;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "plyimpact: error: out of memory: the run needed more memory than this machine could "

@@ -1,6 +1,7 @@
 // Replays the fuzz corpus and every regression input found by the fuzz targets (fuzz/, docs/robustness.md)
 // in the ordinary test suite, so the release and ASan/UBSan builds check them too.
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/gmsh_mesh.hpp"
 #include "plyimpact/laminate/layup.hpp"
 #include "test_paths.hpp"
 
@@ -59,6 +60,31 @@ TEST(FuzzReplay, EveryLayupInputExpandsOrFailsWithAColumnInsideTheText) {
       EXPECT_LE(e.column(), text.size() + 1) << f;
     }
   }
+}
+
+/// The gmsh contract (fuzz_gmsh): a .msh or .geo input gives a Mesh or a MeshFileError naming the file,
+/// whatever gmsh does with it in its child process, and no script writes a file ("pwned") or runs a command.
+TEST(FuzzReplay, EveryGmshInputMeshesOrFailsWithAMeshFileError) {
+  const auto files = inputs("gmsh");
+  ASSERT_GE(files.size(), 15U);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "plyimpact-fuzz-replay-gmsh";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(fuzz_dir / "corpus" / "gmsh" / "rectangle.geo", dir / "rectangle.geo");
+  int meshed = 0;
+  for (const auto& f : files) {
+    const std::filesystem::path input = dir / ("input" + f.extension().string());
+    std::filesystem::copy_file(f, input, std::filesystem::copy_options::overwrite_existing);
+    try {
+      const Mesh mesh = f.extension() == ".msh" ? read_gmsh_mesh(input) : mesh_gmsh_geometry(input, {});
+      EXPECT_GT(mesh.element_count(), 0) << f;
+      ++meshed;
+    } catch (const MeshFileError& e) {
+      EXPECT_NE(std::string(e.what()).find(input.string()), std::string::npos) << f << ": " << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "pwned") || std::filesystem::exists("pwned")) << f;
+  }
+  EXPECT_GE(meshed, 6) << "the plain geometries and meshes of the corpus mesh";
 }
 
 struct Regression {

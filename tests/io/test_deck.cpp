@@ -295,8 +295,15 @@ interface = 7
 }
 
 /// The base deck with a [damage] table of `keys`.
+/// base_deck with [damage] `keys`, its material given the strengths and toughnesses the progressive model
+/// needs (docs/progressive_damage.md's T300/976).
 Deck damage_deck(const std::string& keys) {
-  return parse_deck(base_deck + "[damage]\n" + keys, "deck.toml");
+  std::string deck = base_deck;
+  deck.replace(
+      deck.find("rho = 1389.2\n"), 13,
+      "rho = 1389.2\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\nS23 = 32.94e6\n"
+      "G_ft = 91.6e3\nG_fc = 79.9e3\nG_mt = 277.0\nG_mc = 788.0\n");
+  return parse_deck(deck + "[damage]\n" + keys, "deck.toml");
 }
 
 /// The message damage_deck(keys) is refused with ("no error" when it is read).

@@ -136,8 +136,23 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   // K too soft for the law's triangle to peak before its end: K ≤ N² / (2 G_Ic) = 3.3e12 Pa/m.
   EXPECT_NE(error_of(as4_peek_law + "penalty_stiffness = 1e12\n").find("[delamination]: "),
             std::string::npos);
-  EXPECT_NE(error_of(as4_peek_law, "[damage]\nmodel = \"progressive\"\n")
-                .find("(the elastic plate with ply damage and interfaces runs with: lagged, explicit)"),
+  // ply damage (its data given) with interfaces iterated implicitly: not a pair that runs
+  std::string damage_data =
+      small_deck("impact", "[damage]\nmodel = \"progressive\"\n[delamination]\n" + as4_peek_law);
+  damage_data.replace(damage_data.find("rho = 1389.2\n"), 13,
+                      "rho = 1389.2\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\n"
+                      "S23 = 32.94e6\nG_ft = 91.6e3\nG_fc = 79.9e3\nG_mt = 277.0\nG_mc = 788.0\n");
+  std::string refused;
+  try {
+    (void)parse_deck(damage_data, "deck.toml");
+  } catch (const DeckError& e) {
+    refused = e.what();
+  }
+  EXPECT_NE(refused.find("(the elastic plate with ply damage and interfaces runs with: lagged, explicit)"),
+            std::string::npos)
+      << refused;
+  // and without the data, the data is what is missing
+  EXPECT_NE(error_of(as4_peek_law, "[damage]\nmodel = \"progressive\"\n").find("needs positive Xt"),
             std::string::npos);
   EXPECT_NE(error_of(as4_peek_law + "typo = 1\n").find("typo"), std::string::npos);
 }

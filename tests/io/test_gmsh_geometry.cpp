@@ -71,6 +71,35 @@ std::vector<int> window_middle_thirds(const Mesh& mesh) {
   return nodes;
 }
 
+// The element count a size field asks for (estimated_element_count), which refuses a field of more than 10^6
+// elements before gmsh meshes: against the integral of 1/h² done by hand.
+TEST(EstimatedElementCount, AUniformSizeGivesTheAreaOverTheSquareOfTheSize) {
+  GeometryMeshing how;
+  how.size_at_point = 0.004;
+  how.growth = 1.0; // h = 4 mm everywhere: 0.1 x 0.08 m / (4 mm)² = 500
+  const BoundingBox box{0.0, 0.1, 0.0, 0.08};
+  EXPECT_NEAR(estimated_element_count(box, {0.03, 0.05}, how), 500.0, 5.0);
+  EXPECT_NEAR(estimated_element_count(box, {0.2, -1.0}, how), 500.0, 5.0); // a point off the box: clamped
+  how.size_at_point.reset(); // the geometry's own sizes: not estimated
+  EXPECT_EQ(estimated_element_count(box, {0.03, 0.05}, how), 0.0);
+}
+
+TEST(EstimatedElementCount, AGradedSizeGivesTheDiskIntegralInsideAndTheCapOutside) {
+  // h = s + a r up to H: inside r_H = (H − s)/a the integral 2π ∫ r dr/(s + a r)² is
+  // 2π/a² [ln(H/s) + s/H − 1]; outside, the rest of the 1 x 1 m box at H: (1 − π r_H²)/H².
+  GeometryMeshing how;
+  how.size_at_point = 1e-3;
+  how.growth = 1.25;
+  how.max_size = 1e-2;
+  const double slope = 0.25, s = 1e-3, H = 1e-2, r_H = (H - s) / slope;
+  const double inside = 2.0 * M_PI / (slope * slope) * (std::log(H / s) + s / H - 1.0);
+  const double outside = (1.0 - M_PI * r_H * r_H) / (H * H);
+  const double n = estimated_element_count({0.0, 1.0, 0.0, 1.0}, {0.5, 0.5}, how);
+  std::printf("  estimated %.1f, by hand %.1f (%.1f inside r_H = %.3f m)\n", n, inside + outside, inside,
+              r_H);
+  EXPECT_NEAR(n, inside + outside, 0.01 * (inside + outside));
+}
+
 TEST(GmshGeometry, TheSizeFieldGradesTheElementsTowardTheImpactPoint) {
   const Mesh mesh = coupon_mesh();
   const Eigen::Vector2d centre(a / 2, b / 2);

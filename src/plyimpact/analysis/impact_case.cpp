@@ -10,6 +10,8 @@
 #include "plyimpact/analysis/recorders.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,6 +27,34 @@ const Laminate& impacted_laminate(const ImpactCaseDescription& d) {
   for (const Region& r : d.regions)
     if (r.contains(d.impactor.x, d.impactor.y)) lam = &d.laminates[static_cast<std::size_t>(r.laminate)];
   return *lam;
+}
+
+/// The deck values that can make the impact step's matrix singular or not positive definite, for the
+/// message of a factorization that failed (docs/robustness.md, "Solver failures").
+std::string singular_matrix_causes(const ImpactCaseDescription& d) {
+  std::string causes;
+  if (d.delamination)
+    causes +=
+        fmt::format("delamination.penalty_stiffness = {:.4g} Pa/m (far above the plies' own stiffness the "
+                    "matrix loses its digits; \"auto\" gives Turon's 50 E3/t); ",
+                    d.delamination->stack.interface.penalty_stiffness);
+  return causes +
+         "the materials' moduli E1, E2, G12, G13, G23 (one many orders below the others); the element "
+         "sizes (mesh.size_at_impact, mesh.max_size or the mesh file's: elements many orders smaller "
+         "than the plate); [boundary] or the rig (supports that leave a part of the plate free to move "
+         "as a rigid body)";
+}
+
+/// `work()`, its failed factorization (NotPositiveDefinite) rethrown naming the deck values that can cause
+/// it.
+template <class Work>
+auto naming_singular_causes(const ImpactCaseDescription& d, const Work& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const NotPositiveDefinite& e) {
+    throw NotPositiveDefinite(
+        fmt::format("{}; the deck values that can make it so: {}", e.what(), singular_matrix_causes(d)));
+  }
 }
 
 /// The deck key that chooses explicit steps for the elastic and the von Kármán plate, for messages.
@@ -169,7 +199,8 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(within_memory(supported(std::move(description)))),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))),
-      explicit_omega_max_(explicit_highest_frequency(description_, *model_)) {
+      explicit_omega_max_(naming_singular_causes(
+          description_, [&] { return explicit_highest_frequency(description_, *model_); })) {
   settings_ = resolved_settings(description_, explicit_omega_max_);
   require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
@@ -187,6 +218,16 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.ordering = description_.ordering;
   options.memory_limit_bytes = description_.memory_limit_bytes;
   options.explicit_omega_max = explicit_omega_max_;
+  naming_singular_causes(description_, [&] { choose_policy(options); });
+  if (!settings_.end) { // for the end-of-event rule
+    const std::optional<double> from_policy = policy_->fundamental_period();
+    fundamental_period_ =
+        from_policy ? *from_policy
+                    : naming_singular_causes(description_, [&] { return fundamental_period(*model_); });
+  }
+}
+
+void ImpactCase::choose_policy(const StepPolicyOptions& options) {
   if (settings_.delamination)
     policy_ = delamination_step_policy(*model_, options, *settings_.delamination,
                                        settings_.progressive_damage, settings_.nonlinear);
@@ -199,10 +240,6 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
     policy_ = newton_step_policy(*model_, options, *settings_.nonlinear);
   else
     policy_ = linear_step_policy(*model_, options);
-  if (!settings_.end) { // for the end-of-event rule
-    const std::optional<double> from_policy = policy_->fundamental_period();
-    fundamental_period_ = from_policy ? *from_policy : fundamental_period(*model_);
-  }
 }
 
 ImpactCase::~ImpactCase() = default;
@@ -247,7 +284,8 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   if (request.history_every > 0) observers.push_back(&history);
   if (!request.field_times.empty()) observers.push_back(&fields);
 
-  ImpactResult r = run_impact_loop(*policy_, imp, k, settings_.contact, loop, observers);
+  ImpactResult r = naming_singular_causes(
+      description_, [&] { return run_impact_loop(*policy_, imp, k, settings_.contact, loop, observers); });
   r.history = std::move(history.samples());
   r.fields = std::move(fields.fields());
   return r;

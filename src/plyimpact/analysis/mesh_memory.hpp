@@ -33,6 +33,11 @@ inline constexpr double factor_fill_constant = 1.0;
 [[nodiscard]] std::string memory_refusal_message(long nx, long ny, const MeshMemoryEstimate& e,
                                                  double available_bytes);
 
+/// The message of a refusal of a mesh read from a gmsh file, a .geo or a rig preset: its size, the
+/// estimate and the memory available, and how to make such a mesh coarser.
+[[nodiscard]] std::string memory_refusal_message(int elements, const MeshMemoryEstimate& e,
+                                                 double available_bytes);
+
 /// Elements along x and y of an impact case's graded mesh (MeshSpec::grading engaged), from its
 /// element lines alone.
 [[nodiscard]] std::array<long, 2> graded_mesh_size(const ImpactCaseDescription& d);

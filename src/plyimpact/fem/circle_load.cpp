@@ -10,6 +10,7 @@
 #include <cmath>
 #include <complex>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -150,11 +151,16 @@ std::optional<Eigen::Vector2d> parent_coordinates(const Q9NodeCoordinates& X, co
     G.col(1) = X.transpose() * sh.dN_deta;
     const double det = G.determinant();
     if (!(std::abs(det) > 0.0)) return std::nullopt;
-    Eigen::Vector2d step = G.inverse() * residual;
+    const Eigen::Matrix2d G_inv = G.inverse();
+    Eigen::Vector2d step = G_inv * residual;
     if (step.norm() > 1.0) step *= 1.0 / step.norm(); // damped far from the element
     xi += step;
-    // Quadratic convergence: after a step below 1e-10 the error is at the round-off level.
-    if (step.norm() <= 1e-10) return xi;
+    // Quadratic convergence: after a step below 1e-10 the error is at the round-off level — unless the
+    // element is so small against its coordinates that their round-off alone is more, in ξ (µm elements
+    // 75 mm from the origin): then that floor.
+    const double round_off =
+        16.0 * std::numeric_limits<double>::epsilon() * X.cwiseAbs().maxCoeff() * G_inv.norm();
+    if (step.norm() <= std::max(1e-10, round_off)) return xi;
   }
   return std::nullopt;
 }

@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 
 namespace plyimpact {
 
@@ -40,6 +41,9 @@ bool write_all(int fd, const std::string& bytes) {
   // where a sanitizer had caught it to exit with a code of its own.
   for (const int sig : {SIGINT, SIGTERM, SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
     std::signal(sig, SIG_DFL);
+  // and the caller's terminate handler too (the program's exits with 4): an exception that escapes the work
+  // (gmsh throws from inside its threads) aborts the child, which the caller reports as the crash it is
+  std::set_terminate([] { std::abort(); });
   if (const int null = ::open("/dev/null", O_RDWR); null >= 0) { // no prompt, and nothing on the terminal:
     ::dup2(null, STDIN_FILENO);                                  // what the work says comes back in
     ::dup2(null, STDOUT_FILENO);                                 // its record (an abort's message too)
@@ -71,7 +75,7 @@ std::string how_it_ended(int status, std::uint64_t memory_bytes_or_zero) {
   }
   if (WIFEXITED(status))
     return fmt::format("it ended the process itself with exit code {} before it finished (a gmsh script's "
-                       "Exit command does that)",
+                       "Exit command, or gmsh giving up, does that)",
                        WEXITSTATUS(status));
   return "it stopped for an unknown reason";
 }
@@ -113,8 +117,8 @@ std::string run_in_child_process(const std::function<std::string()>& work, const
     if (left.count() <= 0) {
       ::close(fds[0]);
       kill_child(pid);
-      throw IsolatedWorkError(fmt::format("{}: stopped after {} s, the time limit: it would not finish", what,
-                                          limits.time.count()),
+      throw IsolatedWorkError(fmt::format("{}: stopped after {:g} s, the time limit: it would not finish",
+                                          what, static_cast<double>(limits.time.count()) / 1000.0),
                               false);
     }
     pollfd p{fds[0], POLLIN, 0};

@@ -27,7 +27,7 @@ private:
 };
 
 struct IsolationLimits {
-  std::chrono::seconds time{120};            ///< the child is killed after this
+  std::chrono::milliseconds time{120000};    ///< the child is killed after this
   std::optional<std::uint64_t> memory_bytes; ///< address-space limit of the child (RLIMIT_AS)
 };
 

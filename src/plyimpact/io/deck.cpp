@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -152,7 +154,10 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   const auto mesh_table = top.optional_table("mesh");
   if (mesh_table) {
     d.mesh = read_mesh(*mesh_table);
-    d.file_mesh = read_mesh_file(*mesh_table, d.mesh_file, refinement_point(top));
+    for (const char* key : {"file", "geo"}) // before gmsh reads anything
+      if (top.has("rig") && mesh_table->has(key))
+        mesh_table->fail_at(key, fmt::format("[rig] meshes its plate: leave out mesh.{}", key));
+    d.file_mesh = read_mesh_file(*mesh_table, d.mesh_file, refinement_point(top), d.geo_meshing);
   }
   if (const auto t = top.optional_table("rig")) read_rig(top, *t, mesh_table, refinement_point(top), d);
   if (d.file_mesh && d.plate)
@@ -192,6 +197,9 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   return d;
 }
 
+/// The largest deck file load_deck reads [bytes]: a deck is a page of text; anything larger is another file.
+constexpr std::uintmax_t max_deck_bytes = 16U << 20U;
+
 Deck load_deck(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) // an ifstream opens a folder and reads nothing
@@ -199,6 +207,15 @@ Deck load_deck(const std::filesystem::path& path) {
         fmt::format("{}: error: this is a folder, not a deck file: give the .toml file (a results "
                     "folder keeps the deck it ran as deck.toml)",
                     path.string()));
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw DeckError(fmt::format( // reading a FIFO or a device would block, or never end (/dev/zero)
+        "{}: error: not a regular file (a FIFO, a device or a socket): give the deck's .toml file",
+        path.string()));
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > max_deck_bytes)
+    throw DeckError(
+        fmt::format("{}: error: {} bytes is not a deck (a deck is a short text file, at most {} bytes): "
+                    "give the deck's .toml file",
+                    path.string(), bytes, max_deck_bytes));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DeckError(fmt::format("{}: error: cannot open the deck file", path.string()));
   std::ostringstream ss;

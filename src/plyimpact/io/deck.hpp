@@ -87,9 +87,10 @@ struct Deck {
   std::optional<MeshSpec> mesh;
   std::string mesh_file;                 ///< [mesh] file as written ("" for the structured rectangle)
   std::shared_ptr<const Mesh> file_mesh; ///< the mesh read from mesh_file (io/gmsh_mesh.hpp) or the rig's
-  std::optional<RigSpec> rig;            ///< [rig] preset (io/test_rigs.hpp)
-  std::string rig_description;           ///< what the preset built, for the reports ("" without [rig])
-  ImpactorDefaults impactor_defaults;    ///< what the rig lets [impactor] leave out
+  std::optional<GeometryMeshing> geo_meshing; ///< the sizes the deck gave mesh.geo or a [rig]
+  std::optional<RigSpec> rig;                 ///< [rig] preset (io/test_rigs.hpp)
+  std::string rig_description;                ///< what the preset built, for the reports ("" without [rig])
+  ImpactorDefaults impactor_defaults;         ///< what the rig lets [impactor] leave out
   std::optional<BoundaryConditions> boundary;
   std::optional<Impactor> impactor;
   ImpactorInput impactor_input;
@@ -119,7 +120,8 @@ struct Deck {
 
 /// Parses a deck from text; `source` names it in messages. Throws DeckError.
 [[nodiscard]] Deck parse_deck(std::string_view text, const std::string& source);
-/// Reads and parses a deck file. Throws DeckError (also for an unreadable file).
+/// Reads and parses a deck file. Throws DeckError (also for an unreadable file, a FIFO, a device, or a
+/// file larger than 16 MiB).
 [[nodiscard]] Deck load_deck(const std::filesystem::path& path);
 /// Checks that every section `kind` needs is present; throws DeckError naming the missing ones.
 void require_sections(const Deck& deck, AnalysisKind kind);

@@ -1,4 +1,5 @@
 #include "plyimpact/io/deck_tables.hpp"
+#include "plyimpact/laminate/ply_damage.hpp"
 
 #include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
@@ -103,6 +104,38 @@ BucklingSettings read_buckling(const TableReader& t) {
   return b;
 }
 
+namespace {
+
+/// What the progressive damage law needs of the deck, checked where [damage] asks for it (a deck error
+/// with its line, before any run): every ply's strengths and toughnesses, the MITC9 element and the
+/// exact reduced stiffness.
+void require_progressive_damage_data(const TableReader& t, const Deck& d, const PlyDamageOptions& law) {
+  if (d.mesh && d.mesh->element == ElementFormulation::q9)
+    t.fail_at("model",
+              "damage.model = \"progressive\" needs the MITC9 element: leave out mesh.element or set it "
+              "to \"mitc9\" (the q9 element integrates transverse shear at other points than the 3x3 "
+              "Gauss points where the plies' damage lives)");
+  for (const Laminate& lam : all_laminates(d)) {
+    if (lam.stiffness_model() != ReducedStiffnessModel::exact)
+      t.fail_at("model", "damage.model = \"progressive\" needs the exact reduced stiffness (1.3): leave out "
+                         "laminate.reduced_stiffness or set it to \"exact\" (the damage law degrades it)");
+    for (std::size_t k = 0; k < lam.ply_count(); ++k) {
+      const Material& m = lam.material_of(k);
+      try {
+        (void)PlyDamageLaw(m, law);
+      } catch (const std::invalid_argument& e) {
+        t.fail_at("model",
+                  fmt::format("damage.model = \"progressive\": {}: add it to [materials.{}] (strengths "
+                              "in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
+                              "docs/progressive_damage.md lists published values)",
+                              e.what(), m.name));
+      }
+    }
+  }
+}
+
+} // namespace
+
 DamageSettings read_damage(const TableReader& t, const Deck& d) {
   DamageSettings damage;
   t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
@@ -141,6 +174,7 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
     } catch (const std::invalid_argument& e) {
       t.fail_at("integration", e.what());
     }
+    require_progressive_damage_data(t, d, p.law);
     damage.progressive = p;
   } else {
     for (const char* key :

@@ -190,10 +190,12 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
     t.fail_at("preset", fmt::format("rig.preset: gmsh could not mesh the rig: {}", e.what()));
   }
   d.rig = spec;
+  if (mesh && mesh->has("size_at_impact")) d.geo_meshing = spec.meshing; // the user's sizes, to check
 }
 
 std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written,
-                                           const std::optional<Eigen::Vector2d>& refine_at) {
+                                           const std::optional<Eigen::Vector2d>& refine_at,
+                                           std::optional<GeometryMeshing>& meshing) {
   const bool geo = t.has("geo");
   const std::string_view key = geo ? "geo" : "file";
   const auto name = t.optional_string(key);
@@ -204,9 +206,9 @@ std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& wr
   if (path.extension() != (geo ? ".geo" : ".msh"))
     t.fail_at(key, geo ? fmt::format("mesh.geo must be a gmsh geometry script (.geo), got \"{}\"", *name)
                        : fmt::format("mesh.file must be a gmsh mesh (.msh), got \"{}\"", *name));
+  if (geo) meshing = read_geometry_meshing(t, refine_at);
   try {
-    return std::make_shared<const Mesh>(geo ? mesh_gmsh_geometry(path, read_geometry_meshing(t, refine_at))
-                                            : read_gmsh_mesh(path));
+    return std::make_shared<const Mesh>(geo ? mesh_gmsh_geometry(path, *meshing) : read_gmsh_mesh(path));
   } catch (const MeshFileError& e) {
     t.fail_at(key, fmt::format("mesh.{} = \"{}\": {}", key, *name, e.what()));
   }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -27,6 +28,8 @@ std::vector<NamedUnit> likely_units(std::string_view si_unit) {
   if (si_unit == "m/s") return {{"m/s", 1.0}, {"mm/s", 1e-3}, {"km/s", 1e3}};
   if (si_unit == "s") return {{"s", 1.0}, {"ms", 1e-3}, {"µs", 1e-6}};
   if (si_unit == "J") return {{"J", 1.0}, {"mJ", 1e-3}, {"kJ", 1e3}};
+  if (si_unit == "J/m^2") return {{"J/m^2", 1.0}, {"N/mm", 1e3}};
+  if (si_unit == "Pa/m") return {{"Pa/m", 1.0}, {"N/mm^3", 1e9}};
   return {};
 }
 
@@ -78,7 +81,54 @@ void check_materials(const Deck& d, Checks& c) {
     for (const auto& [name, v] :
          {std::pair{"Yt", s.Yt}, {"Yc", s.Yc}, {"S12", s.S12}, {"S23", s.S23}, {"Zt", s.Zt}})
       if (v) c.add({k + name, *v, "Pa", 1e6, 5e9, "a matrix or shear strength"});
+    const FractureToughness& g = m.toughness;
+    for (const auto& [name, v] : {std::pair{"G_ft", g.G_ft}, {"G_fc", g.G_fc}})
+      if (v) c.add({k + name, *v, "J/m^2", 1e3, 1e6, "a fibre-mode (translaminar) fracture toughness"});
+    for (const auto& [name, v] : {std::pair{"G_mt", g.G_mt}, {"G_mc", g.G_mc}})
+      if (v) c.add({k + name, *v, "J/m^2", 10.0, 2e4, "a matrix-mode (intralaminar) fracture toughness"});
   }
+}
+
+/// [damage] progressive: the viscous regularisation's time constant, against an impact's milliseconds.
+void check_damage(const Deck& d, Checks& c) {
+  if (!d.damage.progressive) return;
+  const double eta = d.damage.progressive->law.viscosity;
+  if (eta > 0.0)
+    c.add({"damage.viscosity", eta, "s", 0.0, 1e-3,
+           "a viscous regularisation time (it delays damage by about itself; an impact lasts milliseconds)"});
+}
+
+/// [delamination]: the interfaces' toughnesses, strengths, B-K exponent and penalty stiffness.
+void check_delamination(const Deck& d, Checks& c) {
+  if (!d.delamination) return;
+  const CohesiveParameters& law = d.delamination->stack.interface;
+  c.add({"delamination.G_Ic", law.G_Ic, "J/m^2", 20.0, 1e4, "an interlaminar mode I toughness"});
+  c.add({"delamination.G_IIc", law.G_IIc, "J/m^2", 50.0, 2e4, "an interlaminar mode II toughness"});
+  c.add({"delamination.bk_exponent", law.bk_exponent, "-", 0.3, 10.0,
+         "a Benzeggagh-Kenane exponent (published fits lie between 1 and 3)"});
+  c.add({"delamination.normal_strength", law.normal_strength, "Pa", 1e6, 1e9, "an interface strength"});
+  c.add({"delamination.shear_strength", law.shear_strength, "Pa", 1e6, 1e9, "an interface strength"});
+  c.add({"delamination.penalty_stiffness", law.penalty_stiffness, "Pa/m", 1e11, 1e17,
+         "a cohesive penalty stiffness (Turon et al. 2007: 50 E3/t, about 1e13 to 1e16 Pa/m)"});
+}
+
+/// The plate's sides [m]: [plate] a and b, or the bounding box of a mesh from gmsh (mesh.file, mesh.geo,
+/// [rig]); nothing for a rigid target.
+std::optional<std::array<double, 2>> plate_sides(const Deck& d) {
+  if (d.plate) {
+    if (d.plate->rigid) return std::nullopt;
+    return std::array{d.plate->a, d.plate->b};
+  }
+  if (!d.file_mesh) return std::nullopt;
+  const BoundingBox& box = d.file_mesh->bounds();
+  return std::array{box.x_max - box.x_min, box.y_max - box.y_min};
+}
+
+/// Where a deck's mesh came from, for the messages.
+std::string mesh_source(const Deck& d) {
+  if (d.rig) return "[rig]";
+  return d.geo_meshing ? fmt::format("mesh.geo (\"{}\")", d.mesh_file)
+                       : fmt::format("mesh.file (\"{}\")", d.mesh_file);
 }
 
 void check_laminate(const std::string& path, const LaminateSpec& spec, const Laminate& laminate,
@@ -87,8 +137,9 @@ void check_laminate(const std::string& path, const LaminateSpec& spec, const Lam
   c.add({path + ".ply_thickness", spec.ply_thickness, "m", lo, hi, "a ply thickness"});
   for (const PlyOverride& o : spec.overrides)
     if (o.thickness) c.add({path + ".override.thickness", *o.thickness, "m", lo, hi, "a ply thickness"});
-  if (!d.plate || d.plate->rigid) return;
-  const double span = std::min(d.plate->a, d.plate->b);
+  const auto sides = plate_sides(d);
+  if (!sides) return;
+  const double span = std::min((*sides)[0], (*sides)[1]);
   const double h = laminate.thickness();
   const UnitConversion mm = unit_conversion(d.units, "m");
   if (h > span / 5.0)
@@ -127,6 +178,26 @@ void check_contact_stiffness(const Deck& d, double k_auto, Checks& c) {
                                    short_number(conv.from_si(k_auto)), conv.unit, hint));
 }
 
+/// A flat punch wider than the plate, a cone sharper than a needle (its angle in radians).
+void check_nose(const Deck& d, Checks& c) {
+  const Impactor& imp = *d.impactor;
+  const auto sides = plate_sides(d);
+  if (imp.nose == NoseShape::flat && sides && 2.0 * imp.radius > std::min((*sides)[0], (*sides)[1]))
+    c.warnings.push_back(fmt::format("impactor.radius = {} m: the flat end ({} m across) is wider than the "
+                                     "plate's shorter side ({} m): its "
+                                     "whole face cannot bear on the plate, which the flat-punch law assumes; "
+                                     "check the radius and its unit",
+                                     short_number(imp.radius), short_number(2.0 * imp.radius),
+                                     short_number(std::min((*sides)[0], (*sides)[1]))));
+  constexpr double needle_deg = 5.0;
+  const double deg = imp.half_angle * 180.0 / std::numbers::pi;
+  if (imp.nose == NoseShape::cone && deg < needle_deg)
+    c.warnings.push_back(fmt::format(
+        "impactor.half_angle = {} deg: a cone sharper than {} degrees is a needle; half_angle is in degrees, "
+        "and {} looks like radians — write {}",
+        short_number(deg), needle_deg, short_number(deg), short_number(deg * 180.0 / std::numbers::pi)));
+}
+
 void check_impactor(const Deck& d, Checks& c) {
   const Impactor& imp = *d.impactor;
   const bool cone = imp.nose == NoseShape::cone; // no radius
@@ -143,6 +214,7 @@ void check_impactor(const Deck& d, Checks& c) {
            "an impactor mass"});
   }
   c.add({"impactor.E", imp.E, "Pa", modulus.lo, modulus.hi, "an impactor modulus"});
+  check_nose(d, c);
   if (d.impactor_input.energy)
     c.add({"impactor.energy", *d.impactor_input.energy, "J", 1e-3, 1e4, "a low-velocity impact energy"});
   else
@@ -170,6 +242,31 @@ void check_impactor(const Deck& d, Checks& c) {
     c.add({"time.dt", *d.time.dt, "s", tc / 1e5, d.time.adaptive ? tc * 10.0 : tc / 5.0,
            (d.time.adaptive ? "the longest time step of " : "a time step of ") + what});
   if (d.time.end) c.add({"time.end", *d.time.end, "s", tc / 1e3, tc * 1e3, "an end time of " + what});
+}
+
+/// A plate meshed by gmsh: its bounding box, and the sizes it was meshed with.
+void check_gmsh_plate(const Deck& d, Checks& c) {
+  const auto sides = plate_sides(d);
+  if (!sides) return;
+  const auto [w, h] = *sides;
+  if (d.rig && d.rig->kind == RigKind::circular) {
+    c.add({"rig.diameter", d.rig->diameter, "m", 0.01, 10.0, "a plate side"});
+  } else if (!d.rig && !(w >= 0.01 && w <= 10.0 && h >= 0.01 && h <= 10.0)) {
+    c.warnings.push_back(fmt::format(
+        "the plate of {} is {} x {} m: implausible (a plate side is expected between 0.01 and 10 m); check "
+        "the unit of its coordinates: plyimpact reads them in the deck's length unit, and drawings are often "
+        "in "
+        "mm",
+        mesh_source(d), short_number(w), short_number(h)));
+  }
+  if (!d.geo_meshing) return;
+  const double span = std::min(w, h);
+  if (d.geo_meshing->size_at_point)
+    c.add({"mesh.size_at_impact", *d.geo_meshing->size_at_point, "m", span / 1e4, span,
+           "an element size on this plate"});
+  if (d.geo_meshing->max_size)
+    c.add(
+        {"mesh.max_size", *d.geo_meshing->max_size, "m", span / 1e4, span, "an element size on this plate"});
 }
 
 void check_plate(const Deck& d, Checks& c) {
@@ -224,6 +321,9 @@ std::vector<std::string> plausibility_warnings(const Deck& d) {
   Checks c{d.units, {}};
   check_materials(d, c);
   if (d.plate) check_plate(d, c);
+  if (d.file_mesh) check_gmsh_plate(d, c);
+  check_damage(d, c);
+  check_delamination(d, c);
   if (d.laminate_spec && d.laminate) check_laminate("laminate", *d.laminate_spec, *d.laminate, d, c);
   for (const NamedLaminate& l : d.laminates)
     check_laminate("laminates." + l.name, l.spec, l.laminate, d, c);

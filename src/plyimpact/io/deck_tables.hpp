@@ -38,9 +38,10 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
               const std::optional<Eigen::Vector2d>& refine_at, Deck& d);
 /// [mesh] file: the gmsh mesh it names (relative to the deck's folder), read and checked; nullptr without
 /// the key. mesh.geo: the gmsh geometry it names, meshed by gmsh, graded toward `refine_at` (the impact or
-/// load point, when the deck gives one).
+/// load point, when the deck gives one), with the sizes it was meshed with in `meshing`.
 [[nodiscard]] std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written,
-                                                         const std::optional<Eigen::Vector2d>& refine_at);
+                                                         const std::optional<Eigen::Vector2d>& refine_at,
+                                                         std::optional<GeometryMeshing>& meshing);
 /// [boundary] of the structured rectangle (x0, xa, y0, yb, corners), or of `file_mesh`: its named sets.
 [[nodiscard]] BoundaryConditions read_boundary(const TableReader& t, const Mesh* file_mesh);
 

@@ -19,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <numbers>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -238,8 +239,31 @@ enum class QuadMeshing {
   subdivide,
 };
 
+/// The most elements a size field may ask of gmsh: the deck's limit of a structured mesh (docs/robustness.md,
+/// "Limits").
+constexpr double max_field_elements = 1e6;
+
+/// Refuses a size field that would make more than max_field_elements elements, before gmsh meshes (a tiny
+/// size meshes for minutes, then runs out of memory): counted on the geometry's bounding box.
+void require_reasonable_field(const std::string& name, const GeometryMeshing& how,
+                              const Eigen::Vector2d& at) {
+  const std::vector<double> box = gmsh_api().bounding_box(); // x0, y0, z0, x1, y1, z1
+  const double n = estimated_element_count({box[0], box[3], box[1], box[4]}, at, how);
+  if (n > max_field_elements)
+    throw MeshFileError(fmt::format(
+        "{}: error: the element sizes asked for would make about {:.3g} elements on this {:.4g} x {:.4g} m "
+        "geometry "
+        "(size {:.3g} m at ({:.4g}, {:.4g}) m, growing by {:.3g}{}), more than {:.0e}: give a larger "
+        "mesh.size_at_impact or mesh.max_size",
+        name, n, box[3] - box[0], box[4] - box[1], how.size_at_point.value_or(0.0), at.x(), at.y(),
+        how.growth,
+        how.max_size ? fmt::format(" up to {:.3g} m", *how.max_size) : std::string(" without a cap"),
+        max_field_elements));
+}
+
 /// Meshes the geometry gmsh has open, in QUAD9, with the size field of `how`.
-void generate_quad9(const GeometryMeshing& how, QuadMeshing quads = QuadMeshing::recombine) {
+void generate_quad9(const std::string& name, const GeometryMeshing& how,
+                    QuadMeshing quads = QuadMeshing::recombine) {
   const GmshApi& gmsh = gmsh_api();
   double scale = 1.0; // of the size field
   if (quads == QuadMeshing::subdivide) {
@@ -260,6 +284,7 @@ void generate_quad9(const GeometryMeshing& how, QuadMeshing quads = QuadMeshing:
       const std::vector<double> box = gmsh.bounding_box(); // x0, y0, z0, x1, y1, z1
       at = {(box[0] + box[3]) / 2.0, (box[1] + box[4]) / 2.0};
     }
+    require_reasonable_field(name, how, at);
     // h(d) = min(max_size, size_at_point + (growth − 1) d), as gmsh's MathEval of the distance.
     const int field = gmsh.add_field("MathEval");
     // x − a written as x + |a| for a < 0: gmsh's MathEval cannot parse "x - -0.02" (it threw from inside
@@ -380,17 +405,16 @@ RawMesh from_bytes(const std::string& in) {
 /// memory available to the run on top of what the caller's address space already holds.
 IsolationLimits gmsh_limits() {
   IsolationLimits limits;
-  limits.time = gmsh_time_limit;
-  std::optional<double> available;
-  try {
-    available = available_memory_bytes();
-  } catch (const std::invalid_argument&) { // a malformed override: the memory guard says so later
-  }
+  limits.time = gmsh_time_limit_in_effect();
+  const std::optional<double> available = available_memory_bytes();
   std::ifstream statm("/proc/self/statm");
   std::uint64_t pages = 0;
+  // at least 2 GiB of address space on top: gmsh's libraries (OpenCASCADE's among them) are mapped when the
+  // child opens the library, and a small limit would refuse them, not a large mesh
+  constexpr double library_space = 2.0 * (1U << 30U);
   if (available && (statm >> pages))
-    limits.memory_bytes =
-        pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE)) + static_cast<std::uint64_t>(*available);
+    limits.memory_bytes = pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE)) +
+                          static_cast<std::uint64_t>(std::max(*available, library_space));
   return limits;
 }
 
@@ -398,15 +422,23 @@ IsolationLimits gmsh_limits() {
 /// crashes, Exit commands, prompts and endless loops end the child, never the caller, and become a
 /// MeshFileError that names the file and says what happened.
 template <class Load>
-RawMesh read_raw(const std::filesystem::path& file, const Load& load) {
+RawMesh read_raw(const std::filesystem::path& file, const Load& load, std::string_view advice = {}) {
   try {
     return from_bytes(run_in_child_process([&] { return to_bytes(read_raw_here(file, load)); },
                                            fmt::format("{}: error: gmsh", file.string()), gmsh_limits()));
   } catch (const IsolatedWorkError& e) {
     if (e.thrown_by_work()) throw MeshFileError(e.what()); // read_raw_here's own message
-    throw MeshFileError(fmt::format("{} (reading or meshing it); nothing of it was used", e.what()));
+    throw MeshFileError(
+        fmt::format("{} (reading or meshing it); nothing of it was used{}", e.what(), advice));
   }
 }
+
+/// What to change in a .geo that gmsh crashed on or could not finish.
+constexpr std::string_view geo_advice =
+    ". The usual causes are the script's own meshing options (Mesh.Algorithm, Recombine, "
+    "Mesh.RecombinationAlgorithm: plyimpact recombines and makes second-order elements itself, so leave them "
+    "out) and characteristic lengths far below the plate's size (give mesh.size_at_impact and mesh.max_size "
+    "instead); the time limit is PLYIMPACT_GMSH_TIME_LIMIT_S (docs/robustness.md)";
 
 Mesh to_mesh(RawMesh raw) {
   Mesh mesh(std::move(raw.nodes), std::move(raw.elements));
@@ -419,6 +451,12 @@ Mesh to_mesh(RawMesh raw) {
 
 } // namespace
 
+std::chrono::milliseconds gmsh_time_limit_in_effect() {
+  const std::optional<double> seconds = positive_number_from_environment(gmsh_time_limit_variable, "seconds");
+  if (!seconds) return gmsh_time_limit;
+  return std::chrono::milliseconds(static_cast<long long>(std::ceil(std::min(*seconds, 1e9) * 1000.0)));
+}
+
 Mesh read_gmsh_mesh(const std::filesystem::path& file) {
   std::error_code ec;
   if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
@@ -427,6 +465,38 @@ Mesh read_gmsh_mesh(const std::filesystem::path& file) {
                     file.string()));
   require_msh_header(file);
   return to_mesh(read_raw(file, [&] { gmsh_api().open(file.string()); }));
+}
+
+double estimated_element_count(const BoundingBox& box, const Eigen::Vector2d& at,
+                               const GeometryMeshing& how) {
+  if (!how.size_at_point) return 0.0;
+  // ∫∫ dA / h(d)² in polar coordinates about `at`, each ray to the box's edge: a quadrilateral of side h
+  // covers h². The radial integral ∫ r dr / h(r)² is summed on geometric steps (h grows linearly).
+  constexpr int rays = 720;
+  double count = 0.0;
+  const Eigen::Vector2d p =
+      at.cwiseMax(Eigen::Vector2d(box.x_min, box.y_min)).cwiseMin(Eigen::Vector2d(box.x_max, box.y_max));
+  for (int k = 0; k < rays; ++k) {
+    const double t = 2.0 * std::numbers::pi * (k + 0.5) / rays;
+    const Eigen::Vector2d u(std::cos(t), std::sin(t));
+    double reach = std::numeric_limits<double>::infinity(); // to the box's edge along u
+    if (u.x() > 1e-12) reach = std::min(reach, (box.x_max - p.x()) / u.x());
+    if (u.x() < -1e-12) reach = std::min(reach, (box.x_min - p.x()) / u.x());
+    if (u.y() > 1e-12) reach = std::min(reach, (box.y_max - p.y()) / u.y());
+    if (u.y() < -1e-12) reach = std::min(reach, (box.y_min - p.y()) / u.y());
+    double r = 0.0, integral = 0.0;
+    while (r < reach) {
+      const double h = std::max(graded_size(how, r), 1e-300);
+      const double step = std::min(reach - r, 0.25 * h + 0.1 * r);
+      const double mid = r + 0.5 * step;
+      const double hm = std::max(graded_size(how, mid), 1e-300);
+      integral += mid * step / (hm * hm);
+      r += step;
+      if (integral > 1e12) break; // far beyond any limit
+    }
+    count += integral * 2.0 * std::numbers::pi / rays;
+  }
+  return count;
 }
 
 double graded_size(const GeometryMeshing& how, double d) {
@@ -439,10 +509,13 @@ Mesh mesh_gmsh_geometry(const std::filesystem::path& geo, const GeometryMeshing&
   if (!std::filesystem::is_regular_file(geo, ec))
     throw MeshFileError(fmt::format("{}: error: cannot open the geometry file", geo.string()));
   require_safe_geo(geo); // no shell command, no file written, nothing read from outside its folder
-  return to_mesh(read_raw(geo, [&] {
-    gmsh_api().open(geo.string());
-    generate_quad9(how);
-  }));
+  return to_mesh(read_raw(
+      geo,
+      [&] {
+        gmsh_api().open(geo.string());
+        generate_quad9(geo.string(), how);
+      },
+      geo_advice));
 }
 
 Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build, const GeometryMeshing& how,
@@ -451,7 +524,7 @@ Mesh mesh_gmsh_model(const std::string& name, const std::function<void()>& build
     return to_mesh(read_raw(name, [&] {
       gmsh_api().add_model(name);
       build();
-      generate_quad9(how, quads);
+      generate_quad9(name, how, quads);
     }));
   };
   try {

@@ -27,8 +27,12 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// How long gmsh may read or mesh one file before its child process is killed (docs/robustness.md).
+/// How long gmsh may read or mesh one file before its child process is killed (docs/robustness.md), unless
+/// PLYIMPACT_GMSH_TIME_LIMIT_S (io/environment.hpp) says otherwise.
 inline constexpr std::chrono::seconds gmsh_time_limit{120};
+
+/// gmsh_time_limit, or PLYIMPACT_GMSH_TIME_LIMIT_S when set (EnvironmentValueError when malformed).
+[[nodiscard]] std::chrono::milliseconds gmsh_time_limit_in_effect();
 
 /// Reads a gmsh mesh file (.msh, format 2 or 4, ASCII or binary). gmsh runs in a child process
 /// (io/child_process.hpp) with a time limit (gmsh_time_limit) and the available memory: whatever it does,
@@ -47,6 +51,11 @@ struct GeometryMeshing {
 /// The element size at distance d from the refinement point: min(max_size, size_at_point + (growth − 1) d),
 /// the continuous form of sizes that grow by `growth` from one element to the next.
 [[nodiscard]] double graded_size(const GeometryMeshing& how, double d);
+
+/// About how many quadrilaterals the size field of `how` (graded from `at`) makes on `box`: the integral of
+/// 1/h² over the box. 0 without how.size_at_point (the geometry's own sizes).
+[[nodiscard]] double estimated_element_count(const BoundingBox& box, const Eigen::Vector2d& at,
+                                             const GeometryMeshing& how);
 
 /// Meshes a gmsh geometry script with 9-node quadrilaterals (recombined, second order, complete
 /// elements: these options are set whatever the script says) and reads it as read_gmsh_mesh does.

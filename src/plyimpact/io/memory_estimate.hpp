@@ -1,14 +1,15 @@
 #pragma once
-// The memory check of a deck's uniform mesh (analysis/mesh_memory.hpp), for every analysis of the deck
-// (static, modal, buckling as well as impacts), its refusal naming the deck's file. An impact case checks
-// its own mesh, uniform or graded, when it is built (ImpactCase).
+// The memory check of a deck's uniform mesh or of the mesh it read from gmsh (analysis/mesh_memory.hpp), for
+// every analysis of the deck (static, modal, buckling as well as impacts), its refusal naming the deck's
+// file. An impact case checks its own mesh, uniform or graded, when it is built (ImpactCase).
 #include "plyimpact/analysis/mesh_memory.hpp"
 #include "plyimpact/io/deck.hpp"
 
 namespace plyimpact {
 
-/// For a deck with a uniform [mesh] nx × ny: throws InsufficientMemory (analysis/guards.hpp) when the
-/// estimate exceeds the available memory (io/system_memory.hpp).
+/// For a deck with a uniform [mesh] nx × ny, or a mesh from a gmsh file, a .geo or a rig preset (estimated
+/// from its node count): throws InsufficientMemory (analysis/guards.hpp) when the estimate exceeds the
+/// available memory (io/system_memory.hpp).
 void check_memory_before_assembly(const Deck& deck);
 
 } // namespace plyimpact

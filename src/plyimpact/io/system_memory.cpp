@@ -1,12 +1,7 @@
 #include "plyimpact/io/system_memory.hpp"
 
-#include <fmt/format.h>
-
-#include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 
 namespace plyimpact {
@@ -23,20 +18,8 @@ std::optional<double> mem_available_from_meminfo(std::string_view meminfo) {
 }
 
 std::optional<double> available_memory_bytes() {
-  if (const char* limit = std::getenv(std::string(memory_limit_variable).c_str())) {
-    const std::string text(limit);
-    std::size_t used = 0;
-    double bytes = 0.0;
-    try {
-      bytes = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != text.size() || !(bytes > 0.0) || !std::isfinite(bytes))
-      throw std::invalid_argument(
-          fmt::format("{} must be a positive number of bytes, got \"{}\"", memory_limit_variable, text));
+  if (const std::optional<double> bytes = positive_number_from_environment(memory_limit_variable, "bytes"))
     return bytes;
-  }
   std::ifstream in("/proc/meminfo");
   if (!in) return std::nullopt;
   std::ostringstream ss;

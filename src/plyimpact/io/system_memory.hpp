@@ -1,15 +1,14 @@
 #pragma once
 // Memory available to a run, for the factorization guard (analysis/guards.hpp, docs/robustness.md).
+#include "plyimpact/io/environment.hpp"
+
 #include <optional>
 #include <string_view>
 
 namespace plyimpact {
 
-/// Name of the environment variable that overrides the available memory [bytes] (tests, batch jobs).
-inline constexpr std::string_view memory_limit_variable = "PLYIMPACT_MEMORY_LIMIT_BYTES";
-
 /// The memory a run may use [bytes]: PLYIMPACT_MEMORY_LIMIT_BYTES when set (a positive number, else
-/// std::invalid_argument), otherwise MemAvailable of /proc/meminfo; nullopt when neither is known.
+/// EnvironmentValueError), otherwise MemAvailable of /proc/meminfo; nullopt when neither is known.
 [[nodiscard]] std::optional<double> available_memory_bytes();
 
 /// MemAvailable [bytes] from the text of /proc/meminfo; nullopt when the line is missing.

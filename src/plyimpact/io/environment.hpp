@@ -1,0 +1,27 @@
+#pragma once
+// Settings a user gives a run through the environment rather than the deck (docs/robustness.md): limits of
+// a batch job or a test that no deck should be able to set for itself.
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+
+namespace plyimpact {
+
+/// A malformed value of one of the variables below: a bad input like a bad command-line value (exit 2).
+class EnvironmentValueError : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The memory a run may use [bytes], instead of MemAvailable (io/system_memory.hpp).
+inline constexpr std::string_view memory_limit_variable = "PLYIMPACT_MEMORY_LIMIT_BYTES";
+/// How long gmsh may read or mesh one file [s] (io/gmsh_mesh.hpp), instead of gmsh_time_limit.
+inline constexpr std::string_view gmsh_time_limit_variable = "PLYIMPACT_GMSH_TIME_LIMIT_S";
+
+/// The value of `variable` when it is set: a positive, finite number written in full ("4e9", "30"),
+/// else EnvironmentValueError naming the variable, what it holds and `what` it should be.
+[[nodiscard]] std::optional<double> positive_number_from_environment(std::string_view variable,
+                                                                     std::string_view what);
+
+} // namespace plyimpact

@@ -1,0 +1,1 @@
+Include "rectangle.geo";
