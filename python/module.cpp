@@ -120,6 +120,10 @@ auto interruptible(std::atomic<bool>& cancel, bool& interrupted, const Work& wor
     }
     worker.join();
   }
+  if (error && interrupted) { // the work stopped on `cancel` by throwing: Python's KeyboardInterrupt
+    PyErr_SetString(PyExc_KeyboardInterrupt, "plyimpact: interrupted (Ctrl-C)");
+    throw py::error_already_set();
+  }
   if (error) std::rethrow_exception(error);
   return result;
 }
@@ -127,14 +131,14 @@ auto interruptible(std::atomic<bool>& cancel, bool& interrupted, const Work& wor
 /// The threshold search of `plyimpact threshold DECK [--criterion C] [--tolerance T]`: its summary.json
 /// (without the wall time).
 std::string run_threshold(const Deck& deck, const std::string& criterion_name, double tolerance,
-                          bool nonlinear) {
+                          bool nonlinear, const std::atomic<bool>* cancel) {
   plyimpact::require_sections(deck, plyimpact::AnalysisKind::threshold);
   const plyimpact::ImpactCaseDescription description = plyimpact::impact_case_description(deck, nonlinear);
   const plyimpact::ThresholdCriterion criterion =
       plyimpact::threshold_criterion(deck, criterion_name, "criterion");
   const plyimpact::ThresholdOptions options = plyimpact::threshold_options(deck, tolerance);
   const plyimpact::ImpactCase impact(description);
-  const plyimpact::ThresholdResult r = plyimpact::search_threshold(impact, criterion, options);
+  const plyimpact::ThresholdResult r = plyimpact::search_threshold(impact, criterion, options, cancel);
   return plyimpact::threshold_summary_json(deck, criterion, options, r).dump();
 }
 
@@ -312,8 +316,10 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "run_threshold",
       [](const Deck& deck, const std::string& criterion, double tolerance, bool nonlinear) {
-        const py::gil_scoped_release release;
-        return run_threshold(deck, criterion, tolerance, nonlinear);
+        std::atomic<bool> cancel{false};
+        bool interrupted = false;
+        return interruptible(cancel, interrupted,
+                             [&] { return run_threshold(deck, criterion, tolerance, nonlinear, &cancel); });
       },
       py::arg("deck"), py::arg("criterion") = "", py::arg("tolerance") = 0.0, py::arg("nonlinear") = false,
       "The threshold search of the deck; returns its summary.json text (without wall_time).");

@@ -124,3 +124,17 @@ def test_ctrl_c_stops_a_sweep_and_keeps_the_records_for_a_resume(deck, tmp_path)
     assert 0 < len(recorded) < 16
     table = plyimpact.sweep(deck, values, jobs=1, output_dir=tmp_path / "sweep")  # the resume
     assert len(table) == 16
+
+
+def test_ctrl_c_stops_a_threshold_search_within_a_step():
+    # The §4.3 search in 1e-8 s steps: a hundred times its 0.5 s. SIGINT after 1 s.
+    search = plyimpact.load(SOURCE / "examples" / "thesis-4.3-threshold-0_2-90_2-0_2.toml").replace({"time.dt": 1e-8})
+    timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt, match="interrupted"):
+            plyimpact.threshold(search)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 20.0
