@@ -21,12 +21,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The standard exceptions and those of our libraries derived from std::exception (pybind11's
+/// error_already_set carries the Python error that is set, e.g. a KeyboardInterrupt).
 const std::set<std::string> standard_exceptions{
-    "std::exception",       "std::runtime_error", "std::logic_error", "std::invalid_argument",
-    "std::out_of_range",    "std::domain_error",  "std::range_error", "std::overflow_error",
-    "std::underflow_error", "std::length_error",  "std::bad_alloc",   "std::system_error",
-    "py::value_error",      "py::type_error",     "py::key_error",    "py::index_error",
-    "CLI::ValidationError"};
+    "std::exception",       "std::runtime_error",   "std::logic_error", "std::invalid_argument",
+    "std::out_of_range",    "std::domain_error",    "std::range_error", "std::overflow_error",
+    "std::underflow_error", "std::length_error",    "std::bad_alloc",   "std::system_error",
+    "py::value_error",      "py::type_error",       "py::key_error",    "py::index_error",
+    "CLI::ValidationError", "py::error_already_set"};
 
 struct Source {
   fs::path path;
