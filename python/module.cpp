@@ -288,8 +288,7 @@ PYBIND11_MODULE(_core, m) {
       py::arg("deck"), py::arg("output_dir") = py::none(), py::arg("overwrite") = false,
       py::arg("nonlinear") = false, py::arg("history") = true,
       "Runs the deck's impact; returns (summary JSON text, notes, history column names, history rows, "
-      "whether "
-      "Ctrl-C stopped it).");
+      "whether Ctrl-C stopped it).");
   py::class_<ImpactStudy>(m, "ImpactStudy", "A plate built once, run for many impactors")
       .def(py::init([](const Deck& deck, bool nonlinear) {
              const py::gil_scoped_release release;

@@ -61,14 +61,7 @@ constexpr const char* report_internal_error =
 /// what the value is).
 CLI::Validator positive_finite(const std::string& what) {
   return {[what](const std::string& text) -> std::string {
-            std::size_t used = 0;
-            double v = 0.0;
-            try {
-              v = std::stod(text, &used);
-            } catch (const std::exception&) {
-              used = 0;
-            }
-            if (used == text.size() && std::isfinite(v) && v > 0.0) return "";
+            if (plyimpact::positive_number(text)) return "";
             return "must be a positive number (" + what + "), got " + text;
           },
           "POSITIVE"};

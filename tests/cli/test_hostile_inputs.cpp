@@ -197,6 +197,13 @@ std::string coupon_msh(const std::function<std::string(int, double, double)>& no
   return rectangle_msh(0.15, 0.1, 6, 4, node);
 }
 
+/// `value` as part of a test's name: every character but letters and digits made '_'.
+std::string name_part(std::string value) {
+  for (char& ch : value)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return value;
+}
+
 std::string impact(const std::string& options = "") {
   return "impact deck.toml -o out" + options;
 }
@@ -583,10 +590,7 @@ std::vector<HostileCase> damage_cases() {
                                                         {"every", "0"},
                                                         {"criteria", "[\"hashinn\"]"},
                                                         {"alpha", "-1"}}) {
-    std::string tag = value;
-    for (char& ch : tag)
-      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    damage("damage_" + key + "_" + tag, set_key(base, "damage", key, value), 2, "damage." + key);
+    damage("damage_" + key + "_" + name_part(value), set_key(base, "damage", key, value), 2, "damage." + key);
   }
   damage("damage_missing_toughness", replace_all(base, "G_mt = 277.0\n", ""), 2, "G_mt");
   damage("damage_missing_strength", replace_all(base, "S23 = 32.94e6\n", ""), 2, "S23");
@@ -651,10 +655,7 @@ shear_strength = 98.2e6
                                                         {"points", "\"lobatto\""},
                                                         {"supports", "\"top\""},
                                                         {"integration", "\"rk4\""}}) {
-    std::string tag = value;
-    for (char& ch : tag)
-      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    delam("delamination_" + key + "_" + tag, with(key, value), 2, "delamination." + key);
+    delam("delamination_" + key + "_" + name_part(value), with(key, value), 2, "delamination." + key);
   }
   delam("delamination_missing_toughness", replace_all(base, "G_IIc = 1719.0\n", ""), 2, "G_IIc");
   delam("delamination_single_orientation", replace_all(base, "[0_2/90_4/0_2]", "[0_8]"), 2, "interface");

@@ -41,11 +41,9 @@ std::string memory_refusal_message(long nx, long ny, const MeshMemoryEstimate& e
 std::string memory_refusal_message(int elements, const MeshMemoryEstimate& e, double available_bytes) {
   return fmt::format(
       "the mesh of {} elements ({:.3g} nodes, {:.3g} equations) needs about {:.3g} GB for the stiffness, "
-      "mass "
-      "and factor ({:.3g} non-zeros in the factor) but this machine has {:.3g} GB available: use a coarser "
-      "mesh in the file (larger element sizes in gmsh), or a larger mesh.size_at_impact or mesh.max_size for "
-      "a "
-      ".geo or a rig preset (docs/robustness.md)",
+      "mass and factor ({:.3g} non-zeros in the factor) but this machine has {:.3g} GB available: use a "
+      "coarser mesh in the file (larger element sizes in gmsh), or a larger mesh.size_at_impact or "
+      "mesh.max_size for a .geo or a rig preset (docs/robustness.md)",
       elements, e.nodes, e.equations, e.bytes / 1e9, e.factor_nonzeros, available_bytes / 1e9);
 }
 

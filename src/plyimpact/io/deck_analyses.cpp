@@ -7,6 +7,9 @@
 
 #include <fmt/format.h>
 
+#include <set>
+#include <string>
+
 namespace plyimpact {
 
 namespace {
@@ -115,12 +118,14 @@ void require_progressive_damage_data(const TableReader& t, const Deck& d, const 
               "damage.model = \"progressive\" needs the MITC9 element: leave out mesh.element or set it "
               "to \"mitc9\" (the q9 element integrates transverse shear at other points than the 3x3 "
               "Gauss points where the plies' damage lives)");
+  std::set<std::string> checked;
   for (const Laminate& lam : all_laminates(d)) {
     if (lam.stiffness_model() != ReducedStiffnessModel::exact)
       t.fail_at("model", "damage.model = \"progressive\" needs the exact reduced stiffness (1.3): leave out "
                          "laminate.reduced_stiffness or set it to \"exact\" (the damage law degrades it)");
     for (std::size_t k = 0; k < lam.ply_count(); ++k) {
       const Material& m = lam.material_of(k);
+      if (!checked.insert(m.name).second) continue; // each material once
       try {
         (void)PlyDamageLaw(m, law);
       } catch (const std::invalid_argument& e) {

@@ -151,7 +151,6 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
     t.fail_at("diameter", "rig.diameter sizes the circular rig; the astm-d7136 rig's window is 125 x 75 mm");
   }
   if (d.plate) top.fail_at("plate", "[rig] gives the plate: leave out [plate]");
-  if (d.file_mesh) t.fail_at("preset", "[rig] meshes its plate: leave out mesh.file and mesh.geo");
   if (top.has("boundary"))
     top.fail_at("boundary", "[rig] sets the supports (docs/mesh.md, test rigs): leave out [boundary]");
   spec.meshing = rig_meshing(spec);

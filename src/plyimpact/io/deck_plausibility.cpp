@@ -56,6 +56,7 @@ struct Range {
 constexpr Range modulus{5e8, 1.5e12};
 constexpr Range radius_range{5e-4, 0.5};
 constexpr Range velocity_range{0.01, 300.0};
+constexpr Range plate_side{0.01, 10.0};
 constexpr Range mass_range{1e-3, 100.0};
 constexpr double k_ratio = 30.0; ///< k within a factor of it of the Hertz value
 
@@ -182,13 +183,13 @@ void check_contact_stiffness(const Deck& d, double k_auto, Checks& c) {
 void check_nose(const Deck& d, Checks& c) {
   const Impactor& imp = *d.impactor;
   const auto sides = plate_sides(d);
-  if (imp.nose == NoseShape::flat && sides && 2.0 * imp.radius > std::min((*sides)[0], (*sides)[1]))
+  const double span = sides ? std::min((*sides)[0], (*sides)[1]) : INFINITY;
+  if (imp.nose == NoseShape::flat && 2.0 * imp.radius > span)
     c.warnings.push_back(fmt::format("impactor.radius = {} m: the flat end ({} m across) is wider than the "
-                                     "plate's shorter side ({} m): its "
-                                     "whole face cannot bear on the plate, which the flat-punch law assumes; "
-                                     "check the radius and its unit",
+                                     "plate's shorter side ({} m): its whole face cannot bear on the plate, "
+                                     "which the flat-punch law assumes; check the radius and its unit",
                                      short_number(imp.radius), short_number(2.0 * imp.radius),
-                                     short_number(std::min((*sides)[0], (*sides)[1]))));
+                                     short_number(span)));
   constexpr double needle_deg = 5.0;
   const double deg = imp.half_angle * 180.0 / std::numbers::pi;
   if (imp.nose == NoseShape::cone && deg < needle_deg)
@@ -244,42 +245,39 @@ void check_impactor(const Deck& d, Checks& c) {
   if (d.time.end) c.add({"time.end", *d.time.end, "s", tc / 1e3, tc * 1e3, "an end time of " + what});
 }
 
+/// mesh.size_at_impact and mesh.max_size against the plate's shorter side `span` (a structured or a gmsh
+/// mesh).
+void check_element_sizes(const std::optional<double>& at_impact, const std::optional<double>& max_size,
+                         double span, Checks& c) {
+  if (at_impact)
+    c.add({"mesh.size_at_impact", *at_impact, "m", span / 1e4, span, "an element size on this plate"});
+  if (max_size) c.add({"mesh.max_size", *max_size, "m", span / 1e4, span, "an element size on this plate"});
+}
+
 /// A plate meshed by gmsh: its bounding box, and the sizes it was meshed with.
 void check_gmsh_plate(const Deck& d, Checks& c) {
   const auto sides = plate_sides(d);
   if (!sides) return;
   const auto [w, h] = *sides;
   if (d.rig && d.rig->kind == RigKind::circular) {
-    c.add({"rig.diameter", d.rig->diameter, "m", 0.01, 10.0, "a plate side"});
-  } else if (!d.rig && !(w >= 0.01 && w <= 10.0 && h >= 0.01 && h <= 10.0)) {
+    c.add({"rig.diameter", d.rig->diameter, "m", plate_side.lo, plate_side.hi, "a plate side"});
+  } else if (!d.rig && !(plate_side.holds(w) && plate_side.holds(h))) {
     c.warnings.push_back(fmt::format(
-        "the plate of {} is {} x {} m: implausible (a plate side is expected between 0.01 and 10 m); check "
-        "the unit of its coordinates: plyimpact reads them in the deck's length unit, and drawings are often "
-        "in "
+        "the plate of {} is {} x {} m: implausible (a plate side is expected between {} and {} m); check the "
+        "unit of its coordinates: plyimpact reads them in the deck's length unit, and drawings are often in "
         "mm",
-        mesh_source(d), short_number(w), short_number(h)));
+        mesh_source(d), short_number(w), short_number(h), plate_side.lo, plate_side.hi));
   }
-  if (!d.geo_meshing) return;
-  const double span = std::min(w, h);
-  if (d.geo_meshing->size_at_point)
-    c.add({"mesh.size_at_impact", *d.geo_meshing->size_at_point, "m", span / 1e4, span,
-           "an element size on this plate"});
-  if (d.geo_meshing->max_size)
-    c.add(
-        {"mesh.max_size", *d.geo_meshing->max_size, "m", span / 1e4, span, "an element size on this plate"});
+  if (d.geo_meshing)
+    check_element_sizes(d.geo_meshing->size_at_point, d.geo_meshing->max_size, std::min(w, h), c);
 }
 
 void check_plate(const Deck& d, Checks& c) {
   const PlateGeometry& p = *d.plate;
-  c.add({"plate.a", p.a, "m", 0.01, 10.0, "a plate side"});
-  c.add({"plate.b", p.b, "m", 0.01, 10.0, "a plate side"});
-  if (!d.mesh || !d.mesh->grading) return;
-  const double span = std::min(p.a, p.b);
-  const MeshGrading& g = *d.mesh->grading;
-  if (g.size_at_impact)
-    c.add({"mesh.size_at_impact", *g.size_at_impact, "m", span / 1e4, span, "an element size on this plate"});
-  if (g.max_size)
-    c.add({"mesh.max_size", *g.max_size, "m", span / 1e4, span, "an element size on this plate"});
+  c.add({"plate.a", p.a, "m", plate_side.lo, plate_side.hi, "a plate side"});
+  c.add({"plate.b", p.b, "m", plate_side.lo, plate_side.hi, "a plate side"});
+  if (d.mesh && d.mesh->grading)
+    check_element_sizes(d.mesh->grading->size_at_impact, d.mesh->grading->max_size, std::min(p.a, p.b), c);
 }
 
 } // namespace

@@ -19,6 +19,10 @@ inline constexpr std::string_view memory_limit_variable = "PLYIMPACT_MEMORY_LIMI
 /// How long gmsh may read or mesh one file [s] (io/gmsh_mesh.hpp), instead of gmsh_time_limit.
 inline constexpr std::string_view gmsh_time_limit_variable = "PLYIMPACT_GMSH_TIME_LIMIT_S";
 
+/// `text` as a positive, finite number written in full ("4e9", "30", not "30s", "nan", "-1", "1e400");
+/// nullopt otherwise. The rule of the environment's settings and of the command line's positive values.
+[[nodiscard]] std::optional<double> positive_number(std::string_view text);
+
 /// The value of `variable` when it is set: a positive, finite number written in full ("4e9", "30"),
 /// else EnvironmentValueError naming the variable, what it holds and `what` it should be.
 [[nodiscard]] std::optional<double> positive_number_from_environment(std::string_view variable,

@@ -245,16 +245,14 @@ constexpr double max_field_elements = 1e6;
 
 /// Refuses a size field that would make more than max_field_elements elements, before gmsh meshes (a tiny
 /// size meshes for minutes, then runs out of memory): counted on the geometry's bounding box.
-void require_reasonable_field(const std::string& name, const GeometryMeshing& how,
-                              const Eigen::Vector2d& at) {
-  const std::vector<double> box = gmsh_api().bounding_box(); // x0, y0, z0, x1, y1, z1
+void require_reasonable_field(const std::string& name, const GeometryMeshing& how, const Eigen::Vector2d& at,
+                              const std::vector<double>& box) { // gmsh's: x0, y0, z0, x1, y1, z1
   const double n = estimated_element_count({box[0], box[3], box[1], box[4]}, at, how);
   if (n > max_field_elements)
     throw MeshFileError(fmt::format(
         "{}: error: the element sizes asked for would make about {:.3g} elements on this {:.4g} x {:.4g} m "
-        "geometry "
-        "(size {:.3g} m at ({:.4g}, {:.4g}) m, growing by {:.3g}{}), more than {:.0e}: give a larger "
-        "mesh.size_at_impact or mesh.max_size",
+        "geometry (size {:.3g} m at ({:.4g}, {:.4g}) m, growing by {:.3g}{}), more than {:.0e}: give a "
+        "larger mesh.size_at_impact or mesh.max_size",
         name, n, box[3] - box[0], box[4] - box[1], how.size_at_point.value_or(0.0), at.x(), at.y(),
         how.growth,
         how.max_size ? fmt::format(" up to {:.3g} m", *how.max_size) : std::string(" without a cap"),
@@ -277,14 +275,10 @@ void generate_quad9(const std::string& name, const GeometryMeshing& how,
   gmsh.set_option("Mesh.SecondOrderIncomplete", 0);
   if (how.max_size) gmsh.set_option("Mesh.MeshSizeMax", scale * *how.max_size);
   if (how.size_at_point) {
-    Eigen::Vector2d at;
-    if (how.refine_at) {
-      at = *how.refine_at;
-    } else {
-      const std::vector<double> box = gmsh.bounding_box(); // x0, y0, z0, x1, y1, z1
-      at = {(box[0] + box[3]) / 2.0, (box[1] + box[4]) / 2.0};
-    }
-    require_reasonable_field(name, how, at);
+    const std::vector<double> box = gmsh.bounding_box(); // x0, y0, z0, x1, y1, z1
+    const Eigen::Vector2d at =
+        how.refine_at ? *how.refine_at : Eigen::Vector2d((box[0] + box[3]) / 2.0, (box[1] + box[4]) / 2.0);
+    require_reasonable_field(name, how, at, box);
     // h(d) = min(max_size, size_at_point + (growth − 1) d), as gmsh's MathEval of the distance.
     const int field = gmsh.add_field("MathEval");
     // x − a written as x + |a| for a < 0: gmsh's MathEval cannot parse "x - -0.02" (it threw from inside
