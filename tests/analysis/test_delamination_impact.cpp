@@ -153,11 +153,11 @@ TEST(DelaminationImpact, DelaminatedFacesThatClapAfterTheImpactorLeavesKeepTheEn
 }
 
 // The lagged step refreshes its iteration matrix by updating the factor where interface points changed
-// their tangent (DelaminationStepper::update_factor) instead of factoring it anew: Newton then iterates
-// with the same matrices, so it needs the same solves (a wrong update would slow it: the residual is
-// exact either way) and ends within its tolerances (displacement 1e-6 per step) of the run that factors at
-// every refresh, with far fewer factorizations. The shipped example on 5 × 5 elements to 0.3 ms (the
-// interfaces soften and crack from 123 µs on).
+// their tangent (the stacked model's matrix_change, applied by Newton–Newmark) instead of factoring it anew:
+// Newton then iterates with the same matrices, so it needs the same solves (a wrong update would slow it: the
+// residual is exact either way) and ends within its tolerances (displacement 1e-6 per step) of the run that
+// factors at every refresh, with far fewer factorizations. The shipped example on 5 × 5 elements to 0.3 ms
+// (the interfaces soften and crack from 123 µs on).
 TEST(DelaminationImpact, UpdatingTheFactorGivesTheRunThatFactorsAtEveryRefresh) {
   std::string text =
       test::read_text(test::fs::path(PLYIMPACT_SOURCE_DIR) / "examples/impact-delamination.toml");

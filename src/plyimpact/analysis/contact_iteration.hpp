@@ -1,8 +1,7 @@
 #pragma once
 // The iterations of one implicit Newmark step on the plate and the contact together (SPEC §4), as the
-// Newton (newton_step.cpp), ply-damage (damage_step.cpp) and delamination (delamination_step.cpp)
-// policies solve it. Step n → n+1, unknowns u and Fc; with the Newmark acceleration
-// a = c0 (u − uₙ) − c2 vₙ − c3 aₙ the plate's residual is
+// Newton–Newmark policy (newton_newmark_step.cpp) solves it for every model. Step n → n+1, unknowns u and Fc;
+// with the Newmark acceleration a = c0 (u − uₙ) − c2 vₙ − c3 aₙ the plate's residual is
 //   r(u, Fc) = Fc s − M a(u) − f(u),   Fc = F(α),  α = wᵢ(Fc) − sᵀu,
 // and each iteration solves with an iteration matrix K̄ that the policy owns:
 //   û = u_k + K̄⁻¹ g(u_k),  g = −M a(u_k) − f(u_k),   u_{k+1} = û + Fc K̄⁻¹ s,

@@ -1,5 +1,6 @@
 // Newton–Newmark for any plate model of fem/mechanical_model.hpp, written once: the von Kármán plate
-// (SPEC §8), the plate whose plies crack (docs/progressive_damage.md) and their composition.
+// (SPEC §8), the plate whose plies crack (docs/progressive_damage.md), the stacked plate whose interfaces
+// delaminate (docs/delamination.md), and their compositions.
 //
 // Step n → n+1, unknowns u (plate) and Fc. With a = c0 (u − uₙ) − c2 vₙ − c3 aₙ, the plate residual is
 //   r(u, Fc) = Fc s − M a(u) − f_int(u) = 0,   and the contact law Fc = F(α), α = wᵢ(Fc) − sᵀu,
@@ -9,7 +10,8 @@
 // is affine in Fc and the contact law is solved exactly inside every iteration (SPEC §4): plate and
 // contact are solved together.
 //
-// K̄ is factored at the start of a run and refreshed (modified Newton) only where it pays:
+// K̄ of the virgin undeformed model is factored once per case and shared by its runs until a run refreshes
+// it (modified Newton) where it pays:
 // - within a step, when the iterations slow down (contraction ratio above `refresh_ratio`, or more than
 //   `refresh_after` solves); where the matrix is that of the last trial (lagged damage) the refresh waits
 //   for the trial at the next iterate, and a trial that changed a law's branch (a crack opened or closed)
@@ -17,6 +19,14 @@
 // - before a step, when the model says its state has drifted from the factored one (damage grown beyond
 //   its tolerance), or, with `refresh_interval`, at most every that many steps after a step that needed
 //   more than one solve.
+// A run's own factor is a Cholesky one, updated instead of made anew where the model gives the change as a
+// low-rank one (the lagged stack's interface points, DL8), or a sparse LU where the model's matrix is
+// unsymmetric (interfaces softening under mixed mode with their damage iterated). Where the settings ask
+// (the stack, whose law is only piecewise smooth: points start or stop softening, faces open or close, and
+// full corrections can cycle between its pieces) a correction with a run's own factor that did not lower
+// the residual by the fraction `sufficient_decrease` is halved, up to `max_halvings` times (the last is
+// kept; an exact two-cycle, equal residuals at both ends, was measured after separation). The elastic
+// factor's corrections are short (it is stiffer than the tangent) and are not halved.
 // A step is accepted when the residual and the correction are small and the model admits the iterate
 // (an element its trial left out has not reached a failure surface there). At small Δt, c0 M dominates
 // K̄ and one factorization typically serves the whole event.
@@ -28,6 +38,7 @@
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 
+#include <Eigen/SparseLU>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -50,23 +61,38 @@ public:
 
 private:
   class StepProblem;
+  /// Which factor of K̄ the run solves with.
+  enum class Factor { shared, cholesky, lu };
+  /// A new K̄ at `at`: the factor's update where the model gives the change (DL8), else a new factor.
   void refactor(const Eigen::VectorXd& at);
+  /// The model's low-rank change applied to the run's Cholesky factor; false where there is none or the
+  /// modified matrix is not positive definite (the factor is then made anew).
+  bool update_factor(const Eigen::VectorXd& at);
+  /// The contact loading's responses K̄⁻¹ s with the factor in use, once it has changed.
+  void use_factor(Factor factor);
+  /// x = K̄⁻¹ b with the factor in use, into x (sized once), without allocating where it is a Cholesky
+  /// one.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
   /// The refreshes due before step `step` from uₙ = `u`.
   void refresh_before(long step, const Eigen::VectorXd& u);
-  [[noreturn]] void fail(const char* what, long step, double t) const;
+  [[noreturn]] void fail(const std::string& what, long step, double t) const;
   /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n, f(u_n) − Fc_n s_n, into
   /// start_.
   void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
 
   const NewtonNewmarkPolicy& p_;
-  SpdSolver factor_;
+  Factor in_use_ = Factor::shared;
+  SpdSolver factor_;                 ///< the run's own Cholesky factor (the policy's analysis adopted)
+  Eigen::SparseLU<SparseMatrix> lu_; ///< … or LU, for an unsymmetric matrix
   SpdSolver::Workspace workspace_;
   Eigen::VectorXd kbar_diagonal_;         // f_int_ holds with the two-point form f'(u) + f(u_n) − Fc_n s_n
   Eigen::VectorXd start_, previous_load_; ///< the two-point form's start terms
+  const bool two_point_;                  ///< the steps are solved in the trapezoid's two-point form
   long last_refresh_ = 0;
   bool needed_more_than_one_solve_ = false;
   NewtonStatistics stats_;
   ContactIteration iteration_;      ///< a step allocates nothing but where it refactors
+  Eigen::VectorXd u_start_;         ///< where the last correction started (the halving line search)
   mutable Eigen::VectorXd scratch_; ///< M v of the kinetic energy
 };
 
@@ -76,8 +102,14 @@ public:
                       NewtonSettings settings)
       : model_(std::move(model)), options_(options),
         settings_(std::move(settings)), control_{settings_.max_iterations, settings_.refresh_ratio,
-                                                 settings_.refresh_after},
-        M_(model_->mass(), 1e-14) {}
+                                                 settings_.refresh_after, settings_.refresh_every},
+        M_(model_->mass(), 1e-14), initial_(options.solver, options.ordering) {
+    const SparseMatrix Kbar = iteration_kbar(*model_->virgin_state(), Eigen::VectorXd::Zero(model_->size()));
+    if (options.memory_limit_bytes)
+      check_factor_memory(estimate_factor_memory(initial_, Kbar), *options.memory_limit_bytes);
+    initial_.factorize(Kbar);
+    initial_diagonal_ = Kbar.diagonal();
+  }
 
   [[nodiscard]] int equations() const override { return model_->size(); }
   [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
@@ -85,6 +117,10 @@ public:
     return std::make_unique<NewtonNewmarkStepper>(*this, impactor);
   }
   [[nodiscard]] std::vector<std::string> warnings() const override { return model_->warnings(); }
+  /// K̄ = K + c0 M at u, K the iteration matrix of `state`.
+  [[nodiscard]] SparseMatrix iteration_kbar(const ModelState& state, const Eigen::VectorXd& u) const {
+    return state.iteration_matrix(u) + options_.newmark.c0 * M_.matrix();
+  }
 
   std::unique_ptr<const MechanicalModel> model_;
   StepPolicyOptions options_;
@@ -93,29 +129,82 @@ public:
   /// The lumped mass is diagonal when I1 = 0; a symmetric layup gives I1 at round-off level (~1e-20),
   /// whose u–θ entries are dropped rather than turning every M·x into a sparse product.
   MassOperator M_;
+  SpdSolver initial_;                ///< K̄ of the virgin undeformed model, shared by the runs
+  Eigen::VectorXd initial_diagonal_; ///< its diagonal
 };
 
 NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor)
     : ModelStepper(*policy.model_, policy.options_, impactor), p_(policy),
-      factor_(policy.options_.solver, policy.options_.ordering),
+      factor_(policy.options_.solver, policy.options_.ordering), kbar_diagonal_(policy.initial_diagonal_),
       start_(Eigen::VectorXd::Zero(policy.equations())),
-      previous_load_(Eigen::VectorXd::Zero(policy.equations())), iteration_(policy.equations()),
-      scratch_(policy.equations()) {
-  const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(policy.equations());
-  if (policy.options_.memory_limit_bytes) // from the analysis that refactor() then reuses
-    check_factor_memory(estimate_factor_memory(factor_, state_->iteration_matrix(at_rest) +
-                                                            p_.options_.newmark.c0 * p_.M_.matrix()),
-                        *policy.options_.memory_limit_bytes);
-  refactor(at_rest);
+      previous_load_(Eigen::VectorXd::Zero(policy.equations())),
+      two_point_(state_->two_point_form() && policy.options_.newmark.beta == 0.25 &&
+                 policy.options_.newmark.gamma == 0.5),
+      iteration_(policy.equations()), scratch_(policy.equations()) {
+  factor_.adopt_analysis_of(policy.initial_);
+  state_->use_two_point_form(two_point_);
+  state_->matrix_factorized(Eigen::VectorXd::Zero(policy.equations())); // the shared factor's state
+  use_factor(Factor::shared);
+  stats_.factorizations = 1; // the shared factor
+  if (policy.settings_.max_halvings > 0) u_start_.resize(policy.equations());
+}
+
+void NewtonNewmarkStepper::use_factor(Factor factor) {
+  in_use_ = factor;
+  loading_.set_solver([this](const Eigen::VectorXd& b) {
+    Eigen::VectorXd x(b.size());
+    solve(b, x);
+    return x;
+  });
+}
+
+void NewtonNewmarkStepper::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  switch (in_use_) {
+  case Factor::shared:
+    p_.initial_.solve(b, x, workspace_);
+    return;
+  case Factor::cholesky:
+    factor_.solve(b, x, workspace_);
+    return;
+  case Factor::lu:
+    x = lu_.solve(b);
+    return;
+  }
 }
 
 void NewtonNewmarkStepper::refactor(const Eigen::VectorXd& at) {
-  const SparseMatrix Kbar = state_->iteration_matrix(at) + p_.options_.newmark.c0 * p_.M_.matrix();
-  factor_.factorize(Kbar);
+  if (in_use_ == Factor::cholesky && update_factor(at)) return;
+  const SparseMatrix Kbar = p_.iteration_kbar(*state_, at);
+  Factor factor = Factor::cholesky;
+  if (state_->iteration_matrix_symmetric()) {
+    factor_.factorize(Kbar);
+  } else {
+    lu_.compute(Kbar);
+    if (lu_.info() != Eigen::Success)
+      throw NewtonFailure(
+          fmt::format("{}: the iteration matrix is singular; {}", p_.settings_.physics, p_.settings_.advice));
+    factor = Factor::lu;
+  }
   kbar_diagonal_ = Kbar.diagonal();
-  loading_.set_solver([this](const Eigen::VectorXd& b) { return factor_.solve(b); });
-  state_->matrix_factorized();
+  state_->matrix_factorized(at);
+  use_factor(factor);
   ++stats_.factorizations;
+}
+
+bool NewtonNewmarkStepper::update_factor(const Eigen::VectorXd& at) {
+  const std::optional<LowRankChange> change = state_->matrix_change(at);
+  if (!change) return false;
+  if (change->rank() == 0) return true; // the factor holds the matrix already
+  // The update first: the matrix stays positive definite in between.
+  if ((change->up.cols() > 0 && !factor_.modify(change->up, true)) ||
+      (change->down.cols() > 0 && !factor_.modify(change->down, false)))
+    return false;
+  state_->matrix_changed();
+  kbar_diagonal_ += change->up.cwiseProduct(change->up) * Eigen::VectorXd::Ones(change->up.cols()) -
+                    change->down.cwiseProduct(change->down) * Eigen::VectorXd::Ones(change->down.cols());
+  use_factor(Factor::cholesky); // the responses recomputed
+  ++stats_.factor_updates;
+  return true;
 }
 
 void NewtonNewmarkStepper::refresh_before(long step, const Eigen::VectorXd& u) {
@@ -145,7 +234,7 @@ void NewtonNewmarkStepper::step_start(const Eigen::VectorXd& u_n, const ContactS
   }
 }
 
-void NewtonNewmarkStepper::fail(const char* what, long step, double t) const {
+void NewtonNewmarkStepper::fail(const std::string& what, long step, double t) const {
   const NewtonSettings& ns = p_.settings_;
   throw NewtonFailure(
       fmt::format("{}: {} in step {} (t = {:.6g} s); {}", ns.physics, what, step, t, ns.advice));
@@ -156,43 +245,70 @@ void NewtonNewmarkStepper::fail(const char* what, long step, double t) const {
 class NewtonNewmarkStepper::StepProblem final : public NewtonProblem {
 public:
   StepProblem(NewtonNewmarkStepper& stepper, const PlateState& s, const ContactStep& contact)
-      : p_(stepper), s_(s), contact_(contact),
-        two_point_(stepper.state_->two_point_form() && stepper.p_.options_.newmark.beta == 0.25 &&
-                   stepper.p_.options_.newmark.gamma == 0.5) {
+      : p_(stepper), s_(s), contact_(contact) {
     p_.iteration_.predict(s, stepper.p_.options_.newmark); // constant acceleration: a_{n+1} = aₙ
-    if (two_point_) p_.step_start(s.u, contact);
+    if (p_.two_point_) p_.step_start(s.u, contact);
   }
   Trial trial(int corrections) override {
-    const NewmarkCoefficients& nc = p_.p_.options_.newmark;
-    ContactIteration& it = p_.iteration_;
-    it.step_inertia(s_, nc, p_.p_.M_, two_point_);
-    p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
-    if (two_point_) p_.f_int_ += p_.start_;
-    it.set_internal_force(p_.f_int_);
     const NewtonSettings& ns = p_.p_.settings_;
-    return corrections > 0 && it.converged(p_.loading_, cs_, p_.f_int_, p_.kbar_diagonal_,
-                                           ns.residual_tolerance, ns.displacement_tolerance)
-               ? Trial::converged
-               : Trial::iterate;
+    for (;;) {
+      evaluate();
+      if (corrections == 0) return Trial::iterate;
+      if (p_.iteration_.converged(p_.loading_, cs_, p_.f_int_, p_.kbar_diagonal_, ns.residual_tolerance,
+                                  ns.displacement_tolerance))
+        return Trial::converged;
+      if (!halve()) return Trial::iterate;
+    }
   }
   bool admit() override { return p_.state_->admit(p_.iteration_.uk()); }
   void refactor() override { p_.refactor(p_.iteration_.uk()); }
   double correct() override {
+    if (p_.p_.settings_.max_halvings > 0) {
+      halvings_ = 0;
+      p_.u_start_ = p_.iteration_.uk();
+      cs_start_ = cs_;
+    }
     const double correction = p_.iteration_.correct(
-        [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { p_.factor_.solve(g, x, p_.workspace_); },
-        p_.loading_, contact_, cs_);
+        [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { p_.solve(g, x); }, p_.loading_, contact_, cs_);
     return std::isfinite(cs_.force) ? correction : NAN;
   }
   bool take_branch_changed() override { return p_.state_->take_branch_changed(); }
-  bool defer_refresh() override { return p_.state_->matrix_of_last_trial(); }
+  bool defer_refresh() override { return p_.state_->refresh_at_next_trial(); }
   [[nodiscard]] const ContactSolution& contact_solution() const { return cs_; }
 
 private:
+  /// The model's trial force at the iterate (with the two-point form's start terms) and the step's inertia.
+  void evaluate() {
+    const NewmarkCoefficients& nc = p_.p_.options_.newmark;
+    ContactIteration& it = p_.iteration_;
+    it.step_inertia(s_, nc, p_.p_.M_, p_.two_point_);
+    p_.state_->internal_force(it.uk(), nc.dt, p_.f_int_);
+    if (p_.two_point_) p_.f_int_ += p_.start_;
+    it.set_internal_force(p_.f_int_);
+  }
+  /// Backtracking (the module comment): halves the last correction, with the run's own factor, where it
+  /// did not lower the residual enough; false where it is kept.
+  bool halve() {
+    constexpr double sufficient_decrease = 1e-4;
+    const double residual = p_.iteration_.residual_norm();
+    if (residual > (1.0 - sufficient_decrease) * start_residual_ && p_.in_use_ != Factor::shared &&
+        halvings_ < p_.p_.settings_.max_halvings) {
+      p_.iteration_.uk() = 0.5 * (p_.u_start_ + p_.iteration_.uk());
+      cs_.force = 0.5 * (cs_start_.force + cs_.force);
+      cs_.alpha = 0.5 * (cs_start_.alpha + cs_.alpha);
+      ++halvings_;
+      return true;
+    }
+    start_residual_ = residual;
+    return false;
+  }
+
   NewtonNewmarkStepper& p_;
   const PlateState& s_;
   const ContactStep& contact_;
-  const bool two_point_;
-  ContactSolution cs_;
+  ContactSolution cs_, cs_start_; ///< cs_start_: where the last correction started, with u_start_
+  double start_residual_ = INFINITY;
+  int halvings_ = 0; ///< of the last correction
 };
 
 ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateState& s,
@@ -200,7 +316,7 @@ ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateSt
   refresh_before(step, s.u);
   StepProblem problem(*this, s, contact);
   const NewtonOutcome o = solve_newton(problem, p_.control_);
-  if (!o.converged) fail(o.why.c_str(), step, t);
+  if (!o.converged) fail(o.why, step, t);
   needed_more_than_one_solve_ = o.corrections > 1;
   stats_.iterations += o.corrections;
   stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, o.corrections);

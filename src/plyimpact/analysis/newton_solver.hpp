@@ -1,7 +1,7 @@
 #pragma once
 // Newton's method, written once (issue 49): the iterations of a Newton–Newmark step of any plate model
-// (newton_newmark_step.cpp) and of the stacked plate's own step (delamination_step.cpp), of a load step of
-// the quasi-static von Kármán path (nonlinear_static.cpp) and of a step of the stacked plate's
+// (newton_newmark_step.cpp: the von Kármán, damaged and stacked plates and their compositions), of a load
+// step of the quasi-static von Kármán path (nonlinear_static.cpp) and of a step of the stacked plate's
 // displacement-controlled path (delamination_path.cpp).
 //
 // The problem owns its unknowns, its residual, its matrix and that matrix's factor; the solver decides

@@ -33,6 +33,7 @@
 // laminate's: with u_k = u₀ − z_k w' the membrane strain u_k' + ½ w'² − (z − z_k) w'' of sub-laminate k is
 // the whole laminate's u₀' + ½ w'² − z w'' at every height z, so a stack whose interfaces hold is the
 // von Kármán laminate (tests/analysis/test_stacked_von_karman.cpp).
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/stacked_plate_step.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -41,7 +42,12 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace plyimpact {
 
@@ -89,23 +95,29 @@ public:
     return interfaces_.result();
   }
 
-  // Newton–Newmark with the laws of the step before held (lagged: plies and interfaces).
-  /// K_plates, the interfaces' tangent at their held damage and the damaged sections' secant difference
-  /// of the last trial, each sub-laminate on its diagonal block.
+  // Newton–Newmark: with the interfaces' damage iterated (implicit, the stack without ply damage), or
+  // with the laws of the step before held (lagged: plies and interfaces).
+  /// K_plates, the interfaces' tangent (at their held damage where lagged) and the damaged sections'
+  /// secant difference of the last trial, each sub-laminate on its diagonal block.
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override;
+  /// The tangent of damage iterated with the step is unsymmetric under mixed mode; the held one is not.
+  [[nodiscard]] bool iteration_matrix_symmetric() const override { return lagged(); }
   [[nodiscard]] bool matrix_outdated() const override;
-  void matrix_factorized() override {
-    for (DamageField& field : fields_)
-      field.mark_factorized();
-  }
+  void matrix_factorized(const Eigen::VectorXd& u) override;
+  [[nodiscard]] std::optional<LowRankChange> matrix_change(const Eigen::VectorXd& u) override;
+  void matrix_changed() override;
   bool take_branch_changed() override {
     bool changed = false;
     for (DamageField& field : fields_)
       changed = field.take_modes_changed() || changed; // every field's flag taken
     return changed;
   }
-  [[nodiscard]] bool matrix_of_last_trial() const override { return !fields_.empty(); }
+  /// With ply damage the matrix is that of the last trial; the linear stack's trial is one product and the
+  /// interfaces' law, against a factorization. (The von Kármán stack refreshes at once: measured so, and
+  /// kept so that its example's numbers stay.)
+  [[nodiscard]] bool refresh_at_next_trial() const override;
   [[nodiscard]] bool two_point_form() const override { return lagged(); }
+  void use_two_point_form(bool on) override { two_point_ = on; }
   void start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) override;
 
 private:
@@ -122,6 +134,16 @@ private:
   /// diagonal block.
   [[nodiscard]] SparseMatrix sublaminate_corrections(const Eigen::VectorXd& u) const;
   [[nodiscard]] bool lagged() const;
+  /// How the interfaces' trials take their damage: evolving with the step, held with the end tractions
+  /// of the step's mean (the two-point form, DL6), or held with the law's own.
+  [[nodiscard]] CohesiveDamage interface_damage() const {
+    return !lagged()    ? CohesiveDamage::evolve
+           : two_point_ ? CohesiveDamage::lagged_mean
+                        : CohesiveDamage::lagged;
+  }
+  /// The lagged linear stack refreshes its factor by updates where few interface points changed (DL8);
+  /// the sub-laminates of a stack with ply damage or large deflections change everywhere.
+  [[nodiscard]] bool updates_factor() const;
 
   const StackedModel& m_;
   InterfaceStates interfaces_;
@@ -135,6 +157,16 @@ private:
   std::vector<Eigen::VectorXd> u_parts_, f_parts_;
   std::optional<StackedDamageField> plies_; ///< the fields seen as the laminate's plies
   double dt_ = 0.0;                         ///< of the last trial (the laws' viscous time at a commit)
+  bool two_point_ = true; ///< lagged: the integrator solves the trapezoid's two-point form (DL7)
+  // The lagged linear stack's factor updates (DL8): each interface point's tangent in the factor, the
+  // changes of the last matrix_change(), the rank-one terms since the factorization.
+  std::vector<std::vector<Eigen::Matrix3d>> factored_tangents_;
+  struct TangentChange {
+    std::size_t interface, point;
+    Eigen::Matrix3d tangent;
+  };
+  std::vector<TangentChange> pending_;
+  Eigen::Index update_rank_ = 0, pending_rank_ = 0;
 };
 
 class StackedModel final : public MechanicalModel {
@@ -241,6 +273,14 @@ bool StackedState::lagged() const {
   return m_.lagged();
 }
 
+bool StackedState::refresh_at_next_trial() const {
+  return !fields_.empty() || !m_.large_deflection();
+}
+
+bool StackedState::updates_factor() const {
+  return lagged() && m_.plate_.settings_.update_factor && fields_.empty() && !m_.large_deflection();
+}
+
 void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
   if (!m_.von_karman_.empty())
     sublaminate_forces(u,
@@ -259,10 +299,10 @@ void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::Ve
   dt_ = dt;
   plate_forces(u, dt);
   f = Ku_;
-  // Lagged: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage (DL6)
+  // Lagged in the two-point form: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage
+  // (DL6)
   const double dissipated =
-      m_.plate_.stack_.add_interface_forces(u, interfaces_.committed(), f, trial_buffer_,
-                                            lagged() ? CohesiveDamage::lagged_mean : CohesiveDamage::evolve);
+      m_.plate_.stack_.add_interface_forces(u, interfaces_.committed(), f, trial_buffer_, interface_damage());
   interfaces_.set_trial(trial_buffer_, dissipated);
 }
 
@@ -282,7 +322,7 @@ void StackedState::start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) {
 }
 
 SparseMatrix StackedState::iteration_matrix(const Eigen::VectorXd& u) const {
-  SparseMatrix K = m_.plate_.stack_.evaluate(u, interfaces_.committed(), CohesiveDamage::lagged_mean).tangent;
+  SparseMatrix K = m_.plate_.stack_.evaluate(u, interfaces_.committed(), interface_damage()).tangent;
   if (fields_.empty() && m_.von_karman_.empty()) return K;
   return K + sublaminate_corrections(u);
 }
@@ -321,6 +361,76 @@ bool StackedState::matrix_outdated() const {
   });
 }
 
+void StackedState::matrix_factorized(const Eigen::VectorXd& u) {
+  for (DamageField& field : fields_)
+    field.mark_factorized();
+  if (!updates_factor()) return;
+  const StackedPlateModel& stack = m_.plate_.stack_;
+  factored_tangents_.resize(static_cast<std::size_t>(stack.interface_count()));
+  for (int i = 0; i < stack.interface_count(); ++i)
+    stack.interface(i).point_tangents(u, interfaces_.committed().interfaces[static_cast<std::size_t>(i)],
+                                      interface_damage(), factored_tangents_[static_cast<std::size_t>(i)]);
+  update_rank_ = 0;
+}
+
+// The lagged step's matrix is K̄ = K_plates + c0 M + Σ_p J_pᵀ T_p J_p, T_p the point's 3 × 3 tangent at the
+// held damage: a refresh compares each point's T_p with the one in the factor and splits each change
+// ΔT_p = V Λ Vᵀ by the signs of its eigenvalues into the columns √|λ| J_pᵀ v of C₊ or C₋ (DL8,
+// docs/delamination.md). More than max_update_rank terms, more than max_total_update_rank since the
+// factorization (their round-off adds up) or an unsymmetric change: no update.
+std::optional<LowRankChange> StackedState::matrix_change(const Eigen::VectorXd& u) {
+  constexpr Eigen::Index max_update_rank = 1000, max_total_update_rank = 20000;
+  if (!updates_factor() || factored_tangents_.empty()) return std::nullopt;
+  const StackedPlateModel& stack = m_.plate_.stack_;
+  pending_.clear();
+  std::vector<Eigen::Triplet<double>> up, down; // the columns of C₊ and C₋
+  std::vector<std::pair<int, double>> rows[3];
+  std::vector<Eigen::Matrix3d> now;
+  for (int i = 0; i < stack.interface_count(); ++i) {
+    const CohesiveInterface& face = stack.interface(i);
+    const auto ii = static_cast<std::size_t>(i);
+    face.point_tangents(u, interfaces_.committed().interfaces[ii], interface_damage(), now);
+    for (int p = 0; p < face.point_count(); ++p) {
+      const Eigen::Matrix3d& held = factored_tangents_[ii][static_cast<std::size_t>(p)];
+      const Eigen::Matrix3d D = now[static_cast<std::size_t>(p)] - held;
+      const double scale = now[static_cast<std::size_t>(p)].norm() + held.norm();
+      if (D.norm() <= 1e-12 * scale) continue;
+      if ((D - D.transpose()).norm() > 1e-12 * scale) return std::nullopt; // an unsymmetric tangent
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> split(0.5 * (D + D.transpose()));
+      for (int k = 0; k < 3; ++k) {
+        rows[k].clear();
+        face.jump_row(p, k, rows[k]);
+      }
+      for (int e = 0; e < 3; ++e) {
+        const double lambda = split.eigenvalues()(e);
+        if (std::abs(lambda) <= 1e-12 * scale) continue;
+        std::vector<Eigen::Triplet<double>>& side = lambda > 0.0 ? up : down;
+        const int column = side.empty() ? 0 : side.back().col() + 1;
+        for (int k = 0; k < 3; ++k)
+          for (const auto& [eq, c] : rows[k])
+            side.emplace_back(eq, column, std::sqrt(std::abs(lambda)) * split.eigenvectors()(k, e) * c);
+      }
+      pending_.push_back({ii, static_cast<std::size_t>(p), now[static_cast<std::size_t>(p)]});
+    }
+  }
+  const auto columns = [n = stack.size()](const std::vector<Eigen::Triplet<double>>& t) {
+    SparseMatrix C(n, t.empty() ? 0 : t.back().col() + 1);
+    C.setFromTriplets(t.begin(), t.end());
+    return C;
+  };
+  LowRankChange change{columns(up), columns(down)};
+  pending_rank_ = change.rank();
+  if (pending_rank_ > max_update_rank || update_rank_ + pending_rank_ > max_total_update_rank)
+    return std::nullopt;
+  return change;
+}
+
+void StackedState::matrix_changed() {
+  for (const TangentChange& c : pending_)
+    factored_tangents_[c.interface][c.point] = c.tangent;
+  update_rank_ += pending_rank_;
+}
+
 void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/) {
   if (lagged() && !fields_.empty()) {
     // The plies' laws once, at u_{n+1} (elements that reached a surface there join first).
@@ -350,6 +460,57 @@ double StackedState::stored_energy(const Eigen::VectorXd& u) const {
   return plates + m_.plate_.stack_.interface_energy(u, interfaces_.committed());
 }
 
+/// How Newton–Newmark iterates the stacked plate: with the delamination settings' iterations; where the
+/// sub-laminates deflect largely also the periodic refresh of the non-linear settings (the tangents move
+/// with u). Where the interfaces are iterated, and on the lagged linear stack, the corrections that do not
+/// lower the residual are halved and the matrix refreshed every `refresh_after` solves, as the stacked
+/// plate's own step did; the lagged stacks with ply damage or large deflections, written on Newton–Newmark
+/// first, refresh after `refresh_after` solves and do not halve (each kept so that no example's numbers
+/// move).
+NewtonSettings stack_newton_settings(const DelaminationSettings& ds, bool ply_damage,
+                                     const std::optional<NonlinearImpactSettings>& large_deflection) {
+  NewtonSettings ns;
+  ns.max_iterations = ds.max_iterations;
+  ns.residual_tolerance = ds.residual_tolerance;
+  ns.displacement_tolerance = ds.displacement_tolerance;
+  ns.refresh_ratio = ds.refresh_ratio;
+  if ((ply_damage || large_deflection) && ds.integration == DamageIntegration::lagged) {
+    ns.refresh_after = ds.refresh_after;
+  } else {
+    ns.refresh_every = ds.refresh_after;
+    ns.max_halvings = 6;
+  }
+  if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
+  ns.physics = large_deflection ? "non-linear delamination"
+               : ply_damage     ? "ply damage and delamination"
+                                : "delamination";
+  ns.advice = "reduce time.dt";
+  return ns;
+}
+
+/// Steepest softening slope of the law over the pure modes [Pa/m] (DL5).
+double softening_slope(const CohesiveParameters& p) {
+  const double K = p.penalty_stiffness;
+  const auto slope = [K](double strength, double G_c) {
+    return strength / (2.0 * G_c / strength - strength / K);
+  };
+  return std::max(slope(p.normal_strength, p.G_Ic), slope(p.shear_strength, p.G_IIc));
+}
+
+/// The implicit step's Δt against (DL5), for the stacks without ply damage (the stack with cracking plies
+/// takes half its stable step, plies_with_interfaces_step_fraction).
+void check_time_step(const PlateModel& model, const StepPolicyOptions& options,
+                     const DelaminationSettings& settings) {
+  const double dt = options.newmark.dt;
+  const double limit = largest_delamination_time_step(model.laminate(), settings.stack, options.newmark.beta);
+  if (dt > limit)
+    throw std::invalid_argument(fmt::format(
+        "delamination: time.dt = {:.4g} s is above {:.4g} s, the largest step at which an interface point "
+        "that starts softening keeps the step solvable (the softening slope of the interface law against "
+        "the inertia of the sub-laminates, docs/delamination.md); set [time] dt <= {:.3g} or \"auto\"",
+        dt, limit, limit));
+}
+
 } // namespace
 
 std::unique_ptr<MechanicalModel>
@@ -377,6 +538,46 @@ explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptio
                                   std::optional<StrainMeasure> large_deflection) {
   return central_difference_step_policy(stacked_plate_model(model, settings, ply_damage, large_deflection),
                                         options, explicit_key);
+}
+
+double largest_delamination_time_step(const Laminate& laminate, const StackSettings& stack,
+                                      double newmark_beta) {
+  const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
+  const double k_s = softening_slope(stack.interface);
+  double limit = INFINITY;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    const double m_u = parts[i].inertia()[0], m_l = parts[i + 1].inertia()[0];
+    limit = std::min(limit, std::sqrt(m_u * m_l / (m_u + m_l) / (newmark_beta * k_s)));
+  }
+  return limit;
+}
+
+std::unique_ptr<StepPolicy>
+delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
+                         const DelaminationSettings& settings,
+                         const std::optional<ProgressiveDamageSettings>& ply_damage,
+                         const std::optional<NonlinearImpactSettings>& large_deflection) {
+  const ModelKind kind{false, large_deflection.has_value(), ply_damage.has_value(), true};
+  const Integrator integrator =
+      resolve_integrator(kind, TimeIntegration::newmark,
+                         ply_damage ? std::optional(integrator_of(ply_damage->integration)) : std::nullopt,
+                         integrator_of(settings.integration));
+  if (auto why = refusal(kind, integrator)) throw std::invalid_argument(*why); // capabilities.hpp
+  std::optional<StrainMeasure> measure;
+  if (large_deflection) {
+    if (ply_damage && large_deflection->measure != StrainMeasure::von_karman)
+      throw std::invalid_argument(
+          "progressive damage takes the von Kármán strains of a non-linear plate: set strain_measure = "
+          "\"von-karman\" (the Green–Lagrange measure is not built for the layered section whose plies "
+          "crack)");
+    measure = large_deflection->measure;
+  }
+  if (settings.integration == DamageIntegration::central_difference)
+    return explicit_delamination_step_policy(model, options, settings, ply_damage, measure);
+  if (!ply_damage) check_time_step(model, options, settings);
+  return newton_newmark_step_policy(
+      stacked_plate_model(model, settings, ply_damage, measure), options,
+      stack_newton_settings(settings, ply_damage.has_value(), large_deflection));
 }
 
 } // namespace plyimpact

@@ -99,15 +99,6 @@ void StackedImpactPlate::top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd&
     if (const int eq = model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
 }
 
-StackedPlateStepper::StackedPlateStepper(const StackedPlatePolicy& policy, const Impactor& impactor)
-    : loading_(policy.stack_.sublaminate(0), policy.top_equations_, impactor, policy.options_.load,
-               policy.stack_.size()),
-      base_(policy), interfaces_(policy) {}
-
-double StackedPlateStepper::strain_energy(const PlateState& s, double /*force*/) const {
-  return base_.stack_.stored_energy(s.u, interfaces_.committed(), scratch_);
-}
-
 InterfaceStates::InterfaceStates(const StackedImpactPlate& plate)
     : plate_(plate), committed_(plate.stack_.virgin_state()) {}
 

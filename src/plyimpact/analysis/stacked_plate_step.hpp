@@ -1,9 +1,8 @@
 #pragma once
-// What the steps of the stacked plate share (fem/stacked_plate.hpp; docs/delamination.md): the stack cut
-// from the impact's plate, the mesh guidance and warnings (StackedImpactPlate), and in each run the
-// interfaces' committed states, their areas and dissipation (InterfaceStates). Newton iterations
-// (delamination_step.cpp) and the stacked model that central differences drive (stacked_model.cpp)
-// differ only in how a step is solved.
+// The stacked plate of an impact (fem/stacked_plate.hpp; docs/delamination.md): the stack cut from the
+// impact's plate, the mesh guidance and warnings (StackedImpactPlate), and in each run the interfaces'
+// committed states, their areas and dissipation (InterfaceStates); the stacked model built on them
+// (stacked_model.cpp), which every integrator drives.
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 
@@ -53,7 +52,7 @@ public:
 
 /// One run's interfaces: their committed states (a trial is committed with each accepted step), the
 /// energy they dissipated, their areas and the whole result.
-class InterfaceStates final : public ModelResults {
+class InterfaceStates {
 public:
   explicit InterfaceStates(const StackedImpactPlate& plate);
 
@@ -70,62 +69,10 @@ public:
   void areas(DelaminationAreas& out) const;
   [[nodiscard]] DelaminationResult result() const;
 
-  bool delamination_areas(DelaminationAreas& out) const override {
-    areas(out);
-    return true;
-  }
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override { return result(); }
-
 private:
   const StackedImpactPlate& plate_;
   StackedPlateState committed_, trial_;
   double trial_dissipated_ = 0.0, dissipated_ = 0.0;
-};
-
-class StackedPlatePolicy : public StepPolicy, public StackedImpactPlate {
-public:
-  StackedPlatePolicy(const PlateModel& model, const StepPolicyOptions& options,
-                     const DelaminationSettings& settings)
-      : StackedImpactPlate(model, settings), options_(options) {}
-
-  [[nodiscard]] int equations() const override { return stack_.size(); }
-  [[nodiscard]] std::vector<std::string> warnings() const override { return stack_warnings(); }
-
-  StepPolicyOptions options_;
-};
-
-/// One run on the stacked plate: the impactor's contact on the top sub-laminate and the interfaces'
-/// states, committed with each accepted step.
-class StackedPlateStepper : public PlateStepper {
-public:
-  StackedPlateStepper(const StackedPlatePolicy& policy, const Impactor& impactor);
-
-  void accept(const PlateState& /*before*/, const Eigen::VectorXd& /*u_next*/) override {
-    interfaces_.accept();
-  }
-  [[nodiscard]] double kinetic_energy(const PlateState& s) const override {
-    return base_.M_.kinetic_energy(s.v, scratch_);
-  }
-  /// ½ uᵀ K_plates u + the interfaces' stored energy at their committed damage.
-  [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
-  [[nodiscard]] double dissipated_energy() const override { return interfaces_.dissipated(); }
-  [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
-    return loading_.sampler().dot(u);
-  }
-  /// The top sub-laminate's displacements in the model's numbering.
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { base_.top_to_model(u, out); }
-  [[nodiscard]] const ModelResults* results() const override { return &interfaces_; }
-
-protected:
-  void set_trial(StackedPlateState& trial, double dissipated) { interfaces_.set_trial(trial, dissipated); }
-  [[nodiscard]] const StackedPlateState& committed() const { return interfaces_.committed(); }
-
-  ContactLoading loading_; ///< on the top sub-laminate, in the stacked numbering
-
-private:
-  const StackedPlatePolicy& base_;
-  InterfaceStates interfaces_;
-  mutable Eigen::VectorXd scratch_; ///< M v and K u of the energies, sized once
 };
 
 /// The stacked plate as a model of fem/mechanical_model.hpp, for the integrators written once against it

@@ -191,8 +191,12 @@ struct NewtonSettings {
   double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
   double refresh_ratio = 0.25; ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
   int refresh_after = std::numeric_limits<int>::max(); ///< … or when a step needs more solves
+  int refresh_every = 0; ///< … or after every this many solves of a step (0: never)
   /// At most every this many steps, refactor at uₙ after a step that needed more than one solve.
   std::optional<long> refresh_interval;
+  /// A correction made with a run's own factor that does not lower the residual is halved up to this many
+  /// times (0: never; a law only piecewise smooth, whose full corrections can cycle between its pieces).
+  int max_halvings = 0;
   std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
   std::string advice = "reduce time.dt"; ///< what they advise
 };
@@ -229,7 +233,8 @@ damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                                     double newmark_beta);
 
 /// The laminate of `model` (one laminate, no regions) cut into sub-laminates tied by cohesive interfaces
-/// (delamination_step.cpp). The supports of `model` hold the sub-laminates that `settings` names. Throws
+/// (stacked_model.cpp), under Newton–Newmark or central differences. The supports of `model` hold the
+/// sub-laminates that `settings` names. Throws
 /// std::invalid_argument for a plate with regions of other laminates.
 /// With `ply_damage` the plies crack too; with `large_deflection` the sub-laminates are geometrically
 /// non-linear (stacked_plate_model). What does not run (capabilities.hpp) throws std::invalid_argument

@@ -151,9 +151,9 @@ public:
   [[nodiscard]] bool matrix_outdated() const override {
     return field_.growth_since_factorization() > plate_.settings().refactor_tolerance;
   }
-  void matrix_factorized() override { field_.mark_factorized(); }
+  void matrix_factorized(const Eigen::VectorXd& /*u*/) override { field_.mark_factorized(); }
   bool take_branch_changed() override { return lagged() && field_.take_modes_changed(); }
-  [[nodiscard]] bool matrix_of_last_trial() const override { return lagged(); }
+  [[nodiscard]] bool refresh_at_next_trial() const override { return lagged(); }
 
 private:
   [[nodiscard]] bool lagged() const { return plate_.settings().integration == DamageIntegration::lagged; }

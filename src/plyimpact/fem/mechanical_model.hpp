@@ -28,7 +28,7 @@
 namespace plyimpact {
 
 /// What observers read of a model's committed state, asked for by type: empty where the model has no
-/// such part. A run's ModelState is one; so are the interfaces of the stacked plate's own Newton step.
+/// such part. A run's ModelState is one.
 class ModelResults {
 public:
   virtual ~ModelResults() = default;
@@ -43,6 +43,12 @@ public:
   virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
   /// The interfaces, whole.
   [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
+};
+
+/// A low-rank change of a symmetric matrix in a factor: + C₊C₊ᵀ − C₋C₋ᵀ (columns of the matrix's rows).
+struct LowRankChange {
+  SparseMatrix up, down;
+  [[nodiscard]] Eigen::Index rank() const { return up.cols() + down.cols(); }
 };
 
 /// One run's state of a model's integration points.
@@ -61,27 +67,43 @@ public:
   // What Newton–Newmark iterations ask of the state (newton_newmark_step.cpp); central differences ask
   // none of it.
   /// The stiffness of a Newton iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
-  /// of the von Kármán plate, the secant of the damage of the last trial, K of the elastic plate.
-  /// Throws std::logic_error on a model that only central differences drive (the stacked plate).
+  /// of the von Kármán plate, the secant of the damage of the last trial, K of the elastic plate, the
+  /// stack's K_plates plus its interfaces' tangent. Throws std::logic_error on a model that only central
+  /// differences drive.
   [[nodiscard]] virtual SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const;
+  /// False where iteration_matrix() may be unsymmetric (the tangent of interfaces that soften under mixed
+  /// mode with their damage iterated): the integrator then factors it by sparse LU instead of Cholesky.
+  [[nodiscard]] virtual bool iteration_matrix_symmetric() const { return true; }
   /// Once the iterations have found equilibrium at u: false where the trial left out a part that must
   /// join (an element whose plies have reached a failure surface at u), and the step iterates on.
   virtual bool admit(const Eigen::VectorXd& /*u*/) { return true; }
   /// The refactor hint: the committed state has drifted from that of the last factored matrix (damage
   /// grown beyond a tolerance), so the next step starts from a new one.
   [[nodiscard]] virtual bool matrix_outdated() const { return false; }
-  /// The iteration matrix has just been factored.
-  virtual void matrix_factorized() {}
+  /// The iteration matrix at u has just been factored.
+  virtual void matrix_factorized(const Eigen::VectorXd& /*u*/) {}
+  /// The iteration matrix at u as a low-rank change of the one in the factor (the last factored, with the
+  /// changes since), K̄(u) = K̄_f + C₊C₊ᵀ − C₋C₋ᵀ, for an update of the factor instead of a new one (DL8,
+  /// SpdSolver::modify); empty where it is not one, and the matrix is factored anew.
+  [[nodiscard]] virtual std::optional<LowRankChange> matrix_change(const Eigen::VectorXd& /*u*/) {
+    return std::nullopt;
+  }
+  /// The last matrix_change() is in the factor now.
+  virtual void matrix_changed() {}
   /// True once after a trial that changed which branch of a law holds at some point (a crack opened or
   /// closed under lagged damage): its matrix is then factored before the next correction.
   virtual bool take_branch_changed() { return false; }
-  /// True where the iteration matrix is that of the last trial (lagged damage): a refresh waits for the
-  /// trial at the next iterate instead of being factored at once.
-  [[nodiscard]] virtual bool matrix_of_last_trial() const { return false; }
-  /// True where the trials are the end forces of a step whose laws are held at the committed state, to be
-  /// solved in the trapezoidal rule's two-point form with start_force() (DL7, docs/delamination.md): the
+  /// True where a refresh of the iteration matrix waits for the trial at the next iterate instead of
+  /// being made at once: the matrix of lagged damage is that of the last trial, and where a trial costs
+  /// little against a factorization (the stacked plate) the next iterate may converge without one.
+  [[nodiscard]] virtual bool refresh_at_next_trial() const { return false; }
+  /// True where the trials may be the end forces of a step whose laws are held at the committed state, to
+  /// be solved in the trapezoidal rule's two-point form with start_force() (DL7, docs/delamination.md): the
   /// lagged stack, whose delaminated faces clapping under the law's end tractions create energy otherwise.
   [[nodiscard]] virtual bool two_point_form() const { return false; }
+  /// Whether the integrator solves the steps in that form (Newmark's trapezoidal rule, β = ¼, γ = ½): the
+  /// held laws then give the end tractions of the step's mean (DL6), otherwise their own.
+  virtual void use_two_point_form(bool /*on*/) {}
   /// With two_point_form(): the force at the step's start u_n with the laws held at the committed state,
   /// into `f` (sized by the caller).
   virtual void start_force(const Eigen::VectorXd& /*u_n*/, Eigen::VectorXd& /*f*/) {}
