@@ -1,5 +1,5 @@
 // Ply damage and delamination in one run ([damage] model = "progressive" with [delamination], both
-// integration = "explicit"; analysis/stacked_model.cpp, fem/stacked_damage.hpp): the shipped
+// integration = "explicit"; fem/stacked_model.cpp, fem/stacked_damage.hpp): the shipped
 // examples/impact-delamination-damage.toml (a [0/90]s T300/976 plate cut into [0], [90_2], [0], 7 x 7
 // elements, 30 g at 3 m/s) to 100 µs, where the bottom plies crack and the lower interface softens and
 // opens. Checked: plies that cannot crack leave the stacked plate of the delamination-only run unchanged;

@@ -1,4 +1,4 @@
-// The stacked plate with explicit central differences (central differences on analysis/stacked_model.cpp):
+// The stacked plate with explicit central differences (central differences on fem/stacked_model.cpp):
 // the shipped delamination example (a [0_2/90_2]s AS4/PEEK plate, two interfaces, 30 g at 3 m/s) on 5 x 5
 // elements with the lumped mass. The step is the stack's stable step; the run follows the lagged implicit
 // step while the interfaces soften and crack, keeps the energy to round-off, and runs past the impactor's

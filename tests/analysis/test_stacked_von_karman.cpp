@@ -1,4 +1,4 @@
-// The stacked plate whose sub-laminates deflect largely (analysis/stacked_model.cpp with nonlinear = true):
+// The stacked plate whose sub-laminates deflect largely (fem/stacked_model.cpp with nonlinear = true):
 // each sub-laminate a von Kármán plate on its own mid-plane. Tied faces move as one laminate's (u_k = u₀ −
 // z_k w' makes sub-laminate k's membrane strain the laminate's at every height), so with interfaces that
 // hold, the stack stiffens with deflection as the von Kármán laminate does; with interfaces that crack,

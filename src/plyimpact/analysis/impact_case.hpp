@@ -44,7 +44,7 @@ struct ImpactCaseDescription {
   /// engaged: the plies lose stiffness as they crack (fem/damaged_plate.hpp, docs/progressive_damage.md)
   std::optional<ProgressiveDamageSettings> progressive_damage;
   /// engaged: the laminate cut into sub-laminates tied by cohesive interfaces that may delaminate
-  /// (analysis/stacked_model.cpp, docs/delamination.md)
+  /// (fem/stacked_model.cpp, docs/delamination.md)
   std::optional<DelaminationSettings> delamination;
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   FillOrdering ordering = FillOrdering::amd; ///< of the factor of K̄ (bench/README.md, "Orderings")

@@ -26,10 +26,11 @@
 #include "plyimpact/analysis/newmark.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
+#include "plyimpact/fem/mass_operator.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
-#include "plyimpact/fem/stacked_plate.hpp"
+#include "plyimpact/fem/stacked_model.hpp"
 
 #include <limits>
 #include <memory>
@@ -137,24 +138,6 @@ struct NonlinearImpactSettings {
       200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
 };
 
-/// Settings of the stacked plate whose interfaces may delaminate (docs/delamination.md).
-struct DelaminationSettings {
-  StackSettings stack;         ///< the cuts, the interface law, its integration rule
-  bool supports_on_all = true; ///< the supports hold every sub-laminate; false: the bottom one only
-  /// lagged: each step solved with the interfaces' damage of the last accepted step held fixed, then the
-  /// damage updated from the converged separation; implicit: the damage iterated with the step;
-  /// central_difference: explicit steps on the lumped mass, the law once per step.
-  DamageIntegration integration = DamageIntegration::lagged;
-  int max_iterations = 30;              ///< per time step
-  double residual_tolerance = 1e-5;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
-  double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
-  int refresh_after = 4;                ///< factor the tangent when a step needs more iterations
-  double refresh_ratio = 0.5;           ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
-  /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
-  /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
-  bool update_factor = true;
-};
-
 /// What the policies need to know of the run besides the plate.
 struct StepPolicyOptions {
   NewmarkCoefficients newmark{1e-6, 0.25, 0.5};
@@ -233,7 +216,7 @@ damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                                     double newmark_beta);
 
 /// The laminate of `model` (one laminate, no regions) cut into sub-laminates tied by cohesive interfaces
-/// (stacked_model.cpp), under Newton–Newmark or central differences. The supports of `model` hold the
+/// (fem/stacked_model.cpp), under Newton–Newmark or central differences. The supports of `model` hold the
 /// sub-laminates that `settings` names. Throws
 /// std::invalid_argument for a plate with regions of other laminates.
 /// With `ply_damage` the plies crack too; with `large_deflection` the sub-laminates are geometrically
@@ -245,7 +228,7 @@ delamination_step_policy(const PlateModel& model, const StepPolicyOptions& optio
                          const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt,
                          const std::optional<NonlinearImpactSettings>& large_deflection = std::nullopt);
 /// The stacked plate with explicit central differences on the lumped mass (settings.integration =
-/// central_difference; central differences on the stacked model of stacked_model.cpp). Throws
+/// central_difference; central differences on the stacked model of fem/stacked_model.cpp). Throws
 /// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
 /// message gives. With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the
 /// stepper's results() hold the plies' damage of the whole laminate. With `large_deflection` the
@@ -270,38 +253,5 @@ inline constexpr double plies_with_interfaces_step_fraction = 0.5;
                                                              const DelaminationSettings& settings);
 /// A rigid, immovable target: ws = 0.
 [[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
-
-/// The mass matrix as the time loop uses it: M x as a diagonal scaling when M is diagonal (lumped mass
-/// with I1 = 0, or I1 at round-off level: off-diagonal entries below `tolerance` times the largest
-/// diagonal entry are dropped), as a sparse product otherwise.
-class MassOperator {
-public:
-  MassOperator(const SparseMatrix& M, double tolerance);
-  [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& x) const {
-    if (diagonal_.size() > 0) return diagonal_.cwiseProduct(x);
-    return M_ * x;
-  }
-  /// out = M x into `out` (sized once): the numbers of times(x) without a new vector.
-  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
-    if (diagonal_.size() > 0)
-      out = diagonal_.cwiseProduct(x);
-    else
-      out.noalias() = M_ * x;
-  }
-  /// ½ vᵀMv.
-  [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v) const { return 0.5 * v.dot(times(v)); }
-  /// ½ vᵀMv with `scratch` for M v.
-  [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v, Eigen::VectorXd& scratch) const {
-    apply(v, scratch);
-    return 0.5 * v.dot(scratch);
-  }
-  [[nodiscard]] const SparseMatrix& matrix() const { return M_; }
-  /// M's diagonal when M is diagonal, else empty.
-  [[nodiscard]] const Eigen::VectorXd& diagonal() const { return diagonal_; }
-
-private:
-  SparseMatrix M_;
-  Eigen::VectorXd diagonal_; ///< M when diagonal, else empty
-};
 
 } // namespace plyimpact

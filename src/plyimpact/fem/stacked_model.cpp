@@ -1,8 +1,9 @@
-// The stacked plate whose interfaces delaminate (fem/stacked_plate.hpp) as a model of
-// fem/mechanical_model.hpp, which central differences drive (central_difference_step.cpp), as the
-// stacked-shell impact models of the literature run in LS-DYNA and Abaqus/Explicit. Each trial evaluates
-// the interface law once, at u, from the committed states (CohesiveDamage::evolve: the damage grows with
-// the step's own separation and its dissipation is the law's), and
+// The stacked plate whose interfaces delaminate (stacked_plate.hpp) as a model of mechanical_model.hpp,
+// with what builds it from an impact's plate (stacked_model.hpp), which central differences drive
+// (central_difference_step.cpp), as the stacked-shell impact models of the literature run in LS-DYNA and
+// Abaqus/Explicit. Each trial evaluates the interface law once, at u, from the committed states
+// (CohesiveDamage::evolve: the damage grows with the step's own separation and its dissipation is the law's),
+// and
 //
 //   f_int(u) = K_plates u + Σ f_coh(u; d(u))                                                     (CD3)
 //
@@ -33,19 +34,17 @@
 // laminate's: with u_k = u₀ − z_k w' the membrane strain u_k' + ½ w'² − (z − z_k) w'' of sub-laminate k is
 // the whole laminate's u₀' + ½ w'² − z w'' at every height z, so a stack whose interfaces hold is the
 // von Kármán laminate (tests/analysis/test_stacked_von_karman.cpp).
-#include "plyimpact/analysis/capabilities.hpp"
-#include "plyimpact/analysis/central_difference.hpp"
-#include "plyimpact/analysis/stacked_plate_step.hpp"
-#include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/stacked_model.hpp"
+
 #include "plyimpact/fem/nonlinear_plate_model.hpp"
 #include "plyimpact/fem/stacked_damage.hpp"
 
-#include <fmt/format.h>
-
 #include <Eigen/Eigenvalues>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -53,8 +52,158 @@ namespace plyimpact {
 
 namespace {
 
-/// The deck key that chooses explicit steps for the stacked plate, for its messages.
-constexpr const char* explicit_key = "[delamination] integration = \"explicit\"";
+const Laminate& single_laminate(const PlateModel& model) {
+  if (!model.single_section())
+    throw std::invalid_argument("delamination: the stacked plate needs one laminate over the whole plate; "
+                                "[[regions]] with other laminates are not available with [delamination] "
+                                "yet (docs/delamination.md, limits)");
+  return model.laminate();
+}
+
+std::optional<std::string> process_zone_warning(const ProcessZone& z, CohesiveIntegration rule) {
+  if (z.length >= 3.0 * z.point_spacing) return std::nullopt;
+  return fmt::format(
+      "delamination: the cohesive zone of the interfaces, E2 G_c / strength^2 = {:.3g} mm in the shorter "
+      "mode, spans {:.2g} interface points ({:.3g} mm apart): fewer than 3, so the onset and growth of "
+      "delaminations depend on the mesh. Refine to elements of {:.3g} mm or less, or lower both "
+      "strengths (Turon et al. 2007: tau = sqrt(9 pi E2 G_c / (32 * 3 * {:.3g} mm))) "
+      "(docs/delamination.md)",
+      z.length * 1e3, z.length / z.point_spacing, z.point_spacing * 1e3,
+      2.0 * z.length / 3.0 * 1e3 * (rule == CohesiveIntegration::nodal ? 1.0 : 1.5), z.point_spacing * 1e3);
+}
+
+/// Turon et al. (2010): with S/N ≠ √(G_IIc/G_Ic) the mixed-mode law does not dissipate G_c(B) along a
+/// crack front whose mixity changes (measured: MMB 1.23 G_c with N halved alone).
+std::optional<std::string> strength_ratio_warning(const CohesiveParameters& c) {
+  const double ratio = (c.shear_strength / c.normal_strength) / std::sqrt(c.G_IIc / c.G_Ic);
+  if (std::abs(ratio - 1.0) <= 0.1) return std::nullopt;
+  return fmt::format("delamination: shear_strength / normal_strength = {:.3g} while sqrt(G_IIc / G_Ic) = "
+                     "{:.3g}: under mixed mode the interfaces then dissipate more or less than G_c (Turon "
+                     "et al. 2010; docs/delamination.md, MMB); set S = N sqrt(G_IIc / G_Ic) = {:.3g} MPa",
+                     c.shear_strength / c.normal_strength, std::sqrt(c.G_IIc / c.G_Ic),
+                     c.normal_strength * std::sqrt(c.G_IIc / c.G_Ic) * 1e-6);
+}
+
+/// The model equation of each equation of the stack's top sub-laminate (−1: none).
+std::vector<int> top_equations_in_model(const PlateModel& model, const StackedPlateModel& stack) {
+  const PlateModel& top = stack.sublaminate(0);
+  std::vector<int> of_top(static_cast<std::size_t>(top.size()), -1);
+  for (int n = 0; n < model.mesh().node_count(); ++n)
+    for (int dof = 0; dof < 5; ++dof)
+      if (const int eq = top.dofs().equation(n, dof); eq >= 0)
+        of_top[static_cast<std::size_t>(eq)] = model.dofs().equation(n, dof);
+  return of_top;
+}
+
+} // namespace
+
+StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettings& settings) {
+  const int bottom = static_cast<int>(settings.stack.cuts.size());
+  return {model.mesh(), single_laminate(model), settings.stack,
+          Discretization{model.mass_kind(), model.formulation()}, [&](int k) {
+            return settings.supports_on_all || k == bottom ? model.boundary() : BoundaryConditions{};
+          }};
+}
+
+StackedImpactPlate::StackedImpactPlate(const PlateModel& model, const DelaminationSettings& settings)
+    : model_(model), settings_(settings), stack_(impact_stack(model, settings)),
+      top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14),
+      model_of_top_(top_equations_in_model(model, stack_)) {}
+
+std::vector<std::string> StackedImpactPlate::stack_warnings() const {
+  std::vector<std::string> w;
+  if (auto zone = process_zone_warning(process_zone(), settings_.stack.rule)) w.push_back(std::move(*zone));
+  if (auto ratio = strength_ratio_warning(settings_.stack.interface)) w.push_back(std::move(*ratio));
+  return w;
+}
+
+ProcessZone StackedImpactPlate::process_zone() const {
+  const CohesiveParameters& c = settings_.stack.interface;
+  double E2 = INFINITY;
+  for (const Material& m : model_.laminate().materials())
+    E2 = std::min(E2, m.E2);
+  double largest = 0.0;
+  for (int e = 0; e < model_.mesh().element_count(); ++e) {
+    const ElementCoordinates X = model_.mesh().element_coordinates(e);
+    largest = std::max(
+        {largest, X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff()});
+  }
+  return {std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
+                   cohesive_zone_length(E2, c.G_IIc, c.shear_strength)),
+          settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0};
+}
+
+void StackedImpactPlate::top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+  out = Eigen::VectorXd::Zero(model_.size());
+  for (std::size_t i = 0; i < model_of_top_.size(); ++i)
+    if (const int eq = model_of_top_[i]; eq >= 0) out(eq) = u(static_cast<Eigen::Index>(i));
+}
+
+InterfaceStates::InterfaceStates(const StackedImpactPlate& plate)
+    : plate_(plate), committed_(plate.stack_.virgin_state()) {}
+
+void InterfaceStates::accept() {
+  std::swap(committed_, trial_); // trial_ keeps the old states' storage for the next set_trial()
+  dissipated_ += trial_dissipated_;
+  trial_dissipated_ = 0.0;
+}
+
+void InterfaceStates::areas(DelaminationAreas& out) const {
+  const StackedPlateModel& stack = plate_.stack_;
+  const std::vector<std::vector<CohesiveState>>& states = committed_.interfaces;
+  out.dissipated = dissipated_;
+  out.delaminated_area.clear(); // keeps its capacity: no allocation after the first step
+  out.delaminated_area.reserve(states.size());
+  for (int i = 0; i < stack.interface_count(); ++i)
+    out.delaminated_area.push_back(stack.interface(i).damaged_area(states[static_cast<std::size_t>(i)], 1.0));
+  out.projected_area = 0.0;
+  if (stack.interface_count() == 0) return;
+  // Every interface has the same points (same mesh and rule): the union is taken point by point.
+  const CohesiveInterface& points = stack.interface(0);
+  for (int q = 0; q < points.point_count(); ++q)
+    if (std::any_of(states.begin(), states.end(), [q](const std::vector<CohesiveState>& of_interface) {
+          return of_interface[static_cast<std::size_t>(q)].damage >= 1.0;
+        }))
+      out.projected_area += points.point_area(q);
+}
+
+DelaminationResult InterfaceStates::result() const {
+  const StackedPlateModel& stack = plate_.stack_;
+  DelaminationResult r;
+  DelaminationAreas areas;
+  this->areas(areas);
+  r.delaminated_area = std::move(areas.delaminated_area);
+  r.projected_area = areas.projected_area;
+  r.dissipated = areas.dissipated;
+  const ProcessZone zone = plate_.process_zone();
+  r.cohesive_zone_length = zone.length;
+  r.interface_point_spacing = zone.point_spacing;
+  for (int i = 0; i < stack.interface_count(); ++i) {
+    const CohesiveInterface& ci = stack.interface(i);
+    const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
+    r.interface_after_ply.push_back(plate_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
+    double softening = 0.0;
+    const auto per_element = static_cast<std::size_t>(ci.points_per_element());
+    std::vector<double>& of_element = r.element_damage.emplace_back(states.size() / per_element, 0.0);
+    std::vector<double>& of_point = r.point_damage.emplace_back();
+    for (std::size_t q = 0; q < states.size(); ++q) {
+      const double d = states[q].damage;
+      if (d > 0.0 && d < 1.0) softening += ci.point_area(static_cast<int>(q));
+      double& largest = of_element[q / per_element];
+      largest = std::max(largest, d);
+      of_point.push_back(d);
+    }
+    r.process_zone_area.push_back(softening);
+  }
+  if (stack.interface_count() > 0)
+    for (int q = 0; q < stack.interface(0).point_count(); ++q) {
+      r.point_cells.push_back(stack.interface(0).point_cell(q));
+      r.point_area.push_back(stack.interface(0).point_area(q));
+    }
+  return r;
+}
+
+namespace {
 
 /// K_plates + the interfaces' penalty: the stack's tangent with every interface point intact.
 SparseMatrix elastic_stiffness(const StackedPlateModel& stack) {
@@ -460,57 +609,6 @@ double StackedState::stored_energy(const Eigen::VectorXd& u) const {
   return plates + m_.plate_.stack_.interface_energy(u, interfaces_.committed());
 }
 
-/// How Newton–Newmark iterates the stacked plate: with the delamination settings' iterations; where the
-/// sub-laminates deflect largely also the periodic refresh of the non-linear settings (the tangents move
-/// with u). Where the interfaces are iterated, and on the lagged linear stack, the corrections that do not
-/// lower the residual are halved and the matrix refreshed every `refresh_after` solves, as the stacked
-/// plate's own step did; the lagged stacks with ply damage or large deflections, written on Newton–Newmark
-/// first, refresh after `refresh_after` solves and do not halve (each kept so that no example's numbers
-/// move).
-NewtonSettings stack_newton_settings(const DelaminationSettings& ds, bool ply_damage,
-                                     const std::optional<NonlinearImpactSettings>& large_deflection) {
-  NewtonSettings ns;
-  ns.max_iterations = ds.max_iterations;
-  ns.residual_tolerance = ds.residual_tolerance;
-  ns.displacement_tolerance = ds.displacement_tolerance;
-  ns.refresh_ratio = ds.refresh_ratio;
-  if ((ply_damage || large_deflection) && ds.integration == DamageIntegration::lagged) {
-    ns.refresh_after = ds.refresh_after;
-  } else {
-    ns.refresh_every = ds.refresh_after;
-    ns.max_halvings = 6;
-  }
-  if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
-  ns.physics = large_deflection ? "non-linear delamination"
-               : ply_damage     ? "ply damage and delamination"
-                                : "delamination";
-  ns.advice = "reduce time.dt";
-  return ns;
-}
-
-/// Steepest softening slope of the law over the pure modes [Pa/m] (DL5).
-double softening_slope(const CohesiveParameters& p) {
-  const double K = p.penalty_stiffness;
-  const auto slope = [K](double strength, double G_c) {
-    return strength / (2.0 * G_c / strength - strength / K);
-  };
-  return std::max(slope(p.normal_strength, p.G_Ic), slope(p.shear_strength, p.G_IIc));
-}
-
-/// The implicit step's Δt against (DL5), for the stacks without ply damage (the stack with cracking plies
-/// takes half its stable step, plies_with_interfaces_step_fraction).
-void check_time_step(const PlateModel& model, const StepPolicyOptions& options,
-                     const DelaminationSettings& settings) {
-  const double dt = options.newmark.dt;
-  const double limit = largest_delamination_time_step(model.laminate(), settings.stack, options.newmark.beta);
-  if (dt > limit)
-    throw std::invalid_argument(fmt::format(
-        "delamination: time.dt = {:.4g} s is above {:.4g} s, the largest step at which an interface point "
-        "that starts softening keeps the step solvable (the softening slope of the interface law against "
-        "the inertia of the sub-laminates, docs/delamination.md); set [time] dt <= {:.3g} or \"auto\"",
-        dt, limit, limit));
-}
-
 } // namespace
 
 std::unique_ptr<MechanicalModel>
@@ -518,66 +616,6 @@ stacked_plate_model(const PlateModel& model, const DelaminationSettings& setting
                     const std::optional<ProgressiveDamageSettings>& ply_damage,
                     std::optional<StrainMeasure> large_deflection) {
   return std::make_unique<StackedModel>(model, settings, ply_damage, large_deflection);
-}
-
-double explicit_delamination_highest_frequency(const PlateModel& model,
-                                               const DelaminationSettings& settings) {
-  const StackedPlateModel stack = impact_stack(model, settings);
-  return explicit_highest_frequency(elastic_stiffness(stack), MassOperator(stack.mass(), 1e-14),
-                                    explicit_key);
-}
-
-double explicit_delamination_time_step(const PlateModel& model, const DelaminationSettings& settings) {
-  return stable_time_step(explicit_delamination_highest_frequency(model, settings));
-}
-
-std::unique_ptr<StepPolicy>
-explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                                  const DelaminationSettings& settings,
-                                  const std::optional<ProgressiveDamageSettings>& ply_damage,
-                                  std::optional<StrainMeasure> large_deflection) {
-  return central_difference_step_policy(stacked_plate_model(model, settings, ply_damage, large_deflection),
-                                        options, explicit_key);
-}
-
-double largest_delamination_time_step(const Laminate& laminate, const StackSettings& stack,
-                                      double newmark_beta) {
-  const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
-  const double k_s = softening_slope(stack.interface);
-  double limit = INFINITY;
-  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-    const double m_u = parts[i].inertia()[0], m_l = parts[i + 1].inertia()[0];
-    limit = std::min(limit, std::sqrt(m_u * m_l / (m_u + m_l) / (newmark_beta * k_s)));
-  }
-  return limit;
-}
-
-std::unique_ptr<StepPolicy>
-delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                         const DelaminationSettings& settings,
-                         const std::optional<ProgressiveDamageSettings>& ply_damage,
-                         const std::optional<NonlinearImpactSettings>& large_deflection) {
-  const ModelKind kind{false, large_deflection.has_value(), ply_damage.has_value(), true};
-  const Integrator integrator =
-      resolve_integrator(kind, TimeIntegration::newmark,
-                         ply_damage ? std::optional(integrator_of(ply_damage->integration)) : std::nullopt,
-                         integrator_of(settings.integration));
-  if (auto why = refusal(kind, integrator)) throw std::invalid_argument(*why); // capabilities.hpp
-  std::optional<StrainMeasure> measure;
-  if (large_deflection) {
-    if (ply_damage && large_deflection->measure != StrainMeasure::von_karman)
-      throw std::invalid_argument(
-          "progressive damage takes the von Kármán strains of a non-linear plate: set strain_measure = "
-          "\"von-karman\" (the Green–Lagrange measure is not built for the layered section whose plies "
-          "crack)");
-    measure = large_deflection->measure;
-  }
-  if (settings.integration == DamageIntegration::central_difference)
-    return explicit_delamination_step_policy(model, options, settings, ply_damage, measure);
-  if (!ply_damage) check_time_step(model, options, settings);
-  return newton_newmark_step_policy(
-      stacked_plate_model(model, settings, ply_damage, measure), options,
-      stack_newton_settings(settings, ply_damage.has_value(), large_deflection));
 }
 
 } // namespace plyimpact

@@ -1,10 +1,16 @@
 #pragma once
-// The stacked plate of an impact (fem/stacked_plate.hpp; docs/delamination.md): the stack cut from the
-// impact's plate, the mesh guidance and warnings (StackedImpactPlate), and in each run the interfaces'
-// committed states, their areas and dissipation (InterfaceStates); the stacked model built on them
-// (stacked_model.cpp), which every integrator drives.
-#include "plyimpact/analysis/step_policy.hpp"
+// The stacked plate of an impact as a model of mechanical_model.hpp (docs/delamination.md): the laminate
+// of the impact's plate cut into sub-laminates tied by cohesive interfaces (stacked_plate.hpp), each
+// sub-laminate elastic, with plies that crack (damaged_plate.hpp) or von Kármán's, struck on the top one.
+// What builds it: the settings (DelaminationSettings), the stack cut from the impact's plate with its mesh
+// guidance and warnings (StackedImpactPlate), and in each run the interfaces' committed states, their
+// areas and dissipation (InterfaceStates); every integrator of analysis/ drives the model
+// (stacked_plate_model).
+#include "plyimpact/fem/damaged_plate.hpp"
+#include "plyimpact/fem/mass_operator.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
+#include "plyimpact/fem/nonlinear_plate_element.hpp"
+#include "plyimpact/fem/stacked_plate.hpp"
 
 #include <memory>
 #include <optional>
@@ -13,6 +19,24 @@
 #include <vector>
 
 namespace plyimpact {
+
+/// Settings of the stacked plate whose interfaces may delaminate (docs/delamination.md).
+struct DelaminationSettings {
+  StackSettings stack;         ///< the cuts, the interface law, its integration rule
+  bool supports_on_all = true; ///< the supports hold every sub-laminate; false: the bottom one only
+  /// lagged: each step solved with the interfaces' damage of the last accepted step held fixed, then the
+  /// damage updated from the converged separation; implicit: the damage iterated with the step;
+  /// central_difference: explicit steps on the lumped mass, the law once per step.
+  DamageIntegration integration = DamageIntegration::lagged;
+  int max_iterations = 30;              ///< per time step
+  double residual_tolerance = 1e-5;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
+  double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
+  int refresh_after = 4;                ///< factor the tangent when a step needs more iterations
+  double refresh_ratio = 0.5;           ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
+  /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
+  /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
+  bool update_factor = true;
+};
 
 /// The cohesive zone's length against the interface points' spacing [m].
 struct ProcessZone {

@@ -1,0 +1,43 @@
+#pragma once
+// The mass matrix as the integrators use it (analysis/): M x as a diagonal scaling where M is diagonal.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace plyimpact {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// The mass matrix as the time loop uses it: M x as a diagonal scaling when M is diagonal (lumped mass
+/// with I1 = 0, or I1 at round-off level: off-diagonal entries below `tolerance` times the largest
+/// diagonal entry are dropped), as a sparse product otherwise.
+class MassOperator {
+public:
+  MassOperator(const SparseMatrix& M, double tolerance);
+  [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& x) const {
+    if (diagonal_.size() > 0) return diagonal_.cwiseProduct(x);
+    return M_ * x;
+  }
+  /// out = M x into `out` (sized once): the numbers of times(x) without a new vector.
+  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+    if (diagonal_.size() > 0)
+      out = diagonal_.cwiseProduct(x);
+    else
+      out.noalias() = M_ * x;
+  }
+  /// ½ vᵀMv.
+  [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v) const { return 0.5 * v.dot(times(v)); }
+  /// ½ vᵀMv with `scratch` for M v.
+  [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v, Eigen::VectorXd& scratch) const {
+    apply(v, scratch);
+    return 0.5 * v.dot(scratch);
+  }
+  [[nodiscard]] const SparseMatrix& matrix() const { return M_; }
+  /// M's diagonal when M is diagonal, else empty.
+  [[nodiscard]] const Eigen::VectorXd& diagonal() const { return diagonal_; }
+
+private:
+  SparseMatrix M_;
+  Eigen::VectorXd diagonal_; ///< M when diagonal, else empty
+};
+
+} // namespace plyimpact
