@@ -29,11 +29,9 @@ constexpr const char* explicit_key = "[delamination] integration = \"explicit\""
 /// move).
 NewtonSettings stack_newton_settings(const DelaminationSettings& ds, bool ply_damage,
                                      const std::optional<NonlinearImpactSettings>& large_deflection) {
-  NewtonSettings ns;
-  ns.max_iterations = ds.max_iterations;
-  ns.residual_tolerance = ds.residual_tolerance;
-  ns.displacement_tolerance = ds.displacement_tolerance;
-  ns.refresh_ratio = ds.refresh_ratio;
+  NewtonSettings ns = newton_settings_of(ds, large_deflection ? "non-linear delamination"
+                                             : ply_damage     ? "ply damage and delamination"
+                                                              : "delamination");
   if ((ply_damage || large_deflection) && ds.integration == DamageIntegration::lagged) {
     ns.refresh_after = ds.refresh_after;
   } else {
@@ -41,10 +39,6 @@ NewtonSettings stack_newton_settings(const DelaminationSettings& ds, bool ply_da
     ns.max_halvings = 6;
   }
   if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
-  ns.physics = large_deflection ? "non-linear delamination"
-               : ply_damage     ? "ply damage and delamination"
-                                : "delamination";
-  ns.advice = "reduce time.dt";
   return ns;
 }
 

@@ -335,13 +335,8 @@ double NewtonNewmarkStepper::kinetic_energy(const PlateState& s) const {
 /// instead of 44 times (2.5 s) with the contraction rule alone.
 NewtonSettings damage_newton_settings(const ProgressiveDamageSettings& damage,
                                       const std::optional<NonlinearImpactSettings>& large_deflection) {
-  NewtonSettings ns;
-  ns.max_iterations = damage.max_iterations;
-  ns.residual_tolerance = damage.residual_tolerance;
-  ns.displacement_tolerance = damage.displacement_tolerance;
-  ns.refresh_ratio = damage.refresh_ratio;
+  NewtonSettings ns = newton_settings_of(damage, "progressive damage");
   if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
-  ns.physics = "progressive damage";
   ns.advice = damage.integration == DamageIntegration::lagged
                   ? "reduce time.dt"
                   : "set [damage] integration = \"lagged\" (no iteration on the damage; its energy balance "
@@ -359,15 +354,9 @@ std::unique_ptr<StepPolicy> newton_newmark_step_policy(std::unique_ptr<const Mec
 
 std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model, const StepPolicyOptions& options,
                                                const NonlinearImpactSettings& settings) {
-  NewtonSettings ns;
-  ns.max_iterations = settings.max_iterations;
-  ns.residual_tolerance = settings.residual_tolerance;
-  ns.displacement_tolerance = settings.displacement_tolerance;
-  ns.refresh_ratio = settings.refresh_ratio;
+  NewtonSettings ns = newton_settings_of(settings, "non-linear impact");
   ns.refresh_after = settings.refresh_after;
   ns.refresh_interval = settings.refresh_interval;
-  ns.physics = "non-linear impact";
-  ns.advice = "reduce time.dt";
   return newton_newmark_step_policy(von_karman_plate_model(model, settings.measure), options, std::move(ns));
 }
 

@@ -183,6 +183,19 @@ struct NewtonSettings {
   std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
   std::string advice = "reduce time.dt"; ///< what they advise
 };
+/// The iteration settings every physics' settings carry (NonlinearImpactSettings, ProgressiveDamageSettings,
+/// DelaminationSettings: solves per step, tolerances, the contraction ratio that refreshes the matrix), as
+/// Newton–Newmark's, its failure messages naming `physics`.
+template <class PhysicsSettings>
+[[nodiscard]] NewtonSettings newton_settings_of(const PhysicsSettings& s, std::string physics) {
+  NewtonSettings ns;
+  ns.max_iterations = s.max_iterations;
+  ns.residual_tolerance = s.residual_tolerance;
+  ns.displacement_tolerance = s.displacement_tolerance;
+  ns.refresh_ratio = s.refresh_ratio;
+  ns.physics = std::move(physics);
+  return ns;
+}
 /// Newton–Newmark on any model with an iteration matrix (newton_newmark_step.cpp): the one implicit
 /// integrator of the models whose force is not linear in u.
 [[nodiscard]] std::unique_ptr<StepPolicy>
