@@ -158,22 +158,5 @@ TEST(DelaminationWithPlyDamage, TheAutomaticStepIsHalfTheStacksStableStep) {
                        explicit_delamination_time_step(model, *d.delamination));
 }
 
-TEST(DelaminationWithPlyDamage, IteratingBothLawsIsRefusedWithTheSettingToUse) {
-  // Both laws iterated within the step (implicit): refused with the table's reason and what runs; the
-  // lagged pair runs (tests/analysis/test_newton_newmark_step.cpp).
-  const ImpactCaseDescription d = impact_case_description(parse_deck(example_to_100us(), "both.toml"));
-  ImpactCaseDescription implicit = d;
-  implicit.delamination->integration = DamageIntegration::implicit;
-  implicit.progressive_damage->integration = DamageIntegration::implicit;
-  implicit.time.dt = 1e-7;
-  try {
-    const ImpactCase c(implicit);
-    ADD_FAILURE() << "an implicit stack with ply damage was accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("needs their implicit trial"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("integration = \"lagged\""), std::string::npos) << e.what();
-  }
-}
-
 } // namespace
 } // namespace plyimpact

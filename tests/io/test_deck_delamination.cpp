@@ -148,7 +148,8 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   } catch (const DeckError& e) {
     refused = e.what();
   }
-  EXPECT_NE(refused.find("(the elastic plate with ply damage and interfaces runs with: lagged, explicit)"),
+  EXPECT_NE(refused.find(
+                "(the elastic plate with ply damage and interfaces runs with: implicit, lagged, explicit)"),
             std::string::npos)
       << refused;
   // and without the data, the data is what is missing

@@ -39,6 +39,9 @@ NewtonSettings stack_newton_settings(const DelaminationSettings& ds, bool ply_da
     ns.max_halvings = 6;
   }
   if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
+  if (ply_damage && ds.integration == DamageIntegration::implicit)
+    ns.advice = "set integration = \"lagged\" in [damage] and [delamination] (no iteration on either law), "
+                "or reduce time.dt";
   return ns;
 }
 

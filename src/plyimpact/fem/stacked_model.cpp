@@ -259,8 +259,11 @@ public:
     bool changed = false;
     for (DamageField& field : fields_)
       changed = field.take_modes_changed() || changed; // every field's flag taken
-    return changed;
+    return changed && lagged();
   }
+  /// With the plies iterated: false where an element has reached a Hashin surface at u (it joins, and the
+  /// step iterates on), as for one damaged plate.
+  bool admit(const Eigen::VectorXd& u) override;
   /// With ply damage the matrix is that of the last trial; the linear stack's trial is one product and the
   /// interfaces' law, against a factorization. (The von Kármán stack refreshes at once: measured so, and
   /// kept so that its example's numbers stay.)
@@ -283,6 +286,8 @@ private:
   /// diagonal block.
   [[nodiscard]] SparseMatrix sublaminate_corrections(const Eigen::VectorXd& u) const;
   [[nodiscard]] bool lagged() const;
+  /// The plies' damage iterated with the step (implicit): each trial evaluates their law at u.
+  [[nodiscard]] bool plies_iterated() const;
   /// How the interfaces' trials take their damage: evolving with the step, held with the end tractions
   /// of the step's mean (the two-point form, DL6), or held with the law's own.
   [[nodiscard]] CohesiveDamage interface_damage() const {
@@ -440,8 +445,27 @@ void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
     sublaminate_forces(u, [&](std::size_t k) {
       m_.damaged_[k]->frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);
     });
+  else if (plies_iterated())
+    sublaminate_forces(u, [&](std::size_t k) {
+      m_.damaged_[k]->internal_force_into(u_parts_[k], dt, fields_[k], f_parts_[k]);
+    });
   else
     damaged_plate_forces(u, dt);
+}
+
+bool StackedState::plies_iterated() const {
+  return !fields_.empty() && m_.damaged_.front()->settings().integration == DamageIntegration::implicit;
+}
+
+bool StackedState::admit(const Eigen::VectorXd& u) {
+  if (!plies_iterated()) return true;
+  bool joined = false;
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const DamagedPlateModel& part = *m_.damaged_[k];
+    u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
+    joined = part.activate_reached(u_parts_[k], fields_[k]) || joined; // every sub-laminate's elements
+  }
+  return !joined;
 }
 
 void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) {
