@@ -43,6 +43,17 @@ std::string error_of(const std::string& delamination, const std::string& more = 
   return "";
 }
 
+/// A deck with progressive ply damage (T300/976's data) and the interfaces, `damage` and `interfaces`
+/// added to [damage] and [delamination].
+std::string plies_and_interfaces(const std::string& damage, const std::string& interfaces) {
+  std::string text = small_deck("impact", "[damage]\nmodel = \"progressive\"\n" + damage +
+                                              "[delamination]\n" + as4_peek_law + interfaces);
+  text.replace(text.find("rho = 1389.2\n"), 13,
+               "rho = 1389.2\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\n"
+               "S23 = 32.94e6\nG_ft = 91.6e3\nG_fc = 79.9e3\nG_mt = 277.0\nG_mc = 788.0\n");
+  return text;
+}
+
 TEST(DeckDelamination, ByDefaultTheLaminateIsCutWhereverTheOrientationChanges) {
   // [0_2/90_4/0_2]: the orientation changes after ply 2 and after ply 6 (0-based cuts 1 and 5).
   const Deck d = deck_with(as4_peek_law);
@@ -136,18 +147,19 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   // K too soft for the law's triangle to peak before its end: K ≤ N² / (2 G_Ic) = 3.3e12 Pa/m.
   EXPECT_NE(error_of(as4_peek_law + "penalty_stiffness = 1e12\n").find("[delamination]: "),
             std::string::npos);
-  // ply damage (its data given) with interfaces iterated implicitly: not a pair that runs
-  std::string damage_data =
-      small_deck("impact", "[damage]\nmodel = \"progressive\"\n[delamination]\n" + as4_peek_law);
-  damage_data.replace(damage_data.find("rho = 1389.2\n"), 13,
-                      "rho = 1389.2\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\n"
-                      "S23 = 32.94e6\nG_ft = 91.6e3\nG_fc = 79.9e3\nG_mt = 277.0\nG_mc = 788.0\n");
+  // ply damage (its data given) and interfaces whose [damage] and [delamination] integration differ:
+  // refused with both keys and what runs
   std::string refused;
   try {
-    (void)parse_deck(damage_data, "deck.toml");
+    (void)parse_deck(plies_and_interfaces("integration = \"implicit\"\n", "integration = \"explicit\"\n"),
+                     "deck.toml");
   } catch (const DeckError& e) {
     refused = e.what();
   }
+  EXPECT_NE(refused.find("[damage] integration = \"implicit\" and [delamination] integration = \"explicit\" "
+                         "differ"),
+            std::string::npos)
+      << refused;
   EXPECT_NE(refused.find(
                 "(the elastic plate with ply damage and interfaces runs with: implicit, lagged, explicit)"),
             std::string::npos)
@@ -156,6 +168,22 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   EXPECT_NE(error_of(as4_peek_law, "[damage]\nmodel = \"progressive\"\n").find("needs positive Xt"),
             std::string::npos);
   EXPECT_NE(error_of(as4_peek_law + "typo = 1\n").find("typo"), std::string::npos);
+}
+
+// The plate steps with one integrator: a deck that names ply damage and delamination and no integration
+// runs both lagged (the step that runs a whole event, docs/delamination.md); one that names it in one
+// table has it in both.
+TEST(DeckDelamination, PliesAndInterfacesStepWithTheIntegrationOneOfThemGives) {
+  const auto integrations = [](const std::string& damage, const std::string& interfaces) {
+    const Deck d = parse_deck(plies_and_interfaces(damage, interfaces), "deck.toml");
+    return std::pair{d.damage.progressive->integration, d.delamination->integration};
+  };
+  using enum DamageIntegration;
+  EXPECT_EQ(integrations("", ""), std::pair(lagged, lagged));
+  EXPECT_EQ(integrations("integration = \"implicit\"\n", ""), std::pair(implicit, implicit));
+  EXPECT_EQ(integrations("", "integration = \"implicit\"\n"), std::pair(implicit, implicit));
+  EXPECT_EQ(integrations("", "integration = \"explicit\"\n"),
+            std::pair(central_difference, central_difference));
 }
 
 TEST(DeckDelamination, ALayupOfOneOrientationNeedsItsInterfacesListed) {

@@ -179,7 +179,14 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("modal")) d.modal = read_modal(*t);
   if (const auto t = top.optional_table("buckling")) d.buckling = read_buckling(*t);
   if (const auto t = top.optional_table("damage")) d.damage = read_damage(*t, d);
-  if (const auto t = top.optional_table("delamination")) d.delamination = read_delamination(*t, d);
+  if (const auto t = top.optional_table("delamination")) {
+    // The plate steps with one integrator: plies whose [damage] leaves `integration` out follow the
+    // interfaces' (lagged unless [delamination] or [time] says otherwise; docs/deck.md).
+    const auto damage = top.optional_table("damage");
+    const bool plies_given = damage && damage->node("integration") != nullptr;
+    d.delamination = read_delamination(*t, d, plies_given);
+    if (d.damage.progressive && !plies_given) d.damage.progressive->integration = d.delamination->integration;
+  }
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
   if (d.time.adaptive && d.time.integration == TimeIntegration::central_difference)

@@ -71,7 +71,7 @@ CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, cons
 
 } // namespace
 
-DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
+DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool plies_given) {
   t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
           "penalty_stiffness", "onset", "integration", "points", "supports"});
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
@@ -87,20 +87,23 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d) {
                      .value_or(CohesiveIntegration::nodal);
   s.supports_on_all =
       t.optional_choice<bool>("supports", {{"all", true}, {"bottom", false}}).value_or(s.supports_on_all);
-  // [time] integration = "explicit" makes the interfaces' step explicit too (the plate steps with one).
+  // The plate steps with one integrator: left out, the interfaces' step is [time]'s where that is explicit,
+  // else the plies' where [damage] gives it, else lagged (and the plies then follow, deck.cpp).
+  const bool plies_lead = d.damage.progressive && plies_given;
   s.integration = t.optional_choice<DamageIntegration>("integration",
                                                        {{"lagged", DamageIntegration::lagged},
                                                         {"implicit", DamageIntegration::implicit},
                                                         {"explicit", DamageIntegration::central_difference}})
                       .value_or(d.time.integration == TimeIntegration::central_difference
                                     ? DamageIntegration::central_difference
-                                    : s.integration);
+                                : plies_lead ? d.damage.progressive->integration
+                                             : s.integration);
   // The one table of what runs (analysis/capabilities.hpp).
   const ModelKind kind{false, d.nonlinear, d.damage.progressive.has_value(), true};
   try {
     const Integrator integrator = resolve_integrator(
         kind, d.time.integration,
-        d.damage.progressive ? std::optional(integrator_of(d.damage.progressive->integration)) : std::nullopt,
+        plies_lead ? std::optional(integrator_of(d.damage.progressive->integration)) : std::nullopt,
         integrator_of(s.integration));
     if (auto why = refusal(kind, integrator)) t.fail_here(fmt::format("[delamination]: {}", *why));
   } catch (const std::invalid_argument& e) {

@@ -71,8 +71,10 @@ void read_nonlinear_keys(const TableReader& top, Deck& d);
 
 // deck_delamination.cpp
 /// [delamination]; `d` has its laminate and [damage] already (the cuts follow the layup; progressive ply
-/// damage runs with the stacked plate in explicit or lagged steps: capabilities.hpp).
-[[nodiscard]] DelaminationSettings read_delamination(const TableReader& t, const Deck& d);
+/// damage runs with the stacked plate in the same steps: capabilities.hpp).
+/// `plies_given`: [damage] gives its `integration`; where it does not, the plies follow the interfaces'
+/// (the caller sets them).
+[[nodiscard]] DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool plies_given);
 
 // deck_output.cpp
 void read_output(const TableReader& t, Deck& d);
