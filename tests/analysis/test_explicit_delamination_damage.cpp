@@ -6,6 +6,7 @@
 // the plies' and the interfaces' dissipation close one energy balance; the sub-laminates' plies are
 // reported as the laminate's plies, their projected area as the union over all of them; iterating both
 // laws within the step is refused with the setting to use.
+#include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "support/impact_decks.hpp"
@@ -155,7 +156,7 @@ TEST(DelaminationWithPlyDamage, TheAutomaticStepIsHalfTheStacksStableStep) {
   const PlateModel model = impact_plate_model(d);
   EXPECT_DOUBLE_EQ(resolved_settings(d, model).dt,
                    plies_with_interfaces_step_fraction *
-                       explicit_delamination_time_step(model, *d.delamination));
+                       stable_time_step(*explicit_highest_frequency(d, model)));
 }
 
 } // namespace

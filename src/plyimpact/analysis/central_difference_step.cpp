@@ -9,19 +9,33 @@
 // end. The impactor keeps its implicit Newmark update through the scalar contact problem of SPEC §4 with
 // the plate's compliance 0.
 #include "plyimpact/analysis/central_difference.hpp"
+#include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/model_stepper.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
-#include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
 #include <utility>
 
 namespace plyimpact {
 
 namespace {
 
-/// The deck key that chooses explicit steps for the plate whose plies crack, for its messages.
-constexpr const char* explicit_damage_key = "[damage] integration = \"explicit\"";
+/// The largest Δt accepted, as a fraction of the undamaged plate's stable step 2/ω_max (CD5).
+constexpr double stable_step_fraction = 0.9;
+
+/// The lumped mass as a diagonal; throws where M is not diagonal or a DOF carries no mass.
+Eigen::VectorXd diagonal_mass(const MassOperator& M, const std::string& key) {
+  if (M.diagonal().size() == 0 || !(M.diagonal().minCoeff() > 0.0))
+    throw std::invalid_argument(fmt::format(
+        "{} needs a diagonal mass with every DOF carrying mass: set [mesh] mass = \"lumped\"; a laminate "
+        "that is not symmetric couples its lumped mass (I1 != 0), use integration = \"lagged\" for it",
+        key));
+  return M.diagonal();
+}
 
 class CentralDifferencePolicy;
 
@@ -34,24 +48,42 @@ public:
                          const Eigen::VectorXd& /*u_next*/, Eigen::VectorXd& a_next) const override {
     a_next = a_next_; // CD3: from the equation of motion, not from Newmark's (2.11)
   }
-  [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
   /// No solve and no factorization: all zero.
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return NewtonStatistics{}; }
 
 private:
+  /// CD6: throws NewtonFailure, naming the step to use, where the contact spring of the step's secant
+  /// stiffness on the mass 1/`contact_flexibility_` makes Δt unstable.
+  void check_contact(long step, double t, const ContactSolution& cs, const ContactStep& contact) const;
+
   const CentralDifferencePolicy& p_;
   Eigen::VectorXd a_next_;
   Eigen::VectorXd force_;            ///< Fc s_load − f_int of the step (CD3), sized once
   double contact_flexibility_ = 0.0; ///< sᵀM⁻¹s, 1 / the mass the contact spring moves [1/kg]
 };
 
+/// Refuses, naming `key` (the deck key that chose central differences), a mass that is not diagonal with
+/// mass on every DOF, γ ≠ ½, and Δt above the stable step (CD5), ω_max of the model's initial stiffness
+/// unless the options give it (the case computed it for dt = "auto").
 class CentralDifferencePolicy final : public StepPolicy {
 public:
   CentralDifferencePolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                           std::string key)
-      : model_(std::move(model)), options_(options),
-        scheme_(model_->initial_stiffness(), MassOperator(model_->mass(), 1e-14), options.newmark,
-                std::move(key), options.explicit_omega_max) {}
+      : model_(std::move(model)), options_(options), key_(std::move(key)), dt_(options.newmark.dt),
+        M_(model_->mass(), 1e-14), inverse_mass_(diagonal_mass(M_, key_).cwiseInverse()) {
+    if (options.newmark.gamma != 0.5)
+      throw std::invalid_argument(fmt::format(
+          "{} is central differences (gamma = 0.5), got [time] gamma = {}", key_, options.newmark.gamma));
+    omega_max_ = options.explicit_omega_max.value_or(0.0);
+    if (!options.explicit_omega_max)
+      omega_max_ = highest_angular_frequency(model_->initial_stiffness(), M_.diagonal());
+    const double largest = stable_time_step(omega_max_);
+    if (dt_ > largest)
+      throw std::invalid_argument(fmt::format(
+          "{}: time.dt = {:.4g} s is above the stable step of this plate and mesh: set time.dt <= {:.4g} s, "
+          "or dt = \"auto\" ({} x 2/omega_max, omega_max = {:.4g} rad/s; finer elements lower it)",
+          key_, dt_, largest, stable_step_fraction, omega_max_));
+  }
 
   [[nodiscard]] int equations() const override { return model_->size(); }
   [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
@@ -63,58 +95,66 @@ public:
 
   std::unique_ptr<const MechanicalModel> model_;
   StepPolicyOptions options_;
-  CentralDifference scheme_;
+  std::string key_;
+  double dt_;
+  MassOperator M_; ///< diagonal
+  Eigen::VectorXd inverse_mass_;
+  double omega_max_ = 0.0;
 };
 
 CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy& policy,
                                                    const Impactor& impactor)
-    : ModelStepper(*policy.model_, policy.options_, impactor), p_(policy),
+    : ModelStepper(*policy.model_, policy.options_, impactor, policy.M_), p_(policy),
       a_next_(Eigen::VectorXd::Zero(policy.equations())), force_(Eigen::VectorXd::Zero(policy.equations())),
-      contact_flexibility_(policy.scheme_.flexibility(loading_.sampler())) {}
+      contact_flexibility_(loading_.sampler().dot(policy.inverse_mass_.cwiseProduct(loading_.sampler()))) {}
 
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
                                                   const ContactStep& contact, Eigen::VectorXd& u_next) {
-  p_.scheme_.predict(s, u_next);                                                 // CD1
+  const double dt = p_.dt_;
+  u_next = s.u + dt * s.v + (0.5 * dt * dt) * s.a;                               // CD1
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
-  p_.scheme_.check_contact(step, t, cs, contact, contact_flexibility_);          // CD6
-  state_->internal_force(u_next, p_.scheme_.time_step(), f_int_);
+  check_contact(step, t, cs, contact);                                           // CD6
+  state_->internal_force(u_next, dt, f_int_);
   loading_.scaled_load(cs.alpha, cs.force, force_);
   force_ -= f_int_;
-  p_.scheme_.accelerate(force_, step, t, a_next_); // CD3
+  a_next_ = p_.inverse_mass_.cwiseProduct(force_); // CD3
+  if (!std::isfinite(a_next_.squaredNorm()))
+    throw NewtonFailure(fmt::format("{}: non-finite acceleration in step {} (t = {:.6g} s); reduce time.dt",
+                                    p_.key_, step, t));
   return cs;
 }
 
-double CentralDifferenceStepper::kinetic_energy(const PlateState& s) const {
-  return p_.scheme_.kinetic_energy(s.v);
+void CentralDifferenceStepper::check_contact(long step, double t, const ContactSolution& cs,
+                                             const ContactStep& contact) const {
+  const double d_alpha = cs.alpha - contact.previous_indentation();
+  if (cs.force <= 0.0 || contact.previous_force() <= 0.0 || d_alpha == 0.0) return;
+  const double k_secant = std::abs((cs.force - contact.previous_force()) / d_alpha);
+  const double omega2 = p_.omega_max_ * p_.omega_max_ + k_secant * contact_flexibility_; // CD6
+  if (p_.dt_ * std::sqrt(omega2) <= 2.0) return;
+  throw NewtonFailure(fmt::format(
+      "{}: in step {} (t = {:.6g} s) the contact spring (secant stiffness {:.4g} N/m on the impact point's "
+      "lumped mass) makes time.dt = {:.4g} s unstable: set time.dt <= {:.4g} s",
+      p_.key_, step, t, k_secant, p_.dt_, stable_time_step(std::sqrt(omega2))));
 }
 
 } // namespace
 
-std::unique_ptr<StepPolicy> central_difference_step_policy(std::unique_ptr<const MechanicalModel> model,
-                                                           const StepPolicyOptions& options,
-                                                           std::string key) {
-  return std::make_unique<CentralDifferencePolicy>(std::move(model), options, std::move(key));
+double stable_time_step(double omega_max) {
+  return stable_step_fraction * 2.0 / omega_max;
+}
+
+double explicit_highest_frequency(const SparseMatrix& K0, const MassOperator& M, const std::string& key) {
+  return highest_angular_frequency(K0, diagonal_mass(M, key));
 }
 
 double explicit_highest_frequency(const MechanicalModel& model, const std::string& key) {
   return explicit_highest_frequency(model.initial_stiffness(), MassOperator(model.mass(), 1e-14), key);
 }
 
-double explicit_damage_highest_frequency(const PlateModel& model) {
-  return explicit_highest_frequency(model.stiffness(), MassOperator(model.mass(), 1e-14),
-                                    explicit_damage_key);
-}
-
-double explicit_stable_time_step(const PlateModel& model) {
-  return stable_time_step(explicit_damage_highest_frequency(model));
-}
-
-std::unique_ptr<StepPolicy> explicit_damage_step_policy(const PlateModel& model,
-                                                        const StepPolicyOptions& options,
-                                                        const ProgressiveDamageSettings& settings,
-                                                        Kinematics kinematics) {
-  return central_difference_step_policy(damaging_plate_model(model, settings, kinematics), options,
-                                        explicit_damage_key);
+std::unique_ptr<StepPolicy> central_difference_step_policy(std::unique_ptr<const MechanicalModel> model,
+                                                           const StepPolicyOptions& options,
+                                                           std::string key) {
+  return std::make_unique<CentralDifferencePolicy>(std::move(model), options, std::move(key));
 }
 
 } // namespace plyimpact

@@ -57,15 +57,25 @@ auto naming_singular_causes(const ImpactCaseDescription& d, const Work& work) ->
   }
 }
 
-/// The deck key that chooses explicit steps for the elastic and the von Kármán plate, for messages.
-constexpr const char* explicit_time_key = "[time] integration = \"explicit\"";
+/// The laws of the case's plate and its integrator.
+PlatePhysics plate_physics(const ImpactCaseDescription& d) {
+  return {d.nonlinear, d.progressive_damage, d.delamination, case_integrator(d)};
+}
 
-/// The plate that [time] integration = "explicit" moves when it has no laws with a state: elastic, or
-/// von Kármán with `nonlinear`.
-std::unique_ptr<MechanicalModel> explicit_plate_model(const ImpactCaseDescription& d,
+/// The model that central differences move in `d` (the same for ω_max and the policy); null where the
+/// case's steps are implicit.
+std::unique_ptr<const MechanicalModel> explicit_model(const ImpactCaseDescription& d,
                                                       const PlateModel& model) {
-  if (d.nonlinear) return von_karman_plate_model(model, d.nonlinear->measure);
-  return elastic_plate_model(model);
+  const PlatePhysics physics = plate_physics(d);
+  if (d.plate.rigid || physics.integrator != Integrator::central_difference) return nullptr;
+  return mechanical_model(model, physics);
+}
+
+std::optional<double> highest_frequency(const ImpactCaseDescription& d,
+                                        const MechanicalModel* explicit_plate) {
+  if (!explicit_plate) return std::nullopt;
+  return naming_singular_causes(
+      d, [&] { return explicit_highest_frequency(*explicit_plate, explicit_key(plate_physics(d))); });
 }
 
 /// The description, once its mesh is known to fit in the memory available (mesh_memory.hpp): nothing is
@@ -139,14 +149,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
 }
 
 std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const PlateModel& model) {
-  if (d.plate.rigid) return std::nullopt;
-  if (!d.delamination && !d.progressive_damage && d.time.integration == TimeIntegration::central_difference)
-    return explicit_highest_frequency(*explicit_plate_model(d, model), explicit_time_key);
-  if (d.delamination && d.delamination->integration == DamageIntegration::central_difference)
-    return explicit_delamination_highest_frequency(model, *d.delamination);
-  if (d.progressive_damage && d.progressive_damage->integration == DamageIntegration::central_difference)
-    return explicit_damage_highest_frequency(model);
-  return std::nullopt;
+  return highest_frequency(d, explicit_model(d, model).get());
 }
 
 ImpactSettings resolved_settings(const ImpactCaseDescription& d, std::optional<double> explicit_omega_max) {
@@ -198,9 +201,9 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 
 ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(within_memory(supported(std::move(description)))),
-      model_(std::make_unique<PlateModel>(impact_plate_model(description_))),
-      explicit_omega_max_(naming_singular_causes(
-          description_, [&] { return explicit_highest_frequency(description_, *model_); })) {
+      model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
+  std::unique_ptr<const MechanicalModel> explicit_plate = explicit_model(description_, *model_);
+  explicit_omega_max_ = highest_frequency(description_, explicit_plate.get());
   settings_ = resolved_settings(description_, explicit_omega_max_);
   require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
@@ -218,28 +221,15 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.ordering = description_.ordering;
   options.memory_limit_bytes = description_.memory_limit_bytes;
   options.explicit_omega_max = explicit_omega_max_;
-  naming_singular_causes(description_, [&] { choose_policy(options); });
+  naming_singular_causes(description_, [&] {
+    policy_ = step_policy(*model_, options, plate_physics(description_), std::move(explicit_plate));
+  });
   if (!settings_.end) { // for the end-of-event rule
     const std::optional<double> from_policy = policy_->fundamental_period();
     fundamental_period_ =
         from_policy ? *from_policy
                     : naming_singular_causes(description_, [&] { return fundamental_period(*model_); });
   }
-}
-
-void ImpactCase::choose_policy(const StepPolicyOptions& options) {
-  if (settings_.delamination)
-    policy_ = delamination_step_policy(*model_, options, *settings_.delamination,
-                                       settings_.progressive_damage, settings_.nonlinear);
-  else if (settings_.progressive_damage)
-    policy_ = damage_step_policy(*model_, options, *settings_.progressive_damage, settings_.nonlinear);
-  else if (settings_.integration == Integrator::central_difference)
-    policy_ = central_difference_step_policy(explicit_plate_model(description_, *model_), options,
-                                             explicit_time_key);
-  else if (settings_.nonlinear)
-    policy_ = newton_step_policy(*model_, options, *settings_.nonlinear);
-  else
-    policy_ = linear_step_policy(*model_, options);
 }
 
 ImpactCase::~ImpactCase() = default;

@@ -140,9 +140,6 @@ public:
   [[nodiscard]] double time_one_solve(int repeats = 21) const { return policy_->time_one_solve(repeats); }
 
 private:
-  /// The step policy of the case's plate model × integrator (the factorizations happen here).
-  void choose_policy(const StepPolicyOptions& options);
-
   ImpactCaseDescription description_;
   ImpactSettings settings_;
   std::unique_ptr<PlateModel> model_;

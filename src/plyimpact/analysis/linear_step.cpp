@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <mutex>
 
@@ -80,19 +79,7 @@ public:
   [[nodiscard]] std::unique_ptr<PlateStepper> start_at_contact_point(const Impactor& impactor) const override;
 
   [[nodiscard]] double time_one_solve(int repeats) const override {
-    if (equations() == 0) return 0.0;
-    Eigen::VectorXd b = Eigen::VectorXd::Ones(equations());
-    std::vector<double> t;
-    Eigen::VectorXd x(equations());
-    SpdSolver::Workspace workspace; // the time loop's solve, into kept buffers
-    for (int i = 0; i < repeats; ++i) {
-      const auto t0 = std::chrono::steady_clock::now();
-      level(0).factor.solve(b, x, workspace);
-      t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      b(0) += 1e-30 * x(0);
-    }
-    std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
-    return t[static_cast<std::size_t>(repeats / 2)];
+    return equations() == 0 ? 0.0 : level(0).factor.median_solve_seconds(equations(), repeats);
   }
 
   /// Level k: Δt/2^k and its factor of K̄, factored on first use (once, whichever run asks first: runs

@@ -2,13 +2,9 @@
 // (SPEC §8), the plate whose plies crack (docs/progressive_damage.md), the stacked plate whose interfaces
 // delaminate (docs/delamination.md), and their compositions.
 //
-// Step n → n+1, unknowns u (plate) and Fc. With a = c0 (u − uₙ) − c2 vₙ − c3 aₙ, the plate residual is
-//   r(u, Fc) = Fc s − M a(u) − f_int(u) = 0,   and the contact law Fc = F(α), α = wᵢ(Fc) − sᵀu,
-// f_int the model's trial force from its committed state. Each iteration linearizes the plate with
-// K̄ = K + c0 M, K the model's iteration matrix (the tangent K_T of the von Kármán plate, the secant of the
-// damage of the last trial): u' = û + Fc t, û = u + K̄⁻¹ g(u), g = −M a(u) − f_int(u), t = K̄⁻¹ s, so sᵀu'
-// is affine in Fc and the contact law is solved exactly inside every iteration (SPEC §4): plate and
-// contact are solved together.
+// A step is the iteration on (u, Fc) of contact_iteration.hpp, f_int the model's trial force from its
+// committed state and K̄ = K + c0 M, K the model's iteration matrix (the tangent K_T of the von Kármán
+// plate, the secant of the damage of the last trial): plate and contact are solved together.
 //
 // K̄ of the virgin undeformed model is factored once per case and shared by its runs until a run refreshes
 // it (modified Newton) where it pays:
@@ -56,7 +52,6 @@ public:
   NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                           Eigen::VectorXd& u_next) override;
-  [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
@@ -91,9 +86,8 @@ private:
   long last_refresh_ = 0;
   bool needed_more_than_one_solve_ = false;
   NewtonStatistics stats_;
-  ContactIteration iteration_;      ///< a step allocates nothing but where it refactors
-  Eigen::VectorXd u_start_;         ///< where the last correction started (the halving line search)
-  mutable Eigen::VectorXd scratch_; ///< M v of the kinetic energy
+  ContactIteration iteration_; ///< a step allocates nothing but where it refactors
+  Eigen::VectorXd u_start_;    ///< where the last correction started (the halving line search)
 };
 
 class NewtonNewmarkPolicy final : public StepPolicy {
@@ -134,13 +128,13 @@ public:
 };
 
 NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor)
-    : ModelStepper(*policy.model_, policy.options_, impactor), p_(policy),
+    : ModelStepper(*policy.model_, policy.options_, impactor, policy.M_), p_(policy),
       factor_(policy.options_.solver, policy.options_.ordering), kbar_diagonal_(policy.initial_diagonal_),
       start_(Eigen::VectorXd::Zero(policy.equations())),
       previous_load_(Eigen::VectorXd::Zero(policy.equations())),
       two_point_(state_->two_point_form() && policy.options_.newmark.beta == 0.25 &&
                  policy.options_.newmark.gamma == 0.5),
-      iteration_(policy.equations()), scratch_(policy.equations()) {
+      iteration_(policy.equations()) {
   factor_.adopt_analysis_of(policy.initial_);
   state_->use_two_point_form(two_point_);
   state_->matrix_factorized(Eigen::VectorXd::Zero(policy.equations())); // the shared factor's state
@@ -324,55 +318,12 @@ ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateSt
   return problem.contact_solution();
 }
 
-double NewtonNewmarkStepper::kinetic_energy(const PlateState& s) const {
-  return p_.M_.kinetic_energy(s.v, scratch_);
-}
-
-/// The damage settings' iterations, with the periodic refresh of the large-deflection settings where the
-/// plate is also von Kármán's (its tangent moves with u as well as with the damage). Their refresh after
-/// `refresh_after` solves is left out: the damage's tighter tolerance takes more solves per step, and
-/// with it the plate of examples/damage-progressive.toml refactored in 415 of its 266 steps (13 s)
-/// instead of 44 times (2.5 s) with the contraction rule alone.
-NewtonSettings damage_newton_settings(const ProgressiveDamageSettings& damage,
-                                      const std::optional<NonlinearImpactSettings>& large_deflection) {
-  NewtonSettings ns = newton_settings_of(damage, "progressive damage");
-  if (large_deflection) ns.refresh_interval = large_deflection->refresh_interval;
-  ns.advice = damage.integration == DamageIntegration::lagged
-                  ? "reduce time.dt"
-                  : "set [damage] integration = \"lagged\" (no iteration on the damage; its energy balance "
-                    "error shrinks with time.dt), or reduce time.dt";
-  return ns;
-}
-
 } // namespace
 
 std::unique_ptr<StepPolicy> newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model,
                                                        const StepPolicyOptions& options,
                                                        NewtonSettings settings) {
   return std::make_unique<NewtonNewmarkPolicy>(std::move(model), options, std::move(settings));
-}
-
-std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                                               const NonlinearImpactSettings& settings) {
-  NewtonSettings ns = newton_settings_of(settings, "non-linear impact");
-  ns.refresh_after = settings.refresh_after;
-  ns.refresh_interval = settings.refresh_interval;
-  return newton_newmark_step_policy(von_karman_plate_model(model, settings.measure), options, std::move(ns));
-}
-
-std::unique_ptr<StepPolicy>
-damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                   const ProgressiveDamageSettings& settings,
-                   const std::optional<NonlinearImpactSettings>& large_deflection) {
-  const Kinematics kinematics = large_deflection ? Kinematics::von_karman : Kinematics::linear;
-  if (large_deflection && large_deflection->measure != StrainMeasure::von_karman)
-    throw std::invalid_argument(
-        "progressive damage takes the von Kármán strains of a non-linear plate: set strain_measure = "
-        "\"von-karman\" (the Green–Lagrange measure is not built for the layered section whose plies crack)");
-  if (settings.integration == DamageIntegration::central_difference)
-    return explicit_damage_step_policy(model, options, settings, kinematics);
-  return newton_newmark_step_policy(damaging_plate_model(model, settings, kinematics), options,
-                                    damage_newton_settings(settings, large_deflection));
 }
 
 } // namespace plyimpact

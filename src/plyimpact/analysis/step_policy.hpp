@@ -1,24 +1,19 @@
 #pragma once
-// Step policies: how the plate advances one Newmark step together with the contact force. The time loop
-// (impact_loop.hpp) is the same for all of them; only the solution of the step differs:
+// Step policies: how the plate advances one step together with the contact force. The time loop
+// (impact_loop.hpp) is the same for all of them; only the solution of the step differs, by integrator
+// (the one factory of them, step_policy(), picks the cell of capabilities.hpp):
 //
-//   LinearStepPolicy   K̄ = K + c0 M factored once per case. One back-substitution for the load-free
-//                      predictor û, then ws = sᵀû + c·Fc is affine in Fc and the scalar contact problem
-//                      is solved exactly (SPEC §4).
-//   NewtonNewmark      any model whose force is not linear in u (the von Kármán plate, SPEC §8; the plate
-//                      whose plies crack; both): Newton iterations on (u, Fc) with K̄ = K + c0 M, K the
-//                      model's iteration matrix, refreshed when the iterations slow down (modified Newton).
-//   CentralDifference  any model with a diagonal mass: explicit steps, nothing solved.
-//   DelaminationStep   the stacked plate whose interfaces delaminate (fem/stacked_plate.hpp): Newton
-//                      iterations on (u, Fc) with the elastic K̄ factored once, the tangent's LU where
-//                      the interfaces soften and the iterations slow down.
-//   RigidTarget        no plate (closed-form checks of the contact law).
-//
-// The linear policy can also start a stepper that follows the contact point alone through the plate's
-// impulse response (contact_point_response.hpp), for runs that look at nothing else.
+//   linear Newmark      the linear elastic plate: K̄ = K + c0 M factored once per case, the exact scalar
+//                       contact solve on the load-free predictor (SPEC §4; linear_step.cpp), and the
+//                       contact point's impulse response for runs that look at nothing else;
+//   Newton–Newmark      any model of fem/mechanical_model.hpp whose force is not linear in u
+//                       (newton_newmark_step.cpp);
+//   central differences any model with a diagonal mass (central_difference_step.cpp);
+//   rigid target        no plate (closed-form checks of the contact law).
 //
 // A policy is built once per case (it owns what does not depend on the impactor: matrices and their
 // factorization) and starts a PlateStepper for each run (what does: the contact point and load).
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/contact_load.hpp"
 #include "plyimpact/analysis/contact_step.hpp"
 #include "plyimpact/analysis/hertz_contact.hpp"
@@ -126,18 +121,6 @@ public:
   [[nodiscard]] virtual std::vector<std::string> warnings() const { return {}; }
 };
 
-/// Settings of the non-linear (Newton) policy.
-struct NonlinearImpactSettings {
-  StrainMeasure measure = StrainMeasure::von_karman;
-  int max_iterations = 30;              ///< per time step
-  double residual_tolerance = 1e-4;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
-  double displacement_tolerance = 1e-6; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖
-  int refresh_after = 4;                ///< refactor K̄ when a step needs more iterations
-  double refresh_ratio = 0.25;          ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
-  long refresh_interval =
-      200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
-};
-
 /// What the policies need to know of the run besides the plate.
 struct StepPolicyOptions {
   NewmarkCoefficients newmark{1e-6, 0.25, 0.5};
@@ -145,28 +128,13 @@ struct StepPolicyOptions {
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   FillOrdering ordering = FillOrdering::amd;
   std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
-  /// The explicit policies' ω_max (explicit_damage_highest_frequency,
-  /// explicit_delamination_highest_frequency) where the case has computed it; empty: the policy computes it.
+  /// ω_max of the model that central differences move, where the case has computed it (for dt = "auto").
   std::optional<double> explicit_omega_max;
 };
 
 /// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
 [[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options);
-/// The plate whose plies crack with explicit central differences on the lumped mass (settings.integration
-/// = central_difference; central differences on the damaging plate, central_difference_step.cpp). Throws
-/// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
-/// message gives.
-[[nodiscard]] std::unique_ptr<StepPolicy>
-explicit_damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                            const ProgressiveDamageSettings& settings,
-                            Kinematics kinematics = Kinematics::linear);
-/// The largest Δt explicit_damage_step_policy accepts on `model`: 0.9 · 2/ω_max of its undamaged K and
-/// lumped M (CD5) [s]; what dt = "auto" becomes with [damage] integration = "explicit". Throws
-/// std::invalid_argument when the mass is not diagonal.
-[[nodiscard]] double explicit_stable_time_step(const PlateModel& model);
-/// ω_max of the undamaged `model` on its lumped mass, that step's 0.9 · 2/ω_max [rad/s].
-[[nodiscard]] double explicit_damage_highest_frequency(const PlateModel& model);
 /// How Newton–Newmark iterates a step (newton_newmark_step.cpp).
 struct NewtonSettings {
   int max_iterations = 30;              ///< solves per time step
@@ -183,43 +151,16 @@ struct NewtonSettings {
   std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
   std::string advice = "reduce time.dt"; ///< what they advise
 };
-/// The iteration settings every physics' settings carry (NonlinearImpactSettings, ProgressiveDamageSettings,
-/// DelaminationSettings: solves per step, tolerances, the contraction ratio that refreshes the matrix), as
-/// Newton–Newmark's, its failure messages naming `physics`.
-template <class PhysicsSettings>
-[[nodiscard]] NewtonSettings newton_settings_of(const PhysicsSettings& s, std::string physics) {
-  NewtonSettings ns;
-  ns.max_iterations = s.max_iterations;
-  ns.residual_tolerance = s.residual_tolerance;
-  ns.displacement_tolerance = s.displacement_tolerance;
-  ns.refresh_ratio = s.refresh_ratio;
-  ns.physics = std::move(physics);
-  return ns;
-}
 /// Newton–Newmark on any model with an iteration matrix (newton_newmark_step.cpp): the one implicit
 /// integrator of the models whose force is not linear in u.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                            NewtonSettings settings);
-/// Newton–Newmark on the von Kármán plate, with the tangent (the settings' measure).
-[[nodiscard]] std::unique_ptr<StepPolicy> newton_step_policy(const PlateModel& model,
-                                                             const StepPolicyOptions& options,
-                                                             const NonlinearImpactSettings& settings);
-/// The plate whose plies crack (fem/damaged_plate.hpp), von Kármán's with `large_deflection`: Newton–
-/// Newmark with the secant stiffness (the tangent of the elastic von Kármán plate plus the damaged
-/// sections' secant difference), refactored when the damage has grown by more than the settings'
-/// tolerance; central differences where settings.integration says so. Throws std::invalid_argument for a
-/// large-deflection measure other than von Kármán's.
-[[nodiscard]] std::unique_ptr<StepPolicy>
-damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                   const ProgressiveDamageSettings& settings,
-                   const std::optional<NonlinearImpactSettings>& large_deflection = std::nullopt);
 /// The largest time step for which the step of the stacked plate stays solvable where an interface point
 /// softens (docs/delamination.md, "Impact on the stacked plate"). The step's matrix for the opening of
-/// two neighbouring sub-laminates at a point is c0 m + K_T with c0 = 1/(β Δt²), m = m_u m_l/(m_u + m_l)
-/// their reduced mass per area (I0 of each) and K_T ≥ −k_s, k_s = τ⁰/(Δᶠ − Δ⁰) the softening slope of
-/// the law, steepest of the pure modes: N/(2G_Ic/N − N/K) and S/(2G_IIc/S − S/K). It stays positive,
-/// and the step's solution unique, for
+/// two neighbouring sub-laminates at a point is c0 m + K_T with c0 = 1/(β Δt²), m their reduced mass per
+/// area and K_T ≥ −k_s, k_s the softening slope of the law (fastest_softening, fem/stacked_model.hpp). It
+/// stays positive, and the step's solution unique, for
 ///
 ///   Δt < √(m / (β k_s))   (2 √(m/k_s) for the trapezoidal rule),                              (DL5)
 ///
@@ -228,42 +169,36 @@ damage_step_policy(const PlateModel& model, const StepPolicyOptions& options,
 [[nodiscard]] double largest_delamination_time_step(const Laminate& laminate, const StackSettings& stack,
                                                     double newmark_beta);
 
-/// The laminate of `model` (one laminate, no regions) cut into sub-laminates tied by cohesive interfaces
-/// (fem/stacked_model.cpp), under Newton–Newmark or central differences. The supports of `model` hold the
-/// sub-laminates that `settings` names. Throws
-/// std::invalid_argument for a plate with regions of other laminates.
-/// With `ply_damage` the plies crack too; with `large_deflection` the sub-laminates are geometrically
-/// non-linear (stacked_plate_model). What does not run (capabilities.hpp) throws std::invalid_argument
-/// with the table's reason.
-[[nodiscard]] std::unique_ptr<StepPolicy>
-delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                         const DelaminationSettings& settings,
-                         const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt,
-                         const std::optional<NonlinearImpactSettings>& large_deflection = std::nullopt);
-/// The stacked plate with explicit central differences on the lumped mass (settings.integration =
-/// central_difference; central differences on the stacked model of fem/stacked_model.cpp). Throws
-/// std::invalid_argument when the mass is not diagonal or Δt of `options` is above the stable step, which the
-/// message gives. With `ply_damage` each sub-laminate's plies crack too (fem/damaged_plate.hpp), and the
-/// stepper's results() hold the plies' damage of the whole laminate. With `large_deflection` the
-/// sub-laminates are geometrically non-linear.
-[[nodiscard]] std::unique_ptr<StepPolicy>
-explicit_delamination_step_policy(const PlateModel& model, const StepPolicyOptions& options,
-                                  const DelaminationSettings& settings,
-                                  const std::optional<ProgressiveDamageSettings>& ply_damage = std::nullopt,
-                                  std::optional<StrainMeasure> large_deflection = std::nullopt);
 /// What dt = "auto" takes of the stable step when the plies crack in a stacked plate (ply damage with
 /// delamination): the balance error of the shipped example over 1.2 ms is 4.0e-3 at the stable step and
 /// 4.0e-4 at half of it, that of the two-ply stack 1.8e-2 and 2.0e-4, with the same answers otherwise
 /// (docs/delamination.md, "Ply damage and delamination together").
 inline constexpr double plies_with_interfaces_step_fraction = 0.5;
-/// The largest Δt explicit_delamination_step_policy accepts: 0.9 · 2/ω_max of the elastic stack (the
-/// sub-laminates and the interfaces' penalty) with the lumped mass (CD5) [s]; what dt = "auto" becomes
-/// with [delamination] integration = "explicit".
-[[nodiscard]] double explicit_delamination_time_step(const PlateModel& model,
-                                                     const DelaminationSettings& settings);
-/// ω_max of the elastic stack on its lumped mass, that step's 0.9 · 2/ω_max [rad/s].
-[[nodiscard]] double explicit_delamination_highest_frequency(const PlateModel& model,
-                                                             const DelaminationSettings& settings);
+/// What a plate is made of and how it steps: the laws of a cell of the table of what runs
+/// (capabilities.hpp) with their settings, and its one integrator.
+struct PlatePhysics {
+  std::optional<NonlinearImpactSettings> large_deflection; ///< von Kármán kinematics (SPEC §8)
+  std::optional<ProgressiveDamageSettings> ply_damage;     ///< plies that crack
+  std::optional<DelaminationSettings> interfaces;          ///< sub-laminates tied by cohesive interfaces
+  Integrator integrator = Integrator::implicit;
+};
+/// The model of `plate` that `physics` makes (fem/mechanical_model.hpp): elastic, von Kármán, with plies
+/// that crack (either kinematics), or the laminate cut into sub-laminates tied by cohesive interfaces (one
+/// laminate, no regions), which may be any of those. Throws std::invalid_argument with the table's reason
+/// where the cell does not run, and for a large-deflection measure other than von Kármán's with ply damage.
+[[nodiscard]] std::unique_ptr<MechanicalModel> mechanical_model(const PlateModel& plate,
+                                                                const PlatePhysics& physics);
+/// The deck key that chose central differences for `physics`, for the messages of the explicit step.
+[[nodiscard]] std::string explicit_key(const PlatePhysics& physics);
+/// The one factory of step policies (step_policies.cpp): the linear elastic plate under implicit Newmark
+/// takes linear_step_policy; every other cell its mechanical_model (`model`, where the caller has built
+/// it) under Newton–Newmark (implicit, lagged) or central differences, with the iterations and messages
+/// of its laws. Throws std::invalid_argument where the cell does not run, where Δt is above the explicit
+/// stable step, or for a stack without ply damage above (DL5).
+[[nodiscard]] std::unique_ptr<StepPolicy> step_policy(const PlateModel& plate,
+                                                      const StepPolicyOptions& options,
+                                                      const PlatePhysics& physics,
+                                                      std::unique_ptr<const MechanicalModel> model = nullptr);
 /// A rigid, immovable target: ws = 0.
 [[nodiscard]] std::unique_ptr<StepPolicy> rigid_target_policy();
 

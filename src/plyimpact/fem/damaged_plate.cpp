@@ -623,22 +623,7 @@ void DamagedPlateModel::frozen_internal_force_into(const Eigen::VectorXd& u, Dam
 
 SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const {
   SparseMatrix K = K0_;
-  double* values = K.valuePtr();
-  for (const DamageField::ActiveElement& a : field.active_) {
-    if (!a.has_sections) continue;
-    const int e = a.element;
-    const ElementOperators& ops = operators_of(e);
-    const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
-    ElementMatrix dK = ElementMatrix::Zero();
-    bool changed = false;
-    for (std::size_t p = 0; p < 9; ++p) {
-      if (a.pristine_trial[p]) continue;
-      dK.noalias() += ops.S[p].transpose() * (ops.w[p] * (as_matrix(a.sections[p]) - C0)) * ops.S[p];
-      changed = true;
-    }
-    if (!changed) continue;
-    add_element_values(values, slot_[static_cast<std::size_t>(e)], dK);
-  }
+  add_section_differences(K, field, nullptr);
   return K;
 }
 
@@ -654,20 +639,31 @@ SparseMatrix DamagedPlateModel::iteration_matrix(const Eigen::VectorXd& u, const
   SparseMatrix K = von_karman_->tangent_stiffness(u);
   if (K.nonZeros() != K0_.nonZeros())
     throw std::logic_error("damaged plate: the tangent does not have the model's sparsity pattern");
+  add_section_differences(K, field, &u);
+  return K;
+}
+
+void DamagedPlateModel::add_section_differences(SparseMatrix& K, const DamageField& field,
+                                                const Eigen::VectorXd* u) const {
   double* values = K.valuePtr();
   for (const DamageField::ActiveElement& a : field.active_) {
     if (!a.has_sections) continue;
     const int e = a.element;
     const ElementOperators& ops = operators_of(e);
     const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
-    const ElementVector ue = model_.element_dofs(u, e);
+    const ElementVector ue = u ? model_.element_dofs(*u, e) : ElementVector::Zero();
     ElementMatrix dK = ElementMatrix::Zero();
     bool changed = false;
     for (std::size_t p = 0; p < 9; ++p) {
       if (a.pristine_trial[p]) continue;
+      changed = true;
+      if (!u) { // w outside the parentheses would change the product's rounding (Eigen takes it out)
+        dK.noalias() += ops.S[p].transpose() * (ops.w[p] * (as_matrix(a.sections[p]) - C0)) * ops.S[p];
+        continue;
+      }
+      const Section8 dC = ops.w[p] * (as_matrix(a.sections[p]) - C0);
       const Eigen::Vector2d g = slopes(ops, p, ue);
       const StrainOperator E = von_karman_operator(ops, p, g);
-      const Section8 dC = ops.w[p] * (as_matrix(a.sections[p]) - C0);
       dK.noalias() += E.transpose() * dC * E;
       // (2.103): the initial-stress term of the membrane resultants' difference, on the w DOFs
       const Eigen::Vector3d dN = (dC * point_strain(ops, p, ue)).head<3>();
@@ -676,11 +672,9 @@ SparseMatrix DamagedPlateModel::iteration_matrix(const Eigen::VectorXd& u, const
           dK(w_dof(i), w_dof(j)) +=
               dN(0) * ops.dN_dx[p](i) * ops.dN_dx[p](j) + dN(1) * ops.dN_dy[p](i) * ops.dN_dy[p](j) +
               dN(2) * (ops.dN_dx[p](i) * ops.dN_dy[p](j) + ops.dN_dy[p](i) * ops.dN_dx[p](j));
-      changed = true;
     }
     if (changed) add_element_values(values, slot_[static_cast<std::size_t>(e)], dK);
   }
-  return K;
 }
 
 double DamagedPlateModel::hashin_bound(const std::vector<Group>& groups,

@@ -203,6 +203,10 @@ private:
   /// sections as they stand) to f.
   void add_section_force(const DamageField& field, std::size_t slot, const PointStrains& strains,
                          const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
+  /// Adds to K, in K0's pattern, the damaged points' Σ E_pᵀ w (C(d) − C0) E_p of every active element
+  /// (E_p = S_p where `u` is null; else von Kármán's at u with the initial-stress term of the difference's
+  /// membrane resultants, 2.103).
+  void add_section_differences(SparseMatrix& K, const DamageField& field, const Eigen::VectorXd* u) const;
   /// The force of the undamaged plate at u: K0 u, or the von Kármán plate's f_int(u).
   void elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -330,6 +331,21 @@ long SpdSolver::factor_nonzeros() const {
   if (kind_ == SparseSolverKind::cholmod) return -1;
   if (kind_ == SparseSolverKind::cholmod_simplicial) return impl_->cholmod_ldlt.factor_nonzeros();
   return static_cast<long>(impl_->ldlt.matrixL().nestedExpression().nonZeros());
+}
+
+double SpdSolver::median_solve_seconds(int size, int repeats) const {
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(size);
+  Eigen::VectorXd x(size);
+  Workspace workspace;
+  std::vector<double> t;
+  for (int i = 0; i < repeats; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    solve(b, x, workspace);
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    b(0) += 1e-30 * x(0);
+  }
+  std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
+  return t[static_cast<std::size_t>(repeats / 2)];
 }
 
 } // namespace plyimpact

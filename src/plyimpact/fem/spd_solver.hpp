@@ -78,6 +78,9 @@ public:
   /// CHOLMOD 3.0's own work array (bench/README.md); the other backends solve as solve(b) does.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const;
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  /// Seconds for one solve(b, x, w) of `size` equations into kept buffers, as a time loop solves: the
+  /// median of `repeats` (benchmarks).
+  [[nodiscard]] double median_solve_seconds(int size, int repeats) const;
   /// Modifies the factor of A into the factor of A + C Cᵀ (`update`) or A − C Cᵀ, C of A's rows
   /// (CHOLMOD's multiple-rank update and downdate of a simplicial LDLᵀ, Davis & Hager): the cost of
   /// the factor's columns that C reaches, not of a factorization. Returns false, and leaves the solver

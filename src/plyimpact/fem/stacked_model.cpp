@@ -642,4 +642,19 @@ stacked_plate_model(const PlateModel& model, const DelaminationSettings& setting
   return std::make_unique<StackedModel>(model, settings, ply_damage, large_deflection);
 }
 
+SofteningMode fastest_softening(const Laminate& laminate, const StackSettings& stack) {
+  const CohesiveParameters& p = stack.interface;
+  const auto slope = [K = p.penalty_stiffness](double strength, double G_c) {
+    return strength / (2.0 * G_c / strength - strength / K);
+  };
+  SofteningMode mode;
+  mode.slope = std::max(slope(p.normal_strength, p.G_Ic), slope(p.shear_strength, p.G_IIc));
+  const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    const double m_u = parts[i].inertia()[0], m_l = parts[i + 1].inertia()[0];
+    mode.reduced_mass = std::min(mode.reduced_mass, m_u * m_l / (m_u + m_l));
+  }
+  return mode;
+}
+
 } // namespace plyimpact

@@ -12,6 +12,7 @@
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
 #include "plyimpact/fem/stacked_plate.hpp"
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -98,6 +99,15 @@ private:
   StackedPlateState committed_, trial_;
   double trial_dissipated_ = 0.0, dissipated_ = 0.0;
 };
+
+/// The stack's fastest softening (DL5, docs/delamination.md): the steepest softening slope k_s of the
+/// interface law over the pure modes, N/(2G_Ic/N − N/K) and S/(2G_IIc/S − S/K) [Pa/m], and the smallest
+/// reduced mass per area m = m_u m_l/(m_u + m_l) of two neighbouring sub-laminates (I0 of each) [kg/m²].
+struct SofteningMode {
+  double slope = 0.0;
+  double reduced_mass = INFINITY;
+};
+[[nodiscard]] SofteningMode fastest_softening(const Laminate& laminate, const StackSettings& stack);
 
 /// The stacked plate as a model of fem/mechanical_model.hpp, for the integrators written once against it
 /// (central differences, Newton–Newmark with the laws lagged: stacked_model.cpp). With `ply_damage` each
