@@ -276,12 +276,19 @@ TEST(SweepSpec, ABadCombinationFailsOnlyItsOwnCase) {
             std::string::npos);
 }
 
-TEST(SweepSpec, ImpactorOnlyCasesShareThePlateKey) {
+/// Whether cases `i` and `j` of `s` share their plate (same_plate of their descriptions).
+bool share_plate(const Sweep& s, std::size_t i, std::size_t j) {
+  return same_plate(impact_case_description(s.deck_for(s.case_at(i))),
+                    impact_case_description(s.deck_for(s.case_at(j))));
+}
+
+TEST(SweepSpec, ImpactorOnlyCasesShareThePlate) {
+  // Cases 0 and 3 differ in the impactor alone, with the time step given; 4 has another layup.
   const Sweep s = Sweep::from_text(
       plate_deck(""), "deck.toml",
       {"laminate.layup=[0/90]s,[0_2/90_4/0_2]", "impactor.velocity=1,2", "impactor.radius=0.005,0.01"});
-  EXPECT_EQ(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(3)));
-  EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(4)));
+  EXPECT_TRUE(share_plate(s, 0, 3));
+  EXPECT_FALSE(share_plate(s, 0, 4));
 }
 
 /// The text of examples/`name`.
@@ -292,13 +299,13 @@ std::string example_text(const std::string& name) {
   return s.str();
 }
 
-TEST(SweepSpec, TheProgressiveDamageModelIsPartOfThePlateKey) {
+TEST(SweepSpec, TheProgressiveDamageModelIsPartOfThePlate) {
   // The progressive model makes the plate's step policy: cases that differ in it cannot share a case.
   // The onset keys (criteria, every) only watch a run: cases that differ in them can.
   const Sweep s = Sweep::from_text(example_text("damage-progressive.toml"), "deck.toml",
                                    {"damage.alpha=0,0.5", "damage.every=1,2"});
-  EXPECT_EQ(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(1)));
-  EXPECT_NE(s.plate_key(s.case_at(0)), s.plate_key(s.case_at(2)));
+  EXPECT_TRUE(share_plate(s, 0, 1));
+  EXPECT_FALSE(share_plate(s, 0, 2));
 }
 
 std::string read_text_file(const fs::path& p) {
@@ -482,6 +489,21 @@ TEST(SweepRun, ProgressiveColumnsAreThoseOfStandAloneRuns) {
   EXPECT_GT(std::stod(rows[1][column(header, "damage_area_m2")]), 0.0); // 16 mJ cracks the bottom ply
   EXPECT_EQ(rows[2][column(header, "damage_dissipation_J")], "0");      // 4 mJ does not
   EXPECT_EQ(rows[2][column(header, "damage_area_m2")], "0");
+}
+
+TEST(SweepRun, CasesAtOtherImpactPointsOfAGradedMeshRunOnTheirOwnMesh) {
+  // A graded mesh is refined around its impact point: a case struck elsewhere is another plate
+  // (same_plate), built and factored anew, and gives the peak force of its own stand-alone run.
+  std::string deck = plate_deck("");
+  deck.replace(deck.find("nx = 6\nny = 4"), 13, "size_at_impact = 0.01\nmax_size = 0.03");
+  const Sweep s = Sweep::from_text(deck, "deck.toml", {"impactor.x=0.0635,0.04", "impactor.velocity=1,2"});
+  int factorizations = 0;
+  const auto records = run_in_process(s, scratch("graded-points"), 1, true, &factorizations);
+  EXPECT_EQ(factorizations, 2); // one plate per impact point; the velocities share it
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const ImpactResult alone = ImpactCase(impact_case_description(s.deck_for(s.case_at(i)))).run();
+    EXPECT_EQ(records[i]["results"]["peak_force"].get<double>(), alone.peak_force) << i;
+  }
 }
 
 TEST(SweepRun, OnsetRunsLeaveTheDamageColumnsEmpty) {

@@ -165,6 +165,38 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateMode
   return resolved_settings(d, explicit_highest_frequency(d, model));
 }
 
+namespace {
+
+/// What of `d` builds its case: the impactor and the contact stiffness left out, what they set of the case
+/// kept resolved (the time step; the graded mesh's size and impact point), and the memory guard left out.
+ImpactCaseDescription plate_part(ImpactCaseDescription d) {
+  d.time.dt = resolved_settings(d).dt;
+  Impactor impact_point;
+  if (d.mesh.grading) {
+    d.mesh.grading->size_at_impact = size_at_impact(d);
+    impact_point.x = d.impactor.x;
+    impact_point.y = d.impactor.y;
+  }
+  d.impactor = impact_point;
+  d.contact.k.reset();
+  d.memory_limit_bytes.reset(); // the memory free when the deck was read: a guard, not the plate
+  return d;
+}
+
+bool same_mesh_file(const ImpactCaseDescription& a, const ImpactCaseDescription& b) {
+  if (!a.mesh_from_file || !b.mesh_from_file) return a.mesh_from_file == b.mesh_from_file;
+  return *a.mesh_from_file == *b.mesh_from_file;
+}
+
+} // namespace
+
+bool same_plate(const ImpactCaseDescription& a, const ImpactCaseDescription& b) {
+  if (!same_mesh_file(a, b)) return false;
+  ImpactCaseDescription pa = plate_part(a), pb = plate_part(b);
+  pa.mesh_from_file = pb.mesh_from_file = nullptr; // compared above, by content
+  return pa == pb;
+}
+
 double expected_contact_radius(const ImpactCaseDescription& d) {
   return expected_contact_radius(d.impactor, resolved_contact_stiffness(d));
 }

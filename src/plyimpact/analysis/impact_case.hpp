@@ -49,7 +49,16 @@ struct ImpactCaseDescription {
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   FillOrdering ordering = FillOrdering::amd; ///< of the factor of K̄ (bench/README.md, "Orderings")
   std::optional<double> memory_limit_bytes;  ///< refuse a factor of K̄ estimated above this
+  /// Equal in every input (mesh_from_file: the same mesh object; same_plate compares its content).
+  friend bool operator==(const ImpactCaseDescription&, const ImpactCaseDescription&) = default;
 };
+
+/// True when `a` and `b` make the same plate, step policy and factors, so that the runs of one may use the
+/// ImpactCase of the other (RunRequest): they differ at most in what a run may change, the impactor and
+/// the contact stiffness, and not in what the impactor sets of the case (the resolved time step, and on a
+/// graded mesh its element size and its impact point). The memory limit, measured when each deck is read,
+/// is a guard of the build and is not compared. Sweeps share factorizations between such cases.
+[[nodiscard]] bool same_plate(const ImpactCaseDescription& a, const ImpactCaseDescription& b);
 
 /// The settings of a case with every "auto" resolved (SPEC §4 rules, contact_rules.hpp).
 /// The mesh a case runs on, for the report (issue 16: the output says which mesh was used).

@@ -42,6 +42,7 @@ struct Impactor {
   double y = 0.0;        ///< [m]
   NoseShape nose = NoseShape::hemisphere;
   double half_angle = 0.0; ///< cone: the angle between its axis and its flank [rad]
+  friend bool operator==(const Impactor&, const Impactor&) = default;
 };
 
 enum class UnloadingLaw { tan_sun, elastic };
@@ -60,6 +61,7 @@ struct ContactLawParameters {
   double beta = 0.094;                            ///< permanent-indentation factor
   double alpha_cr = 1.7e-4;                       ///< critical indentation [m]
   ContactLoad load = ContactLoad::hertz_pressure; ///< point: the thesis's point force
+  friend bool operator==(const ContactLawParameters&, const ContactLawParameters&) = default;
 };
 
 /// Error-controlled time steps (issue 22, docs/deck.md `[time]`). The steps are dt_max/2^k, k = 0 … levels −
@@ -69,6 +71,7 @@ struct ContactLawParameters {
 struct AdaptiveTimeStep {
   double tolerance = 1e-3; ///< of the local indentation error, relative to α_m
   int levels = 8;          ///< the smallest step is dt / 2^(levels − 1)
+  friend bool operator==(const AdaptiveTimeStep&, const AdaptiveTimeStep&) = default;
 };
 
 /// How the plate moves from step to step (`[time] integration`, docs/deck.md; analysis/capabilities.hpp).
@@ -92,6 +95,7 @@ struct TimeStepping {
   /// engaged: error-controlled steps (impact_loop.hpp): dt is the largest step, halved where the
   /// estimated local error of the indentation exceeds the tolerance
   std::optional<AdaptiveTimeStep> adaptive;
+  friend bool operator==(const TimeStepping&, const TimeStepping&) = default;
 };
 
 struct ModalSettings {

@@ -46,6 +46,7 @@ inline constexpr std::string_view unilateral_support = "unilateral";
 struct SetRestraint {
   std::string set;
   std::string type;
+  friend bool operator==(const SetRestraint&, const SetRestraint&) = default;
 };
 
 struct BoundaryConditions {
@@ -61,6 +62,7 @@ struct BoundaryConditions {
   void set(std::string_view set, std::string_view type);
   /// True when a set rests on a unilateral support.
   [[nodiscard]] bool has_unilateral() const;
+  friend bool operator==(const BoundaryConditions&, const BoundaryConditions&) = default;
 };
 
 /// Throws std::invalid_argument when `bc` has a unilateral support, which only the linear static analysis

@@ -99,6 +99,7 @@ struct ProgressiveDamageSettings {
   /// there; true = the strengths of those elements are lowered to their band limit (Maimí et al. 2007,
   /// band_limited_strengths in ply_damage.hpp) and strength_reduction_warning() says by how much.
   bool reduce_strengths_above_band_limit = false;
+  friend bool operator==(const ProgressiveDamageSettings&, const ProgressiveDamageSettings&) = default;
 };
 
 /// Per element and ply: the largest damage variable of each mode over the element's points.

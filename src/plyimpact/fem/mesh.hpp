@@ -47,6 +47,11 @@ public:
   [[nodiscard]] const BoundingBox& bounds() const { return bounds_; }
 
   /// Named sets. A name may be used once per kind; an edge set also defines the node set of its nodes.
+  /// The same nodes, elements and named sets (what the mesh is built from).
+  friend bool operator==(const Mesh& a, const Mesh& b) {
+    return a.nodes_ == b.nodes_ && a.elements_ == b.elements_ && a.node_sets_ == b.node_sets_ &&
+           a.edge_sets_ == b.edge_sets_;
+  }
   void add_node_set(const std::string& name, std::vector<int> nodes);
   void add_edge_set(const std::string& name, std::vector<EdgeSegment> edges);
   [[nodiscard]] bool has_node_set(const std::string& name) const { return node_sets_.contains(name); }

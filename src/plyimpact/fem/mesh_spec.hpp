@@ -11,6 +11,7 @@ struct PlateGeometry {
   double a = 0.0;     ///< length along x [m]
   double b = 0.0;     ///< width along y [m]
   bool rigid = false; ///< a rigid, immovable target instead of the plate (impact checks)
+  friend bool operator==(const PlateGeometry&, const PlateGeometry&) = default;
 };
 
 enum class MassMatrix {
@@ -39,6 +40,7 @@ struct MeshGrading {
   double growth = 1.25;           ///< size ratio of neighbouring elements (≥ 1)
   std::optional<double> max_size; ///< [m]; empty: a tenth of the plate's shorter side
   std::array<double, 2> impact_offset{0.5, 0.5}; ///< position of the impact point in its element, [0, 1)
+  friend bool operator==(const MeshGrading&, const MeshGrading&) = default;
 };
 
 struct MeshSpec {
@@ -47,6 +49,7 @@ struct MeshSpec {
   MassMatrix mass = MassMatrix::lumped;
   ElementFormulation element = ElementFormulation::automatic;
   std::optional<MeshGrading> grading{}; ///< engaged: graded toward the impact point instead of nx × ny
+  friend bool operator==(const MeshSpec&, const MeshSpec&) = default;
 };
 
 } // namespace plyimpact

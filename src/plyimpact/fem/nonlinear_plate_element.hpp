@@ -36,6 +36,7 @@ struct NonlinearImpactSettings {
   double refresh_ratio = 0.25;          ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
   long refresh_interval =
       200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
+  friend bool operator==(const NonlinearImpactSettings&, const NonlinearImpactSettings&) = default;
 };
 
 /// Shape function derivatives and weight·det J at one integration point (geometry only).

@@ -18,6 +18,7 @@ struct Region {
   [[nodiscard]] bool contains(double x, double y, double tol = 0.0) const {
     return x >= x_min - tol && x <= x_max + tol && y >= y_min - tol && y <= y_max + tol;
   }
+  friend bool operator==(const Region&, const Region&) = default;
 };
 
 /// The laminate index of every element; empty when `regions` is empty.

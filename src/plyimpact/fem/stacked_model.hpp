@@ -37,6 +37,7 @@ struct DelaminationSettings {
   /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
   /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
   bool update_factor = true;
+  friend bool operator==(const DelaminationSettings&, const DelaminationSettings&) = default;
 };
 
 /// The cohesive zone's length against the interface points' spacing [m].

@@ -77,6 +77,7 @@ struct StackSettings {
   /// Newton's choice of tangent at the law's kink (CohesiveLaw::update): the loading tangent within
   /// this relative band below the softening envelope.
   double loading_band = 1e-2;
+  friend bool operator==(const StackSettings&, const StackSettings&) = default;
 };
 
 class StackedPlateModel {

@@ -299,25 +299,30 @@ std::string sweep_table_csv(const Sweep& sweep, const std::vector<nlohmann::json
 
 // --- one case ---------------------------------------------------------------------------------
 
-/// The impact cases the workers of one process share. A case is built once per plate key, by the first
-/// worker that asks for it (the others wait for it), run by every worker whose case has that key
-/// (ImpactCase::run is const; what it builds lazily, the factors of finer steps and the contact-point
-/// response, is built once under a lock), and freed when the last worker holding it has moved on and
-/// another case has been built since (the newest is kept, so a worker that starts late, or comes back to
-/// it, does not build it again: at most one case more than the workers hold).
+/// The impact cases the workers of one process share. A case is built once per plate (same_plate,
+/// analysis/impact_case.hpp), by the first worker that asks for it (the others wait for it), run by every
+/// worker whose case has that plate (ImpactCase::run is const; what it builds lazily, the factors of finer
+/// steps and the contact-point response, is built once under a lock), and freed when the last worker
+/// holding it has moved on and another case has been built since (the newest is kept, so a worker that
+/// starts late, or comes back to it, does not build it again: at most one case more than the workers hold).
 class SharedImpactCases {
 public:
-  /// The case of `key`, built by `build` unless a worker holds it; `built` says whether this call built it.
-  std::shared_ptr<const ImpactCase>
-  get(const std::string& key, const std::function<std::unique_ptr<ImpactCase>()>& build, bool& built) {
+  /// The case of the plate of `description`, built by `build` unless a worker holds it; `built` says
+  /// whether this call built it.
+  std::shared_ptr<const ImpactCase> get(const ImpactCaseDescription& description,
+                                        const std::function<std::unique_ptr<ImpactCase>()>& build,
+                                        bool& built) {
     std::shared_ptr<Entry> entry;
     {
       const std::lock_guard lock(mutex_);
-      std::erase_if(entries_, [](const auto& e) { return e.second.expired(); });
-      entry = entries_[key].lock();
+      std::erase_if(entries_, [](const auto& e) { return e.expired(); });
+      for (const std::weak_ptr<Entry>& e : entries_) {
+        std::shared_ptr<Entry> held = e.lock();
+        if (held && same_plate(held->description, description)) entry = std::move(held);
+      }
       if (!entry) {
-        entry = std::make_shared<Entry>();
-        entries_[key] = entry;
+        entry = std::make_shared<Entry>(description);
+        entries_.push_back(entry);
         newest_ = entry;
       }
     }
@@ -331,16 +336,18 @@ public:
 
 private:
   struct Entry {
+    explicit Entry(ImpactCaseDescription d) : description(std::move(d)) {}
+    ImpactCaseDescription description;
     std::once_flag once;
     std::unique_ptr<ImpactCase> impact;
   };
   std::mutex mutex_;
-  std::map<std::string, std::weak_ptr<Entry>> entries_;
+  std::vector<std::weak_ptr<Entry>> entries_;
   std::shared_ptr<Entry> newest_;
 };
 
 struct SweepWorker::Cache {
-  std::string key;
+  ImpactCaseDescription description;
   std::shared_ptr<const ImpactCase> impact;
 };
 
@@ -432,19 +439,16 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
       ++factorizations_; // a finished search is recorded even after an interrupt: its result is whole
       return record;
     }
-    // Impact: reuse this worker's case (plate and factorization) when only the impactor (and auto k)
-    // differ: same plate key, resolved time step and graded mesh.
+    // Impact: reuse this worker's case (plate and factorization) when only what a run may change differs
+    // (same_plate: the impactor, the contact stiffness).
     const ImpactCaseDescription description = impact_case_description(deck);
-    const std::string key =
-        sweep_.plate_key(c) + fmt::format("\ndt = {}\nsize at impact = {}\n",
-                                          resolved_settings(description).dt, size_at_impact(description));
-    if (!options_.share_factorization || !cache_ || cache_->key != key) {
+    if (!options_.share_factorization || !cache_ || !same_plate(cache_->description, description)) {
       cache_.reset();
       const auto build = [&description] { return std::make_unique<ImpactCase>(description); };
       bool built = true;
-      cache_ = std::make_unique<Cache>(Cache{key, options_.share_factorization
-                                                      ? cases_.get(key, build, built)
-                                                      : std::shared_ptr<const ImpactCase>(build())});
+      cache_ = std::make_unique<Cache>(Cache{description, options_.share_factorization
+                                                              ? cases_.get(description, build, built)
+                                                              : std::shared_ptr<const ImpactCase>(build())});
       if (built) ++factorizations_;
     }
     ImpactRunOptions run;

@@ -82,7 +82,7 @@ private:
 
 /// Computes one case: its record (status "ok", "incomplete" or "failed" with the error message), or
 /// nullopt when the run was cancelled part-way. Keeps the last plate and factorization for the next
-/// case of the same plate and time step (Sweep::plate_key).
+/// case of the same plate and time step (same_plate, analysis/impact_case.hpp).
 class SweepWorker {
 public:
   /// `cases`: the plates this worker shares with the other workers of its process (with

@@ -551,17 +551,4 @@ Deck Sweep::deck_for(const SweepCase& c) const {
   return parse_deck_table(t, serialize(t), impl_->source);
 }
 
-std::string Sweep::plate_key(const SweepCase& c) const {
-  toml::table t = impl_->table_for(c);
-  for (const char* name : {"impactor", "title", "analysis", "threshold"})
-    t.erase(name);
-  if (toml::table* contact = t.get_as<toml::table>("contact")) contact->erase("k");
-  // The onset criteria only watch the run; the progressive damage model (model, viscosity, alpha, …)
-  // makes the plate and its step policy, so it stays in the key.
-  if (toml::table* damage = t.get_as<toml::table>("damage"))
-    for (const char* name : {"criteria", "every", "delamination_ply_n"})
-      damage->erase(name);
-  return serialize(t);
-}
-
 } // namespace plyimpact

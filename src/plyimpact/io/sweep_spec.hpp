@@ -101,9 +101,6 @@ public:
   [[nodiscard]] SweepCase case_at(std::size_t index) const;
   /// The deck of one case. Throws DeckError when the combination of values is not a valid deck.
   [[nodiscard]] Deck deck_for(const SweepCase& c) const;
-  /// The deck of one case with the [impactor] table, contact.k and the analysis-only tables left out
-  /// (plus the resolved time step): cases with equal keys can share one factorization of K̄.
-  [[nodiscard]] std::string plate_key(const SweepCase& c) const;
   /// 16 hex digits identifying the base deck (its TOML content, not its comments) and the sweep
   /// spec: a sweep may be resumed only with the same fingerprint.
   [[nodiscard]] const std::string& fingerprint() const;

@@ -34,6 +34,7 @@ struct CohesiveParameters {
   double G_IIc = 0.0;             ///< mode II (shear) fracture toughness [J/m²]
   double bk_exponent = 0.0;       ///< η of Benzeggagh & Kenane 1996 [-]
   CohesiveOnset onset = CohesiveOnset::turon_bk;
+  friend bool operator==(const CohesiveParameters&, const CohesiveParameters&) = default;
 };
 
 /// The history of one integration point: the damage d ∈ [0, 1], which never decreases, and the

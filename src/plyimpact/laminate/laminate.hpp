@@ -16,6 +16,7 @@ struct Ply {
   double angle_deg = 0.0;
   double thickness = 0.0;   ///< [m]
   std::size_t material = 0; ///< index into Laminate::materials()
+  friend bool operator==(const Ply&, const Ply&) = default;
 };
 
 /// In-plane engineering constants of the laminate from A⁻¹·h.
@@ -55,6 +56,11 @@ public:
   /// Mass moments I0 [kg/m²], I1 [kg/m], I2 [kg] (2.109).
   [[nodiscard]] const std::array<double, 3>& inertia() const { return inertia_; }
 
+  /// The same materials, plies, shear correction and stiffness model (what the laminate is built from).
+  friend bool operator==(const Laminate& a, const Laminate& b) {
+    return a.materials_ == b.materials_ && a.plies_ == b.plies_ &&
+           a.shear_correction_ == b.shear_correction_ && a.model_ == b.model_;
+  }
   [[nodiscard]] EngineeringConstants engineering_constants() const;
   /// B = 0 relative to A·h (a symmetric stacking of identical plies gives exactly 0 up to round-off).
   [[nodiscard]] bool is_symmetric(double rel_tol = 1e-10) const;

@@ -16,6 +16,7 @@ struct Strengths {
   std::optional<double> S23; ///< transverse shear strength S_T (S_i of Choi–Chang) [Pa]
   std::optional<double> Zt;  ///< through-thickness tension [Pa]
   std::optional<double> Da;  ///< Choi–Chang delamination constant (2.43) [-]
+  friend bool operator==(const Strengths&, const Strengths&) = default;
 };
 
 /// Intralaminar fracture toughnesses of the ply, one per Hashin failure mode, for the progressive
@@ -27,6 +28,7 @@ struct FractureToughness {
   std::optional<double> G_fc; ///< fibre compression (kink band) [J/m²]
   std::optional<double> G_mt; ///< matrix tension (intralaminar, transverse tension / in-plane shear) [J/m²]
   std::optional<double> G_mc; ///< matrix compression (intralaminar, transverse compression) [J/m²]
+  friend bool operator==(const FractureToughness&, const FractureToughness&) = default;
 };
 
 /// Transversely isotropic / orthotropic ply material (SI).
@@ -44,6 +46,7 @@ struct Material {
 
   /// Minor Poisson ratio ν21 = ν12·E2/E1 (1.3).
   [[nodiscard]] double nu21() const { return nu12 * E2 / E1; }
+  friend bool operator==(const Material&, const Material&) = default;
 };
 
 } // namespace plyimpact

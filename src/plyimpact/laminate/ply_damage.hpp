@@ -91,6 +91,7 @@ struct PlyDamageOptions {
   double alpha = 0.0;
   /// η [s], time constant of the viscous regularisation; 0 = rate independent.
   double viscosity = 0.0;
+  friend bool operator==(const PlyDamageOptions&, const PlyDamageOptions&) = default;
 };
 
 /// What one increment returns to a structure: the state, stresses and secant stiffnesses, and the
