@@ -2,14 +2,17 @@
 // damage_elements.csv hold the plies' damage of the run itself — the last frame and the file equal the
 // result's element_ply_damage value for value, elements the run never lists are zero, and damage_max is
 // the largest over plies and modes — on the shipped example examples/damage-progressive.toml.
+#include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_run.hpp"
 #include "plyimpact/io/ply_damage_maps.hpp"
+#include "support/impact_decks.hpp"
 #include "test_paths.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
@@ -56,14 +59,57 @@ std::vector<std::string> pvd_files(const fs::path& pvd) {
   return files;
 }
 
-TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamageElementsCsv) {
-  const Deck deck = parse_deck(example_text() + "[output]\nvtk_every = 100\n", "damage-progressive.toml");
-  const ImpactCase impact(impact_case_description(deck));
-  const fs::path dir = fs::temp_directory_path() / "plyimpact-impact-run-progressive";
+/// Options that write a run's results, without the gnuplot maps, into the empty folder `name` under the
+/// system's temporary folder.
+ImpactRunOptions into_scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
   fs::remove_all(dir);
   ImpactRunOptions options;
   options.output_dir = dir;
   options.pictures = false;
+  return options;
+}
+
+TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {
+  // At 3 m/s and 1.75 µs many points soften at once and the iterated secant stops converging
+  // (test_progressive_impact.cpp): the results up to the last accepted step are written, summary.json
+  // last and marked incomplete, and the run then ends in the solver's error naming the folder.
+  const std::string text =
+      test::with_key(test::with_key(test::example_text("damage-progressive-lagged.toml"), "dt", "1.75e-6"),
+                     "integration", "\"implicit\"");
+  const Deck deck = parse_deck(text, "failing.toml");
+  const ImpactCase impact(impact_case_description(deck));
+  const ImpactRunOptions options = into_scratch("plyimpact-failed-run");
+  const fs::path dir = *options.output_dir;
+  std::string what;
+  try {
+    (void)run_impact(deck, impact, options);
+    ADD_FAILURE() << "expected NewtonFailure";
+  } catch (const NewtonFailure& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("progressive damage:"), std::string::npos) << what;
+  EXPECT_NE(what.find(dir.string()), std::string::npos) << what;
+  std::ifstream in(dir / "summary.json");
+  ASSERT_TRUE(in.good());
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_FALSE(summary["complete"].get<bool>());
+  EXPECT_NE(summary["stop_reason"].get<std::string>().find("progressive damage:"), std::string::npos);
+  const long steps = summary["steps"].get<long>();
+  EXPECT_GT(steps, 0);
+  EXPECT_TRUE(fs::exists(dir / "report.html"));
+  std::ifstream history(dir / "history.csv");
+  long rows = -1; // the header
+  for (std::string line; std::getline(history, line);)
+    ++rows;
+  EXPECT_EQ(rows, steps + 1); // t = 0 and every accepted step
+}
+
+TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamageElementsCsv) {
+  const Deck deck = parse_deck(example_text() + "[output]\nvtk_every = 100\n", "damage-progressive.toml");
+  const ImpactCase impact(impact_case_description(deck));
+  const ImpactRunOptions options = into_scratch("plyimpact-impact-run-progressive");
+  const fs::path dir = *options.output_dir;
   const ImpactRunOutcome out = run_impact(deck, impact, options);
   ASSERT_TRUE(out.result.progressive.has_value());
   const std::vector<ElementPlyDamage>& list = out.result.progressive->element_ply_damage;

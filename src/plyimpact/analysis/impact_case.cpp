@@ -279,6 +279,7 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   loop.adaptive = settings_.adaptive;
   loop.fundamental_period = fundamental_period_;
   loop.cancel = request.cancel;
+  loop.keep_failed_run = request.keep_failed_run;
   loop.contact_point_response = request.contact_point_response && request.observers.empty() &&
                                 request.history_every == 0 && request.field_times.empty();
   if (!settings_.rigid_target && !settings_.nonlinear)

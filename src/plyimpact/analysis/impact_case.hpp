@@ -124,6 +124,10 @@ struct RunRequest {
   /// linear plate under a point load, the trapezoidal rule, fixed Δt. Only when nothing looks at the
   /// plate: no observers, no history, no fields. ImpactResult::contact_point_response says whether it was.
   bool contact_point_response = false;
+  /// A step that cannot be solved (NewtonFailure: the iterations stop converging, the explicit step turns
+  /// unstable) ends the run with what it has computed, ImpactResult::failure saying why, instead of
+  /// throwing: for io/impact_run.cpp, which writes the results and then reports the failure.
+  bool keep_failed_run = false;
 };
 
 class ImpactCase {

@@ -2,6 +2,7 @@
 
 #include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/time_step_control.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 
@@ -283,27 +284,36 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     //    error control asks for one.
     ContactSolution cs;
     const NewmarkCoefficients* step_nc = &nc;
-    for (;;) {
-      if (control) {
-        if (s.end) control->end_by(*s.end);
-        plate->set_time_step_level(control->level());
-        impactor.set_coefficients(control->coefficients());
-        step_nc = &control->coefficients();
-        t = control->step_end_time();
-      } else {
-        t = static_cast<double>(step) * s.dt;
+    const double t_accepted = t;
+    try {
+      for (;;) {
+        if (control) {
+          if (s.end) control->end_by(*s.end);
+          plate->set_time_step_level(control->level());
+          impactor.set_coefficients(control->coefficients());
+          step_nc = &control->coefficients();
+          t = control->step_end_time();
+        } else {
+          t = static_cast<double>(step) * s.dt;
+        }
+        cs = plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
+        plate->next_acceleration(*step_nc, state, u_next, a_next);
+        if (!control) break;
+        if (cs.force == 0.0 && force == 0.0) { // out of contact: nothing to control
+          control->accept_free_flight();
+          break;
+        }
+        if (control->accept(control->indentation_errors(impactor.acceleration(), -cs.force / imp.mass,
+                                                        plate->contact_deflection(state.a),
+                                                        plate->contact_deflection(a_next))))
+          break;
       }
-      cs = plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
-      plate->next_acceleration(*step_nc, state, u_next, a_next);
-      if (!control) break;
-      if (cs.force == 0.0 && force == 0.0) { // out of contact: nothing to control
-        control->accept_free_flight();
-        break;
-      }
-      if (control->accept(control->indentation_errors(impactor.acceleration(), -cs.force / imp.mass,
-                                                      plate->contact_deflection(state.a),
-                                                      plate->contact_deflection(a_next))))
-        break;
+    } catch (const NewtonFailure& e) { // the run ends at the last accepted step, what it computed kept
+      if (!s.keep_failed_run) throw;
+      r.failure = r.stop_reason = e.what();
+      --step;
+      t = t_accepted;
+      break;
     }
     r.newton_iterations_max = std::max(r.newton_iterations_max, cs.iterations);
     const double force_old = force, alpha_old = alpha;

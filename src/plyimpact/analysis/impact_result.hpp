@@ -111,6 +111,9 @@ struct ImpactResult {
   bool complete = false;
   std::string stop_reason;       ///< why the run stopped before its end (step limit, interrupt)
   std::string incomplete_reason; ///< why `complete` is false (empty when it is true)
+  /// The step that could not be solved, where the run was asked to keep its results (RunRequest::
+  /// keep_failed_run); also its stop_reason. Empty otherwise.
+  std::string failure;
   /// |½ m v0² − (impactor kinetic + plate kinetic + plate strain + damage dissipation + contact work)| at
   /// the end, as a
   /// fraction of ½ m v0² (impact_loop.hpp, energy_balance_tolerance).

@@ -1,5 +1,6 @@
 #include "plyimpact/io/impact_run.hpp"
 
+#include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/recorders.hpp"
 #include "plyimpact/analysis/stress_probe.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
@@ -13,7 +14,11 @@
 #include "plyimpact/io/results.hpp"
 #include "plyimpact/io/vtk_output.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace plyimpact {
@@ -90,6 +95,16 @@ HistoryLayout history_layout_of(const Deck& deck, const ImpactSettings& s) {
   return layout;
 }
 
+/// A run whose step could not be solved, its results written (to `dir`, where there is one), ends in the
+/// solver's error (NewtonFailure), its message saying where the results are.
+void report_failure(const ImpactResult& r, const std::optional<std::filesystem::path>& dir) {
+  if (r.failure.empty()) return;
+  if (!dir) throw NewtonFailure(r.failure);
+  throw NewtonFailure(fmt::format("{}; the results up to t = {:.6g} s (step {}) are in {}, marked "
+                                  "\"complete\": false",
+                                  r.failure, r.end_time, r.steps, dir->string()));
+}
+
 } // namespace
 
 const char* plate_response_name(const ImpactResult& result) {
@@ -116,6 +131,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   run.history_every = 0; // history.csv is streamed to the folder below, never kept in memory
   run.field_times = deck.field_times;
   run.observers = options.observers;
+  run.keep_failed_run = true; // written below, then reported (report_failure)
   // ImpactCase::run checks the rest (no observers, no history, no fields)
   run.contact_point_response = options.contact_point_response && !options.output_dir;
   std::optional<DamageTracker> damage;
@@ -153,7 +169,10 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
     for (const auto& f : out.first_failures)
       out.summary["first_failures"].push_back(onset_json(f));
   }
-  if (!folder) return out;
+  if (!folder) {
+    report_failure(out.result, std::nullopt);
+    return out;
+  }
 
   if (damage) {
     folder->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
@@ -187,6 +206,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
                                  out.notes};
   folder->write_text("report.html", impact_report_html(report));
   write_impact_results(*folder, &model, out.result, out.summary);
+  report_failure(out.result, folder->path());
   return out;
 }
 
