@@ -3,7 +3,7 @@
 // "explicit" against the implicit Newmark runs of the same semi-discrete equations (two second-order
 // schemes: where both are converged in Δt, their peak forces agree), the energy balance that central
 // differences close, and the automatic step.
-#include "plyimpact/analysis/central_difference.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
 #include "support/impact_decks.hpp"
 
 #include <fmt/format.h>

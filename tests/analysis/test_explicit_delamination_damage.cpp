@@ -6,7 +6,6 @@
 // the plies' and the interfaces' dissipation close one energy balance; the sub-laminates' plies are
 // reported as the laminate's plies, their projected area as the union over all of them; iterating both
 // laws within the step is refused with the setting to use.
-#include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "support/impact_decks.hpp"

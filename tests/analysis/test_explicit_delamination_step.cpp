@@ -3,7 +3,6 @@
 // elements with the lumped mass. The step is the stack's stable step; the run follows the lagged implicit
 // step while the interfaces soften and crack, keeps the energy to round-off, and runs past the impactor's
 // departure, where the Newton policy's steps cost ~15 times more (docs/delamination.md).
-#include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/stacked_plate.hpp"

@@ -1,14 +1,25 @@
-// Central differences on a lumped mass for any plate model (central_difference.hpp: CD1 to CD6), written
-// once against the model interface of fem/mechanical_model.hpp: the elastic plate, the von Kármán plate,
-// the plate whose plies crack and the stacked plate whose interfaces delaminate (stacked_model.cpp), as
-// Abaqus/Explicit, LS-DYNA and OpenRadioss run them. The model's internal force is evaluated once per
-// step, at u_{n+1} (CD3), from the state committed at the step before.
+// Explicit central differences on a lumped mass for any plate model, written once against the model
+// interface of fem/mechanical_model.hpp (the elastic, von Kármán, cracking and stacked plates), as
+// Abaqus/Explicit, LS-DYNA and OpenRadioss run them:
+//
+//   u_{n+1} = uₙ + Δt vₙ + ½Δt² aₙ                                    (CD1: Newmark with β = 0)
+//   Fc_{n+1} = F(α),  α = w_i,n+1 − sᵀu_{n+1}                         (CD2: u_{n+1} does not depend on
+//                                                                       Fc_{n+1}; the plate's contact
+//                                                                       compliance is 0)
+//   a_{n+1} = M⁻¹ (Fc_{n+1} s_load − f_int(u_{n+1}))                   (CD3: the law once, at u_{n+1}, from
+//                                                                       the state committed before)
+//   v_{n+1} = vₙ + ½Δt (aₙ + a_{n+1})                                  (CD4: γ = ½, the time loop's update)
+//
+// Stability: the undamped central-difference step is stable for Δt ω_max < 2, ω_max the highest
+// frequency of K₀ φ = ω² M φ with K₀ the undamaged stiffness (damage only lowers it). A policy refuses
+// Δt > 0.9 · 2/ω_max (CD5); the contact spring adds ω_c² = k_c sᵀM⁻¹s at the impact point, which each
+// step checks with the secant k_c of the contact law (CD6), stopping the run, with the step to use, where
+// Δt √(ω_max² + ω_c²) > 2.
 //
 // Nothing is solved or iterated, so no step can stall where many points soften at once (the implicit
 // damage step's limit, docs/progressive_damage.md), and a law sees each point's strain at the step's own
 // end. The impactor keeps its implicit Newmark update through the scalar contact problem of SPEC §4 with
 // the plate's compliance 0.
-#include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/model_stepper.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
@@ -65,52 +76,45 @@ private:
 /// Refuses, naming `key` (the deck key that chose central differences), a mass that is not diagonal with
 /// mass on every DOF, γ ≠ ½, and Δt above the stable step (CD5), ω_max of the model's initial stiffness
 /// unless the options give it (the case computed it for dt = "auto").
-class CentralDifferencePolicy final : public StepPolicy {
+class CentralDifferencePolicy final : public ModelPolicy {
 public:
   CentralDifferencePolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                           std::string key)
-      : model_(std::move(model)), options_(options), key_(std::move(key)), dt_(options.newmark.dt),
-        M_(model_->mass(), 1e-14), inverse_mass_(diagonal_mass(M_, key_).cwiseInverse()) {
+      : ModelPolicy(std::move(model), options), key_(std::move(key)),
+        inverse_mass_(diagonal_mass(M_, key_).cwiseInverse()),
+        omega_max_(options.explicit_omega_max
+                       ? *options.explicit_omega_max
+                       : highest_angular_frequency(model_->initial_stiffness(), M_.diagonal())) {
     if (options.newmark.gamma != 0.5)
       throw std::invalid_argument(fmt::format(
           "{} is central differences (gamma = 0.5), got [time] gamma = {}", key_, options.newmark.gamma));
-    omega_max_ = options.explicit_omega_max.value_or(0.0);
-    if (!options.explicit_omega_max)
-      omega_max_ = highest_angular_frequency(model_->initial_stiffness(), M_.diagonal());
     const double largest = stable_time_step(omega_max_);
-    if (dt_ > largest)
+    if (dt() > largest)
       throw std::invalid_argument(fmt::format(
           "{}: time.dt = {:.4g} s is above the stable step of this plate and mesh: set time.dt <= {:.4g} s, "
           "or dt = \"auto\" ({} x 2/omega_max, omega_max = {:.4g} rad/s; finer elements lower it)",
-          key_, dt_, largest, stable_step_fraction, omega_max_));
+          key_, dt(), largest, stable_step_fraction, omega_max_));
   }
 
-  [[nodiscard]] int equations() const override { return model_->size(); }
-  [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
-  [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<CentralDifferenceStepper>(*this, impactor);
   }
-  [[nodiscard]] std::vector<std::string> warnings() const override { return model_->warnings(); }
+  [[nodiscard]] double dt() const { return options_.newmark.dt; }
 
-  std::unique_ptr<const MechanicalModel> model_;
-  StepPolicyOptions options_;
   std::string key_;
-  double dt_;
-  MassOperator M_; ///< diagonal
-  Eigen::VectorXd inverse_mass_;
-  double omega_max_ = 0.0;
+  Eigen::VectorXd inverse_mass_; ///< of the mass M_, diagonal
+  double omega_max_;
 };
 
 CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy& policy,
                                                    const Impactor& impactor)
-    : ModelStepper(*policy.model_, policy.options_, impactor, policy.M_), p_(policy),
-      a_next_(Eigen::VectorXd::Zero(policy.equations())), force_(Eigen::VectorXd::Zero(policy.equations())),
+    : ModelStepper(policy, impactor), p_(policy), a_next_(Eigen::VectorXd::Zero(policy.equations())),
+      force_(Eigen::VectorXd::Zero(policy.equations())),
       contact_flexibility_(loading_.sampler().dot(policy.inverse_mass_.cwiseProduct(loading_.sampler()))) {}
 
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
                                                   const ContactStep& contact, Eigen::VectorXd& u_next) {
-  const double dt = p_.dt_;
+  const double dt = p_.dt();
   u_next = s.u + dt * s.v + (0.5 * dt * dt) * s.a;                               // CD1
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
   check_contact(step, t, cs, contact);                                           // CD6
@@ -130,11 +134,11 @@ void CentralDifferenceStepper::check_contact(long step, double t, const ContactS
   if (cs.force <= 0.0 || contact.previous_force() <= 0.0 || d_alpha == 0.0) return;
   const double k_secant = std::abs((cs.force - contact.previous_force()) / d_alpha);
   const double omega2 = p_.omega_max_ * p_.omega_max_ + k_secant * contact_flexibility_; // CD6
-  if (p_.dt_ * std::sqrt(omega2) <= 2.0) return;
+  if (p_.dt() * std::sqrt(omega2) <= 2.0) return;
   throw NewtonFailure(fmt::format(
       "{}: in step {} (t = {:.6g} s) the contact spring (secant stiffness {:.4g} N/m on the impact point's "
       "lumped mass) makes time.dt = {:.4g} s unstable: set time.dt <= {:.4g} s",
-      p_.key_, step, t, k_secant, p_.dt_, stable_time_step(std::sqrt(omega2))));
+      p_.key_, step, t, k_secant, p_.dt(), stable_time_step(std::sqrt(omega2))));
 }
 
 } // namespace
@@ -143,12 +147,8 @@ double stable_time_step(double omega_max) {
   return stable_step_fraction * 2.0 / omega_max;
 }
 
-double explicit_highest_frequency(const SparseMatrix& K0, const MassOperator& M, const std::string& key) {
-  return highest_angular_frequency(K0, diagonal_mass(M, key));
-}
-
 double explicit_highest_frequency(const MechanicalModel& model, const std::string& key) {
-  return explicit_highest_frequency(model.initial_stiffness(), MassOperator(model.mass(), 1e-14), key);
+  return highest_angular_frequency(model.initial_stiffness(), diagonal_mass(integrator_mass(model), key));
 }
 
 std::unique_ptr<StepPolicy> central_difference_step_policy(std::unique_ptr<const MechanicalModel> model,

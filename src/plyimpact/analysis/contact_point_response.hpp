@@ -58,7 +58,6 @@ public:
   ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
                           Eigen::VectorXd& u_next) override;
   void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
-  [[nodiscard]] bool contact_point_only() const override { return true; }
   /// 0: the split of the plate's energy is not known (strain_energy() holds all of it).
   [[nodiscard]] double kinetic_energy(const PlateState& /*s*/) const override { return 0.0; }
   /// The plate's whole mechanical energy ½vᵀMv + ½uᵀKu, from the work of the contact force.

@@ -1,8 +1,8 @@
 #include "plyimpact/analysis/impact_case.hpp"
 
 #include "plyimpact/analysis/capabilities.hpp"
-#include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/mesh_memory.hpp"
+#include "plyimpact/analysis/step_policy.hpp"
 
 #include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/analysis/guards.hpp"

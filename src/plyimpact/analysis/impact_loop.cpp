@@ -229,10 +229,12 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   }
   std::unique_ptr<PlateStepper> plate;
   if (s.contact_point_response && !control) plate = policy.start_at_contact_point(imp);
+  // The plate state (ws, ẇs, ẅs) of the contact point alone: no field, the plate's energy all strain.
+  const bool contact_point_only = plate != nullptr;
   if (!plate) plate = policy.start(imp);
   const auto equations = static_cast<Eigen::Index>(policy.equations());
   const bool rigid = equations == 0;
-  const Eigen::Index n = plate->contact_point_only() ? 1 : equations; // the state's size
+  const Eigen::Index n = contact_point_only ? 1 : equations; // the state's size
 
   HertzContact law(k, contact, contact_exponent(imp.nose));
   NewmarkStepper impactor(nc, imp.mass, 0.0, imp.velocity);
@@ -242,7 +244,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
   ImpactResult r;
   r.warnings = s.warnings;
   r.dofs = static_cast<int>(equations);
-  r.contact_point_response = plate->contact_point_only();
+  r.contact_point_response = contact_point_only;
   r.inplane_eliminated = policy.inplane_eliminated();
   const double e0 = 0.5 * imp.mass * imp.velocity * imp.velocity;
   double force = 0.0, alpha = 0.0, ws = 0.0, contact_work = 0.0, law_work = 0.0;

@@ -131,8 +131,7 @@ private:
     throw InsufficientMemory(fmt::format(
         "adaptive time steps: a factor of K̄ for the step {:.4g} s would make {} factors held ({} non-zeros "
         "each), about {:.3g} MB in all, but only {:.3g} MB are available: raise [time] tolerance, lower "
-        "levels "
-        "or use fixed steps",
+        "levels or use fixed steps",
         dt, held, factor_memory_.factor_nonzeros, bytes / 1e6, *options_.memory_limit_bytes / 1e6));
   }
 

@@ -8,18 +8,42 @@
 #include "plyimpact/fem/mechanical_model.hpp"
 
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace plyimpact {
 
+/// The model's mass as the integrators apply it: the lumped mass is diagonal when I1 = 0, and a symmetric
+/// layup gives I1 at round-off level (~1e-20), whose u–θ entries are dropped rather than turning every
+/// M·x into a sparse product.
+[[nodiscard]] inline MassOperator integrator_mass(const MechanicalModel& model) {
+  return {model.mass(), 1e-14};
+}
+
+/// What the policy of every integrator written against the model holds for its runs: the model, the
+/// options and the mass, built once per case.
+class ModelPolicy : public StepPolicy {
+public:
+  ModelPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options)
+      : model_(std::move(model)), options_(options), M_(integrator_mass(*model_)) {}
+  [[nodiscard]] int equations() const override { return model_->size(); }
+  [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
+  [[nodiscard]] std::vector<std::string> warnings() const override { return model_->warnings(); }
+
+  std::unique_ptr<const MechanicalModel> model_;
+  StepPolicyOptions options_;
+  MassOperator M_;
+};
+
 class ModelStepper : public PlateStepper {
 public:
-  /// `M`: the model's mass as the integrator applies it (the policy's, outliving the run).
-  ModelStepper(const MechanicalModel& model, const StepPolicyOptions& options, const Impactor& impactor,
-               const MassOperator& M)
-      : model_(model),
-        loading_(model.contact_plate(), model.contact_equations(), impactor, options.load, model.size()),
-        state_(model.virgin_state()), f_int_(Eigen::VectorXd::Zero(model.size())), M_(M),
-        scratch_(model.size()) {}
+  /// `policy` outlives the run.
+  ModelStepper(const ModelPolicy& policy, const Impactor& impactor)
+      : model_(*policy.model_), loading_(model_.contact_plate(), model_.contact_equations(), impactor,
+                                         policy.options_.load, model_.size()),
+        state_(model_.virgin_state()), f_int_(Eigen::VectorXd::Zero(model_.size())), M_(policy.M_),
+        scratch_(model_.size()) {}
 
   /// The trial of the accepted step, whose force f_int_ holds, is committed.
   void accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) override {

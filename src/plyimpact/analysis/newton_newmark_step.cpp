@@ -29,7 +29,6 @@
 #include "plyimpact/analysis/contact_iteration.hpp"
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/model_stepper.hpp"
-#include "plyimpact/analysis/newton_solver.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
@@ -70,7 +69,6 @@ private:
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
   /// The refreshes due before step `step` from uₙ = `u`.
   void refresh_before(long step, const Eigen::VectorXd& u);
-  [[noreturn]] void fail(const std::string& what, long step, double t) const;
   /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n, f(u_n) − Fc_n s_n, into
   /// start_.
   void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
@@ -90,14 +88,12 @@ private:
   Eigen::VectorXd u_start_;    ///< where the last correction started (the halving line search)
 };
 
-class NewtonNewmarkPolicy final : public StepPolicy {
+class NewtonNewmarkPolicy final : public ModelPolicy {
 public:
   NewtonNewmarkPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                       NewtonSettings settings)
-      : model_(std::move(model)), options_(options),
-        settings_(std::move(settings)), control_{settings_.max_iterations, settings_.refresh_ratio,
-                                                 settings_.refresh_after, settings_.refresh_every},
-        M_(model_->mass(), 1e-14), initial_(options.solver, options.ordering) {
+      : ModelPolicy(std::move(model), options), settings_(std::move(settings)),
+        initial_(options.solver, options.ordering) {
     const SparseMatrix Kbar = iteration_kbar(*model_->virgin_state(), Eigen::VectorXd::Zero(model_->size()));
     if (options.memory_limit_bytes)
       check_factor_memory(estimate_factor_memory(initial_, Kbar), *options.memory_limit_bytes);
@@ -105,39 +101,28 @@ public:
     initial_diagonal_ = Kbar.diagonal();
   }
 
-  [[nodiscard]] int equations() const override { return model_->size(); }
-  [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
     return std::make_unique<NewtonNewmarkStepper>(*this, impactor);
   }
-  [[nodiscard]] std::vector<std::string> warnings() const override { return model_->warnings(); }
   /// K̄ = K + c0 M at u, K the iteration matrix of `state`.
   [[nodiscard]] SparseMatrix iteration_kbar(const ModelState& state, const Eigen::VectorXd& u) const {
     return state.iteration_matrix(u) + options_.newmark.c0 * M_.matrix();
   }
 
-  std::unique_ptr<const MechanicalModel> model_;
-  StepPolicyOptions options_;
   NewtonSettings settings_;
-  NewtonControl control_; ///< of settings_
-  /// The lumped mass is diagonal when I1 = 0; a symmetric layup gives I1 at round-off level (~1e-20),
-  /// whose u–θ entries are dropped rather than turning every M·x into a sparse product.
-  MassOperator M_;
   SpdSolver initial_;                ///< K̄ of the virgin undeformed model, shared by the runs
   Eigen::VectorXd initial_diagonal_; ///< its diagonal
 };
 
 NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor)
-    : ModelStepper(*policy.model_, policy.options_, impactor, policy.M_), p_(policy),
-      factor_(policy.options_.solver, policy.options_.ordering), kbar_diagonal_(policy.initial_diagonal_),
-      start_(Eigen::VectorXd::Zero(policy.equations())),
+    : ModelStepper(policy, impactor), p_(policy), factor_(policy.options_.solver, policy.options_.ordering),
+      kbar_diagonal_(policy.initial_diagonal_), start_(Eigen::VectorXd::Zero(policy.equations())),
       previous_load_(Eigen::VectorXd::Zero(policy.equations())),
       two_point_(state_->two_point_form() && policy.options_.newmark.beta == 0.25 &&
                  policy.options_.newmark.gamma == 0.5),
       iteration_(policy.equations()) {
   factor_.adopt_analysis_of(policy.initial_);
   state_->use_two_point_form(two_point_);
-  state_->matrix_factorized(Eigen::VectorXd::Zero(policy.equations())); // the shared factor's state
   use_factor(Factor::shared);
   stats_.factorizations = 1; // the shared factor
   if (policy.settings_.max_halvings > 0) u_start_.resize(policy.equations());
@@ -228,12 +213,6 @@ void NewtonNewmarkStepper::step_start(const Eigen::VectorXd& u_n, const ContactS
   }
 }
 
-void NewtonNewmarkStepper::fail(const std::string& what, long step, double t) const {
-  const NewtonSettings& ns = p_.settings_;
-  throw NewtonFailure(
-      fmt::format("{}: {} in step {} (t = {:.6g} s); {}", ns.physics, what, step, t, ns.advice));
-}
-
 /// One step's Newton problem on (u, Fc) (the module comment): the iterate u_k of the contact iteration,
 /// the model's trial at it, the correction with the stepper's factor and the contact solved inside it.
 class NewtonNewmarkStepper::StepProblem final : public NewtonProblem {
@@ -309,8 +288,11 @@ ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateSt
                                               const ContactStep& contact, Eigen::VectorXd& u_next) {
   refresh_before(step, s.u);
   StepProblem problem(*this, s, contact);
-  const NewtonOutcome o = solve_newton(problem, p_.control_);
-  if (!o.converged) fail(o.why, step, t);
+  const NewtonSettings& ns = p_.settings_;
+  const NewtonOutcome o = solve_newton(problem, ns.control);
+  if (!o.converged)
+    throw NewtonFailure(
+        fmt::format("{}: {} in step {} (t = {:.6g} s); {}", ns.physics, o.why, step, t, ns.advice));
   needed_more_than_one_solve_ = o.corrections > 1;
   stats_.iterations += o.corrections;
   stats_.max_iterations_per_step = std::max(stats_.max_iterations_per_step, o.corrections);

@@ -79,7 +79,7 @@ enum class TimeIntegration {
   /// Newmark's implicit average acceleration (2.11)–(2.16): one factor of K̄ for the linear plate,
   /// Newton iterations for the others ([damage] and [delamination] choose implicit or lagged).
   newmark,
-  /// Explicit central differences on the lumped mass (analysis/central_difference.hpp): the model's
+  /// Explicit central differences on the lumped mass (analysis/central_difference_step.cpp): the model's
   /// internal force once per step, nothing solved, a step below the stable one 0.9 · 2/ω_max.
   central_difference,
 };

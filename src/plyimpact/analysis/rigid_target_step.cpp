@@ -23,7 +23,6 @@ class RigidTargetPolicy final : public StepPolicy {
 public:
   [[nodiscard]] int equations() const override { return 0; }
   [[nodiscard]] bool variable_time_step() const override { return true; }
-  [[nodiscard]] int factorizations() const override { return 0; }
   [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& /*impactor*/) const override {
     return std::make_unique<RigidStepper>();
   }

@@ -5,7 +5,6 @@
 // to cell is only how Newton iterates and what its messages advise, and the bound (DL5) on the implicit
 // steps of the stacked plate.
 #include "plyimpact/analysis/capabilities.hpp"
-#include "plyimpact/analysis/central_difference.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 #include "plyimpact/fem/stacked_model.hpp"
@@ -26,16 +25,12 @@ namespace {
 template <class PhysicsSettings>
 NewtonSettings newton_settings_of(const PhysicsSettings& s, std::string physics) {
   NewtonSettings ns;
-  ns.max_iterations = s.max_iterations;
+  ns.control.max_iterations = s.max_iterations;
   ns.residual_tolerance = s.residual_tolerance;
   ns.displacement_tolerance = s.displacement_tolerance;
-  ns.refresh_ratio = s.refresh_ratio;
+  ns.control.refresh_ratio = s.refresh_ratio;
   ns.physics = std::move(physics);
   return ns;
-}
-
-ModelKind model_kind(const PlatePhysics& p) {
-  return {false, p.large_deflection.has_value(), p.ply_damage.has_value(), p.interfaces.has_value()};
 }
 
 /// How Newton–Newmark iterates the stacked plate: with the delamination settings' iterations; where the
@@ -51,9 +46,9 @@ NewtonSettings stack_newton_settings(const PlatePhysics& p) {
                                              : p.ply_damage     ? "ply damage and delamination"
                                                                 : "delamination");
   if ((p.ply_damage || p.large_deflection) && ds.integration == DamageIntegration::lagged) {
-    ns.refresh_after = ds.refresh_after;
+    ns.control.refresh_after = ds.refresh_after;
   } else {
-    ns.refresh_every = ds.refresh_after;
+    ns.control.refresh_every = ds.refresh_after;
     ns.max_halvings = 6;
   }
   if (p.ply_damage && ds.integration == DamageIntegration::implicit)
@@ -84,7 +79,7 @@ NewtonSettings newton_settings(const PlatePhysics& p) {
     ns = damage_newton_settings(*p.ply_damage);
   } else {
     ns = newton_settings_of(*p.large_deflection, "non-linear impact");
-    ns.refresh_after = p.large_deflection->refresh_after;
+    ns.control.refresh_after = p.large_deflection->refresh_after;
   }
   if (p.large_deflection) ns.refresh_interval = p.large_deflection->refresh_interval;
   return ns;
@@ -113,7 +108,9 @@ std::string explicit_key(const PlatePhysics& p) {
 }
 
 std::unique_ptr<MechanicalModel> mechanical_model(const PlateModel& plate, const PlatePhysics& p) {
-  if (auto why = refusal(model_kind(p), p.integrator)) throw std::invalid_argument(*why); // capabilities.hpp
+  const ModelKind kind{false, p.large_deflection.has_value(), p.ply_damage.has_value(),
+                       p.interfaces.has_value()};
+  if (auto why = refusal(kind, p.integrator)) throw std::invalid_argument(*why); // capabilities.hpp
   std::optional<StrainMeasure> measure;
   if (p.large_deflection) measure = p.large_deflection->measure;
   if (p.ply_damage && measure && *measure != StrainMeasure::von_karman)

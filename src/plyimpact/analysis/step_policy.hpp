@@ -19,6 +19,7 @@
 #include "plyimpact/analysis/hertz_contact.hpp"
 #include "plyimpact/analysis/impact_result.hpp"
 #include "plyimpact/analysis/newmark.hpp"
+#include "plyimpact/analysis/newton_solver.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/mass_operator.hpp"
@@ -27,7 +28,6 @@
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/fem/stacked_model.hpp"
 
-#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -74,9 +74,6 @@ public:
   [[nodiscard]] virtual const ModelResults* results() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
-  /// True when the plate state is the contact point's alone, (ws, ẇs, ẅs) (contact_point_response.hpp):
-  /// no field, and the plate's energy all in strain_energy().
-  [[nodiscard]] virtual bool contact_point_only() const { return false; }
   /// u in the model's numbering.
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
   /// The next steps are Δt/2^level long, Δt of StepPolicyOptions::newmark (error-controlled runs, only
@@ -100,8 +97,8 @@ public:
   [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
   /// True when its steppers take set_time_step_level() (error-controlled time steps).
   [[nodiscard]] virtual bool variable_time_step() const { return false; }
-  /// Factorizations of K̄ done so far (one per time-step level used).
-  [[nodiscard]] virtual int factorizations() const { return 1; }
+  /// Factorizations of K̄ done so far for the error-controlled time steps (one per level used).
+  [[nodiscard]] virtual int factorizations() const { return 0; }
   /// The plate's fundamental period from the matrices the policy holds (empty: it holds none that give
   /// it; the case then assembles them, modal_analysis.hpp) [s].
   [[nodiscard]] virtual std::optional<double> fundamental_period() const { return std::nullopt; }
@@ -137,12 +134,9 @@ struct StepPolicyOptions {
                                                              const StepPolicyOptions& options);
 /// How Newton–Newmark iterates a step (newton_newmark_step.cpp).
 struct NewtonSettings {
-  int max_iterations = 30;              ///< solves per time step
+  NewtonControl control;                ///< solves per step, and when a step refactors (newton_solver.hpp)
   double residual_tolerance = 1e-4;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
   double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
-  double refresh_ratio = 0.25; ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
-  int refresh_after = std::numeric_limits<int>::max(); ///< … or when a step needs more solves
-  int refresh_every = 0; ///< … or after every this many solves of a step (0: never)
   /// At most every this many steps, refactor at uₙ after a step that needed more than one solve.
   std::optional<long> refresh_interval;
   /// A correction made with a run's own factor that does not lower the residual is halved up to this many
@@ -156,6 +150,17 @@ struct NewtonSettings {
 [[nodiscard]] std::unique_ptr<StepPolicy>
 newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                            NewtonSettings settings);
+/// CD5: the largest Δt accepted for a plate whose highest angular frequency is ω_max: 0.9 · 2/ω_max [s].
+[[nodiscard]] double stable_time_step(double omega_max);
+/// ω_max of K0 φ = ω² M φ, K0 `model`'s virgin undeformed stiffness and M its mass (the bound CD5 takes)
+/// [rad/s]. Throws std::invalid_argument, naming `key`, where M is not diagonal with mass on every DOF.
+[[nodiscard]] double explicit_highest_frequency(const MechanicalModel& model, const std::string& key);
+/// Central differences (CD1 to CD6) on any plate model with a diagonal mass: the one explicit integrator
+/// (central_difference_step.cpp). `key` is the deck key that chose it, for its messages. Throws
+/// std::invalid_argument where the mass is not diagonal or Δt of `options` is above the stable step.
+[[nodiscard]] std::unique_ptr<StepPolicy>
+central_difference_step_policy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
+                               std::string key);
 /// The largest time step for which the step of the stacked plate stays solvable where an interface point
 /// softens (docs/delamination.md, "Impact on the stacked plate"). The step's matrix for the opening of
 /// two neighbouring sub-laminates at a point is c0 m + K_T with c0 = 1/(β Δt²), m their reduced mass per
