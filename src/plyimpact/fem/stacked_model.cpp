@@ -107,7 +107,7 @@ StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettin
 
 StackedImpactPlate::StackedImpactPlate(const PlateModel& model, const DelaminationSettings& settings)
     : model_(model), settings_(settings), stack_(impact_stack(model, settings)),
-      top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass(), 1e-14),
+      top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass()),
       model_of_top_(top_equations_in_model(model, stack_)) {}
 
 std::vector<std::string> StackedImpactPlate::stack_warnings() const {
@@ -352,7 +352,7 @@ public:
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
     plate_.top_to_model(u, out);
   }
-  [[nodiscard]] const SparseMatrix& mass() const override { return plate_.M_.matrix(); }
+  [[nodiscard]] const SparseMatrix& mass() const override { return plate_.M_; }
   [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return initial_; }
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
     return std::make_unique<StackedState>(*this);

@@ -71,8 +71,8 @@ public:
   const PlateModel& model_;
   DelaminationSettings settings_;
   StackedPlateModel stack_;
-  EquationSubset top_equations_; ///< every equation of the top sub-laminate
-  MassOperator M_;
+  EquationSubset top_equations_;  ///< every equation of the top sub-laminate
+  SparseMatrix M_;                ///< the stack's mass, assembled once
   std::vector<int> model_of_top_; ///< model equation of each top sub-laminate equation (−1: none)
 };
 
