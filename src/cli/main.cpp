@@ -80,6 +80,7 @@ struct Options {
   bool strict = false;    ///< --strict: plausibility warnings of the deck are errors
   bool overwrite = false; ///< --overwrite: replace another run's results in the folder
   std::string command;    ///< this command line, recorded in the folder's lock
+  int threads = 0;        ///< --threads: the run's element loops (0: all cores)
 };
 
 /// The deck, checked for the analysis' sections and for the memory its mesh needs (before assembly);
@@ -161,6 +162,7 @@ int run_impact(const Options& o) {
   ImpactRunOptions options;
   options.output_dir = lock.dir();
   options.cancel = &interrupted;
+  options.threads = o.threads;
   ImpactProgress progress(impact.settings(), progress_style(o.progress, stderr), o.progress.line_interval_s);
   options.observers = {&progress};
   const ImpactRunOutcome run = run_impact(deck, impact, options);
@@ -302,6 +304,11 @@ int run(int argc, char** argv) {
   laminate->add_flag("--strict", o.strict, "treat the deck's plausibility warnings (unit slips) as errors");
   CLI::App* impact =
       add_analysis(app, "impact", "Impact of a rigid sphere: contact force, deflection, energies", o);
+  impact
+      ->add_option("--threads", o.threads,
+                   "threads of the element loops (ply damage); the results are the same bits for any "
+                   "number (default: all cores, or OMP_NUM_THREADS)")
+      ->check(CLI::Range(1, 1024));
   CLI::App* threshold = add_analysis(
       app, "threshold",
       "Smallest impact velocity at which a failure criterion first reaches 1 (or, with progressive "

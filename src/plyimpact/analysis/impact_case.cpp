@@ -8,6 +8,7 @@
 #include "plyimpact/analysis/guards.hpp"
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/recorders.hpp"
+#include "plyimpact/fem/element_loop.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 
 #include <fmt/format.h>
@@ -267,6 +268,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
 ImpactCase::~ImpactCase() = default;
 
 ImpactResult ImpactCase::run(const RunRequest& request) const {
+  const ElementThreads threads(request.threads);
   const Impactor imp = request.impactor.value_or(settings_.impactor);
   const double k = request.contact_stiffness.value_or(settings_.k);
   if (!(imp.mass > 0.0)) throw std::invalid_argument("impact: impactor mass must be positive");

@@ -128,6 +128,10 @@ struct RunRequest {
   /// unstable) ends the run with what it has computed, ImpactResult::failure saying why, instead of
   /// throwing: for io/impact_run.cpp, which writes the results and then reports the failure.
   bool keep_failed_run = false;
+  /// Threads of the run's element loops (fem/element_loop.hpp; the same bits for any number); 0: the
+  /// calling thread's OpenMP setting, all cores unless OMP_NUM_THREADS says otherwise (a sweep's workers
+  /// run theirs on one).
+  int threads = 0;
 };
 
 class ImpactCase {

@@ -1,5 +1,7 @@
 #include "plyimpact/fem/damaged_plate.hpp"
 
+#include "plyimpact/fem/element_loop.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -446,12 +448,13 @@ DamageField DamagedPlateModel::virgin_field() const {
   for (const Laminate& lam : model_.laminates())
     f.ply_area_.resize(std::max(f.ply_area_.size(), lam.ply_count()), 0.0);
   for (const std::vector<Group>& groups : groups_.front())
-    f.group_bound_.resize(std::max(f.group_bound_.size(), groups.size()));
+    f.groups_ = std::max(f.groups_, groups.size());
   return f;
 }
 
 DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u,
-                                                                    double dt, DamageField& field) const {
+                                                                    double dt, DamageField& field,
+                                                                    std::vector<double>& group_bound) const {
   DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
   const int section = model_.section_index(e);
   const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
@@ -493,11 +496,11 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
     SectionStiffness sec = empty_section();
     bool initiated = false;
     std::size_t index = first;
-    std::fill(field.group_bound_.begin(), field.group_bound_.end(), -1.0);
+    std::fill(group_bound.begin(), group_bound.end(), -1.0);
     // A virgin ply whose group is below every Hashin surface: the law would answer it elastically
     // (PlyDamageLaw::advance), so its state and the cached section terms stand for the call.
     const auto below_surfaces = [&](const PlyPoints& ply) {
-      double& bound = field.group_bound_[ply.group];
+      double& bound = group_bound[ply.group];
       if (bound < 0.0) bound = groups[ply.group].bound(strain.head<6>());
       return bound < 1.0;
     };
@@ -536,14 +539,14 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
   return strains;
 }
 
-void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t slot,
-                                          const PointStrains& strains, const Eigen::VectorXd& u,
-                                          Eigen::VectorXd& f) const {
+void DamagedPlateModel::section_force(DamageField& field, std::size_t slot, const PointStrains& strains,
+                                      const Eigen::VectorXd& u) const {
   const DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
   const ElementOperators& ops = operators_of(e);
   const Section8 C0 = as_matrix(model_.section(model_.section_index(e)).stiffness);
-  ElementVector fe = ElementVector::Zero();
+  ElementVector& fe = field.element_forces_[slot];
+  fe.setZero();
   bool changed = false;
   const ElementVector ue = von_karman_ ? model_.element_dofs(u, e) : ElementVector();
   for (std::size_t p = 0; p < 9; ++p) {
@@ -555,7 +558,28 @@ void DamagedPlateModel::add_section_force(const DamageField& field, std::size_t 
       fe.noalias() += ops.S[p].transpose() * (ops.w[p] * ((as_matrix(a.sections[p]) - C0) * strains[p]));
     changed = true;
   }
-  if (changed) scatter_add(f, model_.element_equations(e), fe);
+  field.force_changed_[slot] = changed ? 1 : 0;
+}
+
+template <class Sections>
+void DamagedPlateModel::assemble_force(const Eigen::VectorXd& u, DamageField& field, Eigen::VectorXd& f,
+                                       const Sections& sections) const {
+  elastic_force(u, f, field);
+  const std::size_t n = field.active_.size();
+  field.element_forces_.resize(n);
+  field.force_changed_.resize(n);
+  field.group_bounds_.resize(
+      std::max(field.group_bounds_.size(), static_cast<std::size_t>(element_threads())));
+  for (std::vector<double>& scratch : field.group_bounds_)
+    scratch.resize(field.groups_);
+  for_each_element(static_cast<int>(n), [&](int i) {
+    const auto slot = static_cast<std::size_t>(i);
+    std::vector<double>& group_bound = field.group_bounds_[static_cast<std::size_t>(omp_get_thread_num())];
+    section_force(field, slot, sections(slot, group_bound), u);
+  });
+  for (std::size_t slot = 0; slot < n; ++slot) // in slot order, as a loop on one thread adds them
+    if (field.force_changed_[slot] != 0)
+      scatter_add(f, model_.element_equations(field.active_[slot].element), field.element_forces_[slot]);
 }
 
 Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
@@ -567,9 +591,9 @@ Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, doub
 
 void DamagedPlateModel::internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field,
                                             Eigen::VectorXd& f) const {
-  elastic_force(u, f);
-  for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
-    add_section_force(field, slot, evaluate_element(field.active_[slot].element, u, dt, field), u, f);
+  assemble_force(u, field, f, [&](std::size_t slot, std::vector<double>& group_bound) {
+    return evaluate_element(field.active_[slot].element, u, dt, field, group_bound);
+  });
 }
 
 DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
@@ -596,7 +620,7 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
                                                           ply.strain_at(z, strains[p], root_k));
         if (a.modes[index] != c.modes) {
           a.modes[index] = static_cast<unsigned char>(c.modes);
-          field.modes_changed_ = true;
+          a.modes_changed = true;
         }
         ++index;
         ply.add_to(sec, z, k, c.in_plane, c.transverse_shear); // (DP1)
@@ -616,9 +640,11 @@ Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& 
 
 void DamagedPlateModel::frozen_internal_force_into(const Eigen::VectorXd& u, DamageField& field,
                                                    Eigen::VectorXd& f) const {
-  elastic_force(u, f);
-  for (std::size_t slot = 0; slot < field.active_.size(); ++slot)
-    add_section_force(field, slot, frozen_sections(field, slot, u), u, f);
+  assemble_force(u, field, f, [&](std::size_t slot, std::vector<double>& /*group_bound*/) {
+    return frozen_sections(field, slot, u);
+  });
+  for (DamageField::ActiveElement& a : field.active_)
+    field.modes_changed_ = std::exchange(a.modes_changed, false) || field.modes_changed_;
 }
 
 SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const {
@@ -627,11 +653,12 @@ SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const
   return K;
 }
 
-void DamagedPlateModel::elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+void DamagedPlateModel::elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
+                                      DamageField& field) const {
   if (von_karman_)
-    von_karman_->internal_force(u, f);
+    von_karman_->internal_force(u, f, field.elastic_forces_);
   else
-    f.noalias() = K0_by_rows_ * u;
+    parallel_rows_product(K0_by_rows_, u, f);
 }
 
 SparseMatrix DamagedPlateModel::iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const {
@@ -725,11 +752,13 @@ int DamagedPlateModel::screen(const Eigen::VectorXd& u, DamageField& field) cons
 bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
   // One pass over the inactive elements per step: their bounds at the converged u serve commit() too.
   bool reached = false;
+  for_each_element(model_.mesh().element_count(), [&](int e) {
+    if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0)
+      field.bound_[static_cast<std::size_t>(e)] = element_bound(e, u);
+  });
   for (int e = 0; e < model_.mesh().element_count(); ++e) {
     if (field.slot_of_element_[static_cast<std::size_t>(e)] >= 0) continue;
-    const double bound = element_bound(e, u);
-    field.bound_[static_cast<std::size_t>(e)] = bound;
-    if (bound >= 1.0) {
+    if (field.bound_[static_cast<std::size_t>(e)] >= 1.0) {
       activate(e, field);
       reached = true;
     }

@@ -200,19 +200,28 @@ private:
   /// The sections of active element `slot` at u with the committed damage (the lagged step); returns the
   /// strains of its damaged points (the others are left unset: their section is the undamaged one).
   PointStrains frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;
-  /// Adds E_pᵀ w (C(d) − C0) ε_p (E_p = S_p with linear kinematics) of element `slot`'s damaged points (its
-  /// sections as they stand) to f.
-  void add_section_force(const DamageField& field, std::size_t slot, const PointStrains& strains,
-                         const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
+  /// E_pᵀ w (C(d) − C0) ε_p (E_p = S_p with linear kinematics) summed over element `slot`'s damaged points
+  /// (its sections as they stand) into its slot of the field's element forces.
+  void section_force(DamageField& field, std::size_t slot, const PointStrains& strains,
+                     const Eigen::VectorXd& u) const;
+  /// f = the undamaged plate's force at u plus every active element's section force, the elements'
+  /// `sections(slot, group_bound)` (which sets their sections and returns their strains) evaluated on the
+  /// run's threads and added in slot order (element_loop.hpp).
+  template <class Sections>
+  void assemble_force(const Eigen::VectorXd& u, DamageField& field, Eigen::VectorXd& f,
+                      const Sections& sections) const;
   /// Adds to K, in K0's pattern, the damaged points' Σ E_pᵀ w (C(d) − C0) E_p of every active element
   /// (E_p = S_p where `u` is null; else von Kármán's at u with the initial-stress term of the difference's
   /// membrane resultants, 2.103).
   void add_section_differences(SparseMatrix& K, const DamageField& field, const Eigen::VectorXd* u) const;
-  /// The force of the undamaged plate at u: K0 u, or the von Kármán plate's f_int(u).
-  void elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
+  /// The force of the undamaged plate at u: K0 u, or the von Kármán plate's f_int(u) (its element loop's
+  /// places in `field`).
+  void elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f, DamageField& field) const;
   /// The law at every point of active element e at u (trial states and secant sections into `field`);
   /// returns the points' strains, from which internal_force() forms the element force.
-  PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field) const;
+  /// `group_bound`: scratch of the calling thread (the point's bound of each ply group, −1: not computed).
+  PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field,
+                                std::vector<double>& group_bound) const;
   /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
   /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
   [[nodiscard]] static double hashin_bound(const std::vector<Group>& groups,
@@ -319,14 +328,19 @@ private:
     std::array<bool, 9> pristine{true, true, true, true, true, true, true, true, true};
     std::array<bool, 9> pristine_trial{true, true, true, true, true, true, true, true, true};
     std::array<bool, 9> trial_touched{}; ///< the trial states of point p differ from the committed ones
+    bool modes_changed = false;          ///< the last lagged evaluation changed the loaded modes
   };
   std::vector<ActiveElement> active_;
   std::vector<int> slot_of_element_; ///< index into active_, −1 when inactive
   std::vector<double> bound_;        ///< Hashin bound of each inactive element at the last screen
-  /// the point's bound of each ply group, while one point is evaluated (−1: not yet computed)
-  std::vector<double> group_bound_;
-  Eigen::VectorXd u_committed_; ///< displacement of the last commit
-  bool bounds_current_ = false; ///< bound_ was computed at the u being committed
+  /// per thread of the element loop: the point's bound of each ply group, while one point is evaluated
+  std::vector<std::vector<double>> group_bounds_;
+  std::size_t groups_ = 0;                    ///< the most ply groups of a section
+  std::vector<ElementVector> element_forces_; ///< per active element: its section force (section_force)
+  std::vector<char> force_changed_;           ///< … and whether it has one (a damaged point)
+  std::vector<ElementVector> elastic_forces_; ///< the von Kármán element loop's places (elastic_force)
+  Eigen::VectorXd u_committed_;               ///< displacement of the last commit
+  bool bounds_current_ = false;               ///< bound_ was computed at the u being committed
   PerDamageMode dissipated_;
   double stored_energy_ = 0.0;
   std::vector<double> ply_area_;

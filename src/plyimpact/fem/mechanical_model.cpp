@@ -69,7 +69,7 @@ class VonKarmanState final : public ModelState {
 public:
   explicit VonKarmanState(const NonlinearPlateModel& plate) : plate_(plate), work_(plate.size()) {}
   void internal_force(const Eigen::VectorXd& u, double /*dt*/, Eigen::VectorXd& f) override {
-    plate_.internal_force(u, f);
+    plate_.internal_force(u, f, element_forces_);
   }
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override {
     return plate_.tangent_stiffness(u); // K_T(u), consistent: quadratic convergence
@@ -80,6 +80,7 @@ public:
 private:
   const NonlinearPlateModel& plate_;
   WorkOfInternalForces work_;
+  std::vector<ElementVector> element_forces_; ///< the element loop's places (NonlinearPlateModel)
 };
 
 class VonKarmanPlate final : public MechanicalModel {

@@ -1,5 +1,7 @@
 #include "plyimpact/fem/nonlinear_plate_model.hpp"
 
+#include "plyimpact/fem/element_loop.hpp"
+
 #include <algorithm>
 #include <map>
 
@@ -27,11 +29,21 @@ Eigen::VectorXd NonlinearPlateModel::internal_force(const Eigen::VectorXd& u) co
 }
 
 void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+  std::vector<ElementVector> element_forces;
+  internal_force(u, f, element_forces);
+}
+
+void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
+                                         std::vector<ElementVector>& element_forces) const {
+  const int elements = model_.mesh().element_count();
+  element_forces.resize(static_cast<std::size_t>(elements));
+  for_each_element(elements, [&](int e) {
+    element_forces[static_cast<std::size_t>(e)] =
+        element_.internal_force(geometry_of(e), section_of(e), gather(u, model_.element_equations(e)));
+  });
   f.setZero(model_.size());
-  for (int e = 0; e < model_.mesh().element_count(); ++e) {
-    const ElementEquations& eq = model_.element_equations(e);
-    scatter_add(f, eq, element_.internal_force(geometry_of(e), section_of(e), gather(u, eq)));
-  }
+  for (int e = 0; e < elements; ++e) // in element order, as a loop on one thread adds them
+    scatter_add(f, model_.element_equations(e), element_forces[static_cast<std::size_t>(e)]);
 }
 
 SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) const {

@@ -21,6 +21,10 @@ public:
   [[nodiscard]] Eigen::VectorXd internal_force(const Eigen::VectorXd& u) const;
   /// internal_force(u) into `f` (sized once by the caller): the same numbers without a new vector.
   void internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
+  /// … with the elements on the run's threads, `element_forces` (one per element, sized here on first use)
+  /// their places, added in element order: the same bits for any number of threads (element_loop.hpp).
+  void internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
+                      std::vector<ElementVector>& element_forces) const;
   /// K_T(u) = ∂f_int/∂u, same pattern as PlateModel::stiffness().
   [[nodiscard]] SparseMatrix tangent_stiffness(const Eigen::VectorXd& u) const;
 

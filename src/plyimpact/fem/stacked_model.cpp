@@ -36,6 +36,8 @@
 // von Kármán laminate (tests/analysis/test_stacked_von_karman.cpp).
 #include "plyimpact/fem/stacked_model.hpp"
 
+#include "plyimpact/fem/element_loop.hpp"
+
 #include "plyimpact/fem/nonlinear_plate_model.hpp"
 #include "plyimpact/fem/stacked_damage.hpp"
 
@@ -309,8 +311,9 @@ private:
   // With ply damage, per sub-laminate: its damage field, its part of u and its force.
   std::vector<DamageField> fields_;
   std::vector<Eigen::VectorXd> u_parts_, f_parts_;
-  std::optional<StackedDamageField> plies_; ///< the fields seen as the laminate's plies
-  double dt_ = 0.0;                         ///< of the last trial (the laws' viscous time at a commit)
+  std::vector<std::vector<ElementVector>> element_forces_; ///< per part: the von Kármán element loop's places
+  std::optional<StackedDamageField> plies_;                ///< the fields seen as the laminate's plies
+  double dt_ = 0.0;       ///< of the last trial (the laws' viscous time at a commit)
   bool two_point_ = true; ///< lagged: the integrator solves the trapezoid's two-point form (DL7)
   // The lagged linear stack's factor updates (DL8): each interface point's tangent in the factor, the
   // changes of the last matrix_change(), the rank-one terms since the factorization.
@@ -394,6 +397,7 @@ StackedState::StackedState(const StackedModel& model)
   for (const auto& part : m_.von_karman_) {
     u_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
     f_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
+    element_forces_.emplace_back();
   }
   if (m_.damaged_.empty()) return;
   for (int k = 0; k < stack.sublaminate_count(); ++k) {
@@ -437,10 +441,11 @@ bool StackedState::updates_factor() const {
 
 void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
   if (!m_.von_karman_.empty())
-    sublaminate_forces(u,
-                       [&](std::size_t k) { m_.von_karman_[k]->internal_force(u_parts_[k], f_parts_[k]); });
+    sublaminate_forces(u, [&](std::size_t k) {
+      m_.von_karman_[k]->internal_force(u_parts_[k], f_parts_[k], element_forces_[k]);
+    });
   else if (fields_.empty())
-    Ku_.noalias() = m_.K_plates_by_rows_ * u;
+    parallel_rows_product(m_.K_plates_by_rows_, u, Ku_);
   else if (lagged())
     sublaminate_forces(u, [&](std::size_t k) {
       m_.damaged_[k]->frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);

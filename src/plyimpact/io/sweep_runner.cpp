@@ -1,5 +1,7 @@
 #include "plyimpact/io/sweep_runner.hpp"
 
+#include "plyimpact/fem/element_loop.hpp"
+
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
 #include "plyimpact/io/atomic_file.hpp"
@@ -486,6 +488,7 @@ int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::ve
   std::string first_error;
   SharedImpactCases cases;
   const auto work = [&] {
+    const ElementThreads one(1); // the sweep's cases are its parallelism: no threads within a case
     try {
       SweepWorker worker(sweep, folder, options, cases);
       while (options.cancel == nullptr || !options.cancel->load()) {

@@ -1,0 +1,73 @@
+#pragma once
+// Element loops on all cores, with the same bits for any thread count (issue 50). Each element's work is
+// done on whichever thread OpenMP hands it to and written to a place of its own (its state, its slot of
+// a buffer); whatever adds elements together (a global force vector, a dissipation) does so afterwards,
+// on one thread and in element order, so that every sum is made in the order of a one-thread loop.
+//
+// The threads are those of the calling thread's OpenMP setting (omp_set_num_threads; all cores unless
+// OMP_NUM_THREADS says otherwise): a run sets it from its request (ImpactCase::run), a sweep's worker
+// threads set it to one (they are the sweep's parallelism).
+#include <Eigen/Core>
+#include <omp.h>
+
+#include <exception>
+
+namespace plyimpact {
+
+/// work(i) for i = 0 … count − 1 on the calling thread's OpenMP threads; the calls must be independent of
+/// each other. An exception thrown by work(i) is rethrown here, that of the smallest i where several
+/// throw (the one a one-thread loop would have met first).
+template <class Work>
+void for_each_element(int count, const Work& work) {
+  std::exception_ptr error;
+  int error_at = count;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int i = 0; i < count; ++i) {
+    try {
+      work(i);
+    } catch (...) {
+#pragma omp critical(plyimpact_element_loop_error)
+      if (i < error_at) {
+        error_at = i;
+        error = std::current_exception();
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+/// out = K u for a row-major sparse K, blocks of rows on the calling thread's threads: each row's sum is
+/// made as in a one-thread product, so the bits are those of `out = K * u` for any number of threads.
+template <class RowMajorSparse>
+void parallel_rows_product(const RowMajorSparse& K, const Eigen::VectorXd& u, Eigen::VectorXd& out) {
+  constexpr int blocks = 64;
+  out.resize(K.rows());
+  for_each_element(blocks, [&](int b) {
+    const Eigen::Index first = K.rows() * b / blocks, count = K.rows() * (b + 1) / blocks - first;
+    out.segment(first, count).noalias() = K.middleRows(first, count) * u;
+  });
+}
+
+/// The number of threads for_each_element uses from the calling thread (the size of per-thread scratch).
+[[nodiscard]] inline int element_threads() {
+  return omp_get_max_threads();
+}
+
+/// The element loops of the calling thread on `threads` threads while it lives (0: as they are), as they
+/// were after it.
+class ElementThreads {
+public:
+  explicit ElementThreads(int threads) : previous_(omp_get_max_threads()) {
+    if (threads > 0) omp_set_num_threads(threads);
+  }
+  ~ElementThreads() { omp_set_num_threads(previous_); }
+  ElementThreads(const ElementThreads&) = delete;
+  ElementThreads& operator=(const ElementThreads&) = delete;
+  ElementThreads(ElementThreads&&) = delete;
+  ElementThreads& operator=(ElementThreads&&) = delete;
+
+private:
+  int previous_;
+};
+
+} // namespace plyimpact

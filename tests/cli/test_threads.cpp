@@ -1,0 +1,48 @@
+// The element loops of a run on threads give the same bits for any number of threads (issue 50): the
+// results folder of `plyimpact impact --threads 1` and `--threads 2` is the same bytes, wall time aside,
+// for ply damage with central differences (the laws and K0 u on threads) and with large deflections and
+// Newton–Newmark (the von Kármán element forces too).
+#include "support/cli.hpp"
+#include "support/impact_decks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace plyimpact::test {
+namespace {
+
+/// summary.json without its wall times.
+nlohmann::json summary_without_time(const fs::path& dir) {
+  nlohmann::json j = read_json(dir / "summary.json");
+  j.erase("wall_time");
+  j.erase("wall_time_s");
+  return j;
+}
+
+void expect_same_results_for_one_and_two_threads(const std::string& name, const std::string& deck_text) {
+  const fs::path dir = scratch("threads-" + name);
+  const fs::path deck = write(dir, deck_text);
+  for (const int threads : {1, 2}) {
+    const CommandResult r = run("impact " + deck.string() + " -q --threads " + std::to_string(threads) +
+                                " -o " + (dir / std::to_string(threads)).string());
+    ASSERT_EQ(r.status, 0) << r.out;
+  }
+  const nlohmann::json one = summary_without_time(dir / "1");
+  EXPECT_GT(one.at("damage").at("dissipated_energy").get<double>(), 0.0) << "no element was damaged";
+  EXPECT_EQ(one, summary_without_time(dir / "2"));
+  EXPECT_EQ(read_text(dir / "1" / "history.csv"), read_text(dir / "2" / "history.csv"));
+}
+
+TEST(Threads, ExplicitPlyDamageIsTheSameBitsOnOneAndTwoThreads) {
+  expect_same_results_for_one_and_two_threads(
+      "explicit", with_key(example_text("damage-progressive-explicit.toml"), "end", "4.0e-4"));
+}
+
+TEST(Threads, NonlinearPlyDamageIsTheSameBitsOnOneAndTwoThreads) {
+  expect_same_results_for_one_and_two_threads(
+      "nonlinear", with_key(example_text("damage-progressive-nonlinear.toml"), "end", "4.0e-4"));
+}
+
+} // namespace
+} // namespace plyimpact::test
