@@ -738,31 +738,33 @@ void DamagedPlateModel::activate(int e, DamageField& field) const {
   field.active_.push_back(std::move(a));
 }
 
-int DamagedPlateModel::screen(const Eigen::VectorXd& u, DamageField& field) const {
-  int added = 0;
-  for (int e = 0; e < model_.mesh().element_count(); ++e) {
-    if (field.slot_of_element_[static_cast<std::size_t>(e)] >= 0) continue;
-    if (element_bound(e, u) < settings_.screen_fraction) continue;
-    activate(e, field);
-    ++added;
-  }
-  return added;
-}
-
-bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
-  // One pass over the inactive elements per step: their bounds at the converged u serve commit() too.
-  bool reached = false;
+void DamagedPlateModel::inactive_bounds(const Eigen::VectorXd& u, DamageField& field) const {
   for_each_element(model_.mesh().element_count(), [&](int e) {
     if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0)
       field.bound_[static_cast<std::size_t>(e)] = element_bound(e, u);
   });
-  for (int e = 0; e < model_.mesh().element_count(); ++e) {
-    if (field.slot_of_element_[static_cast<std::size_t>(e)] >= 0) continue;
-    if (field.bound_[static_cast<std::size_t>(e)] >= 1.0) {
+}
+
+int DamagedPlateModel::activate_bounded_above(double threshold, DamageField& field) const {
+  int added = 0;
+  for (int e = 0; e < model_.mesh().element_count(); ++e) // in element order: the slots' order
+    if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0 &&
+        field.bound_[static_cast<std::size_t>(e)] >= threshold) {
       activate(e, field);
-      reached = true;
+      ++added;
     }
-  }
+  return added;
+}
+
+int DamagedPlateModel::screen(const Eigen::VectorXd& u, DamageField& field) const {
+  inactive_bounds(u, field);
+  return activate_bounded_above(settings_.screen_fraction, field);
+}
+
+bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
+  // One pass over the inactive elements per step: their bounds at the converged u serve commit() too.
+  inactive_bounds(u, field);
+  const bool reached = activate_bounded_above(1.0, field) > 0;
   field.bounds_current_ = !reached;
   return reached;
 }
@@ -827,14 +829,10 @@ void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   field.stored_energy_ = 0.5 * u.dot(f_int);
   field.u_committed_ = u;
   // Elements near a surface join (bounds of activate_reached() at this u when it ran last).
-  if (field.bounds_current_) {
-    for (int e = 0; e < model_.mesh().element_count(); ++e)
-      if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0 &&
-          field.bound_[static_cast<std::size_t>(e)] >= settings_.screen_fraction)
-        activate(e, field);
-  } else {
+  if (field.bounds_current_)
+    activate_bounded_above(settings_.screen_fraction, field);
+  else
     screen(u, field);
-  }
   field.bounds_current_ = false;
 }
 

@@ -229,6 +229,11 @@ private:
   /// The largest hashin_bound over element e's points at u.
   [[nodiscard]] double element_bound(int e, const Eigen::VectorXd& u) const;
   void activate(int e, DamageField& field) const;
+  /// field.bound_ (element_bound) of every inactive element at u, on the run's threads.
+  void inactive_bounds(const Eigen::VectorXd& u, DamageField& field) const;
+  /// Activates, in element order, the inactive elements whose field.bound_ is at least `threshold`;
+  /// returns how many.
+  int activate_bounded_above(double threshold, DamageField& field) const;
 
   const PlateModel& model_;
   ProgressiveDamageSettings settings_;
