@@ -66,9 +66,13 @@ struct ImpactRunOutput {
 };
 
 /// An impact run of `deck`, as `plyimpact impact DECK [-o DIR]` runs it (without the progress display).
+/// `threads`: --threads (0: the deck's [run] threads, else the module's OpenMP setting).
 ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem::path>& output_dir,
-                           bool overwrite, bool nonlinear, bool keep_history,
+                           bool overwrite, bool nonlinear, bool keep_history, int threads,
                            const std::atomic<bool>* cancel) {
+  if (threads < 0 || threads > plyimpact::max_run_threads)
+    throw std::invalid_argument(fmt::format("impact: threads must lie between 1 and {}, got {}",
+                                            plyimpact::max_run_threads, threads));
   plyimpact::require_sections(deck, plyimpact::AnalysisKind::impact);
   // The case first: it refuses a mesh beyond the memory available before a folder is claimed.
   const plyimpact::ImpactCase impact(plyimpact::impact_case_description(deck, nonlinear));
@@ -81,6 +85,7 @@ ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem
   if (lock) options.output_dir = lock->dir();
   if (keep_history) options.observers.push_back(&history);
   options.cancel = cancel;
+  options.threads = threads;
   plyimpact::ImpactRunOutcome run = plyimpact::run_impact(deck, impact, options);
   ImpactRunOutput out;
   out.summary_json = run.summary.dump();
@@ -275,19 +280,20 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "run_impact",
       [](const Deck& deck, const std::optional<std::filesystem::path>& output_dir, bool overwrite,
-         bool nonlinear, bool keep_history) {
+         bool nonlinear, bool keep_history, int threads) {
         std::atomic<bool> cancel{false};
         bool interrupted = false;
         ImpactRunOutput out = interruptible(cancel, interrupted, [&] {
-          return run_impact(deck, output_dir, overwrite, nonlinear, keep_history, &cancel);
+          return run_impact(deck, output_dir, overwrite, nonlinear, keep_history, threads, &cancel);
         });
         const std::vector<std::string> columns = plyimpact::history_columns(out.layout);
         return py::make_tuple(out.summary_json, out.notes, columns,
                               history_array(out.samples, columns.size()), interrupted);
       },
       py::arg("deck"), py::arg("output_dir") = py::none(), py::arg("overwrite") = false,
-      py::arg("nonlinear") = false, py::arg("history") = true,
-      "Runs the deck's impact; returns (summary JSON text, notes, history column names, history rows, "
+      py::arg("nonlinear") = false, py::arg("history") = true, py::arg("threads") = 0,
+      "Runs the deck's impact (threads: of the element loops, 0 for the deck's); returns (summary JSON text, "
+      "notes, history column names, history rows, "
       "whether Ctrl-C stopped it).");
   py::class_<ImpactStudy>(m, "ImpactStudy", "A plate built once, run for many impactors")
       .def(py::init([](const Deck& deck, bool nonlinear) {

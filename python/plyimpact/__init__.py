@@ -283,16 +283,24 @@ def impact(
     overwrite: bool = False,
     nonlinear: bool = False,
     history: bool = True,
+    threads: int | None = None,
 ) -> ImpactRun:
     """Runs the impact of a deck (or a deck file) as ``plyimpact impact DECK [-o output_dir]`` does.
 
     With ``output_dir`` the results folder is written too (summary.json, history.csv, ...);
-    ``nonlinear`` is the command's ``--nonlinear``; ``history=False`` keeps no history in memory.
+    ``nonlinear`` is the command's ``--nonlinear``; ``history=False`` keeps no history in memory;
+    ``threads`` is the command's ``--threads`` (the element loops of the run; by default the deck's
+    ``[run] threads``, else one, since the module runs with ``OMP_NUM_THREADS=1`` unless you set it).
+    The results are the same bits for any number of threads.
     """
     d = _as_deck(case, "impact")
     out = _output_dir(output_dir, "impact")
     flags = [_flag(v, f"impact: {k}") for k, v in (("overwrite", overwrite), ("nonlinear", nonlinear), ("history", history))]
-    summary, notes, columns, rows, interrupted = _core.run_impact(d._core, out, *flags)
+    if threads is not None:
+        _require(threads, numbers.Integral, "impact: threads", "a thread count (an int from 1 to 1024)")
+        if not 1 <= threads <= 1024:
+            raise ValueError(f"impact: threads must lie between 1 and 1024, got {threads}")
+    summary, notes, columns, rows, interrupted = _core.run_impact(d._core, out, *flags, int(threads or 0))
     run = ImpactRun(json.loads(summary), list(notes), list(columns), rows)
     if interrupted:  # Ctrl-C: the run finished its step and wrote what it had (docs/python.md)
         stopped = KeyboardInterrupt(

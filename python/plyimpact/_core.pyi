@@ -33,6 +33,7 @@ def run_impact(
     overwrite: bool = False,
     nonlinear: bool = False,
     history: bool = True,
+    threads: int = 0,
 ) -> tuple[str, list[str], list[str], npt.NDArray[np.float64], bool]: ...
 def run_plate_analysis(
     deck: Deck,

@@ -40,6 +40,8 @@ WRONG_TYPES = [
     (lambda d: plyimpact.impact(d, 5), "impact: output_dir must be a folder path or None"),
     (lambda d: plyimpact.impact(d, nonlinear="yes"), "impact: nonlinear must be True or False"),
     (lambda d: plyimpact.impact(d, history=1), "impact: history must be True or False"),
+    (lambda d: plyimpact.impact(d, threads="2"), "impact: threads must be a thread count"),
+    (lambda d: plyimpact.impact(d, threads=2.0), "impact: threads must be a thread count"),
     (lambda d: plyimpact.static(3.0), "static: case"),
     (lambda d: plyimpact.modal(d, output_dir=[1]), "modal: output_dir"),
     (lambda d: plyimpact.buckling(d, overwrite="no"), "buckling: overwrite"),
@@ -83,6 +85,12 @@ def test_a_threshold_tolerance_out_of_range_is_refused_as_on_the_command_line(de
 def test_a_sweep_thread_count_out_of_range_is_refused(deck, jobs):
     with pytest.raises(ValueError, match="jobs must lie between 1 and 1024"):
         plyimpact.sweep(deck, {"impactor.velocity": [1.0, 2.0]}, jobs=jobs)
+
+
+@pytest.mark.parametrize("threads", [0, -1, 1025])
+def test_an_impact_thread_count_out_of_range_is_refused(deck, threads):
+    with pytest.raises(ValueError, match="impact: threads must lie between 1 and 1024"):
+        plyimpact.impact(deck, threads=threads)
 
 
 def test_ctrl_c_stops_an_impact_within_a_step_and_raises_with_the_results_so_far(deck, tmp_path):

@@ -176,6 +176,19 @@ def test_cases_on_threads_equal_the_same_cases_in_series(examples):
     assert serial == sorted(serial)  # a faster impactor strikes harder
 
 
+def test_ply_damage_on_one_and_two_threads_is_the_same_bits(examples):
+    """threads= is the command's --threads: the element loops of a progressive-damage run on one and two
+    threads give the same summary (wall time aside) and history, value for value."""
+    d = plyimpact.load("examples/damage-progressive-explicit.toml").replace({"time.end": 4e-4})
+    one, two = (plyimpact.impact(d, threads=n) for n in (1, 2))
+    for run in (one, two):
+        run.summary.pop("wall_time")
+    assert one.summary["damage"]["dissipated_energy"] > 0.0
+    assert one.summary == two.summary
+    assert one.history.keys() == two.history.keys()
+    assert all(np.array_equal(one.history[k], two.history[k]) for k in one.history)
+
+
 def test_threshold_search_equals_the_command_line(examples):
     """`plyimpact threshold` and plyimpact.threshold run the same bisection: same trials, same velocity."""
     deck_path = "examples/thesis-4.3-threshold-0_2-90_2-0_2.toml"

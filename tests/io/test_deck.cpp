@@ -217,6 +217,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "mesh.mass must be one of lumped | consistent, got \"diagonal\""},
         BadDeck{"BadOverride", "", "[[laminate.override]]\nplies = [9]\n",
                 "laminate.override.plies: expected ply numbers from 1 to 8"},
+        BadDeck{
+            "RunThreadsZero", "", "[run]\nthreads = 0\n",
+            "deck.toml:36:11: error: run.threads must be a whole number of threads from 1 to 1024, got 0"},
+        BadDeck{"RunThreadsFraction", "", "[run]\nthreads = 1.5\n",
+                "deck.toml:36:11: error: run.threads must be an integer, got a number"},
+        BadDeck{"RunUnknownKey", "", "[run]\njobs = 2\n", "unknown key 'jobs' in [run]"},
         BadDeck{"VtkEveryZero", "", "[output]\nvtk_every = 0\n",
                 "deck.toml:36:13: error: output.vtk_every must be a positive step count, got 0"},
         BadDeck{"VtkNotBool", "", "[output]\nvtk = \"yes\"\n",

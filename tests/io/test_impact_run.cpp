@@ -1,8 +1,10 @@
 // The outputs of a progressive-damage impact run (io/impact_run): the ParaView frames and
 // damage_elements.csv hold the plies' damage of the run itself — the last frame and the file equal the
 // result's element_ply_damage value for value, elements the run never lists are zero, and damage_max is
-// the largest over plies and modes — on the shipped example examples/damage-progressive.toml.
+// the largest over plies and modes — on the shipped example examples/damage-progressive.toml; a run's
+// element loops get the deck's [run] threads unless the caller gives its own.
 #include "plyimpact/analysis/nonlinear_static.hpp"
+#include "plyimpact/fem/element_loop.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_run.hpp"
@@ -68,6 +70,32 @@ ImpactRunOptions into_scratch(const std::string& name) {
   options.output_dir = dir;
   options.pictures = false;
   return options;
+}
+
+/// The threads the element loops of the run's steps are given (element_threads() on the run's thread).
+class ThreadsSeen final : public ImpactObserver {
+public:
+  void on_step(const StepView& /*view*/) override { seen = element_threads(); }
+  int seen = 0;
+};
+
+TEST(ImpactRun, TheElementLoopsRunOnTheDecksThreadsUnlessTheCallerGivesOthers) {
+  // [run] threads = 3 reaches the run; --threads (ImpactRunOptions::threads) overrides it; after the run
+  // the calling thread's setting is what it was.
+  const int before = element_threads();
+  const Deck deck =
+      parse_deck(test::with_key(example_text(), "end", "1.4e-5") + "\n[run]\nthreads = 3\n", "threads.toml");
+  EXPECT_EQ(deck.threads, 3);
+  const ImpactCase impact(impact_case_description(deck));
+  for (const int given : {0, 2}) {
+    ThreadsSeen threads;
+    ImpactRunOptions options;
+    options.threads = given;
+    options.observers = {&threads};
+    (void)run_impact(deck, impact, options);
+    EXPECT_EQ(threads.seen, given > 0 ? given : 3);
+    EXPECT_EQ(element_threads(), before);
+  }
 }
 
 TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {

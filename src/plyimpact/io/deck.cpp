@@ -133,10 +133,10 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   d.text = std::string(text);
   d.units = read_units(root, source);
   const TableReader top(root, "", source, d.units);
-  top.only({"units",      "analysis", "title",    "materials",   "laminate", "laminates", "region",
-            "plate",      "mesh",     "boundary", "impactor",    "contact",  "time",      "load",
-            "modal",      "buckling", "damage",   "threshold",   "output",   "nonlinear", "strain_measure",
-            "load_steps", "sweep",    "rig",      "delamination"});
+  top.only({"units",      "analysis", "title",    "materials",    "laminate", "laminates", "region",
+            "plate",      "mesh",     "boundary", "impactor",     "contact",  "time",      "load",
+            "modal",      "buckling", "damage",   "threshold",    "output",   "nonlinear", "strain_measure",
+            "load_steps", "sweep",    "rig",      "delamination", "run"});
   d.title = top.optional_string("title").value_or("");
   read_nonlinear_keys(top, d);
   if (const auto a = top.optional_string("analysis")) {
@@ -189,6 +189,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   }
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
+  if (const auto t = top.optional_table("run")) read_run(*t, d);
   if (d.time.adaptive && d.time.integration == TimeIntegration::central_difference)
     top.optional_table("time")->fail_at(
         "adaptive",

@@ -73,6 +73,9 @@ struct ImpactorDefaults {
   std::optional<double> energy; ///< [J]
 };
 
+/// The most threads a run's element loops may be given ([run] threads, --threads, Python threads=).
+inline constexpr int max_run_threads = 1024;
+
 struct Deck {
   std::string source;                ///< file name used in messages
   UnitSystem units = UnitSystem::si; ///< top-level `units`: how the numbers were written (all SI here)
@@ -108,7 +111,10 @@ struct Deck {
   std::string output_dir = "results";
   std::vector<double> field_times; ///< [output] fields_at: displacement fields at these times [s]
   int history_every = 1;           ///< [output] history_every
-  VtkOutputSettings vtk;           ///< [output] vtk*
+  /// [run] threads: the threads of a run's element loops, 1 to max_run_threads (0: every core). The
+  /// command's --threads and Python's threads= override it; a sweep runs each case on one thread.
+  int threads = 0;
+  VtkOutputSettings vtk;                         ///< [output] vtk*
   std::optional<double> report_displacements_at; ///< [output] nodal displacements in report.txt [s]
   std::string text;                              ///< the deck's own text, recorded next to results
   bool nonlinear = false;                        ///< top-level `nonlinear`: large deflections (SPEC §8)

@@ -115,4 +115,16 @@ void read_output(const TableReader& t, Deck& d) {
   if (t.has("report_displacements_at")) d.report_displacements_at = t.number("report_displacements_at", "s");
 }
 
+void read_run(const TableReader& t, Deck& d) {
+  t.only({"threads"});
+  if (!t.has("threads")) return;
+  const long threads = t.optional_integer("threads").value_or(0);
+  if (threads < 1 || threads > max_run_threads)
+    t.fail_at("threads",
+              fmt::format("run.threads must be a whole number of threads from 1 to {}, got {} (leave "
+                          "it out to use every core)",
+                          max_run_threads, threads));
+  d.threads = static_cast<int>(threads);
+}
+
 } // namespace plyimpact::deck_tables

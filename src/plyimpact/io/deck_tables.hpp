@@ -78,5 +78,7 @@ void read_nonlinear_keys(const TableReader& top, Deck& d);
 
 // deck_output.cpp
 void read_output(const TableReader& t, Deck& d);
+/// [run] threads: the threads of a run's element loops (Deck::threads).
+void read_run(const TableReader& t, Deck& d);
 
 } // namespace plyimpact::deck_tables

@@ -131,7 +131,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   run.history_every = 0; // history.csv is streamed to the folder below, never kept in memory
   run.field_times = deck.field_times;
   run.observers = options.observers;
-  run.threads = options.threads;
+  run.threads = options.threads > 0 ? options.threads : deck.threads;
   run.keep_failed_run = true; // written below, then reported (report_failure)
   // ImpactCase::run checks the rest (no observers, no history, no fields)
   run.contact_point_response = options.contact_point_response && !options.output_dir;

@@ -29,7 +29,9 @@ struct ImpactRunOptions {
   /// RunRequest::contact_point_response: where nothing else looks at the plate (no folder, no damage
   /// criteria, no probes, no observers), follow it at the contact point alone when that is exact
   bool contact_point_response = false;
-  int threads = 0; ///< RunRequest::threads (0: the calling thread's OpenMP setting, all cores by default)
+  /// RunRequest::threads; 0: the deck's [run] threads, else the calling thread's OpenMP setting (all cores
+  /// by default)
+  int threads = 0;
 };
 
 // NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's move does not throw
