@@ -163,7 +163,8 @@ int run_impact(const Options& o) {
   options.output_dir = lock.dir();
   options.cancel = &interrupted;
   options.threads = o.threads;
-  ImpactProgress progress(impact.settings(), progress_style(o.progress, stderr), o.progress.line_interval_s);
+  ImpactProgress progress(impact.settings(), impact.fundamental_period(), progress_style(o.progress, stderr),
+                          o.progress.line_interval_s);
   options.observers = {&progress};
   const ImpactRunOutcome run = run_impact(deck, impact, options);
   const ImpactResult& r = run.result;
@@ -307,8 +308,8 @@ int run(int argc, char** argv) {
   impact
       ->add_option("--threads", o.threads,
                    "threads of the element loops (ply damage); the results are the same bits for any "
-                   "number (default: all cores, or OMP_NUM_THREADS)")
-      ->check(CLI::Range(1, 1024));
+                   "number (default: the deck's [run] threads, else all cores or OMP_NUM_THREADS)")
+      ->check(CLI::Range(1, max_run_threads));
   CLI::App* threshold = add_analysis(
       app, "threshold",
       "Smallest impact velocity at which a failure criterion first reaches 1 (or, with progressive "

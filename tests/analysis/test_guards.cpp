@@ -206,6 +206,26 @@ const std::vector<GuardCase>& guard_cases() {
        {"2 % of the initial kinetic energy 22.05 J",
         "1.68e+03 steps of time.dt = 1e-06 s, enough for the contact",
         "run again with [time] dt = 5e-07 s (half)"}},
+      {"energy balance error above 1 % where the plate dissipated most of the energy: a collapse",
+       [] {
+         return warning_of(
+             energy_balance_reason(0.349, 6.5, 2.0, 2.55, 2e9, 1e-7, 1.5, {ContactLoad::point, 0.62, 1}));
+       },
+       {"34.9 % of the initial kinetic energy 6.5 J",
+        "Likely cause: the plate collapsed under the impactor (62 % of the impact energy dissipated in the "
+        "plate; contact episodes: 1)"}},
+      {"energy balance error above 1 % after 41 contact episodes: a collapse",
+       [] {
+         return warning_of(energy_balance_reason(0.349, 6.5, 2.0, 2.55, 2e9, 1e-7, 1.5,
+                                                 {ContactLoad::hertz_pressure, 0.2, 41}));
+       },
+       {"(20 % of the impact energy dissipated in the plate; contact episodes: 41)"}},
+      {"energy balance error above 1 % with the Hertz pressure load: its balance term, try the point load",
+       [] {
+         return warning_of(energy_balance_reason(0.012, 22.05, 6.14, 2.68, 0.6e9, 1e-6, 1.5,
+                                                 {ContactLoad::hertz_pressure, 0.05, 1}));
+       },
+       {"Likely cause: the Hertz pressure load's own balance term", "[contact] load = \"point\""}},
       {"energy balance error of 0.99 %: not suspect",
        [] { return warning_of(energy_balance_reason(0.0099, 22.05, 6.14, 2.68, 0.6e9, 1e-6)); },
        {}},

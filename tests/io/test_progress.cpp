@@ -1,6 +1,6 @@
-// Progress displays: the ETA is the rate so far applied to the work left; plain lines appear no more
+// Progress displays: the ETA is the recent rate applied to the work left; plain lines appear no more
 // often than asked (CI and cluster logs), a terminal bar is redrawn in place, --quiet prints nothing;
-// the impact display expects twice the contact duration for end = "auto" (SPEC §4 end rule).
+// the impact display expects the SPEC §4 end-of-event rule for end = "auto".
 #include "plyimpact/io/impact_progress.hpp"
 #include "plyimpact/io/progress.hpp"
 
@@ -59,7 +59,7 @@ TEST(Progress, LinesAppearOncePerIntervalAndEndWithASummary) {
     p.finish("done");
   }
   EXPECT_EQ(out.text(), "impact:  50 % (b), 0:10 elapsed, ETA 0:10\n"
-                        "impact:  90 % (d), 0:30 elapsed, ETA 0:03\n"
+                        "impact:  90 % (d), 0:30 elapsed, ETA 0:05\n"
                         "impact: done, 0:30 elapsed\n");
 }
 
@@ -112,24 +112,46 @@ TEST(Progress, ClockTimeIsMinutesSecondsOrHoursMinutesSeconds) {
   EXPECT_EQ(clock_time(std::nan("")), "?");
 }
 
-TEST(ImpactProgress, ExpectsTheDecksEndOrTwiceTheContactDuration) {
+TEST(Progress, EtaFollowsTheRecentRateWhenStepsGrowDearer) {
+  Capture out;
+  double now = 0.0;
+  Progress p("impact", 1.0, ProgressStyle::lines, 10.0, out.file, [&] { return now; });
+  now = 10.0;
+  p.update(0.4, "fast"); // 4 %/s so far: the average gives 15 s for the 60 % left
+  EXPECT_EQ(p.eta_s(0.4, 10.0), 15.0);
+  now = 40.0;
+  // Since the update at 10 s (older than a quarter of 40 s): 10 % in 30 s, so the 50 % left takes 150 s,
+  // where the average rate (50 % in 40 s) would promise 40 s.
+  p.update(0.5, "slow");
+  EXPECT_DOUBLE_EQ(p.eta_s(0.5, 40.0), 150.0);
+  EXPECT_NE(out.text().find("impact:  50 % (slow), 0:40 elapsed, ETA 2:30"), std::string::npos) << out.text();
+  // A fraction that fell (the event estimate grew) measures from an older, lower sample: the one at 10 s.
+  EXPECT_DOUBLE_EQ(p.eta_s(0.45, 80.0), (80.0 - 10.0) * 0.55 / 0.05);
+}
+
+TEST(ImpactProgress, ExpectsTheDecksEndOrTheEndOfEventRule) {
   ImpactSettings s;
   s.impactor.mass = 6.14;
   s.impactor.velocity = 2.68;
   s.k = 0.6e9;
   StepView v;
   s.end = 3e-3;
-  EXPECT_EQ(expected_run_time(s, v, -1.0), 3e-3);
+  EXPECT_EQ(expected_run_time(s, v, -1.0, 1e-3), 3e-3);
   s.end.reset();
-  // Before contact: twice the rigid-target Hertz time.
+  // Before contact: twice the rigid-target Hertz time, when it exceeds 2 T1.
   v.impactor_v = 2.68;
-  EXPECT_DOUBLE_EQ(expected_run_time(s, v, -1.0), 2.0 * hertz_contact_time(6.14, 2.68, 0.6e9));
+  const double rigid = hertz_contact_time(6.14, 2.68, 0.6e9);
+  EXPECT_DOUBLE_EQ(expected_run_time(s, v, -1.0, 0.0), 2.0 * rigid);
+  // The rule's other term: out of contact for two fundamental periods when they are longer.
+  EXPECT_DOUBLE_EQ(expected_run_time(s, v, -1.0, rigid), 3.0 * rigid);
   // In contact, half-sine: v = v0 cos(pi t / T) at t = T/3 gives T = 6 ms (longer than rigid).
   v.t = 2e-3;
   v.impactor_v = 2.68 * std::cos(std::numbers::pi / 3.0);
-  EXPECT_NEAR(expected_run_time(s, v, -1.0), 12e-3, 1e-12);
-  // After separation at 4.27 ms: the SPEC §4 rule runs one more contact duration.
-  EXPECT_DOUBLE_EQ(expected_run_time(s, v, 4.27e-3), 8.54e-3);
+  EXPECT_NEAR(expected_run_time(s, v, -1.0, 1e-3), 12e-3, 1e-12);
+  EXPECT_NEAR(expected_run_time(s, v, -1.0, 4e-3), 14e-3, 1e-12); // 6 ms + 2 x 4 ms
+  // After separation at 4.27 ms: the SPEC §4 rule runs max(contact duration, 2 T1) more.
+  EXPECT_DOUBLE_EQ(expected_run_time(s, v, 4.27e-3, 1e-3), 8.54e-3);
+  EXPECT_DOUBLE_EQ(expected_run_time(s, v, 4.27e-3, 3e-3), 10.27e-3);
 }
 
 } // namespace

@@ -82,7 +82,8 @@ void check_end_after_first_step(double dt, const std::optional<double>& end) {
 }
 
 std::optional<std::string> energy_balance_reason(double energy_error, double initial_energy, double mass,
-                                                 double velocity, double k, double dt, double exponent) {
+                                                 double velocity, double k, double dt, double exponent,
+                                                 const EnergyBalanceClues& clues) {
   if (!(energy_error > energy_balance_tolerance)) return std::nullopt;
   const double t_c = hertz_contact_time(mass, velocity, k, exponent);
   const std::string what = fmt::format(
@@ -94,6 +95,22 @@ std::optional<std::string> energy_balance_reason(double energy_error, double ini
   if (t_c / dt < min_steps_per_contact)
     return fmt::format("{}: lower [time] dt to t_c/{:.0f} = {:.4g} s or less, or set dt = \"auto\"", what,
                        min_steps_per_contact, t_c / min_steps_per_contact);
+  if (clues.dissipated_fraction > collapse_dissipated_fraction ||
+      clues.contact_episodes >= collapse_contact_episodes)
+    return fmt::format(
+        "{}, enough for the contact. Likely cause: the plate collapsed under the impactor ({:.3g} % of the "
+        "impact energy dissipated in the plate; contact episodes: {}): plies cracked through the thickness "
+        "soften faster than a step follows, and past a perforation the model has no answer. Read the "
+        "results up to the first large load drop, or lower the impact energy",
+        what, 100.0 * clues.dissipated_fraction, clues.contact_episodes);
+  if (clues.load == ContactLoad::hertz_pressure)
+    return fmt::format(
+        "{}, enough for the contact. Likely cause: the Hertz pressure load's own balance term (the contact "
+        "law's work uses the deflection at the contact point, the pressure works on the pressure-weighted "
+        "deflection; it does not shrink with Δt and grows as damage softens the plate under the impactor: "
+        "docs/progressive_damage.md). Run the deck with [contact] load = \"point\" to see the integration's "
+        "own error; if that one is small, the answer stands within this term",
+        what);
   // The contact is resolved: the error comes from what changes within a step (damage, interfaces,
   // contact episodes), which a shorter step resolves too.
   return fmt::format("{}, enough for the contact: what changes within a step (ply damage, interfaces that "

@@ -12,6 +12,7 @@
 #include "plyimpact/fem/spd_solver.hpp"
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -77,11 +78,27 @@ void check_end_after_first_step(double dt, const std::optional<double>& end);
 /// far too coarse for the contact gives hundreds of percent.
 constexpr double energy_balance_tolerance = 0.01;
 
+/// What a finished run tells about where its energy error came from (energy_balance_reason).
+struct EnergyBalanceClues {
+  ContactLoad load = ContactLoad::point;
+  double dissipated_fraction = 0.0; ///< the plate's dissipation over the initial kinetic energy
+  std::size_t contact_episodes = 1; ///< separate contacts of the impactor
+};
+
+/// The plate dissipated more than this fraction of the impact energy, or the impactor struck this many
+/// times: the plate collapsed under it (energy_balance_reason).
+constexpr double collapse_dissipated_fraction = 0.5;
+constexpr std::size_t collapse_contact_episodes = 3;
+
 /// The reason a run is suspect when energy_error (fraction of initial_energy) > energy_balance_tolerance:
-/// the error, the energies, and the Δt to use against the Hertz contact time t_c.
+/// the error, the energies, and the likely cause with what to do, in this order: a Δt too coarse for the
+/// Hertz contact time t_c (lower it); a collapse of the plate under the impactor (`clues`); the Hertz
+/// pressure load's own balance term (docs/progressive_damage.md: run with the point load to see the
+/// integration's error); else what changes within a step (halve Δt and compare).
 [[nodiscard]] std::optional<std::string> energy_balance_reason(double energy_error, double initial_energy,
                                                                double mass, double velocity, double k,
-                                                               double dt, double exponent = 1.5);
+                                                               double dt, double exponent = 1.5,
+                                                               const EnergyBalanceClues& clues = {});
 
 /// Peak deflection, in laminate thicknesses h, beyond which a linear plate overestimates the deflection
 /// (membrane stretching stiffens it): the usual small-deflection limit of plate theory, about 0.3 h.

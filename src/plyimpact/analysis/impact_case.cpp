@@ -259,9 +259,9 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   });
   if (!settings_.end) { // for the end-of-event rule
     const std::optional<double> from_policy = policy_->fundamental_period();
-    fundamental_period_ =
-        from_policy ? *from_policy
-                    : naming_singular_causes(description_, [&] { return fundamental_period(*model_); });
+    fundamental_period_ = from_policy ? *from_policy : naming_singular_causes(description_, [&] {
+      return plyimpact::fundamental_period(*model_);
+    });
   }
 }
 

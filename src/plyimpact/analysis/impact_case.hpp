@@ -147,6 +147,8 @@ public:
 
   [[nodiscard]] const ImpactCaseDescription& description() const { return description_; }
   [[nodiscard]] const ImpactSettings& settings() const { return settings_; }
+  /// T1 of the plate for the end-of-event rule [s]; 0 where time.end is given or the target is rigid.
+  [[nodiscard]] double fundamental_period() const { return fundamental_period_; }
   [[nodiscard]] const PlateModel& model() const { return *model_; }
   [[nodiscard]] bool nonlinear() const { return settings_.nonlinear.has_value(); }
   /// explicit_highest_frequency of the case, computed once: its policy and its runs' settings share it.

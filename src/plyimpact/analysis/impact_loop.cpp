@@ -184,14 +184,18 @@ private:
 /// (`law_work`): the time integration's own trapezoidal work (contact_work) balances the other energies
 /// by construction for a point load, so only the law tells whether a step was too coarse to follow it.
 void check_after_run(ImpactResult& r, const StepView& end, double e0, double law_work, const Impactor& imp,
-                     double k, const LoopSettings& s) {
+                     double k, ContactLoad load, const LoopSettings& s) {
   if (e0 > 0.0) {
     const double total = end.impactor_energy + end.plate_kinetic_energy() + end.plate_strain_energy() +
                          end.plate_dissipated_energy() + law_work;
     r.energy_balance_error = std::abs(e0 - total) / e0;
   }
+  EnergyBalanceClues clues;
+  clues.load = load;
+  clues.dissipated_fraction = e0 > 0.0 ? end.plate_dissipated_energy() / e0 : 0.0;
+  clues.contact_episodes = r.episodes.size();
   if (auto why = energy_balance_reason(r.energy_balance_error, e0, imp.mass, imp.velocity, k, s.dt,
-                                       contact_exponent(imp.nose))) {
+                                       contact_exponent(imp.nose), clues)) {
     r.suspect = true;
     r.suspect_reason = *why;
     r.warnings.push_back(std::move(*why));
@@ -356,7 +360,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     }
   }
   event.finish(ended, step, t, law, impactor, e0, contact_work);
-  check_after_run(r, view, e0, law_work, imp, k, s);
+  check_after_run(r, view, e0, law_work, imp, k, contact.load, s);
   r.newton = plate->statistics();
   if (control) {
     r.time_steps = control->result(policy.factorizations());

@@ -38,12 +38,22 @@ Progress::~Progress() {
   }
 }
 
+double Progress::fraction_of(double done) const {
+  return total_ > 0.0 ? std::clamp(done / total_, 0.0, 1.0) : 0.0;
+}
+
+double Progress::eta_s(double fraction, double elapsed_s) const {
+  double since_s = 0.0, since_fraction = 0.0; // the start, until an update is old enough
+  for (const auto& [s, f] : drawn_samples_)
+    if (s <= 0.75 * elapsed_s && f < fraction) since_s = s, since_fraction = f;
+  if (!(fraction > since_fraction)) return -1.0;
+  return (elapsed_s - since_s) * (1.0 - fraction) / (fraction - since_fraction);
+}
+
 std::string Progress::line(double done, const std::string& detail, double elapsed_s) const {
-  const double fraction = total_ > 0.0 ? std::clamp(done / total_, 0.0, 1.0) : 0.0;
-  // ETA: the rate so far applied to the work left.
-  const double eta = fraction > 0.0 ? elapsed_s * (1.0 - fraction) / fraction : -1.0;
+  const double fraction = fraction_of(done);
   return fmt::format("{}: {:3.0f} % ({}), {} elapsed, ETA {}", label_, 100.0 * fraction, detail,
-                     clock_time(elapsed_s), clock_time(eta));
+                     clock_time(elapsed_s), clock_time(eta_s(fraction, elapsed_s)));
 }
 
 double Progress::wait_s() const {
@@ -67,12 +77,17 @@ void Progress::update(double done, const std::string& detail) {
 void Progress::draw(double done, const std::string& detail, double now) {
   last_draw_s_ = now;
   drawn_ = true;
-  const std::string text = line(done, detail, now - start_s_);
+  const double elapsed_s = now - start_s_;
+  const std::string text = line(done, detail, elapsed_s);
+  // Keep the samples eta_s may still use: the latest one a quarter of the elapsed time old, and newer.
+  while (drawn_samples_.size() > 1 && drawn_samples_[1].first <= 0.75 * elapsed_s)
+    drawn_samples_.pop_front();
+  drawn_samples_.emplace_back(elapsed_s, fraction_of(done));
   if (style_ == ProgressStyle::lines) {
     fmt::print(stream_, "{}\n", text);
   } else {
     constexpr int cells = 24;
-    const double fraction = total_ > 0.0 ? std::clamp(done / total_, 0.0, 1.0) : 0.0;
+    const double fraction = fraction_of(done);
     const int filled = static_cast<int>(fraction * cells);
     const std::string bar = fmt::format("\r[{:#<{}}{:.<{}}] {}", "", filled, "", cells - filled, text);
     fmt::print(stream_, "{:<{}}", bar, bar_width_ + 1); // blanks over a longer previous bar

@@ -4,9 +4,11 @@
 // shows where a run is; nothing with --quiet. Thread-safe: sweep threads report into one display.
 #include <chrono>
 #include <cstdio>
+#include <deque>
 #include <functional>
 #include <mutex>
 #include <string>
+#include <utility>
 
 namespace plyimpact {
 
@@ -50,10 +52,16 @@ public:
 
   /// The text of one update: "label: 45 % (detail), 0:03 elapsed, ETA 0:04".
   [[nodiscard]] std::string line(double done, const std::string& detail, double elapsed_s) const;
+  /// Seconds left at `fraction` done after `elapsed_s`: the work left at the recent rate, measured since
+  /// the latest drawn update at least a quarter of the elapsed time ago (from the start before there is
+  /// one), so that a run whose steps grow dearer (damage spreading) is not promised the early rate.
+  /// Negative (shown "?") before any work is done.
+  [[nodiscard]] double eta_s(double fraction, double elapsed_s) const;
 
 private:
   void draw(double done, const std::string& detail, double now);
   [[nodiscard]] double wait_s() const;
+  [[nodiscard]] double fraction_of(double done) const;
 
   std::string label_;
   double total_;
@@ -64,6 +72,8 @@ private:
   double start_s_, last_draw_s_;
   bool drawn_ = false, finished_ = false;
   std::size_t bar_width_ = 0; ///< characters of the last bar, cleared by finish
+  /// (elapsed [s], fraction) of the drawn updates still needed by eta_s, oldest first.
+  std::deque<std::pair<double, double>> drawn_samples_;
   std::mutex mutex_;
 };
 
