@@ -136,8 +136,13 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   EXPECT_NE(error_of("interfaces = \"all\"\n" + as4_peek_law)
                 .find("delamination.interfaces must be \"orientation-changes\" or a list"),
             std::string::npos);
-  EXPECT_NE(error_of("G_Ic = 969.0\n").find("missing key delamination.G_IIc (a number in J/m^2)"),
-            std::string::npos)
+  // Every missing value of the law in one message, with its unit and meaning.
+  EXPECT_NE(
+      error_of("G_Ic = 969.0\n")
+          .find("[delamination] needs the interface law's 5 values; missing 4: G_IIc (mode II toughness, "
+                "J/m^2), bk_exponent (Benzeggagh-Kenane exponent eta, -), normal_strength (interlaminar "
+                "tensile strength, Pa), shear_strength (interlaminar shear strength, Pa)"),
+      std::string::npos)
       << error_of("G_Ic = 969.0\n");
   EXPECT_NE(error_of(as4_peek_law + "onset = \"turon_bk\"\n").find("(did you mean \"turon-bk\"?)"),
             std::string::npos);

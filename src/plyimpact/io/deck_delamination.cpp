@@ -5,6 +5,9 @@
 #include "plyimpact/io/deck_tables.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
 
 namespace plyimpact::deck_tables {
 
@@ -48,7 +51,30 @@ std::vector<int> read_interfaces(const TableReader& t, const Laminate& laminate)
   return cuts;
 }
 
+/// Refuses a [delamination] table without every value of the interface law, naming all that are missing
+/// in one message (a user who left out three should not meet them one run at a time).
+void require_law_values(const TableReader& t) {
+  struct Value {
+    const char* key;
+    const char* what;
+  };
+  static constexpr std::array<Value, 5> values{{{"G_Ic", "mode I toughness, J/m^2"},
+                                                {"G_IIc", "mode II toughness, J/m^2"},
+                                                {"bk_exponent", "Benzeggagh-Kenane exponent eta, -"},
+                                                {"normal_strength", "interlaminar tensile strength, Pa"},
+                                                {"shear_strength", "interlaminar shear strength, Pa"}}};
+  std::vector<std::string> missing;
+  for (const Value& v : values)
+    if (!t.has(v.key)) missing.push_back(fmt::format("{} ({})", v.key, v.what));
+  if (missing.empty()) return;
+  t.fail_here(fmt::format("[delamination] needs the interface law's {} values; missing {}: {} (docs/deck.md, "
+                          "\"[delamination]\"; docs/delamination.md gives the shipped examples' values and "
+                          "their sources)",
+                          values.size(), missing.size(), fmt::join(missing, ", ")));
+}
+
 CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, const std::vector<int>& cuts) {
+  require_law_values(t);
   CohesiveParameters law;
   law.G_Ic = t.positive("G_Ic", "J/m^2");
   law.G_IIc = t.positive("G_IIc", "J/m^2");
