@@ -63,7 +63,8 @@ TEST(CentralDifferenceStep, AutomaticStepIsTheStableStepOfTheMovedEquations) {
   // The elastic symmetric laminate moves its bending equations alone (in-plane DOFs exactly decoupled,
   // 1927 of 3245); the von Kármán plate moves all. The highest frequency of both is that of the
   // rotations on their lumped rotary inertia ρh³/12 (thickness shear), not of the in-plane waves: the two
-  // stable steps are equal (0.40 µs measured), and dt = "auto" is that step.
+  // stable steps are equal (0.40 µs measured; each ω_max an upper bound within 5e-4 of the exact one,
+  // highest_frequency_tolerance), and dt = "auto" is that step.
   const ImpactCase elastic(
       impact_case_description(parse_deck(thesis_3_6(false, "\"auto\"", "explicit"), "e.toml")));
   const ImpactCase karman(
@@ -74,7 +75,7 @@ TEST(CentralDifferenceStep, AutomaticStepIsTheStableStepOfTheMovedEquations) {
   EXPECT_DOUBLE_EQ(elastic.settings().dt, stable_time_step(*elastic.explicit_omega_max()));
   EXPECT_DOUBLE_EQ(karman.settings().dt, stable_time_step(*karman.explicit_omega_max()));
   EXPECT_LT(elastic.equations(), karman.equations());
-  EXPECT_NEAR(karman.settings().dt, elastic.settings().dt, 1e-6 * elastic.settings().dt);
+  EXPECT_NEAR(karman.settings().dt, elastic.settings().dt, 5e-4 * elastic.settings().dt);
   EXPECT_NEAR(elastic.settings().dt, 4.0e-7, 0.01e-7);
 }
 
