@@ -76,6 +76,10 @@ TEST(CentralDifferenceStep, AutomaticStepIsTheStableStepOfTheMovedEquations) {
   EXPECT_DOUBLE_EQ(karman.settings().dt, stable_time_step(*karman.explicit_omega_max()));
   EXPECT_LT(elastic.equations(), karman.equations());
   EXPECT_NEAR(karman.settings().dt, elastic.settings().dt, 5e-4 * elastic.settings().dt);
+  // Both name a rotation as the DOF where the highest mode is largest (step_policy.hpp, StableStepSource).
+  ASSERT_TRUE(elastic.settings().stable_step && karman.settings().stable_step);
+  EXPECT_GE(elastic.settings().stable_step->place.dof, 3);
+  EXPECT_GE(karman.settings().stable_step->place.dof, 3);
   EXPECT_NEAR(elastic.settings().dt, 4.0e-7, 0.01e-7);
 }
 

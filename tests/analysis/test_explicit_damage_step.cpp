@@ -68,6 +68,25 @@ TEST(HighestFrequency, SpringChainClosedForm) {
   EXPECT_GT(highest_angular_frequency(K, lighter), exact);
 }
 
+TEST(HighestFrequency, TheModeOfALightMassOnTheChainIsLargestThere) {
+  // One mass 100 times lighter in a chain of 40: its own frequency √(2k/(m/100)) is far above the chain's
+  // band 2√(k/m), so the highest mode is localised on it, and highest_mode names its equation.
+  const int n = 40, light = 23;
+  const double k = 3.0e5, m = 2.0e-3;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, 2.0 * k);
+    if (i > 0) entries.emplace_back(i, i - 1, -k), entries.emplace_back(i - 1, i, -k);
+  }
+  SparseMatrix K(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd mass = Eigen::VectorXd::Constant(n, m);
+  mass(light) = m / 100.0;
+  const HighestMode mode = highest_mode(K, mass);
+  EXPECT_EQ(mode.equation, light);
+  EXPECT_GE(mode.omega, std::sqrt(2.0 * k / mass(light))); // its Rayleigh quotient bounds ω_max from below
+}
+
 TEST(ExplicitDamageStep, EnergyBalanceClosesWhereManyPointsSoften) {
   // At 3 m/s whole regions soften within a few steps: the implicit step stops, the lagged one runs
   // with a balance error of 0.5-1 % that is first order in Δt (test_progressive_impact.cpp). The

@@ -48,6 +48,26 @@ TEST(ExplicitDelamination, TheStepIsBelowTheShearPenaltysStableStepAndAutoTakesI
   EXPECT_LE(dt, 0.9 * 2.0 / omega);
   EXPECT_GT(dt, 0.5 * 0.9 * 2.0 / omega); // the plates do not dominate the interfaces' penalty
   EXPECT_DOUBLE_EQ(resolved_settings(d, model).dt, dt);
+  // The stack is [0_2] | [90_4] | [0_2]: the middle sub-laminate's rotation shears both of its interfaces
+  // at once, each through (h/2) θ on the rotary inertia ρh³/12, an effective mass ρh/3 = m_m/3 per face,
+  // against the outer faces' m_o/4 (translation and rotation together, as above). The mode where the two
+  // outer faces move against the middle's rotation is a two-body mode of the middle's m_m/3 against
+  // 2 m_o/4 on 2K: ω² = 2K (3/m_m + 2/m_o) = K (6/m_m + 4/m_o), 7/6 of DL9's pair for m_m = 2 m_o. Its
+  // mass-weighted amplitudes (momentum: (m_m/3) c = 2 (m_o/4) s) are √(m_m/3) · 3/4 = 0.61 √m_o on the
+  // middle's rotation against 0.43 √m_o on an outer rotation: the highest mode is largest on a rotation of
+  // the middle sub-laminate (2 of 3, 1-based), and the step lies below this mode's, close to it.
+  const double omega_stack = std::sqrt(K * (6.0 / m_middle + 4.0 / m_outer));
+  std::printf("[ measured ] stable step %.4g s against the stack's interface mode 0.9 x 2/omega = %.4g s\n",
+              dt, 0.9 * 2.0 / omega_stack);
+  EXPECT_LE(dt, 0.9 * 2.0 / omega_stack);
+  EXPECT_GT(dt, 0.95 * 0.9 * 2.0 / omega_stack);
+  const ImpactCase stacked(d);
+  ASSERT_TRUE(stacked.settings().stable_step.has_value());
+  const StableStepSource& source = *stacked.settings().stable_step;
+  std::printf("[ measured ] highest mode largest at %s\n", stable_step_place_text(source, true).c_str());
+  EXPECT_DOUBLE_EQ(source.omega_max, *stacked.explicit_omega_max());
+  EXPECT_EQ(source.place.sublaminate, 1); // 0-based: the middle [90_4]
+  EXPECT_GE(source.place.dof, 3);         // θx or θy
 
   ImpactCaseDescription too_long = d;
   too_long.time.dt = 1.1 * dt;

@@ -27,6 +27,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -147,8 +148,21 @@ double stable_time_step(double omega_max) {
   return stable_step_fraction * 2.0 / omega_max;
 }
 
-double explicit_highest_frequency(const MechanicalModel& model, const std::string& key) {
-  return highest_angular_frequency(model.initial_stiffness(), diagonal_mass(integrator_mass(model), key));
+StableStepSource explicit_highest_mode(const MechanicalModel& model, const std::string& key) {
+  const HighestMode mode =
+      highest_mode(model.initial_stiffness(), diagonal_mass(integrator_mass(model), key));
+  StableStepSource source;
+  source.omega_max = mode.omega;
+  source.place = model.place_of(mode.equation);
+  source.xy = model.contact_plate().mesh().node(source.place.node);
+  return source;
+}
+
+std::string stable_step_place_text(const StableStepSource& source, bool stacked) {
+  static constexpr std::array<const char*, 5> dof_names{"u", "v", "w", "thetax", "thetay"};
+  return fmt::format("{}{} at ({:.4g}, {:.4g}) mm", dof_names.at(static_cast<std::size_t>(source.place.dof)),
+                     stacked ? fmt::format(" of sub-laminate {}", source.place.sublaminate + 1) : "",
+                     1e3 * source.xy.x(), 1e3 * source.xy.y());
 }
 
 std::unique_ptr<StepPolicy> central_difference_step_policy(std::unique_ptr<const MechanicalModel> model,

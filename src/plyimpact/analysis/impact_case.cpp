@@ -72,11 +72,11 @@ std::unique_ptr<const MechanicalModel> explicit_model(const ImpactCaseDescriptio
   return mechanical_model(model, physics);
 }
 
-std::optional<double> highest_frequency(const ImpactCaseDescription& d,
-                                        const MechanicalModel* explicit_plate) {
+std::optional<StableStepSource> highest_mode(const ImpactCaseDescription& d,
+                                             const MechanicalModel* explicit_plate) {
   if (!explicit_plate) return std::nullopt;
   return naming_singular_causes(
-      d, [&] { return explicit_highest_frequency(*explicit_plate, explicit_key(plate_physics(d))); });
+      d, [&] { return explicit_highest_mode(*explicit_plate, explicit_key(plate_physics(d))); });
 }
 
 /// The description, once its mesh is known to fit in the memory available (mesh_memory.hpp): nothing is
@@ -150,7 +150,9 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
 }
 
 std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const PlateModel& model) {
-  return highest_frequency(d, explicit_model(d, model).get());
+  const std::optional<StableStepSource> mode = highest_mode(d, explicit_model(d, model).get());
+  if (!mode) return std::nullopt;
+  return mode->omega_max;
 }
 
 ImpactSettings resolved_settings(const ImpactCaseDescription& d, std::optional<double> explicit_omega_max) {
@@ -236,8 +238,10 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(within_memory(supported(std::move(description)))),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
   std::unique_ptr<const MechanicalModel> explicit_plate = explicit_model(description_, *model_);
-  explicit_omega_max_ = highest_frequency(description_, explicit_plate.get());
+  const std::optional<StableStepSource> stable_step = highest_mode(description_, explicit_plate.get());
+  if (stable_step) explicit_omega_max_ = stable_step->omega_max;
   settings_ = resolved_settings(description_, explicit_omega_max_);
+  settings_.stable_step = stable_step;
   require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");

@@ -72,7 +72,9 @@ struct MeshUsed {
 
 struct ImpactSettings {
   Impactor impactor;
-  MeshUsed mesh;  ///< filled by ImpactCase
+  MeshUsed mesh; ///< filled by ImpactCase
+  /// What sets the stable step of an explicit run (filled by ImpactCase; empty for implicit steps)
+  std::optional<StableStepSource> stable_step;
   double k = 0.0; ///< contact stiffness [N/m^1.5]
   ContactLawParameters contact;
   double dt = 1e-6;          ///< [s]

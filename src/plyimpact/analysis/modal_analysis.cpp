@@ -184,6 +184,10 @@ ModalResult lowest_modes(const SparseMatrix& K, const SparseMatrix& M, int count
 } // namespace
 
 double highest_angular_frequency(const SparseMatrix& K, const Eigen::VectorXd& mass) {
+  return highest_mode(K, mass).omega;
+}
+
+HighestMode highest_mode(const SparseMatrix& K, const Eigen::VectorXd& mass) {
   const auto n = static_cast<int>(K.rows());
   if (n < 3) throw std::invalid_argument("highest_angular_frequency: too few DOFs");
   if (mass.size() != n || !(mass.minCoeff() > 0.0))
@@ -197,7 +201,12 @@ double highest_angular_frequency(const SparseMatrix& K, const Eigen::VectorXd& m
     throw std::runtime_error("highest_angular_frequency: the eigensolver did not converge");
   // The Ritz value θ lies below λ_max; Spectra stops where the residual ‖r‖ ≤ tol·θ, and an eigenvalue
   // lies within ‖r‖ of θ (symmetric A): θ(1 + tol) bounds the one it converged to from above.
-  return std::sqrt(solver.eigenvalues()(0) * (1.0 + highest_frequency_tolerance));
+  HighestMode mode;
+  mode.omega = std::sqrt(solver.eigenvalues()(0) * (1.0 + highest_frequency_tolerance));
+  Eigen::Index largest = 0;
+  (void)solver.eigenvectors().col(0).cwiseAbs().maxCoeff(&largest); // the vector of M^½ φ: √m_i φ_i
+  mode.equation = static_cast<int>(largest);
+  return mode;
 }
 
 } // namespace plyimpact

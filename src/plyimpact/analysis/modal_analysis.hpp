@@ -37,4 +37,13 @@ constexpr double highest_frequency_tolerance = 1e-3;
 /// 2/ω_max of explicit central differences.
 [[nodiscard]] double highest_angular_frequency(const SparseMatrix& K, const Eigen::VectorXd& mass);
 
+/// ω_max of highest_angular_frequency and the equation where its mode's mass-weighted amplitude
+/// √m_i |φ_i| is largest: where the kinetic energy of the highest mode gathers, the DOF that sets the
+/// explicit step.
+struct HighestMode {
+  double omega = 0.0; ///< [rad/s]
+  int equation = -1;
+};
+[[nodiscard]] HighestMode highest_mode(const SparseMatrix& K, const Eigen::VectorXd& mass);
+
 } // namespace plyimpact

@@ -152,9 +152,18 @@ newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model, const S
                            NewtonSettings settings);
 /// CD5: the largest Δt accepted for a plate whose highest angular frequency is ω_max: 0.9 · 2/ω_max [s].
 [[nodiscard]] double stable_time_step(double omega_max);
+/// What sets the stable step of a model moved by central differences: ω_max and where its mode lies.
+struct StableStepSource {
+  double omega_max = 0.0;                       ///< [rad/s]
+  EquationPlace place;                          ///< where the mode's mass-weighted amplitude is largest
+  Eigen::Vector2d xy = Eigen::Vector2d::Zero(); ///< that node [m]
+};
 /// ω_max of K0 φ = ω² M φ, K0 `model`'s virgin undeformed stiffness and M its mass (the bound CD5 takes)
-/// [rad/s]. Throws std::invalid_argument, naming `key`, where M is not diagonal with mass on every DOF.
-[[nodiscard]] double explicit_highest_frequency(const MechanicalModel& model, const std::string& key);
+/// [rad/s], and where its mode lies (modal_analysis.hpp, highest_mode). Throws std::invalid_argument,
+/// naming `key`, where M is not diagonal with mass on every DOF.
+[[nodiscard]] StableStepSource explicit_highest_mode(const MechanicalModel& model, const std::string& key);
+/// "thetax of sub-laminate 2 at (62.5, 37.5) mm" (1-based, the top one first; only for a stack).
+[[nodiscard]] std::string stable_step_place_text(const StableStepSource& source, bool stacked);
 /// Central differences (CD1 to CD6) on any plate model with a diagonal mass: the one explicit integrator
 /// (central_difference_step.cpp). `key` is the deck key that chose it, for its messages. Throws
 /// std::invalid_argument where the mass is not diagonal or Δt of `options` is above the stable step.

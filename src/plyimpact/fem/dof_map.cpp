@@ -1,5 +1,10 @@
 #include "plyimpact/fem/dof_map.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
 namespace plyimpact {
 
 DofMap::DofMap(const Mesh& mesh, const BoundaryConditions& bc)
@@ -10,6 +15,14 @@ DofMap::DofMap(const Mesh& mesh, const BoundaryConditions& bc)
       if (!restraints[static_cast<std::size_t>(n)].fixed[static_cast<std::size_t>(d)])
         equation_[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(n) +
                   static_cast<std::size_t>(d)] = free_count_++;
+}
+
+std::pair<int, int> DofMap::node_dof(int equation) const {
+  const auto at = std::find(equation_.begin(), equation_.end(), equation);
+  if (equation < 0 || at == equation_.end())
+    throw std::out_of_range(fmt::format("DofMap::node_dof: no free equation {}", equation));
+  const auto slot = static_cast<int>(at - equation_.begin());
+  return {slot / dofs_per_node, slot % dofs_per_node};
 }
 
 ElementEquations DofMap::element_equations(const Mesh& mesh, int e) const {

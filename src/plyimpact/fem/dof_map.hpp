@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -30,6 +31,9 @@ public:
     return equation_[static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(node) +
                      static_cast<std::size_t>(dof)];
   }
+  /// The node and DOF (0..4 = u, v, w, θx, θy) of a free equation (a search: for messages, not loops).
+  /// Throws std::out_of_range for an equation outside 0..free_count() − 1.
+  [[nodiscard]] std::pair<int, int> node_dof(int equation) const;
   [[nodiscard]] ElementEquations element_equations(const Mesh& mesh, int e) const;
   /// Restraint actually applied at a node.
   [[nodiscard]] Restraint restraint_of(int node) const;

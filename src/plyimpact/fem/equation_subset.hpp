@@ -18,6 +18,8 @@ public:
   [[nodiscard]] int size() const { return static_cast<int>(keep_.size()); }
   [[nodiscard]] int model_size() const { return static_cast<int>(new_index_.size()); }
   [[nodiscard]] bool all() const { return size() == model_size(); }
+  /// The model equation of subset equation i.
+  [[nodiscard]] int model_equation(int i) const { return keep_.at(static_cast<std::size_t>(i)); }
   /// Model vector → subset vector.
   [[nodiscard]] Eigen::VectorXd restrict(const Eigen::VectorXd& v) const;
   /// Subset vector → model vector (zeros elsewhere), into `out` (sized by the call).

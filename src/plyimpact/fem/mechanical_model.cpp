@@ -8,6 +8,11 @@
 
 namespace plyimpact {
 
+EquationPlace MechanicalModel::place_of(int i) const {
+  const auto [node, dof] = contact_plate().dofs().node_dof(contact_equations().model_equation(i));
+  return {0, node, dof};
+}
+
 SparseMatrix ModelState::iteration_matrix(const Eigen::VectorXd& /*u*/) const {
   throw std::logic_error("this model is driven by central differences only: it has no iteration matrix");
 }

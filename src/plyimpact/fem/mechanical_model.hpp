@@ -127,6 +127,14 @@ private:
   double work_ = 0.0;
 };
 
+/// Where an equation of a model lies: its sub-laminate (0, the top one, for a single plate), and the node
+/// and DOF (0..4 = u, v, w, θx, θy) on the mesh the sub-laminates share.
+struct EquationPlace {
+  int sublaminate = 0;
+  int node = -1;
+  int dof = -1;
+};
+
 /// A plate model as an integrator sees it (built once per case, shared by the runs).
 class MechanicalModel {
 public:
@@ -145,6 +153,9 @@ public:
   [[nodiscard]] virtual const EquationSubset& contact_equations() const = 0;
   /// True where the in-plane DOFs are left out.
   [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
+  /// Where equation `i` (the integrator's numbering) lies; by default in contact_plate(), through
+  /// contact_equations() (a search: for messages, not loops).
+  [[nodiscard]] virtual EquationPlace place_of(int i) const;
   /// The displacement u (the integrator's numbering) in the numbering of the case's plate, for observers
   /// (the top sub-laminate of a stack).
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;

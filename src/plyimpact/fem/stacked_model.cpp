@@ -352,6 +352,15 @@ public:
   [[nodiscard]] int size() const override { return plate_.stack_.size(); }
   [[nodiscard]] const PlateModel& contact_plate() const override { return plate_.stack_.sublaminate(0); }
   [[nodiscard]] const EquationSubset& contact_equations() const override { return plate_.top_equations_; }
+  /// Sub-laminate k holds the stacked equations offset(k) … offset(k + 1) − 1, in its own numbering.
+  [[nodiscard]] EquationPlace place_of(int i) const override {
+    const StackedPlateModel& stack = plate_.stack_;
+    int k = stack.sublaminate_count() - 1;
+    while (k > 0 && i < stack.offset(k))
+      --k;
+    const auto [node, dof] = stack.sublaminate(k).dofs().node_dof(i - stack.offset(k));
+    return {k, node, dof};
+  }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
     plate_.top_to_model(u, out);
   }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 
@@ -123,6 +124,17 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["steps"] = r.steps;
   j["dt"] = s.dt;
   j["integration"] = std::string(to_string(s.integration)); // the plate's integrator (capabilities.hpp)
+  if (s.stable_step) { // central differences: what sets the stable step (step_policy.hpp)
+    static constexpr std::array<const char*, 5> dofs{"u", "v", "w", "theta_x", "theta_y"};
+    const StableStepSource& source = *s.stable_step;
+    j["stable_step"] = {{"omega_max_rad_per_s", source.omega_max},
+                        {"stable_step_s", stable_time_step(source.omega_max)},
+                        {"highest_mode_at",
+                         {{"sublaminate", source.place.sublaminate + 1},
+                          {"dof", dofs.at(static_cast<std::size_t>(source.place.dof))},
+                          {"x_m", source.xy.x()},
+                          {"y_m", source.xy.y()}}}};
+  }
   j["end_time"] = r.end_time;
   j["complete"] = r.complete;
   j["incomplete_reason"] = or_null(r.incomplete_reason);
@@ -215,6 +227,12 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   t += fmt::format("  mesh: {} {} elements{}, {:.3g} to {:.3g} mm; contact load {}\n", s.mesh.elements,
                    to_string(s.mesh.element), s.mesh.graded ? " graded toward the impact point" : "",
                    s.mesh.smallest_element * 1e3, s.mesh.largest_element * 1e3, to_string(s.contact.load));
+  if (s.stable_step)
+    t += fmt::format(
+        "  stable step: {:.4g} us (0.9 x 2/omega_max, omega_max = {:.4g} rad/s); the highest mode "
+        "is largest at {}\n",
+        stable_time_step(s.stable_step->omega_max) * 1e6, s.stable_step->omega_max,
+        stable_step_place_text(*s.stable_step, s.delamination.has_value()));
   t += fmt::format("  peak force              {:12.2f} N at {:.2f} us\n", r.peak_force,
                    r.time_of_peak_force * 1e6);
   t += fmt::format("  contact duration        {:12.2f} us (first contact; {} contact(s))\n",
