@@ -23,11 +23,11 @@
 #include "plyimpact/analysis/modal_analysis.hpp"
 #include "plyimpact/analysis/model_stepper.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
+#include "plyimpact/fem/dof_map.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 
 #include <fmt/format.h>
 
-#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -159,8 +159,7 @@ StableStepSource explicit_highest_mode(const MechanicalModel& model, const std::
 }
 
 std::string stable_step_place_text(const StableStepSource& source, bool stacked) {
-  static constexpr std::array<const char*, 5> dof_names{"u", "v", "w", "thetax", "thetay"};
-  return fmt::format("{}{} at ({:.4g}, {:.4g}) mm", dof_names.at(static_cast<std::size_t>(source.place.dof)),
+  return fmt::format("{}{} at ({:.4g}, {:.4g}) mm", dof_name(source.place.dof),
                      stacked ? fmt::format(" of sub-laminate {}", source.place.sublaminate + 1) : "",
                      1e3 * source.xy.x(), 1e3 * source.xy.y());
 }

@@ -162,7 +162,7 @@ struct StableStepSource {
 /// [rad/s], and where its mode lies (modal_analysis.hpp, highest_mode). Throws std::invalid_argument,
 /// naming `key`, where M is not diagonal with mass on every DOF.
 [[nodiscard]] StableStepSource explicit_highest_mode(const MechanicalModel& model, const std::string& key);
-/// "thetax of sub-laminate 2 at (62.5, 37.5) mm" (1-based, the top one first; only for a stack).
+/// "theta_x of sub-laminate 2 at (62.5, 37.5) mm" (1-based, the top one first; only for a stack).
 [[nodiscard]] std::string stable_step_place_text(const StableStepSource& source, bool stacked);
 /// Central differences (CD1 to CD6) on any plate model with a diagonal mass: the one explicit integrator
 /// (central_difference_step.cpp). `key` is the deck key that chose it, for its messages. Throws

@@ -15,6 +15,13 @@ namespace plyimpact {
 inline constexpr int dofs_per_node = 5;
 inline constexpr int q9_dofs = 45;
 
+/// Name of nodal DOF d (0..4): "u", "v", "w", "theta_x", "theta_y" — the one table that messages and
+/// summaries use (output files add their units). Throws std::out_of_range outside 0..4.
+[[nodiscard]] inline const char* dof_name(int dof) {
+  static constexpr std::array<const char*, dofs_per_node> names{"u", "v", "w", "theta_x", "theta_y"};
+  return names.at(static_cast<std::size_t>(dof));
+}
+
 using ElementMatrix = Eigen::Matrix<double, q9_dofs, q9_dofs>;
 using ElementVector = Eigen::Matrix<double, q9_dofs, 1>;
 /// Global equation of each element DOF 5a + d (−1 when restrained).

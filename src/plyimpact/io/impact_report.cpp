@@ -1,11 +1,11 @@
 #include "plyimpact/io/impact_report.hpp"
 
+#include "plyimpact/fem/dof_map.hpp"
 #include "plyimpact/io/history_csv.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdlib>
 
@@ -125,13 +125,12 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["dt"] = s.dt;
   j["integration"] = std::string(to_string(s.integration)); // the plate's integrator (capabilities.hpp)
   if (s.stable_step) { // central differences: what sets the stable step (step_policy.hpp)
-    static constexpr std::array<const char*, 5> dofs{"u", "v", "w", "theta_x", "theta_y"};
     const StableStepSource& source = *s.stable_step;
     j["stable_step"] = {{"omega_max_rad_per_s", source.omega_max},
                         {"stable_step_s", stable_time_step(source.omega_max)},
                         {"highest_mode_at",
                          {{"sublaminate", source.place.sublaminate + 1},
-                          {"dof", dofs.at(static_cast<std::size_t>(source.place.dof))},
+                          {"dof", dof_name(source.place.dof)},
                           {"x_m", source.xy.x()},
                           {"y_m", source.xy.y()}}}};
   }
