@@ -29,6 +29,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -62,6 +64,7 @@ public:
   }
   /// No solve and no factorization: all zero.
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return NewtonStatistics{}; }
+  [[nodiscard]] std::optional<double> added_mass_kinetic_energy(const PlateState& s) const override;
 
 private:
   /// CD6: throws NewtonFailure, naming the step to use, where the contact spring of the step's secant
@@ -81,8 +84,32 @@ class CentralDifferencePolicy final : public ModelPolicy {
 public:
   CentralDifferencePolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
                           std::string key)
-      : ModelPolicy(std::move(model), options), key_(std::move(key)),
-        inverse_mass_(diagonal_mass(M_, key_).cwiseInverse()),
+      : CentralDifferencePolicy(policy_mass(*model, options, key), std::move(model), options,
+                                std::move(key)) {}
+
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
+    return std::make_unique<CentralDifferenceStepper>(*this, impactor);
+  }
+  [[nodiscard]] double dt() const { return options_.newmark.dt; }
+
+  std::string key_;
+  std::shared_ptr<const ScaledMass> mass_; ///< M_'s diagonal, and what scaling added to it
+  Eigen::VectorXd inverse_mass_;           ///< of the mass M_, diagonal
+  double omega_max_;
+
+private:
+  /// The case's mass where it built one, else the model's own.
+  static std::shared_ptr<const ScaledMass>
+  policy_mass(const MechanicalModel& model, const StepPolicyOptions& options, const std::string& key) {
+    if (options.explicit_mass) return options.explicit_mass;
+    return std::make_shared<const ScaledMass>(explicit_mass(model, key, MassScaling{}));
+  }
+
+  CentralDifferencePolicy(std::shared_ptr<const ScaledMass> mass,
+                          std::unique_ptr<const MechanicalModel>&& model, const StepPolicyOptions& options,
+                          std::string key)
+      : ModelPolicy(std::move(model), options, MassOperator(mass->mass)), key_(std::move(key)),
+        mass_(std::move(mass)), inverse_mass_(diagonal_mass(M_, key_).cwiseInverse()),
         omega_max_(options.explicit_omega_max
                        ? *options.explicit_omega_max
                        : highest_angular_frequency(model_->initial_stiffness(), M_.diagonal())) {
@@ -96,15 +123,6 @@ public:
           "or dt = \"auto\" ({} x 2/omega_max, omega_max = {:.4g} rad/s; finer elements lower it)",
           key_, dt(), largest, stable_step_fraction, omega_max_));
   }
-
-  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
-    return std::make_unique<CentralDifferenceStepper>(*this, impactor);
-  }
-  [[nodiscard]] double dt() const { return options_.newmark.dt; }
-
-  std::string key_;
-  Eigen::VectorXd inverse_mass_; ///< of the mass M_, diagonal
-  double omega_max_;
 };
 
 CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy& policy,
@@ -129,6 +147,11 @@ ContactSolution CentralDifferenceStepper::advance(long step, double t, const Pla
   return cs;
 }
 
+std::optional<double> CentralDifferenceStepper::added_mass_kinetic_energy(const PlateState& s) const {
+  if (p_.mass_->report.kind == MassScalingKind::none) return std::nullopt;
+  return p_.mass_->added_kinetic_energy(s.v);
+}
+
 void CentralDifferenceStepper::check_contact(long step, double t, const ContactSolution& cs,
                                              const ContactStep& contact) const {
   const double d_alpha = cs.alpha - contact.previous_indentation();
@@ -148,9 +171,15 @@ double stable_time_step(double omega_max) {
   return stable_step_fraction * 2.0 / omega_max;
 }
 
-StableStepSource explicit_highest_mode(const MechanicalModel& model, const std::string& key) {
-  const HighestMode mode =
-      highest_mode(model.initial_stiffness(), diagonal_mass(integrator_mass(model), key));
+ScaledMass explicit_mass(const MechanicalModel& model, const std::string& key, const MassScaling& scaling) {
+  const Eigen::VectorXd m = diagonal_mass(integrator_mass(model), key);
+  if (scaling.kind == MassScalingKind::none) return ScaledMass{m, {}, {}, {}};
+  return scaled_mass(model.initial_stiffness(), m, model.places(), model.contact_plate().mesh().node_count(),
+                     scaling);
+}
+
+StableStepSource explicit_highest_mode(const MechanicalModel& model, const Eigen::VectorXd& mass) {
+  const HighestMode mode = highest_mode(model.initial_stiffness(), mass);
   StableStepSource source;
   source.omega_max = mode.omega;
   source.place = model.place_of(mode.equation);

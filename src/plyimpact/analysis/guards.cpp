@@ -119,6 +119,15 @@ std::optional<std::string> energy_balance_reason(double energy_error, double ini
                      what, 0.5 * dt);
 }
 
+std::optional<std::string> added_mass_warning(double added_kinetic, double e0) {
+  if (!(e0 > 0.0) || !(added_kinetic > added_mass_energy_tolerance * e0)) return std::nullopt;
+  return fmt::format(
+      "the mass added by [time] mass_scaling carried up to {:.4g} J of kinetic energy, {:.3g} % "
+      "of the impact energy (more than {:.0f} %): the scaled plate's inertia may have changed "
+      "the answer. Give a shorter [time] target_dt, which adds less (docs/mass_scaling.md)",
+      added_kinetic, 100.0 * added_kinetic / e0, 100.0 * added_mass_energy_tolerance);
+}
+
 std::optional<std::string> large_deflection_warning(double peak_deflection, double thickness) {
   if (!(thickness > 0.0) || !(peak_deflection > max_linear_deflection * thickness)) return std::nullopt;
   return fmt::format(

@@ -104,6 +104,14 @@ constexpr std::size_t collapse_contact_episodes = 3;
 /// (membrane stretching stiffens it): the usual small-deflection limit of plate theory, about 0.3 h.
 constexpr double max_linear_deflection = 0.3;
 
+/// The largest kinetic energy the added mass of a mass-scaled run may carry before the run warns, as a
+/// fraction of the impact energy (docs/mass_scaling.md).
+constexpr double added_mass_energy_tolerance = 0.01;
+
+/// A warning where the added mass of a mass-scaled run carried more than added_mass_energy_tolerance of the
+/// impact energy `e0` at some step (its largest kinetic energy `added_kinetic`) [J].
+[[nodiscard]] std::optional<std::string> added_mass_warning(double added_kinetic, double e0);
+
 /// A warning suggesting `nonlinear = true` when a linear run's peak deflection exceeds
 /// max_linear_deflection times the laminate thickness h.
 [[nodiscard]] std::optional<std::string> large_deflection_warning(double peak_deflection, double thickness);

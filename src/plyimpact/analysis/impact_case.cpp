@@ -72,11 +72,19 @@ std::unique_ptr<const MechanicalModel> explicit_model(const ImpactCaseDescriptio
   return mechanical_model(model, physics);
 }
 
+/// The lumped mass that central differences move `explicit_plate` with, scaled as the deck asks
+/// (mass_scaling.hpp); null where the case's steps are implicit.
+std::shared_ptr<const ScaledMass> explicit_case_mass(const ImpactCaseDescription& d,
+                                                     const MechanicalModel* explicit_plate) {
+  if (!explicit_plate) return nullptr;
+  return std::make_shared<const ScaledMass>(
+      explicit_mass(*explicit_plate, explicit_key(plate_physics(d)), d.time.mass_scaling));
+}
+
 std::optional<StableStepSource> highest_mode(const ImpactCaseDescription& d,
-                                             const MechanicalModel* explicit_plate) {
+                                             const MechanicalModel* explicit_plate, const ScaledMass* mass) {
   if (!explicit_plate) return std::nullopt;
-  return naming_singular_causes(
-      d, [&] { return explicit_highest_mode(*explicit_plate, explicit_key(plate_physics(d))); });
+  return naming_singular_causes(d, [&] { return explicit_highest_mode(*explicit_plate, mass->mass); });
 }
 
 /// The description, once its mesh is known to fit in the memory available (mesh_memory.hpp): nothing is
@@ -90,6 +98,13 @@ ImpactCaseDescription within_memory(ImpactCaseDescription d) {
 /// throws std::invalid_argument with the reason otherwise, before anything is assembled.
 ImpactCaseDescription supported(ImpactCaseDescription d) {
   require_supported(d);
+  if (d.time.mass_scaling.kind != MassScalingKind::none &&
+      case_integrator(d) != Integrator::central_difference)
+    throw std::invalid_argument(fmt::format(
+        "time.mass_scaling = \"{}\" scales the lumped mass of explicit steps, but this case's steps are "
+        "implicit: remove mass_scaling, or choose explicit steps (integration = \"explicit\" in [time], "
+        "[damage] or [delamination])",
+        to_string(d.time.mass_scaling.kind)));
   if (d.time.adaptive && case_integrator(d) == Integrator::central_difference)
     throw std::invalid_argument(
         "time.adaptive factors K̄ at each step level, but [time] integration = \"explicit\" solves nothing "
@@ -150,7 +165,9 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
 }
 
 std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const PlateModel& model) {
-  const std::optional<StableStepSource> mode = highest_mode(d, explicit_model(d, model).get());
+  const std::unique_ptr<const MechanicalModel> plate = explicit_model(d, model);
+  const std::shared_ptr<const ScaledMass> mass = explicit_case_mass(d, plate.get());
+  const std::optional<StableStepSource> mode = highest_mode(d, plate.get(), mass.get());
   if (!mode) return std::nullopt;
   return mode->omega_max;
 }
@@ -238,10 +255,15 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(within_memory(supported(std::move(description)))),
       model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
   std::unique_ptr<const MechanicalModel> explicit_plate = explicit_model(description_, *model_);
-  const std::optional<StableStepSource> stable_step = highest_mode(description_, explicit_plate.get());
+  std::shared_ptr<const ScaledMass> explicit_mass = naming_singular_causes(
+      description_, [&] { return explicit_case_mass(description_, explicit_plate.get()); });
+  const std::optional<StableStepSource> stable_step =
+      highest_mode(description_, explicit_plate.get(), explicit_mass.get());
   if (stable_step) explicit_omega_max_ = stable_step->omega_max;
   settings_ = resolved_settings(description_, explicit_omega_max_);
   settings_.stable_step = stable_step;
+  if (explicit_mass && explicit_mass->report.kind != MassScalingKind::none)
+    settings_.mass_scaling = explicit_mass->report;
   require_bilateral(description_.boundary, "an impact");
   settings_.mesh = mesh_used(*model_, description_.mesh.grading.has_value() && !settings_.rigid_target);
   if (!(settings_.dt > 0.0)) throw std::invalid_argument("impact: time step must be positive");
@@ -258,6 +280,7 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   options.ordering = description_.ordering;
   options.memory_limit_bytes = description_.memory_limit_bytes;
   options.explicit_omega_max = explicit_omega_max_;
+  options.explicit_mass = std::move(explicit_mass);
   naming_singular_causes(description_, [&] {
     policy_ = step_policy(*model_, options, plate_physics(description_), std::move(explicit_plate));
   });

@@ -13,6 +13,7 @@
 #include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/impact_loop.hpp"
 #include "plyimpact/analysis/impact_observer.hpp"
+#include "plyimpact/analysis/mass_scaling.hpp"
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
 #include "plyimpact/fem/boundary.hpp"
@@ -75,6 +76,8 @@ struct ImpactSettings {
   MeshUsed mesh; ///< filled by ImpactCase
   /// What sets the stable step of an explicit run (filled by ImpactCase; empty for implicit steps)
   std::optional<StableStepSource> stable_step;
+  /// What mass scaling added (filled by ImpactCase; empty without, and for implicit steps)
+  std::optional<MassScalingReport> mass_scaling;
   double k = 0.0; ///< contact stiffness [N/m^1.5]
   ContactLawParameters contact;
   double dt = 1e-6;          ///< [s]

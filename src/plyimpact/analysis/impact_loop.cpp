@@ -200,6 +200,8 @@ void check_after_run(ImpactResult& r, const StepView& end, double e0, double law
     r.suspect_reason = *why;
     r.warnings.push_back(std::move(*why));
   }
+  if (r.added_mass_kinetic_energy)
+    if (auto w = added_mass_warning(*r.added_mass_kinetic_energy, e0)) r.warnings.push_back(std::move(*w));
   if (s.linear_thickness)
     if (auto w = large_deflection_warning(r.peak_contact_deflection, *s.linear_thickness))
       r.warnings.push_back(std::move(*w));
@@ -341,6 +343,8 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
                       {{"impactor displacement [m]", impactor.displacement()},
                        {"impactor velocity [m/s]", impactor.velocity()},
                        {"contact-point deflection ws [m]", ws}});
+    if (const std::optional<double> added = plate->added_mass_kinetic_energy(state))
+      r.added_mass_kinetic_energy = std::max(r.added_mass_kinetic_energy.value_or(0.0), *added);
     if (!rigid && step % full_state_check_every == 0) {
       check_finite_vector(step, t, "plate displacement u", state.u);
       check_finite_vector(step, t, "plate velocity", state.v);

@@ -118,6 +118,9 @@ struct ImpactResult {
   /// the end, as a
   /// fraction of ½ m v0² (impact_loop.hpp, energy_balance_tolerance).
   double energy_balance_error = 0.0;
+  /// The largest kinetic energy of the mass that mass scaling added, ½ vᵀΔMv, over the run [J]; empty
+  /// where the run scales none (analysis/mass_scaling.hpp).
+  std::optional<double> added_mass_kinetic_energy;
   bool suspect = false;              ///< energy_balance_error above energy_balance_tolerance
   std::string suspect_reason;        ///< why `suspect` is true (empty when it is false)
   std::vector<std::string> warnings; ///< guards.hpp: coarse Δt, mesh, cut-short or suspect run, w/h

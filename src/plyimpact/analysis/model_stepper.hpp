@@ -27,6 +27,9 @@ class ModelPolicy : public StepPolicy {
 public:
   ModelPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options)
       : model_(std::move(model)), options_(options), M_(integrator_mass(*model_)) {}
+  /// With the mass `M` in place of the model's (a scaled lumped mass, mass_scaling.hpp).
+  ModelPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options, MassOperator M)
+      : model_(std::move(model)), options_(options), M_(std::move(M)) {}
   [[nodiscard]] int equations() const override { return model_->size(); }
   [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
   [[nodiscard]] std::vector<std::string> warnings() const override { return model_->warnings(); }

@@ -84,6 +84,23 @@ enum class TimeIntegration {
   central_difference,
 };
 
+/// Which DOFs of an explicit run may take mass so that they stop setting its stable step (`[time]
+/// mass_scaling`, docs/mass_scaling.md; analysis/mass_scaling.hpp).
+enum class MassScalingKind {
+  none,   ///< the model's lumped mass as it is
+  rotary, ///< the rotary inertia of the nodes (θx, θy) only: the thin-shell remedy of explicit codes
+  nodal,  ///< any node, translations too: conventional target-step mass scaling, which adds real mass
+};
+
+/// `[time] mass_scaling` and `target_dt`.
+struct MassScaling {
+  MassScalingKind kind = MassScalingKind::none;
+  /// The stable step the scaled DOFs are brought up to [s]; empty for rotary: the step of the translations
+  /// (the rotations then never set the step).
+  std::optional<double> target_dt;
+  friend bool operator==(const MassScaling&, const MassScaling&) = default;
+};
+
 /// Newmark time stepping (2.11)–(2.16).
 struct TimeStepping {
   std::optional<double> dt;  ///< [s]; empty = "auto"
@@ -95,6 +112,7 @@ struct TimeStepping {
   /// engaged: error-controlled steps (impact_loop.hpp): dt is the largest step, halved where the
   /// estimated local error of the indentation exceeds the tolerance
   std::optional<AdaptiveTimeStep> adaptive;
+  MassScaling mass_scaling; ///< explicit runs only
   friend bool operator==(const TimeStepping&, const TimeStepping&) = default;
 };
 

@@ -18,6 +18,7 @@
 #include "plyimpact/analysis/contact_step.hpp"
 #include "plyimpact/analysis/hertz_contact.hpp"
 #include "plyimpact/analysis/impact_result.hpp"
+#include "plyimpact/analysis/mass_scaling.hpp"
 #include "plyimpact/analysis/newmark.hpp"
 #include "plyimpact/analysis/newton_solver.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
@@ -82,6 +83,10 @@ public:
     throw std::logic_error("this step policy has a fixed time step");
   }
   [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
+  /// ½ vᵀΔMv of the mass that mass scaling added (mass_scaling.hpp) [J]; empty where the run scales none.
+  [[nodiscard]] virtual std::optional<double> added_mass_kinetic_energy(const PlateState& /*s*/) const {
+    return std::nullopt;
+  }
 };
 
 class StepPolicy {
@@ -127,6 +132,9 @@ struct StepPolicyOptions {
   std::optional<double> memory_limit_bytes; ///< refuse a factor of K̄ estimated above this
   /// ω_max of the model that central differences move, where the case has computed it (for dt = "auto").
   std::optional<double> explicit_omega_max;
+  /// The lumped mass central differences move it with, where the case has built it (scaled or not,
+  /// explicit_mass); empty: the model's own.
+  std::shared_ptr<const ScaledMass> explicit_mass;
 };
 
 /// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
@@ -158,10 +166,15 @@ struct StableStepSource {
   EquationPlace place;                          ///< where the mode's mass-weighted amplitude is largest
   Eigen::Vector2d xy = Eigen::Vector2d::Zero(); ///< that node [m]
 };
-/// ω_max of K0 φ = ω² M φ, K0 `model`'s virgin undeformed stiffness and M its mass (the bound CD5 takes)
-/// [rad/s], and where its mode lies (modal_analysis.hpp, highest_mode). Throws std::invalid_argument,
-/// naming `key`, where M is not diagonal with mass on every DOF.
-[[nodiscard]] StableStepSource explicit_highest_mode(const MechanicalModel& model, const std::string& key);
+/// The lumped mass that central differences move `model` with: its own, scaled as `scaling` asks
+/// (mass_scaling.hpp). Throws std::invalid_argument, naming `key`, where the model's mass is not diagonal
+/// with mass on every DOF.
+[[nodiscard]] ScaledMass explicit_mass(const MechanicalModel& model, const std::string& key,
+                                       const MassScaling& scaling);
+/// ω_max of K0 φ = ω² M φ, K0 `model`'s virgin undeformed stiffness and M the diagonal `mass` (the bound
+/// CD5 takes) [rad/s], and where its mode lies (modal_analysis.hpp, highest_mode).
+[[nodiscard]] StableStepSource explicit_highest_mode(const MechanicalModel& model,
+                                                     const Eigen::VectorXd& mass);
 /// "theta_x of sub-laminate 2 at (62.5, 37.5) mm" (1-based, the top one first; only for a stack).
 [[nodiscard]] std::string stable_step_place_text(const StableStepSource& source, bool stacked);
 /// Central differences (CD1 to CD6) on any plate model with a diagonal mass: the one explicit integrator

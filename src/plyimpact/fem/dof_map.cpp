@@ -25,6 +25,15 @@ std::pair<int, int> DofMap::node_dof(int equation) const {
   return {slot / dofs_per_node, slot % dofs_per_node};
 }
 
+std::vector<std::pair<int, int>> DofMap::node_dofs() const {
+  std::vector<std::pair<int, int>> out(static_cast<std::size_t>(free_count_));
+  for (std::size_t slot = 0; slot < equation_.size(); ++slot)
+    if (const int eq = equation_[slot]; eq >= 0)
+      out[static_cast<std::size_t>(eq)] = {static_cast<int>(slot) / dofs_per_node,
+                                           static_cast<int>(slot) % dofs_per_node};
+  return out;
+}
+
 ElementEquations DofMap::element_equations(const Mesh& mesh, int e) const {
   ElementEquations eq{};
   const ElementNodes& conn = mesh.element_nodes(e);

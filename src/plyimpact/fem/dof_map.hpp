@@ -41,6 +41,8 @@ public:
   /// The node and DOF (0..4 = u, v, w, θx, θy) of a free equation (a search: for messages, not loops).
   /// Throws std::out_of_range for an equation outside 0..free_count() − 1.
   [[nodiscard]] std::pair<int, int> node_dof(int equation) const;
+  /// The node and DOF of every free equation, in equation order (one pass: for tables over all equations).
+  [[nodiscard]] std::vector<std::pair<int, int>> node_dofs() const;
   [[nodiscard]] ElementEquations element_equations(const Mesh& mesh, int e) const;
   /// Restraint actually applied at a node.
   [[nodiscard]] Restraint restraint_of(int node) const;

@@ -13,4 +13,12 @@ MassOperator::MassOperator(const SparseMatrix& M, double tolerance) : M_(M) {
   diagonal_ = M_.diagonal();
 }
 
+MassOperator::MassOperator(const Eigen::VectorXd& diagonal)
+    : M_(diagonal.size(), diagonal.size()), diagonal_(diagonal) {
+  M_.reserve(Eigen::VectorXi::Ones(diagonal.size()));
+  for (Eigen::Index i = 0; i < diagonal.size(); ++i)
+    M_.insert(i, i) = diagonal[i];
+  M_.makeCompressed();
+}
+
 } // namespace plyimpact

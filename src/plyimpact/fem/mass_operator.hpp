@@ -13,6 +13,8 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 class MassOperator {
 public:
   MassOperator(const SparseMatrix& M, double tolerance);
+  /// The diagonal mass `diagonal` (a lumped mass, scaled or not).
+  explicit MassOperator(const Eigen::VectorXd& diagonal);
   [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& x) const {
     if (diagonal_.size() > 0) return diagonal_.cwiseProduct(x);
     return M_ * x;

@@ -13,6 +13,17 @@ EquationPlace MechanicalModel::place_of(int i) const {
   return {0, node, dof};
 }
 
+std::vector<EquationPlace> MechanicalModel::places() const {
+  const std::vector<std::pair<int, int>> of_equation = contact_plate().dofs().node_dofs();
+  const EquationSubset& subset = contact_equations();
+  std::vector<EquationPlace> out(static_cast<std::size_t>(size()));
+  for (int i = 0; i < size(); ++i) {
+    const auto [node, dof] = of_equation[static_cast<std::size_t>(subset.model_equation(i))];
+    out[static_cast<std::size_t>(i)] = {0, node, dof};
+  }
+  return out;
+}
+
 SparseMatrix ModelState::iteration_matrix(const Eigen::VectorXd& /*u*/) const {
   throw std::logic_error("this model is driven by central differences only: it has no iteration matrix");
 }

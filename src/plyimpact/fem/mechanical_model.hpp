@@ -156,6 +156,8 @@ public:
   /// Where equation `i` (the integrator's numbering) lies; by default in contact_plate(), through
   /// contact_equations() (a search: for messages, not loops).
   [[nodiscard]] virtual EquationPlace place_of(int i) const;
+  /// place_of(i) of every equation i, in one pass (for tables over all equations).
+  [[nodiscard]] virtual std::vector<EquationPlace> places() const;
   /// The displacement u (the integrator's numbering) in the numbering of the case's plate, for observers
   /// (the top sub-laminate of a stack).
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;

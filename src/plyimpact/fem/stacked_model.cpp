@@ -361,6 +361,15 @@ public:
     const auto [node, dof] = stack.sublaminate(k).dofs().node_dof(i - stack.offset(k));
     return {k, node, dof};
   }
+  [[nodiscard]] std::vector<EquationPlace> places() const override {
+    const StackedPlateModel& stack = plate_.stack_;
+    std::vector<EquationPlace> out;
+    out.reserve(static_cast<std::size_t>(size()));
+    for (int k = 0; k < stack.sublaminate_count(); ++k)
+      for (const auto& [node, dof] : stack.sublaminate(k).dofs().node_dofs())
+        out.push_back({k, node, dof});
+    return out;
+  }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
     plate_.top_to_model(u, out);
   }

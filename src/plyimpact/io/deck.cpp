@@ -125,6 +125,15 @@ std::optional<Eigen::Vector2d> refinement_point(const TableReader& top) {
   return std::nullopt;
 }
 
+/// Whether the deck's plate steps with central differences: [time], [damage] or [delamination] integration
+/// = "explicit" (which of them win where they differ, analysis/capabilities.hpp, is the case's to say).
+bool steps_explicitly(const Deck& d) {
+  return d.time.integration == TimeIntegration::central_difference ||
+         (d.damage.progressive &&
+          d.damage.progressive->integration == DamageIntegration::central_difference) ||
+         (d.delamination && d.delamination->integration == DamageIntegration::central_difference);
+}
+
 } // namespace
 
 Deck parse_deck_table(const toml::table& root, std::string_view text, const std::string& source) {
@@ -196,6 +205,12 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
         "time.adaptive factors K̄ at each step level, but integration = \"explicit\" solves nothing "
         "and needs every step below the stable one: remove adaptive = true, or use integration = "
         "\"implicit\"");
+  if (d.time.mass_scaling.kind != MassScalingKind::none && !steps_explicitly(d))
+    top.optional_table("time")->fail_at(
+        "mass_scaling",
+        "time.mass_scaling scales the lumped mass of explicit steps, but this deck's steps are implicit: "
+        "remove mass_scaling, or choose explicit steps (integration = \"explicit\" in [time], [damage] or "
+        "[delamination])");
   if (d.time.adaptive && (!d.damage.criteria.empty() || d.damage.progressive || d.delamination))
     top.optional_table("time")->fail_at(
         "adaptive", "time.adaptive controls the error of the contact force only: the ply criteria, the "

@@ -168,11 +168,28 @@ std::optional<AdaptiveTimeStep> read_adaptive_time_step(const TableReader& t) {
   return a;
 }
 
+/// `mass_scaling` and `target_dt` of [time] (explicit steps, analysis/mass_scaling.hpp).
+MassScaling read_mass_scaling(const TableReader& t) {
+  MassScaling m;
+  m.kind = t.optional_choice<MassScalingKind>("mass_scaling", {{"none", MassScalingKind::none},
+                                                               {"rotary", MassScalingKind::rotary},
+                                                               {"nodal", MassScalingKind::nodal}})
+               .value_or(MassScalingKind::none);
+  m.target_dt = t.optional_positive("target_dt", "s");
+  if (m.target_dt && m.kind == MassScalingKind::none)
+    t.fail_at("target_dt", "time.target_dt is the stable step that mass scaling aims at: add mass_scaling = "
+                           "\"rotary\" or \"nodal\", or remove target_dt");
+  if (m.kind == MassScalingKind::nodal && !m.target_dt)
+    t.fail_at("mass_scaling", "time.mass_scaling = \"nodal\" adds mass up to a stable step that the deck "
+                              "gives: add target_dt (s), e.g. target_dt = 2e-8");
+  return m;
+}
+
 } // namespace
 
 TimeStepping read_time(const TableReader& t) {
   t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps", "adaptive", "tolerance", "levels",
-          "integration"});
+          "integration", "mass_scaling", "target_dt"});
   TimeStepping ts;
   ts.integration =
       t.optional_choice<TimeIntegration>("integration", {{"implicit", TimeIntegration::newmark},
@@ -194,6 +211,7 @@ TimeStepping read_time(const TableReader& t) {
     ts.max_steps = *m;
   }
   ts.adaptive = read_adaptive_time_step(t);
+  ts.mass_scaling = read_mass_scaling(t);
   if (ts.dt && ts.end && *ts.end / *ts.dt > static_cast<double>(max_step_cap))
     t.fail_at("end", fmt::format("time.end / time.dt = {:.3g} steps: more than the limit of {} steps",
                                  *ts.end / *ts.dt, max_step_cap));

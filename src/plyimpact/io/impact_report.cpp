@@ -103,6 +103,26 @@ std::string delamination_text(const DelaminationResult& d, double penalty_stiffn
   return t;
 }
 
+/// The largest kinetic energy of the added mass as a fraction of the impact energy (0 without).
+double added_energy_fraction(const ImpactSettings& s, const ImpactResult& r) {
+  const double e0 = 0.5 * s.impactor.mass * s.impactor.velocity * s.impactor.velocity;
+  return r.added_mass_kinetic_energy && e0 > 0.0 ? *r.added_mass_kinetic_energy / e0 : 0.0;
+}
+
+/// summary.json `mass_scaling` (docs/output.md): what was added, per sub-laminate, and what it carried.
+nlohmann::json mass_scaling_json(const MassScalingReport& m, const ImpactSettings& s, const ImpactResult& r) {
+  return {{"kind", to_string(m.kind)},
+          {"target_dt_s", m.target_dt},
+          {"scaled_nodes", m.scaled_nodes},
+          {"largest_factor", m.largest_factor},
+          {"mass_kg", m.mass_kg},
+          {"added_mass_kg", m.added_mass_kg},
+          {"rotary_inertia_kg_m2", m.rotary_inertia_kg_m2},
+          {"added_rotary_inertia_kg_m2", m.added_rotary_inertia_kg_m2},
+          {"added_kinetic_energy_max_J", or_null(r.added_mass_kinetic_energy)},
+          {"added_kinetic_energy_fraction", added_energy_fraction(s, r)}};
+}
+
 } // namespace
 
 nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, const ImpactResult& r) {
@@ -134,6 +154,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
                           {"x_m", source.xy.x()},
                           {"y_m", source.xy.y()}}}};
   }
+  if (s.mass_scaling) j["mass_scaling"] = mass_scaling_json(*s.mass_scaling, s, r);
   j["end_time"] = r.end_time;
   j["complete"] = r.complete;
   j["incomplete_reason"] = or_null(r.incomplete_reason);
@@ -232,6 +253,12 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
         "is largest at {}\n",
         stable_time_step(s.stable_step->omega_max) * 1e6, s.stable_step->omega_max,
         stable_step_place_text(*s.stable_step, s.delamination.has_value()));
+  if (s.mass_scaling) {
+    t += "  " + mass_scaling_text(*s.mass_scaling) + "\n";
+    if (r.added_mass_kinetic_energy)
+      t += fmt::format("  added mass: largest kinetic energy {:.4g} J ({:.3g} % of the impact energy)\n",
+                       *r.added_mass_kinetic_energy, 100.0 * added_energy_fraction(s, r));
+  }
   t += fmt::format("  peak force              {:12.2f} N at {:.2f} us\n", r.peak_force,
                    r.time_of_peak_force * 1e6);
   t += fmt::format("  contact duration        {:12.2f} us (first contact; {} contact(s))\n",

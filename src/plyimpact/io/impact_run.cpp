@@ -117,6 +117,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
       resolved_settings(impact_case_description(deck, impact.nonlinear()), impact.explicit_omega_max());
   out.settings.mesh = impact.settings().mesh; // the mesh the shared case runs on
   out.settings.stable_step = impact.settings().stable_step;
+  out.settings.mass_scaling = impact.settings().mass_scaling;
   out.history_layout = history_layout_of(deck, out.settings);
   if (out.settings.dt != impact.settings().dt)
     throw std::invalid_argument(
