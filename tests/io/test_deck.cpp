@@ -206,6 +206,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "deck.toml:35:16: error: time.mass_scaling = \"nodal\" adds mass up to a stable step that "
                 "the deck "
                 "gives: add target_dt"},
+        BadDeck{"StopAtEnergyErrorInPercent", "dt = 1.0e-6", "dt = 1.0e-6\nstop_at_energy_error = 5",
+                "deck.toml:34:24: error: time.stop_at_energy_error is a fraction of the impact energy from 0 "
+                "to 1 "
+                "(0.05 stops the run at an error of 5 %), got 5"},
+        BadDeck{"StopAtEnergyErrorZero", "dt = 1.0e-6", "dt = 1.0e-6\nstop_at_energy_error = 0",
+                "time.stop_at_energy_error must be positive"},
         BadDeck{"MassScalingMisspelt", "dt = 1.0e-6", "dt = 1.0e-6\nmass_scaling = \"rotational\"",
                 "time.mass_scaling"},
         BadDeck{"NegativeTimeStep", "dt = 1.0e-6", "dt = -1e-6", "time.dt must be positive"},

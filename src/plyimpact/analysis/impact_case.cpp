@@ -157,6 +157,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.newmark_beta = d.time.newmark_beta;
   s.newmark_gamma = d.time.newmark_gamma;
   s.max_steps = d.time.max_steps;
+  s.stop_at_energy_error = d.time.stop_at_energy_error;
   s.rigid_target = d.plate.rigid;
   s.nonlinear = d.nonlinear;
   s.progressive_damage = d.progressive_damage;
@@ -305,6 +306,7 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   loop.newmark_beta = settings_.newmark_beta;
   loop.newmark_gamma = settings_.newmark_gamma;
   loop.max_steps = settings_.max_steps;
+  loop.stop_at_energy_error = settings_.stop_at_energy_error;
   loop.adaptive = settings_.adaptive;
   loop.fundamental_period = fundamental_period_;
   loop.cancel = request.cancel;

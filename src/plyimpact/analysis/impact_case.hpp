@@ -84,6 +84,7 @@ struct ImpactSettings {
   std::optional<double> end; ///< [s]; empty: SPEC §4 end-of-event rule
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  std::optional<double> stop_at_energy_error;    ///< [time] stop_at_energy_error (fraction of ½ m v0²)
   std::optional<AdaptiveTimeStep> adaptive;      ///< engaged: dt is the largest of the error-controlled steps
   Integrator integration = Integrator::implicit; ///< the one integrator of the plate (capabilities.hpp)
   bool rigid_target = false;

@@ -178,6 +178,21 @@ private:
   mutable DelaminationAreas areas_; ///< its vectors are reused from step to step
 };
 
+/// |e0 − (impactor + plate kinetic + plate strain + dissipated + the contact law's work)| / e0 at `v`.
+double balance_error(const StepView& v, double e0, double law_work) {
+  const double total = v.impactor_energy + v.plate_kinetic_energy() + v.plate_strain_energy() +
+                       v.plate_dissipated_energy() + law_work;
+  return std::abs(e0 - total) / e0;
+}
+
+/// Why a run stops at `v`, whose running balance error passed LoopSettings::stop_at_energy_error.
+std::string energy_stop_reason(const StepView& v, double limit) {
+  return fmt::format("stopped at step {} (t = {:.6g} s): the energy balance error reached {:.3g} % of the "
+                     "impact energy, above [time] stop_at_energy_error = {:.3g} %: the run could not recover "
+                     "what it lost; the results up to here are written",
+                     v.step, v.t, 100.0 * *v.energy_balance_error, 100.0 * limit);
+}
+
 /// The checks of a finished run (guards.hpp): the energy balance (suspect above
 /// energy_balance_tolerance) and a linear plate deflected beyond max_linear_deflection thicknesses.
 /// The balance counts the contact's share as the contact law's exact work ∫F dα along the path of α
@@ -185,11 +200,7 @@ private:
 /// by construction for a point load, so only the law tells whether a step was too coarse to follow it.
 void check_after_run(ImpactResult& r, const StepView& end, double e0, double law_work, const Impactor& imp,
                      double k, ContactLoad load, const LoopSettings& s) {
-  if (e0 > 0.0) {
-    const double total = end.impactor_energy + end.plate_kinetic_energy() + end.plate_strain_energy() +
-                         end.plate_dissipated_energy() + law_work;
-    r.energy_balance_error = std::abs(e0 - total) / e0;
-  }
+  if (e0 > 0.0) r.energy_balance_error = balance_error(end, e0, law_work);
   EnergyBalanceClues clues;
   clues.load = load;
   clues.dissipated_fraction = e0 > 0.0 ? end.plate_dissipated_energy() / e0 : 0.0;
@@ -356,8 +367,15 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     if (const PlyDamageView* d = ply_damage_of(*plate)) record_damage_onsets(*d, t, force, damage_onsets);
     view.dt = step_nc->dt;
     update_view(step, t);
+    if (step % energy_check_every == 0 && e0 > 0.0)
+      view.energy_balance_error = balance_error(view, e0, law_work);
     for (ImpactObserver* o : observers)
       o->on_step(view);
+    if (s.stop_at_energy_error && view.energy_balance_error &&
+        *view.energy_balance_error > *s.stop_at_energy_error) {
+      r.stop_reason = energy_stop_reason(view, *s.stop_at_energy_error);
+      break;
+    }
     if (event.over(t)) {
       ended = true;
       break;

@@ -28,6 +28,8 @@ struct LoopSettings {
   std::optional<double> end; ///< [s]; empty: the SPEC §4 end-of-event rule
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  /// Stop where the running energy balance error passes this fraction of ½ m v0² (empty: never).
+  std::optional<double> stop_at_energy_error;
   /// engaged: error-controlled steps of at most dt (time_step_control.hpp); the policy must allow them
   std::optional<AdaptiveTimeStep> adaptive;
   double fundamental_period = 0.0;           ///< of the plate, for the end-of-event rule [s]
@@ -41,6 +43,10 @@ struct LoopSettings {
   /// can; the observers must not ask for the field
   bool contact_point_response = false;
 };
+
+/// The running energy balance is checked every this many steps (StepView::energy_balance_error, and
+/// LoopSettings::stop_at_energy_error): the plate's strain energy may cost an element loop.
+inline constexpr long energy_check_every = 100;
 
 /// Runs one impact event. The result's summary values are filled in; histories are the observers' job.
 [[nodiscard]] ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& impactor, double k,

@@ -42,6 +42,9 @@ public:
   double impactor_v = 0.0;      ///< [m/s]
   double impactor_energy = 0.0; ///< [J]
   double contact_work = 0.0;    ///< [J]
+  /// The energy balance error as a fraction of ½ m v0² at the latest check (every energy_check_every
+  /// steps, impact_loop.hpp); empty before the first.
+  std::optional<double> energy_balance_error;
 
   const PlateStateAccess* plate = nullptr; ///< null for a rigid target
 

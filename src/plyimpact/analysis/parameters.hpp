@@ -108,6 +108,9 @@ struct TimeStepping {
   double newmark_beta = 0.25;
   double newmark_gamma = 0.5;
   long max_steps = 2'000'000;
+  /// Stop the run where its energy balance error passes this fraction of the impact energy (checked every
+  /// energy_check_every steps, impact_loop.hpp); empty: run on and report the error at the end.
+  std::optional<double> stop_at_energy_error;
   TimeIntegration integration = TimeIntegration::newmark;
   /// engaged: error-controlled steps (impact_loop.hpp): dt is the largest step, halved where the
   /// estimated local error of the indentation exceeds the tolerance

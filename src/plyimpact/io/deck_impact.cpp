@@ -189,7 +189,7 @@ MassScaling read_mass_scaling(const TableReader& t) {
 
 TimeStepping read_time(const TableReader& t) {
   t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps", "adaptive", "tolerance", "levels",
-          "integration", "mass_scaling", "target_dt"});
+          "integration", "mass_scaling", "target_dt", "stop_at_energy_error"});
   TimeStepping ts;
   ts.integration =
       t.optional_choice<TimeIntegration>("integration", {{"implicit", TimeIntegration::newmark},
@@ -212,6 +212,15 @@ TimeStepping read_time(const TableReader& t) {
   }
   ts.adaptive = read_adaptive_time_step(t);
   ts.mass_scaling = read_mass_scaling(t);
+  if (const auto stop = t.optional_positive("stop_at_energy_error", "-")) {
+    if (!(*stop <= 1.0))
+      t.fail_at(
+          "stop_at_energy_error",
+          fmt::format("time.stop_at_energy_error is a fraction of the impact energy from 0 to 1 (0.05 stops "
+                      "the run at an error of 5 %), got {}",
+                      *stop));
+    ts.stop_at_energy_error = stop;
+  }
   if (ts.dt && ts.end && *ts.end / *ts.dt > static_cast<double>(max_step_cap))
     t.fail_at("end", fmt::format("time.end / time.dt = {:.3g} steps: more than the limit of {} steps",
                                  *ts.end / *ts.dt, max_step_cap));

@@ -1,12 +1,14 @@
 #include "plyimpact/io/impact_progress.hpp"
 
 #include "plyimpact/analysis/contact_rules.hpp"
+#include "plyimpact/analysis/guards.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace plyimpact {
 
@@ -28,6 +30,16 @@ ImpactProgress::ImpactProgress(const ImpactSettings& settings, double fundamenta
     : settings_(settings), fundamental_period_(fundamental_period),
       progress_("impact", 1.0, style, line_interval_s) {}
 
+namespace {
+
+/// ", energy error 3.2 %" once the running balance error has passed the tolerance (guards.hpp), else "".
+std::string energy_error_text(const StepView& view) {
+  if (!view.energy_balance_error || !(*view.energy_balance_error > energy_balance_tolerance)) return "";
+  return fmt::format(", energy error {:.3g} %", 100.0 * *view.energy_balance_error);
+}
+
+} // namespace
+
 void ImpactProgress::on_step(const StepView& view) {
   if (view.force > 0.0) touched_ = true;
   if (touched_ && separation_ < 0.0 && view.force == 0.0) separation_ = view.t;
@@ -35,8 +47,8 @@ void ImpactProgress::on_step(const StepView& view) {
   const double expected = expected_run_time(settings_, view, separation_, fundamental_period_);
   const bool known = settings_.end.has_value();
   progress_.update(std::min(view.t / expected, known ? 1.0 : 0.99),
-                   fmt::format("t = {:.4g} of {}{:.4g} ms, step {}", view.t * 1e3, known ? "" : "about ",
-                               expected * 1e3, view.step));
+                   fmt::format("t = {:.4g} of {}{:.4g} ms, step {}{}", view.t * 1e3, known ? "" : "about ",
+                               expected * 1e3, view.step, energy_error_text(view)));
 }
 
 void ImpactProgress::on_finish(const StepView& last, const ImpactResult& result) {
