@@ -49,9 +49,19 @@ double mass_for(const RowSums& r, Eigen::Index i, double omega_t2) {
   return 1.0 / (x * x);
 }
 
+/// MS1 over the equations of `group`, from the rows `r` of K on the mass `m`.
+double gershgorin_bound(const RowSums& r, const Eigen::VectorXd& m, std::span<const EquationPlace> places,
+                        DofGroup group) {
+  double g = 0.0;
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    if (in_group(places[static_cast<std::size_t>(i)].dof, group))
+      g = std::max(g, gershgorin_row(r, m, i)); // MS1
+  return g;
+}
+
 /// ω_t² of MS2: from the target step, or for rotary scaling without one the translations' MS1.
-double target_omega_squared(const SparseMatrix& K, const Eigen::VectorXd& m,
-                            std::span<const EquationPlace> places, const MassScaling& scaling) {
+double target_omega_squared(const RowSums& r, const Eigen::VectorXd& m, std::span<const EquationPlace> places,
+                            const MassScaling& scaling) {
   if (scaling.target_dt) {
     const double omega = stable_time_step(1.0) / *scaling.target_dt; // CD5 solved for ω
     return omega * omega;
@@ -59,7 +69,7 @@ double target_omega_squared(const SparseMatrix& K, const Eigen::VectorXd& m,
   if (scaling.kind == MassScalingKind::nodal)
     throw std::invalid_argument("time.mass_scaling = \"nodal\" adds mass up to a stable step that the deck "
                                 "gives: add [time] target_dt (s)");
-  return gershgorin_bound(K, m, places, DofGroup::translations);
+  return gershgorin_bound(r, m, places, DofGroup::translations);
 }
 
 /// Per node of each sub-laminate (index k · nodes + node): the largest of a quantity over its DOFs.
@@ -101,12 +111,7 @@ double ScaledMass::added_kinetic_energy(const Eigen::VectorXd& v) const {
 
 double gershgorin_bound(const SparseMatrix& K, const Eigen::VectorXd& m,
                         std::span<const EquationPlace> places, DofGroup group) {
-  const RowSums r = row_sums(K, m);
-  double g = 0.0;
-  for (Eigen::Index i = 0; i < m.size(); ++i)
-    if (in_group(places[static_cast<std::size_t>(i)].dof, group))
-      g = std::max(g, gershgorin_row(r, m, i)); // MS1
-  return g;
+  return gershgorin_bound(row_sums(K, m), m, places, group);
 }
 
 ScaledMass scaled_mass(const SparseMatrix& K, const Eigen::VectorXd& m, std::span<const EquationPlace> places,
@@ -122,10 +127,10 @@ ScaledMass scaled_mass(const SparseMatrix& K, const Eigen::VectorXd& m, std::spa
   for (std::size_t i = 0; i < places.size(); ++i)
     original.raise(slot_of(places[i], nodes), places[i].dof, m[static_cast<Eigen::Index>(i)]);
   if (scaling.kind != MassScalingKind::none) {
-    const double omega_t2 = target_omega_squared(K, m, places, scaling);
+    const RowSums r = row_sums(K, m);
+    const double omega_t2 = target_omega_squared(r, m, places, scaling);
     out.report.target_omega = std::sqrt(omega_t2);
     out.report.target_dt = stable_time_step(out.report.target_omega);
-    const RowSums r = row_sums(K, m);
     const DofGroup group = scaling.kind == MassScalingKind::rotary ? DofGroup::rotations : DofGroup::all;
     for (std::size_t i = 0; i < places.size(); ++i) {
       const auto eq = static_cast<Eigen::Index>(i);
