@@ -13,7 +13,9 @@
 
 namespace plyimpact {
 
-namespace {
+// Named rather than anonymous: SpdSolver::Impl (external linkage) holds these types as members, which
+// GCC refuses (-Wsubobject-linkage) when this file is compiled inside a unity batch.
+namespace spd_detail {
 
 /// CHOLMOD's code of an ordering.
 int cholmod_ordering(FillOrdering ordering) {
@@ -197,7 +199,13 @@ void check_ldlt(Eigen::ComputationInfo info, const Pivots& pivots) {
     throw NotPositiveDefinite("the matrix is singular to working precision (pivot ratio below 1e-13)");
 }
 
-} // namespace
+} // namespace spd_detail
+
+using spd_detail::check_ldlt;
+using spd_detail::CholmodLdlt;
+using spd_detail::CholmodOnceAnalysed;
+using spd_detail::SparsityPattern;
+using spd_detail::use_one_ordering;
 
 /// Eigen's SimplicialLDLT, whose analysis (the column counts of L) can be read before the factorization.
 class EigenLdlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> {

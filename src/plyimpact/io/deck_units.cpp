@@ -16,7 +16,7 @@ struct UnitRow {
 };
 
 // 1 N/mm^1.5 = 1 N / (1e-3 m)^1.5 = 1e3·√1e3 N/m^1.5 (not a power of ten: the only inexact factor).
-const std::array<UnitRow, 15> rows{{
+const std::array<UnitRow, 15> unit_rows{{
     {"-", {1.0, 1.0, "-"}},
     {"m", {1.0, 1e3, "mm"}},
     {"m^2", {1.0, 1e6, "mm^2"}},
@@ -52,7 +52,7 @@ std::string unit_system_names() {
 }
 
 UnitConversion unit_conversion(UnitSystem units, std::string_view si_unit) {
-  for (const UnitRow& r : rows)
+  for (const UnitRow& r : unit_rows)
     if (r.si == si_unit) return units == UnitSystem::si ? UnitConversion{1.0, 1.0, r.si} : r.mm;
   throw std::logic_error(fmt::format("deck units: no conversion for the unit '{}'", si_unit));
 }

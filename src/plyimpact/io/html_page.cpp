@@ -11,7 +11,7 @@ namespace plyimpact {
 
 namespace {
 
-constexpr std::string_view style = R"(
+constexpr std::string_view page_style = R"(
 body { font-family: "DejaVu Sans", Arial, sans-serif; margin: 24px auto; max-width: 1040px; color: #222; }
 h1 { font-size: 1.5em; margin-bottom: 0.2em; } h2 { font-size: 1.2em; border-bottom: 1px solid #ccc; }
 p.meta { color: #666; margin-top: 0; }
@@ -36,7 +36,7 @@ std::string html_page_start(std::string_view title, std::string_view meta) {
   return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                      "<title>plyimpact: {0}</title>\n<style>{1}</style>\n</head>\n<body>\n<h1>{0}</h1>\n"
                      "<p class=\"meta\">{2}</p>\n",
-                     xml_escaped(title), style, meta);
+                     xml_escaped(title), page_style, meta);
 }
 
 std::string_view html_page_end() {

@@ -63,7 +63,7 @@ private:
 
 /// Palette of the maps (ColorBrewer YlOrRd): white only where d = 0, any damage at least pale yellow,
 /// through orange to dark red at d = 1.
-constexpr const char* palette =
+constexpr const char* damage_palette =
     "set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', "
     "0.7 '#e31a1c', 1 '#800026')\n";
 
@@ -72,7 +72,7 @@ struct MapScale {
   const char* palette;
   const char* label;
 };
-constexpr MapScale ply_scale{palette, "damage variable d (white: 0, intact; 1: fully cracked)"};
+constexpr MapScale ply_scale{damage_palette, "damage variable d (white: 0, intact; 1: fully cracked)"};
 /// The interfaces: the softening points in the same colours up to red, the delaminated ones (d = 1)
 /// black, so that a C-scan's delaminated area stands out from a process zone whose d is 0.998.
 constexpr MapScale interface_scale{

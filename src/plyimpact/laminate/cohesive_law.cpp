@@ -6,6 +6,7 @@
 // so that (1 − d) K λ falls linearly from K Δ⁰ at λ = Δ⁰ to 0 at λ = Δᶠ. The area of the triangle is
 // ½ K Δ⁰ Δᶠ, set equal to the B-K toughness G_c(B): Δᶠ = 2 G_c / (K Δ⁰).
 #include "plyimpact/laminate/cohesive_law.hpp"
+#include "plyimpact/laminate/macaulay.hpp"
 
 #include <fmt/format.h>
 
@@ -16,11 +17,6 @@
 namespace plyimpact {
 
 namespace {
-
-/// Macaulay bracket ⟨x⟩ = max(x, 0).
-double macaulay(double x) {
-  return x > 0.0 ? x : 0.0;
-}
 
 void require_positive(std::string_view name, double value, std::string_view unit) {
   if (!(value > 0.0) || !std::isfinite(value)) {

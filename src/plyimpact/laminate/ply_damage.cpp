@@ -2,6 +2,7 @@
 // Lapczyk & Hurtado (2007) linear softening with crack-band regularisation. The equation numbers
 // (PD1)–(PD12) refer to docs/progressive_damage.md.
 #include "plyimpact/laminate/ply_damage.hpp"
+#include "plyimpact/laminate/macaulay.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -43,11 +44,6 @@ BandLimitError::BandLimitError(std::string_view material, DamageMode mode, doubl
       max_characteristic_length_(max_characteristic_length) {}
 
 namespace {
-
-/// The Macaulay bracket ⟨x⟩ = max(x, 0).
-double macaulay(double x) {
-  return x > 0.0 ? x : 0.0;
-}
 
 /// Which fibre and which matrix mode is loaded: the other two keep their damage but do not act on
 /// the stiffness and do not grow (Matzenmiller et al. 1995; Lapczyk & Hurtado 2007).
