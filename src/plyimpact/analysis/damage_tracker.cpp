@@ -3,6 +3,7 @@
 #include "plyimpact/fem/quadrature.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <algorithm>
 #include <map>
@@ -19,6 +20,11 @@ constexpr double rounding_guard = 1e-12;
 /// Stress points per element: the 3×3 Gauss points of PlateElement::stress_points().
 constexpr Eigen::Index stress_points = 9;
 static_assert(gauss3x3.size() == stress_points);
+
+/// Criteria evaluated at the faces of the plies (all but Choi–Chang's, which use the ply averages).
+bool on_faces(Criterion c) {
+  return c != Criterion::choi_chang_matrix && c != Criterion::choi_chang_delamination;
+}
 
 } // namespace
 
@@ -126,9 +132,7 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
         points_.push_back({e, i, j, p.x(), p.y(), q.weight * k.detJ});
       }
   }
-  needs_faces_ = std::any_of(criteria_.begin(), criteria_.end(), [](Criterion c) {
-    return c != Criterion::choi_chang_matrix && c != Criterion::choi_chang_delamination;
-  });
+  needs_faces_ = std::any_of(criteria_.begin(), criteria_.end(), on_faces);
   const auto n_points = static_cast<Eigen::Index>(points_.size());
   const auto n_elements = static_cast<Eigen::Index>(mesh.element_count());
   U_.resize(q9_dofs, n_elements);
@@ -150,8 +154,19 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
   // laminate of the plate. A point whose bound stays below both 1 and the peak index so far can
   // neither fail nor raise the peak. Matrix cracks gate (2.43): with delamination tracked, the
   // cracks are one more bound slot (no new crack while its bound stays below 1).
+  // A face criterion's gauge branches grow by at most their column norms times |Δe| (W·A, per face
+  // and ply); the slot takes the largest over them.
   bound_slots_ = criteria_.size() + (track_cracks_for_delamination_ ? 1 : 0);
+  build_gauges();
   for (std::size_t c = 0; c < bound_slots_; ++c) {
+    if (c < criteria_.size() && on_faces(criteria_[c])) {
+      Eigen::Matrix<double, 5, 1> bound = Eigen::Matrix<double, 5, 1>::Zero();
+      for (const auto& terms : gauge_terms_[c])
+        for (const GaugeTerm& term : terms)
+          bound = bound.cwiseMax(term.branch.W.colwise().norm().transpose());
+      slot_bound_.push_back(bound);
+      continue;
+    }
     const bool interfaces = c < criteria_.size() && criteria_[c] == Criterion::choi_chang_delamination;
     Eigen::Matrix<double, 5, 1> bound = Eigen::Matrix<double, 5, 1>::Zero();
     for (std::size_t s = 0; s < sections_.size(); ++s) {
@@ -160,7 +175,7 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
         bound = bound.cwiseMax(layer_bound(sec, k, interfaces));
       }
     }
-    choi_chang_bound_.push_back(bound);
+    slot_bound_.push_back(bound);
   }
   // |Δe_j| ≤ Σ_a |B(j, w_a)| max|Δw| + Σ_a (|B(j, θx_a)| + |B(j, θy_a)|) max|Δθ|, so the bound β·|e|
   // grows by at most (β·R_w) max|Δw| + (β·R_θ) max|Δθ| (see lipschitz_).
@@ -170,7 +185,7 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
       rw += Bb.col(3 * a).cwiseAbs();
       rr += Bb.col(3 * a + 1).cwiseAbs() + Bb.col(3 * a + 2).cwiseAbs();
     }
-    for (const auto& bound : choi_chang_bound_)
+    for (const auto& bound : slot_bound_)
       lipschitz_.push_back({bound.dot(rw), bound.dot(rr)});
   }
   path_w_.assign(static_cast<std::size_t>(n_elements), 0.0);
@@ -207,13 +222,14 @@ DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> cri
 
 void DamageTracker::observe(long step, double t, double force, const Eigen::VectorXd& u) {
   if (step % options_.every != 0) return;
+  observed_points_ += static_cast<long>(points_.size());
   // Under a transverse load a laminate with B = 0 and I1 = 0 never moves in-plane: then only the
   // bending DOFs (w, θx, θy) and strains (κ, γ) enter, 27 of 45 columns and 5 of 8 rows.
   bool bending_only = true;
   for (std::size_t i = 0; i < inplane_equations_.size() && bending_only; ++i)
     bending_only = u(inplane_equations_[i]) == 0.0;
-  if (bending_only && !needs_faces_) {
-    observe_choi_chang_bending(u, t, force);
+  if (bending_only && options_.skip_proven_points && (!needs_faces_ || gauged_)) {
+    observe_skipping_bending(u, t, force);
     return;
   }
   proofs_valid_ = false;
@@ -280,7 +296,7 @@ void DamageTracker::refresh_proof(std::size_t g, std::size_t e, const Eigen::Mat
   const Eigen::Matrix<double, 5, 1> magnitude = strains.cwiseAbs();
   for (std::size_t c = 0; c < bound_slots_; ++c) {
     const double limit = c == criteria_.size() ? 1.0 : std::min(1.0, peak_[c]);
-    margin_[c * points_.size() + g] = limit - choi_chang_bound_[c].dot(magnitude);
+    margin_[c * points_.size() + g] = headroom(c, limit) - slot_bound_[c].dot(magnitude);
   }
   keep_proof(g, e, strains);
 }
@@ -300,7 +316,7 @@ bool DamageTracker::proven_again(std::size_t g, std::size_t e, const Eigen::Matr
   const Eigen::Matrix<double, 5, 1> change = (strains - proof_strains_[g]).cwiseAbs();
   for (std::size_t c = 0; c < bound_slots_; ++c) {
     const std::size_t i = c * points_.size() + g;
-    margin_[i] = proof_margin_[i] - choi_chang_bound_[c].dot(change);
+    margin_[i] = proof_margin_[i] - slot_bound_[c].dot(change);
     if (!(margin_[i] > rounding_guard)) return false;
   }
   proof_path_w_[g] = path_w_[e];
@@ -316,6 +332,10 @@ void DamageTracker::refresh_proof_exactly(std::size_t g, std::size_t e,
   // still fail). Interfaces that (2.43) did not evaluate (no adjacent crack) stay unevaluated while
   // the crack slot's margin holds, and do not count.
   for (std::size_t c = 0; c < bound_slots_; ++c) {
+    if (c < criteria_.size() && on_faces(criteria_[c])) {
+      margin_[c * points_.size() + g] = gauge_margin(c, g, strains);
+      continue;
+    }
     double margin = 1.0 - point_unfailed_[c];
     if (c < criteria_.size()) margin = std::min(margin, peak_[c] - point_largest_[c]);
     margin_[c * points_.size() + g] = margin;
@@ -329,7 +349,7 @@ bool DamageTracker::proven_now(std::size_t g) const {
   return true;
 }
 
-void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double t, double force) {
+void DamageTracker::observe_skipping_bending(const Eigen::VectorXd& u, double t, double force) {
   if (proofs_valid_) {
     advance_paths(u);
   } else {
@@ -357,14 +377,7 @@ void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double 
       if (proven_again(g, ue, eb)) continue;
       refresh_proof(g, ue, eb);
       if (!proven_now(g)) { // not proven by the bounds at this state: evaluate the plies
-        const auto col = static_cast<Eigen::Index>(g);
-        for (std::size_t k = 0; k < sec.plies; ++k) {
-          const auto row = 5 * static_cast<Eigen::Index>(k);
-          const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb; // σ̄22, τ̄13, τ̄23
-          S_average_(row + 1, col) = v(0);
-          S_average_(row + 3, col) = v(1);
-          S_average_(row + 4, col) = v(2);
-        }
+        point_stresses_bending(g, sec, eb);
         evaluate_point(g, t, force);
         refresh_proof_exactly(g, ue, eb);
       }
@@ -372,9 +385,86 @@ void DamageTracker::observe_choi_chang_bending(const Eigen::VectorXd& u, double 
   }
 }
 
+void DamageTracker::point_stresses_bending(std::size_t g, const SectionOperators& sec,
+                                           const Eigen::Matrix<double, 5, 1>& eb) {
+  const auto col = static_cast<Eigen::Index>(g);
+  for (std::size_t k = 0; k < sec.plies; ++k) {
+    const auto row = 5 * static_cast<Eigen::Index>(k);
+    if (needs_faces_) { // the products of observe_bending: the same bits
+      S_average_.block<5, 1>(row, col).noalias() = sec.average_bending[k] * eb;
+      S_top_.block<5, 1>(row, col).noalias() = sec.top_bending[k] * eb;
+      S_bottom_.block<5, 1>(row, col).noalias() = sec.bottom_bending[k] * eb;
+      continue;
+    }
+    const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb; // σ̄22, τ̄13, τ̄23
+    S_average_(row + 1, col) = v(0);
+    S_average_(row + 3, col) = v(1);
+    S_average_(row + 4, col) = v(2);
+  }
+}
+
+void DamageTracker::build_gauges() {
+  // Every face criterion's gauge branches on the top and bottom face of every ply, as maps of the
+  // bending strains (κ, γ); a criterion without a gauge on some ply leaves the skipping off.
+  gauged_ = true;
+  gauge_terms_.assign(criteria_.size(), {});
+  gauge_largest_h_.assign(criteria_.size(), -1.0);
+  gauge_linear_.assign(criteria_.size(), 0);
+  for (std::size_t c = 0; c < criteria_.size(); ++c) {
+    if (!on_faces(criteria_[c])) continue;
+    for (const SectionOperators& sec : sections_) {
+      std::vector<GaugeTerm>& terms = gauge_terms_[c].emplace_back();
+      for (std::size_t k = 0; k < sec.plies; ++k) {
+        const auto gauge =
+            criterion_gauge(criteria_[c], sec.laminate->material_of(k), options_.criterion_options);
+        if (!gauge) {
+          gauged_ = false;
+          continue;
+        }
+        for (const GaugeBranch& b : *gauge) {
+          if (b.quadratic)
+            gauge_largest_h_[c] = std::max(gauge_largest_h_[c], b.h.norm());
+          else
+            gauge_linear_[c] = 1;
+          for (const Eigen::Matrix<double, 5, 5>* A : {&sec.top_bending[k], &sec.bottom_bending[k]}) {
+            GaugeTerm term{k, b};
+            term.branch.W = b.W * *A;
+            terms.push_back(term);
+          }
+        }
+      }
+    }
+  }
+}
+
+double DamageTracker::headroom(std::size_t c, double limit) const {
+  // What β·|e| may reach at a state before the slot's bound could reach `limit`: the limit itself for
+  // the Choi–Chang indices (index ≤ β·|e|); for a gauge, N ≤ ‖h‖ + β·|e| stays below the branch's
+  // threshold √(limit + ‖h‖²) (quadratic; least room at the largest ‖h‖) or limit (linear).
+  if (c >= criteria_.size() || !on_faces(criteria_[c])) return limit;
+  double room = gauge_linear_[c] != 0 ? limit : std::numeric_limits<double>::infinity();
+  if (const double H = gauge_largest_h_[c]; H >= 0.0)
+    room = std::min(room, std::sqrt(std::max(limit + H * H, 0.0)) - H);
+  return room;
+}
+
+double DamageTracker::gauge_margin(std::size_t c, std::size_t g,
+                                   const Eigen::Matrix<double, 5, 1>& eb) const {
+  // Exact at this state: how far every branch's norm is from its threshold, with the limit 1 or the
+  // peak for a ply that has not failed, the peak for one that has.
+  const auto section = static_cast<std::size_t>(model_.section_index(points_[g].element));
+  const double open_limit = std::min(1.0, peak_[c]);
+  double margin = std::numeric_limits<double>::infinity();
+  for (const GaugeTerm& term : gauge_terms_[c][section]) {
+    const double limit = failed_[slot(c, term.ply, g)] != 0 ? peak_[c] : open_limit;
+    margin = std::min(margin, term.branch.threshold(limit) - term.branch.norm(eb));
+  }
+  return margin;
+}
+
 void DamageTracker::observe_bending(double t, double force) {
-  // Face criteria on a bending-only state: fixed-size products, point by point, 5×27 for the
-  // strains, 5×5 per ply for the stresses at the ply's mid-plane and faces.
+  // Every point of a bending-only state (face criteria without a gauge, or no skipping): fixed-size products,
+  // point by point, 5×27 for the strains, 5×5 per ply for the stresses at the ply's mid-plane and faces.
   Eigen::Matrix<double, 27, 1> ub;
   const Mesh& mesh = model_.mesh();
   for (Eigen::Index e = 0; e < U_.cols(); ++e) {
@@ -389,6 +479,7 @@ void DamageTracker::observe_bending(double t, double force) {
       for (std::size_t k = 0; k < sec.plies; ++k) {
         const auto row = 5 * static_cast<Eigen::Index>(k);
         S_average_.block<5, 1>(row, g).noalias() = sec.average_bending[k] * eb;
+        if (!needs_faces_) continue;
         S_top_.block<5, 1>(row, g).noalias() = sec.top_bending[k] * eb;
         S_bottom_.block<5, 1>(row, g).noalias() = sec.bottom_bending[k] * eb;
       }
@@ -442,6 +533,7 @@ PlyStress as_ply_stress(const Eigen::Matrix<double, 5, 1>& v) {
 } // namespace
 
 void DamageTracker::evaluate_point(std::size_t g, double t, double force) {
+  ++evaluated_points_;
   const SectionOperators& sec = section_at(g);
   const Laminate& lam = *sec.laminate;
   const std::size_t plies = sec.plies;

@@ -7,6 +7,7 @@
 #include "plyimpact/analysis/impact_observer.hpp"
 #include "plyimpact/analysis/stress_recovery.hpp"
 #include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/laminate/criterion_gauge.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
 #include <array>
@@ -38,6 +39,9 @@ struct DamageAreaSample {
 struct DamageOptions {
   int every = 1; ///< evaluate every k-th step
   CriterionOptions criterion_options;
+  /// Skip the points that provably cannot fail or raise a peak index (the same onsets and peaks);
+  /// false: every point at every observation (the reference the tests compare the skipping with).
+  bool skip_proven_points = true;
 };
 
 class DamageTracker final : public ImpactObserver {
@@ -59,6 +63,10 @@ public:
   [[nodiscard]] double peak_index(Criterion criterion) const;
   [[nodiscard]] bool any_failure() const { return !onsets_.empty(); }
   [[nodiscard]] const std::vector<Criterion>& criteria() const { return criteria_; }
+  /// How many times a stress point had its plies evaluated (the rest were proven safe and skipped).
+  [[nodiscard]] long evaluated_points() const { return evaluated_points_; }
+  /// Stress points × observations: what evaluating every point every time would have cost.
+  [[nodiscard]] long observed_points() const { return observed_points_; }
 
 private:
   struct GaussPoint {
@@ -91,7 +99,13 @@ private:
   void gather_all(const Eigen::VectorXd& u);
   void observe_bending(double t, double force);
   void observe_general(double t, double force);
-  void observe_choi_chang_bending(const Eigen::VectorXd& u, double t, double force);
+  void observe_skipping_bending(const Eigen::VectorXd& u, double t, double force);
+  void point_stresses_bending(std::size_t g, const SectionOperators& sec,
+                              const Eigen::Matrix<double, 5, 1>& eb);
+  void build_gauges();
+  [[nodiscard]] double headroom(std::size_t slot, double limit) const;
+  [[nodiscard]] double gauge_margin(std::size_t c, std::size_t g,
+                                    const Eigen::Matrix<double, 5, 1>& eb) const;
   void advance_paths(const Eigen::VectorXd& u);
   [[nodiscard]] Eigen::Matrix<double, 27, 1> bending_dofs(const Eigen::VectorXd& u, int e) const;
   [[nodiscard]] bool still_proven(std::size_t g, std::size_t e, std::size_t shape) const;
@@ -115,14 +129,26 @@ private:
   std::vector<Eigen::Matrix<double, 5, 27>> B_bending_; ///< (κ, γ) rows, (w, θx, θy) columns of B_
   std::vector<int> inplane_equations_;
   std::size_t bound_slots_ = 0; ///< the criteria, and the matrix cracks when they gate delamination
-  std::vector<Eigen::Matrix<double, 5, 1>> choi_chang_bound_; ///< per slot: index ≤ bound · |(κ, γ)|
-  // Skipping points between evaluations (Choi–Chang only, bending only): a point's bounds and
-  // indices can grow between two observations by at most lip_w · Δw + lip_rot · Δθ, where Δw, Δθ are
-  // the largest changes of the element's w and rotations; summed over observations (the element's
-  // path), the growth since the point's last proof is bounded, and the point is looked at again only
-  // when that growth could use up a margin of its proof (to 1 for the layers that have not failed, to
-  // the peak index so far for all). Exact: the onsets and peaks are those of evaluating every point
-  // every time.
+  /// Per slot, β: its Choi–Chang indices, or the norms of its criterion's gauge, grow by at most
+  /// β·|Δ(κ, γ)|; for Choi–Chang also index ≤ β·|(κ, γ)|, for a gauge N ≤ ‖h‖ + β·|(κ, γ)|.
+  std::vector<Eigen::Matrix<double, 5, 1>> slot_bound_;
+  /// The gauge of a face criterion (laminate/criterion_gauge.hpp) on one face of one ply, with W
+  /// replaced by W·A_face (columns κ, γ): N = ‖r(W e) + h‖ at the point's bending strains e.
+  struct GaugeTerm {
+    std::size_t ply = 0;
+    GaugeBranch branch;
+  };
+  std::vector<std::vector<std::vector<GaugeTerm>>> gauge_terms_; ///< per criterion, per laminate
+  std::vector<double> gauge_largest_h_; ///< per criterion: largest ‖h‖ of its quadratic branches (< 0: none)
+  std::vector<char> gauge_linear_;      ///< per criterion: has linear branches
+  bool gauged_ = false;                 ///< every face criterion has a gauge on every ply
+  // Skipping points between evaluations (bending only; Choi–Chang, and the face criteria that have a
+  // gauge, in the gauge's norms N instead of the indices): a point's bounds and indices can grow between two
+  // observations by at most lip_w · Δw + lip_rot · Δθ, where Δw, Δθ are the largest changes of the element's
+  // w and rotations; summed over observations (the element's path), the growth since the point's last proof
+  // is bounded, and the point is looked at again only when that growth could use up a margin of its proof (to
+  // 1 for the layers that have not failed, to the peak index so far for all). Exact: the onsets and peaks are
+  // those of evaluating every point every time.
   struct PointLipschitz {
     double w = 0.0, rotation = 0.0; ///< index bound growth per unit Δw [1/m], per unit Δθ [1/rad]
   };
@@ -131,7 +157,7 @@ private:
   bool proofs_valid_ = false;                  ///< false: every point is evaluated at the next observation
   std::vector<double> path_w_, path_rotation_; ///< per element: Σ max|Δw|, Σ max|Δθ|
   std::vector<double> proof_path_w_, proof_path_rotation_; ///< per point: the element paths at its proof
-  std::vector<double> margin_; ///< per (slot, point): what the bounds may grow by before a change
+  std::vector<double> margin_; ///< per (slot, point): what the bounds (or norms) may grow by before a change
   std::vector<Eigen::Matrix<double, 5, 1>> proof_strains_; ///< per point: (κ, γ) at its last proof
   std::vector<double> proof_margin_;                       ///< per (slot, point): the margins then
   std::vector<double> point_largest_;  ///< per slot: the largest index of the point just evaluated
@@ -145,6 +171,7 @@ private:
   bool needs_matrix_ = false;
   std::vector<DamageOnset> onsets_;
   std::vector<DamageAreaSample> areas_;
+  long evaluated_points_ = 0, observed_points_ = 0;
 };
 
 [[nodiscard]] std::vector<Criterion> parse_criteria(const std::vector<std::string>& names);
