@@ -142,7 +142,7 @@ void StackedImpactPlate::top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd&
 }
 
 InterfaceStates::InterfaceStates(const StackedImpactPlate& plate)
-    : plate_(plate), committed_(plate.stack_.virgin_state()) {}
+    : plate_(plate), committed_(plate.stack_.initial_state()) {}
 
 void InterfaceStates::accept() {
   std::swap(committed_, trial_); // trial_ keeps the old states' storage for the next set_trial()

@@ -70,7 +70,8 @@ double turon_penalty_stiffness(const Laminate& laminate, const std::vector<int>&
 
 StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
                                      Discretization discretization,
-                                     const std::function<BoundaryConditions(int sublaminate)>& bc_of) {
+                                     const std::function<BoundaryConditions(int sublaminate)>& bc_of)
+    : seed_radius_(stack.seed_radius), seed_centre_(stack.seed_x, stack.seed_y) {
   const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const int kk = static_cast<int>(k);
@@ -109,6 +110,14 @@ StackedPlateState StackedPlateModel::virgin_state() const {
   StackedPlateState state;
   for (const auto& i : interfaces_)
     state.interfaces.emplace_back(static_cast<std::size_t>(i->point_count()));
+  return state;
+}
+
+StackedPlateState StackedPlateModel::initial_state() const {
+  StackedPlateState state = virgin_state();
+  if (seed_radius_ <= 0.0) return state;
+  for (int i = 0; i < interface_count(); ++i)
+    crack(state, i, [this](const Eigen::Vector2d& p) { return (p - seed_centre_).norm() < seed_radius_; });
   return state;
 }
 

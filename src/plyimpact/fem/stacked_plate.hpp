@@ -77,6 +77,10 @@ struct StackSettings {
   /// Newton's choice of tangent at the law's kink (CohesiveLaw::update): the loading tangent within
   /// this relative band below the softening envelope.
   double loading_band = 1e-2;
+  /// An initial delamination: every interface fully delaminated (d = 1) at the start within this radius
+  /// of (seed_x, seed_y) [m]; 0: none (the fracture-mechanics checks, docs/delamination_threshold.md).
+  double seed_radius = 0.0;
+  double seed_x = 0.0, seed_y = 0.0;
   friend bool operator==(const StackSettings&, const StackSettings&) = default;
 };
 
@@ -105,6 +109,8 @@ public:
 
   /// No damage anywhere.
   [[nodiscard]] StackedPlateState virgin_state() const;
+  /// The state a run starts from: no damage but the seed of the settings (StackSettings::seed_radius).
+  [[nodiscard]] StackedPlateState initial_state() const;
   /// Marks as cracked (d = 1) the points of interface i where `cracked(x, y)` holds (an initial crack).
   void crack(StackedPlateState& state, int i,
              const std::function<bool(const Eigen::Vector2d&)>& cracked) const;
@@ -152,6 +158,8 @@ private:
   int size_ = 0;
   std::vector<std::unique_ptr<CohesiveInterface>> interfaces_;
   SparseMatrix K_plates_;
+  double seed_radius_ = 0.0;          ///< StackSettings::seed_radius
+  Eigen::Vector2d seed_centre_{0, 0}; ///< (seed_x, seed_y)
 };
 
 /// The interfaces' areas and dissipation after a step of a run on the stacked plate (issue 19).

@@ -35,6 +35,10 @@ ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) 
   }
   d.progressive_damage = deck.damage.progressive;
   d.delamination = deck.delamination;
+  if (d.delamination) { // the seed (if any) lies under the impactor
+    d.delamination->stack.seed_x = d.impactor.x;
+    d.delamination->stack.seed_y = d.impactor.y;
+  }
   d.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
   return d;
 }

@@ -99,7 +99,7 @@ CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, cons
 
 DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool plies_given) {
   t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
-          "penalty_stiffness", "onset", "integration", "points", "supports"});
+          "penalty_stiffness", "onset", "integration", "points", "supports", "seed_radius"});
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
   if (!d.regions.empty())
     t.fail_here(
@@ -113,6 +113,8 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool
                      .value_or(CohesiveIntegration::nodal);
   s.supports_on_all =
       t.optional_choice<bool>("supports", {{"all", true}, {"bottom", false}}).value_or(s.supports_on_all);
+  // A disk delaminated from the start in every interface, centred under the impactor (case_from_deck).
+  s.stack.seed_radius = t.optional_positive("seed_radius", "m").value_or(0.0);
   // The plate steps with one integrator: left out, the interfaces' step is [time]'s where that is explicit,
   // else the plies' where [damage] gives it, else lagged (and the plies then follow, deck.cpp).
   const bool plies_lead = d.damage.progressive && plies_given;
