@@ -74,9 +74,8 @@ criteria = [)" + criteria +
 struct DamageRun {
   std::vector<DamageOnset> onsets;
   std::vector<DamageAreaSample> areas;
-  double matrix_peak = 0.0, delamination_peak = 0.0; ///< largest indices over the run
-  std::vector<double> peaks;                         ///< per criterion of the deck
-  long evaluated = 0, observed = 0;                  ///< point evaluations, points × observations
+  std::vector<double> peaks;        ///< largest index over the run, per criterion of the deck
+  long evaluated = 0, observed = 0; ///< point evaluations, points × observations
 };
 
 DamageRun run_with_damage(const Deck& deck, bool skip = true) {
@@ -90,8 +89,6 @@ DamageRun run_with_damage(const Deck& deck, bool skip = true) {
   DamageRun out;
   out.onsets = tracker.onsets();
   out.areas = tracker.area_history();
-  out.matrix_peak = tracker.peak_index(Criterion::choi_chang_matrix);
-  out.delamination_peak = tracker.peak_index(Criterion::choi_chang_delamination);
   for (const Criterion c : tracker.criteria())
     out.peaks.push_back(tracker.peak_index(c));
   out.evaluated = tracker.evaluated_points();

@@ -69,8 +69,7 @@ struct CentreResponse {
 
 CentreResponse centre_response(double seed_radius) {
   const ImpactCaseDescription d = impact_case_description(seeded_plate(seed_radius));
-  const ImpactCase impact(d);
-  const PlateModel& model = impact.model();
+  const PlateModel model = impact_plate_model(d); // the case's plate, without its time stepping
   const StackedPlateModel stack = impact_stack(model, *d.delamination);
   const StackedPlateState state = stack.initial_state();
   int centre = 0;

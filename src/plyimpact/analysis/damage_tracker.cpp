@@ -390,13 +390,14 @@ void DamageTracker::point_stresses_bending(std::size_t g, const SectionOperators
   const auto col = static_cast<Eigen::Index>(g);
   for (std::size_t k = 0; k < sec.plies; ++k) {
     const auto row = 5 * static_cast<Eigen::Index>(k);
-    if (needs_faces_) { // the products of observe_bending: the same bits
+    if (needs_faces_) {
       S_average_.block<5, 1>(row, col).noalias() = sec.average_bending[k] * eb;
       S_top_.block<5, 1>(row, col).noalias() = sec.top_bending[k] * eb;
       S_bottom_.block<5, 1>(row, col).noalias() = sec.bottom_bending[k] * eb;
       continue;
     }
-    const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb; // σ̄22, τ̄13, τ̄23
+    // Choi–Chang alone reads the averages' σ̄22, τ̄13, τ̄23.
+    const Eigen::Matrix<double, 3, 1> v = sec.transverse_bending[k] * eb;
     S_average_(row + 1, col) = v(0);
     S_average_(row + 3, col) = v(1);
     S_average_(row + 4, col) = v(2);
@@ -464,7 +465,7 @@ double DamageTracker::gauge_margin(std::size_t c, std::size_t g,
 
 void DamageTracker::observe_bending(double t, double force) {
   // Every point of a bending-only state (face criteria without a gauge, or no skipping): fixed-size products,
-  // point by point, 5×27 for the strains, 5×5 per ply for the stresses at the ply's mid-plane and faces.
+  // point by point, 5×27 for the strains, then the stresses the criteria read (point_stresses_bending).
   Eigen::Matrix<double, 27, 1> ub;
   const Mesh& mesh = model_.mesh();
   for (Eigen::Index e = 0; e < U_.cols(); ++e) {
@@ -475,15 +476,9 @@ void DamageTracker::observe_bending(double t, double force) {
     for (Eigen::Index l = 0; l < stress_points; ++l) {
       const Eigen::Matrix<double, 5, 1> eb =
           B_bending_[static_cast<std::size_t>(stress_points) * shape + static_cast<std::size_t>(l)] * ub;
-      const Eigen::Index g = e * stress_points + l;
-      for (std::size_t k = 0; k < sec.plies; ++k) {
-        const auto row = 5 * static_cast<Eigen::Index>(k);
-        S_average_.block<5, 1>(row, g).noalias() = sec.average_bending[k] * eb;
-        if (!needs_faces_) continue;
-        S_top_.block<5, 1>(row, g).noalias() = sec.top_bending[k] * eb;
-        S_bottom_.block<5, 1>(row, g).noalias() = sec.bottom_bending[k] * eb;
-      }
-      evaluate_point(static_cast<std::size_t>(g), t, force);
+      const auto g = static_cast<std::size_t>(e * stress_points + l);
+      point_stresses_bending(g, sec, eb);
+      evaluate_point(g, t, force);
     }
   }
 }
