@@ -2,7 +2,7 @@
 
 #include "plyimpact/analysis/newton_solver.hpp"
 
-#include <Eigen/SparseLU>
+#include <Eigen/UmfPackSupport>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -121,7 +121,10 @@ public:
   PathStep(const StackedPlateModel& model, const Parametrization& loading, const StackedPlateState& committed,
            Eigen::VectorXd y, double delta, double tolerance)
       : model_(model), loading_(loading), committed_(committed), y_(std::move(y)), delta_(delta),
-        tolerance_(tolerance), r_(residual_at(model, loading, committed, y_, delta)) {}
+        tolerance_(tolerance), r_(residual_at(model, loading, committed, y_, delta)) {
+    lu_.umfpackControl()(UMFPACK_IRSTEP) = 0; // Newton's next residual corrects the solve
+    lu_.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC; // AMD on A + Aᵀ: FE patterns
+  }
 
   /// The residual at y was evaluated where y was set (here or by the line search).
   Trial trial(int /*corrections*/) override {
@@ -131,7 +134,8 @@ public:
   }
   void refactor() override {} // full Newton: correct() factors
   double correct() override {
-    lu_.compute(loading_.reduce(r_.evaluation.tangent));
+    K_ = loading_.reduce(r_.evaluation.tangent); // UMFPACK's solve reads the matrix it factored
+    lu_.compute(K_);
     if (lu_.info() != Eigen::Success) return NAN;
     const Eigen::VectorXd minus_r = -r_.free;
     const Eigen::VectorXd dy = lu_.solve(minus_r);
@@ -157,7 +161,8 @@ private:
   Eigen::VectorXd y_;
   const double delta_, tolerance_;
   Residual r_;
-  Eigen::SparseLU<SparseMatrix> lu_;
+  SparseMatrix K_;
+  Eigen::UmfPackLU<SparseMatrix> lu_;
 };
 
 /// The step to `delta` from the guess `y`; empty where the attempt has not converged after

@@ -6,10 +6,11 @@
 // A set of DOFs moves with one control displacement Δ: u_i = c_i Δ; a loading rig may tie others to Δ
 // and to its own coordinates y (u_i = c_i Δ + a_i y_j). The rest carry no load. With y' = (free DOFs, y)
 // and u = t Δ + T y', each step solves Tᵀ f(u) = 0 by Newton's method with the tangent Tᵀ K T of the stacked
-// model (unsymmetric under mixed mode: Eigen's sparse LU, 3× faster than UMFPACK on the DCB strip), the
-// interface damage evaluated from the state of the last converged step. The conjugate force is P = tᵀ f(u)
-// (virtual work: P dΔ = fᵀ du = fᵀ (t dΔ + T dy') and Tᵀ f = 0). A step whose iterations do not converge
-// is halved, up to `max_cuts` times.
+// model (unsymmetric under mixed mode: UMFPACK's LU with its symmetric strategy, 3× faster than Eigen's
+// SparseLU on a plate of 15 000 equations and 5× on 58 000, within 12 % of it on the DCB, ENF and MMB
+// strips), the interface damage evaluated from the state of the last converged step. The conjugate force
+// is P = tᵀ f(u) (virtual work: P dΔ = fᵀ du = fᵀ (t dΔ + T dy') and Tᵀ f = 0). A step whose iterations do
+// not converge is halved, up to `max_cuts` times.
 //
 // The energy of the path: the work W = ∫ P dΔ (trapezoidal rule), the stored energy of the model and
 // the energy its interfaces dissipated; W = stored + dissipated is the balance a test checks.
