@@ -124,8 +124,14 @@ TEST_F(DelaminationOutputs, HistoryFollowsTheAreasAndTheEnergyTheInterfacesDissi
     EXPECT_GE(h.rows[r][projected], largest);
     EXPECT_LE(h.rows[r][projected], sum * (1.0 + 1e-12));
   }
-  // It starts intact and ends with the summary's areas (3.1 mm² at both interfaces).
+  // It starts intact and ends with the summary's areas (3.1 mm² at both interfaces); the summary's first
+  // growth is the first row with an area (every step's row: the run has fewer than 4 096 steps).
   EXPECT_EQ(h.rows.front()[projected], 0.0);
+  const auto grown = std::find_if(h.rows.begin(), h.rows.end(),
+                                  [&](const std::vector<double>& row) { return row[projected] > 0.0; });
+  ASSERT_NE(grown, h.rows.end());
+  EXPECT_EQ(delamination()["first_growth"]["time_s"].get<double>(), (*grown)[0]);
+  EXPECT_EQ(delamination()["first_growth"]["force_N"].get<double>(), (*grown)[h.column("force_N")]);
   const std::vector<double>& last = h.rows.back();
   for (std::size_t i = 0; i < interface.size(); ++i)
     EXPECT_EQ(last[interface[i]], delamination()["delaminated_area_m2"][i].get<double>());

@@ -35,8 +35,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string example_text() {
-  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/damage-progressive.toml");
+std::string example_text(const std::string& name = "damage-progressive.toml") {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/" + name);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
@@ -193,6 +193,26 @@ TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamage
       EXPECT_EQ(r.damage.values[m], it == listed.end() ? 0.0 : it->second.values[m])
           << "element " << r.element << " ply " << r.ply;
   }
+}
+
+// The first load drop (analysis/load_drop.hpp) reaches summary.json, without an output folder too: none
+// for the §3.6 plate under its 6.14 kg sphere (a smooth half-sine), and for thesis §4.3's 8.4 g ball at
+// 12 m/s the fall of the wave-controlled force right after its first peak (an elastic plate: a lab's F_d
+// that is no damage, docs/output.md).
+TEST(ImpactRun, TheFirstLoadDropReachesTheSummary) {
+  const auto summary = [](const std::string& name) {
+    const Deck deck = parse_deck(example_text(name), name);
+    const ImpactCase impact(impact_case_description(deck));
+    return run_impact(deck, impact, ImpactRunOptions{}).summary;
+  };
+  const nlohmann::json heavy = summary("thesis-3.6-v176.toml");
+  EXPECT_TRUE(heavy["load_drop"]["force_N"].is_null());
+  EXPECT_FALSE(heavy["load_drop"]["rule"].get<std::string>().empty());
+  const nlohmann::json light = summary("thesis-4.3.toml");
+  ASSERT_FALSE(light["load_drop"]["force_N"].is_null());
+  EXPECT_EQ(light["load_drop"]["force_N"].get<double>(), light["peak_force"].get<double>());
+  EXPECT_EQ(light["load_drop"]["time_s"].get<double>(), light["time_of_peak_force"].get<double>());
+  EXPECT_GT(light["load_drop"]["detected_at_s"].get<double>(), light["time_of_peak_force"].get<double>());
 }
 
 } // namespace

@@ -33,6 +33,26 @@ struct ImpactSample {
   std::vector<double> interface_delaminated_area; ///< delaminated area (d = 1) of each interface [m²]
 };
 
+/// The first load drop of a force history: the delamination threshold load F_d as a lab reads it
+/// (analysis/load_drop.hpp).
+struct LoadDrop {
+  double force = 0.0;    ///< F_d [N]
+  double time = 0.0;     ///< when it was reached [s]
+  double detected = 0.0; ///< the time of the first sample whose smoothed force fell by r [s]
+};
+
+/// When the delamination first grew (analysis/load_drop.hpp).
+struct FirstDelamination {
+  double time = 0.0;  ///< [s]
+  double force = 0.0; ///< contact force then [N]
+};
+
+/// What the force history says to a lab, and when the model's interfaces first cracked.
+struct ForceHistoryReading {
+  std::optional<LoadDrop> load_drop;                   ///< the first load drop, F_d
+  std::optional<FirstDelamination> first_delamination; ///< stacked-plate runs whose interfaces cracked
+};
+
 struct ContactEpisode {
   double start = 0.0, end = 0.0, peak_force = 0.0;
 };
@@ -134,6 +154,9 @@ struct ImpactResult {
   std::optional<ProgressiveDamageResult> progressive; ///< progressive-damage runs only
   std::optional<DelaminationResult> delamination;     ///< stacked-plate runs only
   std::optional<AdaptiveStepResult> time_steps;       ///< error-controlled runs only
+  /// Read from the run's samples (analysis/load_drop.hpp) where the front end kept them (io/impact_run.hpp);
+  /// empty where it did not (a sweep case on the contact-point response keeps none).
+  std::optional<ForceHistoryReading> force_history;
 };
 
 } // namespace plyimpact

@@ -33,6 +33,30 @@ std::string not_given(const ImpactResult& r) {
                             : "   not given (the impactor has not left the plate)";
 }
 
+/// summary.json `load_drop` (docs/output.md): the delamination threshold load F_d as a lab reads it; null
+/// where the run kept no samples to read it from.
+nlohmann::json load_drop_json(const ImpactResult& r) {
+  if (!r.force_history) return nullptr;
+  const std::optional<LoadDrop>& drop = r.force_history->load_drop;
+  nlohmann::json j = {{"rule",
+                       "the largest force before the force's running median over a tenth of the first "
+                       "contact's loading phase first falls by 5 % (analysis/load_drop.hpp)"}};
+  j["force_N"] = drop ? nlohmann::json(drop->force) : nlohmann::json(nullptr);
+  j["time_s"] = drop ? nlohmann::json(drop->time) : nlohmann::json(nullptr);
+  j["detected_at_s"] = drop ? nlohmann::json(drop->detected) : nlohmann::json(nullptr);
+  return j;
+}
+
+/// The text line of the first load drop (none where the run kept no samples).
+std::string load_drop_text(const ImpactResult& r) {
+  if (!r.force_history) return {};
+  if (const std::optional<LoadDrop>& drop = r.force_history->load_drop)
+    return fmt::format(
+        "  first load drop (F_d)   {:12.2f} N at {:.2f} us (smoothed force 5 % lower at {:.2f} us)\n",
+        drop->force, drop->time * 1e6, drop->detected * 1e6);
+  return "  first load drop (F_d)           none (the smoothed force never fell by 5 % while loading)\n";
+}
+
 /// The stacked plate's interfaces (docs/delamination.md): the law, the areas, the energy, the zone.
 nlohmann::json delamination_json(const DelaminationSettings& s, const DelaminationResult& d,
                                  const std::optional<NewtonStatistics>& newton) {
@@ -130,6 +154,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   nlohmann::json j = summary_header(deck, "impact");
   j["peak_force"] = r.peak_force;
   j["time_of_peak_force"] = r.time_of_peak_force;
+  j["load_drop"] = load_drop_json(r);
   j["contact_duration"] = r.contact_duration;
   j["episodes"] = nlohmann::json::array();
   for (const auto& e : r.episodes)
@@ -209,8 +234,14 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
     d["factorizations"] = r.newton->factorizations;
     j["damage"] = d;
   }
-  if (r.delamination && s.delamination) // the stacked plate's interfaces (docs/delamination.md)
+  if (r.delamination && s.delamination) { // the stacked plate's interfaces (docs/delamination.md)
     j["delamination"] = delamination_json(*s.delamination, *r.delamination, r.newton);
+    if (r.force_history) {
+      const std::optional<FirstDelamination>& grew = r.force_history->first_delamination;
+      j["delamination"]["first_growth"] =
+          grew ? nlohmann::json{{"time_s", grew->time}, {"force_N", grew->force}} : nlohmann::json(nullptr);
+    }
+  }
   if (r.time_steps) { // error-controlled steps (docs/deck.md, [time] adaptive)
     const AdaptiveStepResult& a = *r.time_steps;
     j["time_steps"] = {{"adaptive", true},
@@ -262,6 +293,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   }
   t += fmt::format("  peak force              {:12.2f} N at {:.2f} us\n", r.peak_force,
                    r.time_of_peak_force * 1e6);
+  t += load_drop_text(r);
   t += fmt::format("  contact duration        {:12.2f} us (first contact; {} contact(s))\n",
                    r.contact_duration * 1e6, r.episodes.size());
   t += fmt::format("  peak plate deflection   {:12.4f} mm at the contact point\n",
@@ -298,6 +330,10 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   }
   if (r.delamination && s.delamination)
     t += delamination_text(*r.delamination, s.delamination->stack.interface.penalty_stiffness);
+  if (r.force_history && r.force_history->first_delamination)
+    t += fmt::format("  delamination first grew at {:.2f} us, contact force {:.2f} N\n",
+                     r.force_history->first_delamination->time * 1e6,
+                     r.force_history->first_delamination->force);
   t += fmt::format("  energy balance error    {:12.3g} % of {:.4f} J{}\n", 100.0 * r.energy_balance_error, e0,
                    r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,

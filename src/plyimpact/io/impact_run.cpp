@@ -1,5 +1,7 @@
 #include "plyimpact/io/impact_run.hpp"
 
+#include "plyimpact/analysis/load_drop.hpp"
+
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/recorders.hpp"
 #include "plyimpact/analysis/stress_probe.hpp"
@@ -156,13 +158,17 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
                      VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
                                 damage_options_from_deck(deck).criterion_options},
                      damage ? &*damage : nullptr));
-  std::optional<ThinnedHistory> curves; // report.html
-  if (folder) run.observers.push_back(&curves.emplace());
+  // report.html, the first load drop and the first delamination; not where it would take a sweep case off
+  // the contact-point response, which runs without observers
+  std::optional<ThinnedHistory> curves;
+  if (folder || !run.contact_point_response) run.observers.push_back(&curves.emplace());
   std::optional<ReportSnapshot> snapshot;
   if (deck.report_displacements_at && plate)
     run.observers.push_back(&snapshot.emplace(*deck.report_displacements_at));
 
   out.result = impact.run(run);
+  if (curves)
+    out.result.force_history = {first_load_drop(curves->samples()), first_delamination(curves->samples())};
   out.damage_tracked = damage.has_value();
   if (damage) out.first_failures = damage->first_onsets();
   out.summary = impact_summary_json(deck, out.settings, out.result);
