@@ -10,6 +10,7 @@
 #include "plyimpact/fem/stacked_model.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "support/seeded_plate.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,50 +23,23 @@
 namespace plyimpact {
 namespace {
 
-constexpr double E = 70e9, nu = 0.3; // isotropic, so that D is a number
+constexpr double E = test::seeded_plate_E, nu = test::seeded_plate_nu;
 constexpr double R = 0.06, a0 = 0.015;
 
-/// The seeded plate: 8 plies of h/8, the interface after the fourth. The shear strength is scaled with
-/// √(h G_IIc) so that the cohesive zone (∝ √(E h G_IIc)/S for a slender arm) keeps its length, about
-/// 15 mm, on every case's mesh of 6–9 mm elements; the strengths do not enter (6).
+/// The seeded plate of thickness h and toughness G_IIc. The shear strength is scaled with √(h G_IIc) so
+/// that the cohesive zone (∝ √(E h G_IIc)/S for a slender arm) keeps its length, about 15 mm, on every
+/// case's mesh of 6–9 mm elements; the strengths do not enter (6).
 Deck seeded_plate(double h, double G_IIc) {
   const double S = 15e6 * std::sqrt(h * G_IIc / (2e-3 * 800.0));
-  return parse_deck(R"(
-[materials.iso]
-E1 = 70e9
-E2 = 70e9
-G12 = 26.923076923076923e9
-G13 = 26.923076923076923e9
-G23 = 26.923076923076923e9
-nu12 = 0.3
-rho = 2700.0
-[laminate]
-material = "iso"
-layup = "[0_8]"
-ply_thickness = )" + std::to_string(h / 8.0) +
-                        R"(
-[rig]
-preset = "circular"
-diameter = )" + std::to_string(2.0 * R) +
-                        R"(
-[mesh]
-size_at_impact = 6e-3
-max_size = 9e-3
-[impactor]
-mass = 1.0
-radius = 8e-3
-E = 207e9
-nu = 0.3
-velocity = 1.0
-[delamination]
-interfaces = [4]
-G_Ic = )" + std::to_string(0.5 * G_IIc) +
-                        "\nG_IIc = " + std::to_string(G_IIc) + R"(
-bk_exponent = 2.0
-normal_strength = )" + std::to_string(S / 1.5) +
-                        "\nshear_strength = " + std::to_string(S) + "\nseed_radius = " + std::to_string(a0) +
-                        "\n",
-                    "growth.toml");
+  return test::seeded_plate_deck({.thickness = h,
+                                  .rig_diameter = 2.0 * R,
+                                  .size_at_impact = 6e-3,
+                                  .max_size = 9e-3,
+                                  .G_Ic = 0.5 * G_IIc,
+                                  .G_IIc = G_IIc,
+                                  .normal_strength = S / 1.5,
+                                  .shear_strength = S,
+                                  .seed_radius = a0});
 }
 
 struct Growth {

@@ -9,6 +9,7 @@
 #include "plyimpact/fem/stacked_model.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
+#include "support/seeded_plate.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,45 +23,8 @@
 namespace plyimpact {
 namespace {
 
-constexpr double E = 70e9, nu = 0.3, h = 2e-3, R = 0.05; // isotropic, 8 plies of 0.25 mm
-constexpr double P = 100.0;                              // [N]: w ≈ 0.1 h, linear
-
-Deck seeded_plate(double seed_radius) {
-  return parse_deck(R"(
-[materials.iso]
-E1 = 70e9
-E2 = 70e9
-G12 = 26.923076923076923e9
-G13 = 26.923076923076923e9
-G23 = 26.923076923076923e9
-nu12 = 0.3
-rho = 2700.0
-[laminate]
-material = "iso"
-layup = "[0_8]"
-ply_thickness = 0.25e-3
-[rig]
-preset = "circular"
-diameter = 0.1
-[mesh]
-size_at_impact = 1.0e-3
-max_size = 2.5e-3
-[impactor]
-mass = 1.0
-radius = 8e-3
-E = 207e9
-nu = 0.3
-velocity = 1.0
-[delamination]
-interfaces = [4]
-G_Ic = 300.0
-G_IIc = 800.0
-bk_exponent = 2.0
-normal_strength = 30e6
-shear_strength = 49e6
-)" + (seed_radius > 0.0 ? "seed_radius = " + std::to_string(seed_radius) + "\n" : std::string()),
-                    "seeded.toml");
-}
+constexpr double E = test::seeded_plate_E, nu = test::seeded_plate_nu, h = 2e-3, R = 0.05; // 8 plies
+constexpr double P = 100.0; // [N]: w ≈ 0.1 h, linear
 
 struct CentreResponse {
   double compliance = 0.0; ///< w of the top sub-laminate's centre node / P [m/N]
@@ -68,7 +32,8 @@ struct CentreResponse {
 };
 
 CentreResponse centre_response(double seed_radius) {
-  const ImpactCaseDescription d = impact_case_description(seeded_plate(seed_radius));
+  const ImpactCaseDescription d =
+      impact_case_description(test::seeded_plate_deck({.seed_radius = seed_radius}));
   const PlateModel model = impact_plate_model(d); // the case's plate, without its time stepping
   const StackedPlateModel stack = impact_stack(model, *d.delamination);
   const StackedPlateState state = stack.initial_state();
