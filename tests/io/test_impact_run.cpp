@@ -35,13 +35,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string example_text(const std::string& name = "damage-progressive.toml") {
-  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/examples/" + name);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& file) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(file.string().c_str());
@@ -84,7 +77,9 @@ TEST(ImpactRun, TheElementLoopsRunOnTheDecksThreadsUnlessTheCallerGivesOthers) {
   // the calling thread's setting is what it was.
   const int before = element_threads();
   const Deck deck =
-      parse_deck(test::with_key(example_text(), "end", "1.4e-5") + "\n[run]\nthreads = 3\n", "threads.toml");
+      parse_deck(test::with_key(test::example_text("damage-progressive.toml"), "end", "1.4e-5") +
+                     "\n[run]\nthreads = 3\n",
+                 "threads.toml");
   EXPECT_EQ(deck.threads, 3);
   const ImpactCase impact(impact_case_description(deck));
   for (const int given : {0, 2}) {
@@ -134,7 +129,8 @@ TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {
 }
 
 TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamageElementsCsv) {
-  const Deck deck = parse_deck(example_text() + "[output]\nvtk_every = 100\n", "damage-progressive.toml");
+  const Deck deck = parse_deck(test::example_text("damage-progressive.toml") + "[output]\nvtk_every = 100\n",
+                               "damage-progressive.toml");
   const ImpactCase impact(impact_case_description(deck));
   const ImpactRunOptions options = into_scratch("plyimpact-impact-run-progressive");
   const fs::path dir = *options.output_dir;
@@ -201,7 +197,7 @@ TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamage
 // that is no damage, docs/output.md).
 TEST(ImpactRun, TheFirstLoadDropReachesTheSummary) {
   const auto summary = [](const std::string& name) {
-    const Deck deck = parse_deck(example_text(name), name);
+    const Deck deck = parse_deck(test::example_text(name), name);
     const ImpactCase impact(impact_case_description(deck));
     return run_impact(deck, impact, ImpactRunOptions{}).summary;
   };

@@ -155,7 +155,7 @@ struct ImpactResult {
   std::optional<DelaminationResult> delamination;     ///< stacked-plate runs only
   std::optional<AdaptiveStepResult> time_steps;       ///< error-controlled runs only
   /// Read from the run's samples (analysis/load_drop.hpp) where the front end kept them (io/impact_run.hpp);
-  /// empty where it did not (a sweep case on the contact-point response keeps none).
+  /// empty where it did not (a run that asks for the contact-point response keeps none).
   std::optional<ForceHistoryReading> force_history;
 };
 

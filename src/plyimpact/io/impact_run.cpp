@@ -1,7 +1,6 @@
 #include "plyimpact/io/impact_run.hpp"
 
 #include "plyimpact/analysis/load_drop.hpp"
-
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/analysis/recorders.hpp"
 #include "plyimpact/analysis/stress_probe.hpp"
@@ -158,8 +157,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
                      VtkOptions{deck.vtk.plies, deck.vtk.interfaces, deck.vtk.thickness_scale, criteria,
                                 damage_options_from_deck(deck).criterion_options},
                      damage ? &*damage : nullptr));
-  // report.html, the first load drop and the first delamination; not where it would take a sweep case off
-  // the contact-point response, which runs without observers
+  // report.html, the first load drop and the first delamination; not where the run asks for the
+  // contact-point response, which runs without observers
   std::optional<ThinnedHistory> curves;
   if (folder || !run.contact_point_response) run.observers.push_back(&curves.emplace());
   std::optional<ReportSnapshot> snapshot;
