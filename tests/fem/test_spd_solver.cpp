@@ -221,6 +221,48 @@ TEST(SpdSolver, ADowndateThatLeavesNoPositiveMatrixOrABackendWithoutUpdatesAsksF
   }
 }
 
+/// The Kac–Murdock–Szegő matrix ρ^|i−j| of order n, stored as a sparse matrix with every entry: dense,
+/// symmetric positive definite for |ρ| < 1, its eigenvalues within [(1 − ρ)/(1 + ρ), (1 + ρ)/(1 − ρ)].
+SparseMatrix kms_matrix(int n, double rho) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      entries.emplace_back(i, j, std::pow(rho, std::abs(i - j)));
+  SparseMatrix A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  return A;
+}
+
+TEST(SpdSolver, ADenseFactorIsMadeBySupernodesAndAPlatesBySimplicialColumns) {
+  // CHOLMOD's switch at supernodal_flops_per_entry: a dense factor of order n costs n³/3 flops for n²/2
+  // entries, 2n/3 per entry, above the switch for n = 1 800; a plate's factor is far below it. The
+  // supernodal factor solves to round-off like the simplicial one, has no rank update, and refuses a
+  // singular matrix (all ones: rank one) as the pivots' checks do.
+  const int n = 1800;
+  ASSERT_GT(2.0 * n / 3.0, supernodal_flops_per_entry);
+  const SparseMatrix A = kms_matrix(n, 0.99);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  const Eigen::VectorXd reference = Eigen::MatrixXd(A).llt().solve(b);
+  SpdSolver dense(SparseSolverKind::cholmod_simplicial);
+  dense.factorize(A);
+  EXPECT_TRUE(dense.supernodal_factor());
+  EXPECT_LT((dense.solve(b) - reference).norm(), 1e-11 * reference.norm());
+  SpdSolver::Workspace workspace;
+  Eigen::VectorXd x;
+  dense.solve(b, x, workspace);
+  EXPECT_EQ(x, dense.solve(b));
+  EXPECT_FALSE(dense.modify(spring_columns(n, 1.0), true));
+  EXPECT_GE(dense.factor_nonzeros(), static_cast<long>(n) * (n - 1) / 2);
+  SpdSolver singular(SparseSolverKind::cholmod_simplicial);
+  EXPECT_THROW(singular.factorize(kms_matrix(n, 1.0)), NotPositiveDefinite);
+
+  const PlateModel model = small_plate("ss");
+  SpdSolver plate(SparseSolverKind::cholmod_simplicial);
+  plate.factorize(model.stiffness() + (4.0 / 1e-12) * model.mass());
+  EXPECT_FALSE(plate.supernodal_factor());
+}
+
 TEST(SpdSolver, EveryFillOrderingSolvesToRoundOffAndChangesOnlyTheFill) {
   // A fill-reducing ordering permutes the unknowns: the solution is the same to round-off whichever
   // CHOLMOD uses, and the orderings differ (on 12 elements, METIS and NESDIS find other fills than AMD).

@@ -130,12 +130,35 @@ private:
 /// simplicial factor) for the same positive-definiteness checks as Eigen's LDLᵀ.
 class CholmodLdlt : public CholmodOnceAnalysed<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>> {
 public:
-  CholmodLdlt() { use_one_ordering(cholmod(), FillOrdering::amd); } // as SimplicialLDLT, memory estimate
+  CholmodLdlt() {
+    use_one_ordering(cholmod(), FillOrdering::amd); // as SimplicialLDLT, memory estimate
+    // CHOLMOD's own rule, with its switch moved: a supernodal LLᵀ (dense blocks, BLAS) where the
+    // factor's flops per entry reach supernodal_flops_per_entry, the simplicial LDLᵀ below.
+    cholmod().supernodal = CHOLMOD_AUTO;
+    cholmod().supernodal_switch = supernodal_flops_per_entry;
+  }
+  [[nodiscard]] bool supernodal() const { return m_cholmodFactor->is_super != 0; }
+  /// The pivots of the factor: D of LDLᵀ (the first entry of each column of the simplicial factor), or
+  /// the squared diagonal of a supernodal L (each supernode a dense column-major block).
   [[nodiscard]] Eigen::VectorXd pivots() const {
     const cholmod_factor* L = m_cholmodFactor;
     Eigen::VectorXd d(static_cast<Eigen::Index>(L->n));
-    const auto* p = static_cast<const int*>(L->p);
     const auto* x = static_cast<const double*>(L->x);
+    if (L->is_super != 0) {
+      const auto* super = static_cast<const int*>(L->super);
+      const auto* pi = static_cast<const int*>(L->pi);
+      const auto* px = static_cast<const int*>(L->px);
+      for (std::size_t s = 0; s < L->nsuper; ++s) {
+        const int rows = pi[s + 1] - pi[s];
+        for (int j = super[s]; j < super[s + 1]; ++j) {
+          const int local = j - super[s];
+          const double l = x[px[s] + local * rows + local];
+          d(j) = l * l;
+        }
+      }
+      return d;
+    }
+    const auto* p = static_cast<const int*>(L->p);
     for (std::size_t j = 0; j < L->n; ++j)
       d(static_cast<Eigen::Index>(j)) = x[p[j]];
     return d;
@@ -177,6 +200,8 @@ public:
            cholmod().status == CHOLMOD_OK;
   }
   [[nodiscard]] long factor_nonzeros() const { // strictly lower, as SimplicialLDLT reports it
+    if (supernodal())
+      return static_cast<long>(m_cholmodFactor->xsize) - static_cast<long>(m_cholmodFactor->n);
     const auto* nz = static_cast<const int*>(m_cholmodFactor->nz);
     long total = 0;
     for (std::size_t j = 0; j < m_cholmodFactor->n; ++j)
@@ -288,6 +313,7 @@ Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const {
 
 bool SpdSolver::modify(const Eigen::SparseMatrix<double>& C, bool update) {
   if (kind_ != SparseSolverKind::cholmod_simplicial) return false;
+  if (impl_->cholmod_ldlt.supernodal()) return false; // updown works on a simplicial LDLᵀ only
   if (!impl_->cholmod_ldlt.updown(C, update)) return false;
   try {
     check_ldlt(Eigen::Success, [&] { return impl_->cholmod_ldlt.pivots(); });
@@ -333,6 +359,11 @@ void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w
   }
   Workspace::Buffers& buf = *w.buffers_;
   impl_->cholmod_ldlt.solve_into(b, x, buf.X, buf.Y, buf.E, buf.common);
+}
+
+bool SpdSolver::supernodal_factor() const {
+  if (kind_ == SparseSolverKind::cholmod) return true;
+  return kind_ == SparseSolverKind::cholmod_simplicial && impl_->cholmod_ldlt.supernodal();
 }
 
 long SpdSolver::factor_nonzeros() const {

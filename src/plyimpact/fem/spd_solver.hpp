@@ -11,9 +11,19 @@ enum class SparseSolverKind {
   cholmod,         ///< CHOLMOD supernodal LLᵀ with its fill-reducing ordering (AMD/METIS)
   simplicial_ldlt, ///< Eigen's SimplicialLDLT with AMD ordering
   /// CHOLMOD simplicial LDLᵀ (AMD): the same kind of factor as simplicial_ldlt, with triangular solves
-  /// that treat columns of equal pattern together: about 2× faster solves (bench/README.md).
+  /// that treat columns of equal pattern together: about 2× faster solves (bench/README.md). Where the
+  /// factor is dense (flops per entry ≥ supernodal_flops_per_entry: a stack of sub-laminates on a
+  /// coupon's mesh) CHOLMOD makes a supernodal LLᵀ instead, factored by BLAS blocks.
   cholmod_simplicial,
 };
+
+/// The flops per factor entry (CHOLMOD's flop count over nnz(L), from its analysis) from which the
+/// cholmod_simplicial kind factors by supernodes (CHOLMOD's supernodal_switch; its own default is 40).
+/// Measured (bench/README.md, "Supernodal where the factor is dense"): single plates lie at 64–134 and
+/// the 6 615-equation stacked example at 427, where the simplicial LDLᵀ ran 10–25 % faster over whole
+/// runs (many solves, few factorizations); the 107 611-equation stack of the ASTM coupon lies at 3 220,
+/// where its first factorization took 6 minutes simplicial and 15 s by supernodes.
+inline constexpr double supernodal_flops_per_entry = 1000.0;
 
 /// The fill-reducing ordering of a CHOLMOD factor (bench/README.md, "Orderings", compares them).
 enum class FillOrdering {
@@ -91,6 +101,9 @@ public:
   [[nodiscard]] FillOrdering ordering() const { return ordering_; }
   /// Non-zeros of the factor (memory estimate), after factorize().
   [[nodiscard]] long factor_nonzeros() const;
+  /// The factor made last is supernodal (LLᵀ by BLAS blocks): the cholmod kind, or cholmod_simplicial on
+  /// a dense factor. Such a factor has no update (modify returns false).
+  [[nodiscard]] bool supernodal_factor() const;
 
 private:
   struct Impl;
