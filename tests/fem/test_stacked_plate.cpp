@@ -57,6 +57,35 @@ TEST(SplitLaminate, ACutThatDoesNotExistIsNamed) {
   }
 }
 
+TEST(InterfaceValuesFromPlies, TheSmallestOfThePliesThatMeetAtTheCutsAndNoneWhereOneLacksIt) {
+  // A hybrid [A/B/B/C]: cuts after plies 1 and 3 meet A, B and B, C. Material C's toughnesses are
+  // lower, but C meets only the second cut: with both cuts it sets G_Ic and G_IIc; with the first
+  // alone A and B do. B has no Yt, so N is unknown wherever B meets a cut.
+  Material A = as4_peek(), B = as4_peek(), C = as4_peek();
+  A.toughness.G_mt = 300.0;
+  A.toughness.G_mc = 900.0;
+  A.strength.Yt = 60e6;
+  B.strength.Yt.reset();
+  B.toughness.G_mt = 250.0;
+  B.toughness.G_mc = 1000.0;
+  C.toughness.G_mt = 100.0;
+  C.toughness.G_mc = 400.0;
+  C.strength.Yt = 40e6;
+  const Laminate lam({A, B, C},
+                     {{0.0, 0.25e-3, 0}, {90.0, 0.25e-3, 1}, {90.0, 0.25e-3, 1}, {0.0, 0.25e-3, 2}});
+  const PlyInterfaceValues both = interface_values_from_plies(lam, {0, 2});
+  EXPECT_EQ(both.G_Ic, 100.0);
+  EXPECT_EQ(both.G_IIc, 400.0);
+  EXPECT_FALSE(both.normal_strength);
+  const PlyInterfaceValues first = interface_values_from_plies(lam, {0});
+  EXPECT_EQ(first.G_Ic, 250.0);
+  EXPECT_EQ(first.G_IIc, 900.0);
+  const Laminate without_b({A, C}, {{0.0, 0.25e-3, 0}, {90.0, 0.25e-3, 1}});
+  EXPECT_EQ(interface_values_from_plies(without_b, {0}).normal_strength, 40e6);
+  // Turon's S = N √(G_IIc/G_Ic): 60 MPa × √(900/300) = 103.923 MPa.
+  EXPECT_NEAR(turon_shear_strength(60e6, 300.0, 900.0), 103.923e6, 1e3);
+}
+
 class TwoSubLaminates : public ::testing::Test {
 protected:
   static constexpr double a = 0.04, b = 0.03, h = 1e-3;

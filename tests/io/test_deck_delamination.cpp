@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,6 +82,28 @@ TEST(DeckDelamination, ByDefaultTheLaminateIsCutWhereverTheOrientationChanges) {
   EXPECT_EQ(c.delamination->stack.interface.penalty_stiffness, law.penalty_stiffness);
 }
 
+TEST(DeckDelamination, ValuesTheDeckLeavesOutComeFromThePliesAtTheInterfaces) {
+  // The plies' matrix data (IM7/8552-like: Yt 55.2 MPa, G_mt 277, G_mc 788 J/m²) give N, G_Ic and G_IIc;
+  // S follows by Turon's relation, by hand 55.2 MPa × √(788/277) = 93.10 MPa; η is the IM7/8552 default.
+  // A value the deck gives is the deck's, and only the others are reported as defaults.
+  std::string text = plies_and_interfaces("", "");
+  text.replace(text.find(as4_peek_law), as4_peek_law.size(), "G_IIc = 1000.0\n");
+  const Deck d = parse_deck(text, "deck.toml");
+  ASSERT_TRUE(d.delamination);
+  const CohesiveParameters& law = d.delamination->stack.interface;
+  EXPECT_EQ(law.G_Ic, 277.0);
+  EXPECT_EQ(law.G_IIc, 1000.0);
+  EXPECT_EQ(law.normal_strength, 55.2e6);
+  EXPECT_NEAR(law.shear_strength, 55.2e6 * std::sqrt(1000.0 / 277.0), 1e-9 * law.shear_strength);
+  EXPECT_EQ(law.bk_exponent, 1.634);
+  std::vector<std::string> keys;
+  for (const auto& [key, origin] : d.delamination->law_defaults)
+    keys.push_back(key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"G_Ic", "bk_exponent", "normal_strength", "shear_strength"}));
+  EXPECT_EQ(d.delamination->law_defaults.front().second, "G_mt of the plies at the interfaces");
+  EXPECT_TRUE(parse_deck(plies_and_interfaces("", ""), "deck.toml").delamination->law_defaults.empty());
+}
+
 TEST(DeckDelamination, ListedInterfacesAndTheOtherChoicesAreRead) {
   const Deck d = deck_with("interfaces = [4]\npenalty_stiffness = 1e15\nonset = \"camanho-quadratic\"\n"
                            "points = \"gauss\"\nsupports = \"bottom\"\nintegration = \"implicit\"\n" +
@@ -136,12 +159,15 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
   EXPECT_NE(error_of("interfaces = \"all\"\n" + as4_peek_law)
                 .find("delamination.interfaces must be \"orientation-changes\" or a list"),
             std::string::npos);
-  // Every missing value of the law in one message, with its unit and meaning.
+  // Every value of the law that neither the deck nor the plies give, in one message, with its unit,
+  // meaning and the ply data that would give it (the small deck's T300/976 has no strengths or
+  // toughnesses; the B-K exponent has a default).
   EXPECT_NE(
       error_of("G_Ic = 969.0\n")
-          .find("[delamination] needs the interface law's 5 values; missing 4: G_IIc (mode II toughness, "
-                "J/m^2), bk_exponent (Benzeggagh-Kenane exponent eta, -), normal_strength (interlaminar "
-                "tensile strength, Pa), shear_strength (interlaminar shear strength, Pa)"),
+          .find("[delamination] needs the interface law's 5 values; 3 unknown: G_IIc (mode II "
+                "toughness, J/m^2; or G_mc of every ply at an interface), normal_strength (interlaminar "
+                "tensile strength, Pa; or Yt of every ply at an interface), shear_strength (interlaminar "
+                "shear strength, Pa; or the three values it follows from)"),
       std::string::npos)
       << error_of("G_Ic = 969.0\n");
   EXPECT_NE(error_of(as4_peek_law + "onset = \"turon_bk\"\n").find("(did you mean \"turon-bk\"?)"),

@@ -37,6 +37,9 @@ struct DelaminationSettings {
   /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
   /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
   bool update_factor = true;
+  /// The values of the law the deck left out, each with where it came from ("G_mt of the plies at the
+  /// interfaces", ...), in the order G_Ic, G_IIc, bk_exponent, normal_strength, shear_strength.
+  std::vector<std::pair<std::string, std::string>> law_defaults;
   friend bool operator==(const DelaminationSettings&, const DelaminationSettings&) = default;
 };
 

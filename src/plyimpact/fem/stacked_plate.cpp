@@ -68,6 +68,33 @@ double turon_penalty_stiffness(const Laminate& laminate, const std::vector<int>&
   return K;
 }
 
+namespace {
+/// The smallest of `value` over the plies that meet at `cuts`; empty where one of them has none.
+template <class Value>
+std::optional<double> smallest_at_cuts(const Laminate& laminate, const std::vector<int>& cuts, Value value) {
+  std::optional<double> smallest;
+  for (const int cut : cuts)
+    for (const auto ply : {static_cast<std::size_t>(cut), static_cast<std::size_t>(cut) + 1}) {
+      const std::optional<double> v = value(laminate.material_of(ply));
+      if (!v) return std::nullopt;
+      smallest = std::min(smallest.value_or(*v), *v);
+    }
+  return smallest;
+}
+} // namespace
+
+PlyInterfaceValues interface_values_from_plies(const Laminate& laminate, const std::vector<int>& cuts) {
+  PlyInterfaceValues v;
+  v.G_Ic = smallest_at_cuts(laminate, cuts, [](const Material& m) { return m.toughness.G_mt; });
+  v.G_IIc = smallest_at_cuts(laminate, cuts, [](const Material& m) { return m.toughness.G_mc; });
+  v.normal_strength = smallest_at_cuts(laminate, cuts, [](const Material& m) { return m.strength.Yt; });
+  return v;
+}
+
+double turon_shear_strength(double normal_strength, double G_Ic, double G_IIc) {
+  return normal_strength * std::sqrt(G_IIc / G_Ic);
+}
+
 StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
                                      Discretization discretization,
                                      const std::function<BoundaryConditions(int sublaminate)>& bc_of)

@@ -55,6 +55,29 @@ namespace plyimpact {
 [[nodiscard]] double turon_penalty_stiffness(const Laminate& laminate, const std::vector<int>& cuts,
                                              double alpha = turon_default_alpha);
 
+/// The values of the interface law that the plies meeting at the interfaces give, where a deck leaves them
+/// out (docs/delamination.md, "Values from the plies"): the matrix of the plies on either side is what
+/// an interlaminar crack runs through, and the ply data already hold its mode I and mode II toughness
+/// and its transverse tensile strength (Maimí et al. 2007 and NASA CompDam_DGD take the intralaminar
+/// matrix toughnesses as the interlaminar G_Ic and G_IIc). Each is the smallest over the plies that
+/// meet at the cuts, and empty where one of them lacks it.
+struct PlyInterfaceValues {
+  std::optional<double> G_Ic;            ///< G_mt [J/m²]
+  std::optional<double> G_IIc;           ///< G_mc [J/m²]
+  std::optional<double> normal_strength; ///< Yt [Pa]
+};
+/// PlyInterfaceValues of `laminate` cut at `cuts` (0-based, as split_laminate).
+[[nodiscard]] PlyInterfaceValues interface_values_from_plies(const Laminate& laminate,
+                                                             const std::vector<int>& cuts);
+/// The shear strength that makes a one-penalty law dissipate G_c(B) at every mode mixity:
+/// S = N √(G_IIc / G_Ic) (Turon, Camanho, Costa & Renart 2010, Compos. Struct. 92:1857).
+[[nodiscard]] double turon_shear_strength(double normal_strength, double G_Ic, double G_IIc);
+/// The Benzeggagh–Kenane exponent a deck that gives none gets: 1.634, IM7/8552 carbon/epoxy (Camanho,
+/// Bessa, Catalanotti, Vogler & Rolfes 2013, Mech. Mater. 59:36–49, as listed in NASA CompDam_DGD,
+/// tests/IM7-8552.props, eta_BK). A thermoplastic matrix lies higher (AS4/PEEK 2.284, Camanho, Dávila &
+/// de Moura 2003): such a deck gives its own.
+inline constexpr double default_bk_exponent = 1.634;
+
 /// The history of a stacked plate: the damage of every interface point.
 struct StackedPlateState {
   std::vector<std::vector<CohesiveState>> interfaces; ///< [interface][point]

@@ -7,7 +7,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace plyimpact::deck_tables {
 
@@ -51,36 +54,54 @@ std::vector<int> read_interfaces(const TableReader& t, const Laminate& laminate)
   return cuts;
 }
 
-/// Refuses a [delamination] table without every value of the interface law, naming all that are missing
-/// in one message (a user who left out three should not meet them one run at a time).
-void require_law_values(const TableReader& t) {
-  struct Value {
-    const char* key;
-    const char* what;
-  };
-  static constexpr std::array<Value, 5> values{{{"G_Ic", "mode I toughness, J/m^2"},
-                                                {"G_IIc", "mode II toughness, J/m^2"},
-                                                {"bk_exponent", "Benzeggagh-Kenane exponent eta, -"},
-                                                {"normal_strength", "interlaminar tensile strength, Pa"},
-                                                {"shear_strength", "interlaminar shear strength, Pa"}}};
+/// The five values of the interface law: the deck's, else what the plies at the interfaces give
+/// (interface_values_from_plies), Turon's shear strength and the default B-K exponent. Refuses a table
+/// for which some remain unknown, naming all of them in one message (a user who left out three should not
+/// meet them one run at a time) with the ply data that would give them. `defaults` receives the values
+/// taken from elsewhere than the deck, with their origin.
+CohesiveParameters law_values(const TableReader& t, const Laminate& laminate, const std::vector<int>& cuts,
+                              std::vector<std::pair<std::string, std::string>>& defaults) {
+  const PlyInterfaceValues plies = interface_values_from_plies(laminate, cuts);
   std::vector<std::string> missing;
-  for (const Value& v : values)
-    if (!t.has(v.key)) missing.push_back(fmt::format("{} ({})", v.key, v.what));
-  if (missing.empty()) return;
-  t.fail_here(fmt::format("[delamination] needs the interface law's {} values; missing {}: {} (docs/deck.md, "
-                          "\"[delamination]\"; docs/delamination.md gives the shipped examples' values and "
-                          "their sources)",
-                          values.size(), missing.size(), fmt::join(missing, ", ")));
+  // `fallback` NaN: none.
+  const auto value = [&](const char* key, const char* unit, double fallback, const char* origin,
+                         const char* what) {
+    if (t.has(key)) return t.positive(key, unit);
+    if (!std::isnan(fallback)) {
+      defaults.emplace_back(key, origin);
+      return fallback;
+    }
+    missing.push_back(fmt::format("{} ({})", key, what));
+    return 0.0;
+  };
+  CohesiveParameters law;
+  law.G_Ic = value("G_Ic", "J/m^2", plies.G_Ic.value_or(NAN), "G_mt of the plies at the interfaces",
+                   "mode I toughness, J/m^2; or G_mt of every ply at an interface");
+  law.G_IIc = value("G_IIc", "J/m^2", plies.G_IIc.value_or(NAN), "G_mc of the plies at the interfaces",
+                    "mode II toughness, J/m^2; or G_mc of every ply at an interface");
+  law.bk_exponent = value("bk_exponent", "-", default_bk_exponent,
+                          "IM7/8552 carbon/epoxy (Camanho et al. 2013)", "Benzeggagh-Kenane exponent eta, -");
+  law.normal_strength =
+      value("normal_strength", "Pa", plies.normal_strength.value_or(NAN), "Yt of the plies at the interfaces",
+            "interlaminar tensile strength, Pa; or Yt of every ply at an interface");
+  const double turon = law.normal_strength > 0.0 && law.G_Ic > 0.0 && law.G_IIc > 0.0
+                           ? turon_shear_strength(law.normal_strength, law.G_Ic, law.G_IIc)
+                           : NAN;
+  law.shear_strength =
+      value("shear_strength", "Pa", turon, "normal_strength x sqrt(G_IIc / G_Ic) (Turon et al. 2010)",
+            "interlaminar shear strength, Pa; or the three values it follows from");
+  if (!missing.empty())
+    t.fail_here(
+        fmt::format("[delamination] needs the interface law's 5 values; {} unknown: {} (the deck gives "
+                    "them, or the ply data they follow from: docs/deck.md, \"[delamination]\"; "
+                    "docs/delamination.md, \"Values from the plies\")",
+                    missing.size(), fmt::join(missing, ", ")));
+  return law;
 }
 
-CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, const std::vector<int>& cuts) {
-  require_law_values(t);
-  CohesiveParameters law;
-  law.G_Ic = t.positive("G_Ic", "J/m^2");
-  law.G_IIc = t.positive("G_IIc", "J/m^2");
-  law.bk_exponent = t.positive("bk_exponent", "-");
-  law.normal_strength = t.positive("normal_strength", "Pa");
-  law.shear_strength = t.positive("shear_strength", "Pa");
+CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, const std::vector<int>& cuts,
+                            std::vector<std::pair<std::string, std::string>>& defaults) {
+  CohesiveParameters law = law_values(t, laminate, cuts, defaults);
   law.onset =
       t.optional_choice<CohesiveOnset>("onset", {{"turon-bk", CohesiveOnset::turon_bk},
                                                  {"camanho-quadratic", CohesiveOnset::camanho_quadratic}})
@@ -107,7 +128,7 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool
         "are not available with it yet");
   DelaminationSettings s;
   s.stack.cuts = read_interfaces(t, *d.laminate);
-  s.stack.interface = read_law(t, *d.laminate, s.stack.cuts);
+  s.stack.interface = read_law(t, *d.laminate, s.stack.cuts, s.law_defaults);
   s.stack.rule = t.optional_choice<CohesiveIntegration>("points", {{"nodal", CohesiveIntegration::nodal},
                                                                    {"gauss", CohesiveIntegration::gauss}})
                      .value_or(CohesiveIntegration::nodal);

@@ -75,6 +75,9 @@ nlohmann::json delamination_json(const DelaminationSettings& s, const Delaminati
   j["G_Ic_J_per_m2"] = law.G_Ic;
   j["G_IIc_J_per_m2"] = law.G_IIc;
   j["bk_exponent"] = law.bk_exponent;
+  j["law_defaults"] = nlohmann::json::object(); // the values the deck left out, and where they came from
+  for (const auto& [key, origin] : s.law_defaults)
+    j["law_defaults"][key] = origin;
   j["onset"] = law.onset == CohesiveOnset::turon_bk ? "turon-bk" : "camanho-quadratic";
   j["points"] = s.stack.rule == CohesiveIntegration::nodal ? "nodal" : "gauss";
   j["supports"] = s.supports_on_all ? "all" : "bottom";
@@ -111,13 +114,30 @@ std::string first_damage_by_mode_text(const ProgressiveDamageResult& pd) {
   return text;
 }
 
-std::string delamination_text(const DelaminationResult& d, double penalty_stiffness) {
+/// The law's values that the deck left out, one line each with its origin; empty where it gave all.
+std::string law_defaults_text(const DelaminationSettings& s) {
+  const CohesiveParameters& law = s.stack.interface;
+  std::string t;
+  for (const auto& [key, origin] : s.law_defaults) {
+    const double value = key == "G_Ic"              ? law.G_Ic
+                         : key == "G_IIc"           ? law.G_IIc
+                         : key == "bk_exponent"     ? law.bk_exponent
+                         : key == "normal_strength" ? law.normal_strength * 1e-6
+                                                    : law.shear_strength * 1e-6;
+    const char* unit = key == "G_Ic" || key == "G_IIc" ? " J/m^2" : key == "bk_exponent" ? "" : " MPa";
+    t += fmt::format("    {:<16} {:.4g}{} not in the deck: {}\n", key, value, unit, origin);
+  }
+  return t;
+}
+
+std::string delamination_text(const DelaminationSettings& s, const DelaminationResult& d) {
   std::string plies;
   for (const int p : d.interface_after_ply)
     plies += fmt::format("{}{}", plies.empty() ? "" : ", ", p);
   std::string t;
   t += fmt::format("  delamination            {:12d} interface(s), after plies {}; K = {:.3g} Pa/m\n",
-                   d.interface_after_ply.size(), plies, penalty_stiffness);
+                   d.interface_after_ply.size(), plies, s.stack.interface.penalty_stiffness);
+  t += law_defaults_text(s);
   t += fmt::format("  delaminated area        {:12.2f} mm^2 projected; per interface {} mm^2 (softening {} "
                    "mm^2)\n",
                    d.projected_area * 1e6, millimetres_squared(d.delaminated_area),
@@ -328,8 +348,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                        r.newton->iterations, r.steps, r.newton->max_iterations_per_step,
                        r.newton->factorizations);
   }
-  if (r.delamination && s.delamination)
-    t += delamination_text(*r.delamination, s.delamination->stack.interface.penalty_stiffness);
+  if (r.delamination && s.delamination) t += delamination_text(*s.delamination, *r.delamination);
   if (r.force_history && r.force_history->first_delamination)
     t += fmt::format("  delamination first grew at {:.2f} us, contact force {:.2f} N\n",
                      r.force_history->first_delamination->time * 1e6,
