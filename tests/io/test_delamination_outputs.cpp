@@ -7,6 +7,7 @@
 //
 // The case: examples/impact-delamination.toml (30 g at 3 m/s on a clamped 13.2 mm [0_2/90_2]s AS4/PEEK
 // plate) on 5 × 5 elements to 0.25 ms, where both interfaces delaminate over 3.1 mm² (2 s).
+#include "plyimpact/analysis/delamination_shape.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/impact_run.hpp"
@@ -178,15 +179,64 @@ TEST_F(DelaminationOutputs, EachInterfacePointStandsForACellAndTheCellsAddUpToTh
   EXPECT_NEAR(delaminated[2], delamination()["delaminated_area_m2"][0].get<double>(), 1e-15);
   EXPECT_NEAR(delaminated[6], delamination()["delaminated_area_m2"][1].get<double>(), 1e-15);
 
-  // The maps: one per interface and the projected one, their titles quoting those areas in mm².
+  // The maps: one per interface, the projected one and the C-scan, their titles quoting those areas in
+  // mm².
   const std::vector<PlotSpec> maps = delamination_map_plots(out());
-  ASSERT_EQ(maps.size(), 3U);
+  ASSERT_EQ(maps.size(), 4U);
   EXPECT_EQ(maps[0].name, "delamination_map_after_ply02");
   EXPECT_EQ(maps[1].name, "delamination_map_after_ply06");
   EXPECT_EQ(maps[2].name, "delamination_map_projected");
+  EXPECT_EQ(maps[3].name, "delamination_cscan");
   EXPECT_NE(maps[1].title.find(fmt::format("delaminated {:.3g} mm^2", delaminated[6] * 1e6)),
             std::string::npos)
       << maps[1].title;
+}
+
+TEST_F(DelaminationOutputs, TheReportsCscanGivesEachInterfaceTheAreaItShowsAndTheyAddUpToTheProjection) {
+  // A C-scan from the impacted face sees the interface after ply 2 wherever it has delaminated, the one
+  // after ply 6 only where ply 2's has not: the two shares, summed from delamination_points.csv, add up to
+  // the summary's projected area, and report.html quotes them.
+  const Table points = read_table(out() / delamination_points_file);
+  double upper = 0.0, lower_seen = 0.0;
+  for (const std::vector<double>& p : points.rows) {
+    const bool d2 = p[points.column("d_after_ply_2")] >= 1.0, d6 = p[points.column("d_after_ply_6")] >= 1.0;
+    upper += d2 ? p[points.column("area_m2")] : 0.0;
+    lower_seen += !d2 && d6 ? p[points.column("area_m2")] : 0.0;
+  }
+  EXPECT_NEAR(upper + lower_seen, delamination()["projected_delaminated_area_m2"].get<double>(), 1e-15);
+  // The shallower interface shows whole, the deeper one at most its own area (here none of it: at
+  // 0.25 ms its delamination lies under the upper one's).
+  EXPECT_NEAR(upper, delamination()["delaminated_area_m2"][0].get<double>(), 1e-15);
+  EXPECT_GT(upper, 0.0);
+  EXPECT_LE(lower_seen, delamination()["delaminated_area_m2"][1].get<double>() + 1e-15);
+  std::ifstream in(out() / "report.html");
+  std::stringstream html;
+  html << in.rdbuf();
+  EXPECT_NE(html.str().find("<h2>Delaminations (C-scan)</h2>"), std::string::npos);
+  EXPECT_NE(html.str().find(fmt::format("interface after ply 2: {:.4g} mm² seen", upper * 1e6)),
+            std::string::npos);
+  EXPECT_NE(html.str().find(fmt::format("interface after ply 6: {:.4g} mm² seen", lower_seen * 1e6)),
+            std::string::npos);
+}
+
+TEST_F(DelaminationOutputs, EachInterfacesShapeIsGivenWithTheFibresOfThePlyBelow) {
+  // [0_2/90_2]s: the ply below the interface after ply 2 is at 90°, below the one after ply 6 at 0°; each
+  // shape's area is the interface's delaminated area, its axis and ratio given where it has one.
+  const nlohmann::json& shapes = delamination()["shapes"];
+  ASSERT_EQ(shapes.size(), 2U);
+  EXPECT_EQ(shapes[0]["after_ply"], 2);
+  EXPECT_EQ(shapes[0]["ply_below_angle_deg"].get<double>(), 90.0);
+  EXPECT_EQ(shapes[1]["ply_below_angle_deg"].get<double>(), 0.0);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(shapes[i]["area_m2"].get<double>(), delamination()["delaminated_area_m2"][i].get<double>(),
+                1e-15);
+    ASSERT_TRUE(shapes[i]["axis_deg"].is_number()) << shapes.dump(1);
+    EXPECT_GE(shapes[i]["aspect_ratio"].get<double>(), 1.0);
+    EXPECT_NEAR(shapes[i]["axis_to_fibre_deg"].get<double>(),
+                angle_between_lines_deg(shapes[i]["axis_deg"].get<double>(),
+                                        shapes[i]["ply_below_angle_deg"].get<double>()),
+                1e-12);
+  }
 }
 
 TEST_F(DelaminationOutputs, ParaViewFramesCarryEachInterfacesDamage) {

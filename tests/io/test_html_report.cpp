@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -88,6 +89,31 @@ TEST(SvgPlot, TheOnsetMapOnARigCirclesTheClampTipsAndDashesTheWindow) {
   const std::string bare = svg_onset_map(mesh, {}, 0.075, 0.05);
   EXPECT_EQ(count(bare, "class=\"clamp\""), 0U);
   EXPECT_EQ(count(bare, "class=\"window\""), 0U);
+}
+
+TEST(SvgPlot, TheCscanShowsTheShallowestDelaminatedInterfaceAtEachPoint) {
+  // Three interfaces over four points: at point 0 none has delaminated (d = 0.999 is a process zone, not
+  // a crack), at 1 the first and third (the first hides the third), at 2 the second and third, at 3 only
+  // the third. The picture fills the three delaminated points' cells in their interface's colour and
+  // gives each interface the area it shows.
+  const std::vector<std::vector<double>> d{
+      {0.0, 1.0, 0.3, 0.0}, {0.999, 0.5, 1.0, 0.0}, {0.2, 1.0, 1.0, 1.0}};
+  const std::vector<int> shallowest = shallowest_delaminated(d);
+  EXPECT_EQ(shallowest, (std::vector<int>{0, 1, 2, 3}));
+  std::vector<std::array<Eigen::Vector2d, 4>> cells;
+  for (int q = 0; q < 4; ++q)
+    cells.push_back({Eigen::Vector2d(q * 1e-3, 0.0), Eigen::Vector2d((q + 1) * 1e-3, 0.0),
+                     Eigen::Vector2d((q + 1) * 1e-3, 1e-3), Eigen::Vector2d(q * 1e-3, 1e-3)});
+  const std::vector<double> area{1e-6, 2e-6, 3e-6, 4e-6};
+  const std::vector<int> after_ply{2, 4, 6};
+  const std::string svg = svg_cscan_map({cells, area, shallowest, after_ply, 2e-3, 0.5e-3, {}});
+  for (int i = 1; i <= 3; ++i)
+    EXPECT_EQ(count(svg, fmt::format("<polygon fill=\"{}\"", cscan_colour(i))), 1U) << i;
+  EXPECT_NE(svg.find("interface after ply 2: 2 mm² seen"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("interface after ply 4: 3 mm² seen"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("interface after ply 6: 4 mm² seen"), std::string::npos) << svg;
+  EXPECT_STRNE(cscan_colour(1), cscan_colour(2));
+  EXPECT_STREQ(cscan_colour(11), cscan_colour(1)); // ten colours, then again
 }
 
 TEST(ThinnedHistory, KeepsABoundedEvenlySpacedSubsetOfTheSteps) {

@@ -184,6 +184,7 @@ DelaminationResult InterfaceStates::result() const {
     const CohesiveInterface& ci = stack.interface(i);
     const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
     r.interface_after_ply.push_back(plate_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
+    r.angle_below_deg.push_back(stack.sublaminate(i + 1).laminate().plies().front().angle_deg);
     double softening = 0.0;
     const auto per_element = static_cast<std::size_t>(ci.points_per_element());
     std::vector<double>& of_element = r.element_damage.emplace_back(states.size() / per_element, 0.0);

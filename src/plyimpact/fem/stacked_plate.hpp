@@ -195,6 +195,7 @@ struct DelaminationAreas {
 /// The interfaces at the end of a run on the stacked plate (issue 19, docs/delamination.md).
 struct DelaminationResult {
   std::vector<int> interface_after_ply;  ///< each interface lies after this ply (1-based, from the top)
+  std::vector<double> angle_below_deg;   ///< per interface: the fibre angle of the ply below it [°]
   std::vector<double> delaminated_area;  ///< per interface: points fully cracked (d = 1) [m²]
   std::vector<double> process_zone_area; ///< per interface: points softening (0 < d < 1) [m²]
   double projected_area = 0.0;           ///< union over the interfaces of the delaminated points [m²]

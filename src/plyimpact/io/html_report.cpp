@@ -190,6 +190,23 @@ void damage_section(std::string& h, const ImpactReportInput& in) {
   h += "</section>\n";
 }
 
+/// The C-scan of a stacked plate's delaminations (svg_cscan_map), with the projected area of summary.json.
+void delamination_section(std::string& h, const ImpactReportInput& in) {
+  if (in.delamination == nullptr) return;
+  const DelaminationResult& d = *in.delamination;
+  h += "<section id=\"delamination\"><h2>Delaminations (C-scan)</h2>\n";
+  fmt::format_to(std::back_inserter(h),
+                 "<p>Projected delaminated area {:.4g} mm² (the points where some interface has d = 1). Each "
+                 "point shows the shallowest interface delaminated there, as an ultrasonic C-scan from the "
+                 "impacted face sees it: a deeper delamination under a shallower one is hidden (the maps of "
+                 "<code>plyimpact plot</code> show each interface alone).</p>\n",
+                 d.projected_area * 1e6);
+  const std::vector<int> interface_of_point = shallowest_delaminated(d.point_damage);
+  h += svg_cscan_map({d.point_cells, d.point_area, interface_of_point, d.interface_after_ply,
+                      in.settings.impactor.x, in.settings.impactor.y, rig_outline(in.deck.rig)});
+  h += "</section>\n";
+}
+
 } // namespace
 
 std::string impact_report_html(const ImpactReportInput& in) {
@@ -201,6 +218,7 @@ std::string impact_report_html(const ImpactReportInput& in) {
   results_section(h, in.summary);
   curves_section(h, in.history, in.settings.progressive_damage.has_value());
   damage_section(h, in);
+  delamination_section(h, in);
   return h.append(html_page_end());
 }
 

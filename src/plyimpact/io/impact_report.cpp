@@ -1,5 +1,7 @@
 #include "plyimpact/io/impact_report.hpp"
 
+#include "plyimpact/analysis/delamination_shape.hpp"
+
 #include "plyimpact/fem/dof_map.hpp"
 #include "plyimpact/io/history_csv.hpp"
 
@@ -57,6 +59,28 @@ std::string load_drop_text(const ImpactResult& r) {
   return "  first load drop (F_d)           none (the smoothed force never fell by 5 % while loading)\n";
 }
 
+/// Per interface, the shape of its delaminated area (analysis/delamination_shape.hpp) against the fibres
+/// of the ply below it.
+nlohmann::json shapes_json(const DelaminationResult& d) {
+  nlohmann::json shapes = nlohmann::json::array();
+  const std::vector<DelaminationShape> of_interface = delamination_shapes(d);
+  for (std::size_t i = 0; i < of_interface.size(); ++i) {
+    const DelaminationShape& s = of_interface[i];
+    nlohmann::json j;
+    j["after_ply"] = d.interface_after_ply[i];
+    j["ply_below_angle_deg"] = d.angle_below_deg[i];
+    j["area_m2"] = s.area;
+    j["axis_deg"] = s.axis_deg ? nlohmann::json(*s.axis_deg) : nlohmann::json();
+    j["aspect_ratio"] =
+        s.aspect_ratio && std::isfinite(*s.aspect_ratio) ? nlohmann::json(*s.aspect_ratio) : nlohmann::json();
+    j["axis_to_fibre_deg"] = s.axis_deg
+                                 ? nlohmann::json(angle_between_lines_deg(*s.axis_deg, d.angle_below_deg[i]))
+                                 : nlohmann::json();
+    shapes.push_back(std::move(j));
+  }
+  return shapes;
+}
+
 /// The stacked plate's interfaces (docs/delamination.md): the law, the areas, the energy, the zone.
 nlohmann::json delamination_json(const DelaminationSettings& s, const DelaminationResult& d,
                                  const std::optional<NewtonStatistics>& newton) {
@@ -67,6 +91,7 @@ nlohmann::json delamination_json(const DelaminationSettings& s, const Delaminati
   j["process_zone_area_m2"] = d.process_zone_area;
   j["projected_delaminated_area_m2"] = d.projected_area;
   j["dissipated_energy_J"] = d.dissipated;
+  j["shapes"] = shapes_json(d);
   j["cohesive_zone_length_m"] = d.cohesive_zone_length;
   j["interface_point_spacing_m"] = d.interface_point_spacing;
   j["penalty_stiffness_Pa_per_m"] = law.penalty_stiffness;
@@ -143,6 +168,12 @@ std::string delamination_text(const DelaminationSettings& s, const DelaminationR
                    d.projected_area * 1e6, millimetres_squared(d.delaminated_area),
                    millimetres_squared(d.process_zone_area));
   t += fmt::format("  delamination energy     {:12.4f} J dissipated by the interfaces\n", d.dissipated);
+  const std::vector<DelaminationShape> shapes = delamination_shapes(d);
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+    if (shapes[i].axis_deg && shapes[i].aspect_ratio)
+      t += fmt::format(
+          "    shape after ply {:<3}  long axis {:.1f} deg (ply below {:g} deg), aspect ratio {:.2f}\n",
+          d.interface_after_ply[i], *shapes[i].axis_deg, d.angle_below_deg[i], *shapes[i].aspect_ratio);
   t += fmt::format("  cohesive zone           {:12.3f} mm, interface points {:.3f} mm apart\n",
                    d.cohesive_zone_length * 1e3, d.interface_point_spacing * 1e3);
   return t;

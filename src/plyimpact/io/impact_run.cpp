@@ -211,7 +211,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
                                  plate ? &model.mesh() : nullptr,
                                  damage ? &damage->onsets() : nullptr,
                                  damage ? &out.first_failures : nullptr,
-                                 out.notes};
+                                 out.notes,
+                                 out.result.delamination ? &*out.result.delamination : nullptr};
   folder->write_text("report.html", impact_report_html(report));
   write_impact_results(*folder, &model, out.result, out.summary);
   report_failure(out.result, folder->path());

@@ -1,6 +1,7 @@
 #include "plyimpact/io/ply_damage_maps.hpp"
 
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/svg_plot.hpp"
 
 #include <fmt/format.h>
 
@@ -9,6 +10,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace plyimpact {
 namespace {
@@ -67,18 +69,23 @@ constexpr const char* damage_palette =
     "set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', "
     "0.7 '#e31a1c', 1 '#800026')\n";
 
-/// The colour scale of a map: gnuplot's palette and the colour box's label.
+/// The colour scale of a map: gnuplot's palette, the colour box's label, range and tics.
 struct MapScale {
-  const char* palette;
-  const char* label;
+  std::string palette;
+  std::string label;
+  std::string range = "[0:1]";
+  std::string tics; ///< gnuplot's cbtics, or empty for its own
 };
-constexpr MapScale ply_scale{damage_palette, "damage variable d (white: 0, intact; 1: fully cracked)"};
+MapScale ply_scale() {
+  return {damage_palette, "damage variable d (white: 0, intact; 1: fully cracked)", "[0:1]", ""};
+}
 /// The interfaces: the softening points in the same colours up to red, the delaminated ones (d = 1)
 /// black, so that a C-scan's delaminated area stands out from a process zone whose d is 0.998.
-constexpr MapScale interface_scale{
-    "set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', 0.7 '#e31a1c', "
-    "0.9999 '#bd0026', 0.9999 '#000000', 1 '#000000')\n",
-    "cohesive damage d (white: intact; black: delaminated, d = 1)"};
+MapScale interface_scale() {
+  return {"set palette defined (0 '#ffffff', 0.001 '#ffeda0', 0.2 '#fed976', 0.4 '#fd8d3c', 0.7 '#e31a1c', "
+          "0.9999 '#bd0026', 0.9999 '#000000', 1 '#000000')\n",
+          "cohesive damage d (white: intact; black: delaminated, d = 1)", "[0:1]", ""};
+}
 
 /// The gnuplot settings of a map over the rows' elements: every element a polygon filled with its value.
 std::string map_settings(const std::vector<const DamageElementRow*>& elements,
@@ -94,7 +101,8 @@ std::string map_settings(const std::vector<const DamageElementRow*>& elements,
   std::string s = "unset grid\nset size ratio -1\n";
   s += fmt::format("set xrange [{:.6f}:{:.6f}]\nset yrange [{:.6f}:{:.6f}]\n", x0 * 1e3, x1 * 1e3, y0 * 1e3,
                    y1 * 1e3);
-  s += fmt::format("set cbrange [0:1]\nset cblabel '{}' noenhanced\n", scale.label);
+  s += fmt::format("set cbrange {}\nset cblabel '{}' noenhanced\n", scale.range, scale.label);
+  if (!scale.tics.empty()) s += fmt::format("set cbtics {}\n", scale.tics);
   s += scale.palette;
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const auto& c = elements[i]->corners;
@@ -171,7 +179,7 @@ std::vector<PlotCurve> map_curves(const std::vector<const DamageElementRow*>& el
 
 PlotSpec map_spec(std::string name, std::string title, const std::vector<const DamageElementRow*>& elements,
                   const std::vector<double>& values, const MapMarks& marks,
-                  const MapScale& scale = ply_scale) {
+                  const MapScale& scale = ply_scale()) {
   PlotSpec spec;
   spec.name = std::move(name);
   spec.title = std::move(title);
@@ -224,6 +232,24 @@ std::vector<double> largest_over(const std::vector<std::vector<double>>& layers)
     for (std::size_t i = 0; i < top.size(); ++i)
       top[i] = std::max(top[i], layer[i]);
   return top;
+}
+
+/// The C-scan's scale: white for no delamination (0), then one colour per interface (cscan_colour), each
+/// a band of the colour box labelled with the ply above it.
+MapScale cscan_scale(const std::vector<int>& after_ply) {
+  const auto n = static_cast<int>(after_ply.size());
+  MapScale scale;
+  scale.palette = fmt::format("set palette maxcolors {}\nset palette defined (0 '#ffffff'", n + 1);
+  scale.tics = "(\"none\" 0";
+  for (int i = 1; i <= n; ++i) {
+    scale.palette += fmt::format(", {} '{}'", i, cscan_colour(i));
+    scale.tics += fmt::format(", \"after ply {}\" {}", after_ply[static_cast<std::size_t>(i - 1)], i);
+  }
+  scale.palette += ")\n";
+  scale.tics += ")";
+  scale.range = fmt::format("[-0.5:{}.5]", n);
+  scale.label = "shallowest delaminated interface (d = 1)";
+  return scale;
 }
 
 } // namespace
@@ -410,13 +436,21 @@ std::vector<PlotSpec> delamination_map_plots(const fs::path& dir) {
                  fmt::format("Interface after ply {}: cohesive damage d per interface point "
                              "(delaminated {:.3g} mm^2, softening {:.3g} mm^2)",
                              after_ply[i], area_where(damage[i], cracked), area_where(damage[i], softening)),
-                 geometry, damage[i], marks, interface_scale));
+                 geometry, damage[i], marks, interface_scale()));
   const std::vector<double> projected = largest_over(damage);
   specs.push_back(map_spec("delamination_map_projected",
                            fmt::format("Projected delamination (C-scan view): largest d of any interface "
                                        "(delaminated {:.3g} mm^2)",
                                        area_where(projected, cracked)),
-                           geometry, projected, marks, interface_scale));
+                           geometry, projected, marks, interface_scale()));
+  std::vector<double> shallowest;
+  for (const int i : shallowest_delaminated(damage))
+    shallowest.push_back(i);
+  specs.push_back(map_spec("delamination_cscan",
+                           fmt::format("C-scan: the shallowest delaminated interface at each point "
+                                       "(projected {:.3g} mm^2)",
+                                       area_where(projected, cracked)),
+                           geometry, shallowest, marks, cscan_scale(after_ply)));
   return specs;
 }
 

@@ -24,6 +24,8 @@
 //                         every point drawn over its cell, and the largest over the interfaces (what a
 //                         C-scan of the delaminations shows); the titles give the delaminated (d = 1) and
 //                         softening areas, the sums of the cells' areas, equal to summary.json's.
+//   plots/delamination_cscan   each point in the colour of the shallowest interface delaminated there (a
+//                         C-scan from the impacted face: shallowest_delaminated, io/svg_plot.hpp).
 #include "plyimpact/analysis/impact_result.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/io/plots.hpp"

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <vector>
 
 namespace plyimpact {
 
@@ -285,6 +287,85 @@ std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onse
   if (!rig.clamp_tips.empty())
     fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">○ {}; - - window edge</text>\n", margin, ly + 30.0,
                    xml_escaped(clamp_tip_note));
+  return s + "</svg>\n";
+}
+
+std::vector<int> shallowest_delaminated(const std::vector<std::vector<double>>& point_damage) {
+  std::vector<int> interface_of(point_damage.empty() ? 0 : point_damage.front().size(), 0);
+  for (std::size_t q = 0; q < interface_of.size(); ++q)
+    for (std::size_t i = 0; i < point_damage.size(); ++i)
+      if (point_damage[i][q] >= 1.0) {
+        interface_of[q] = static_cast<int>(i) + 1;
+        break;
+      }
+  return interface_of;
+}
+
+const char* cscan_colour(int i) {
+  static constexpr std::array<const char*, 10> tab10{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  return tab10[static_cast<std::size_t>(i - 1) % tab10.size()];
+}
+
+std::string svg_cscan_map(const CscanMap& map, int width) {
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const auto& cell : map.cells)
+    for (const Eigen::Vector2d& c : cell)
+      x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
+  for (const Eigen::Vector2d& p : map.rig.window)
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  const double margin = 20.0, row_h = 18.0;
+  const double legend_h = row_h * static_cast<double>(map.after_ply.size() + 2) + 8.0;
+  const double scale = (width - 2.0 * margin) / std::max(x1 - x0, 1e-12);
+  const int height = static_cast<int>(std::ceil((y1 - y0) * scale + 2.0 * margin + legend_h));
+  const auto X = [&](double x) { return margin + (x - x0) * scale; };
+  const auto Y = [&](double y) { return height - legend_h - margin - (y - y0) * scale; };
+  std::string s = svg_open(width, height, "map", "C-scan of the delaminations from the impacted face");
+  auto out = std::back_inserter(s);
+  std::vector<double> share(map.after_ply.size() + 1, 0.0); // projected area per interface [m²]
+  for (std::size_t q = 0; q < map.cells.size(); ++q) {
+    const int i = map.interface_of_point[q];
+    if (i == 0) continue; // intact: the background
+    share[static_cast<std::size_t>(i)] += map.area[q];
+    s += fmt::format("<polygon fill=\"{0}\" stroke=\"{0}\" stroke-width=\"0.6\" points=\"", cscan_colour(i));
+    for (const Eigen::Vector2d& c : map.cells[q])
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(c.x()), Y(c.y()));
+    s += "\"/>\n";
+  }
+  fmt::format_to(out,
+                 "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
+                 "stroke=\"#bbb\"/>\n",
+                 X(x0), Y(y1), X(x1) - X(x0), Y(y0) - Y(y1));
+  if (!map.rig.window.empty()) {
+    s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
+    for (const Eigen::Vector2d& p : map.rig.window)
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+    s += "\"/>\n";
+  }
+  for (const Eigen::Vector2d& p : map.rig.clamp_tips)
+    fmt::format_to(
+        out,
+        "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
+        "stroke-width=\"1.5\"/>\n",
+        X(p.x()), Y(p.y()));
+  fmt::format_to(
+      out,
+      "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" stroke=\"#000\" stroke-width=\"2.5\"/>"
+      "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
+      X(map.impact_x), Y(map.impact_y), X(map.impact_x) + 9.0, Y(map.impact_y) - 9.0);
+  double ly = height - legend_h + 8.0;
+  fmt::format_to(
+      out,
+      "<text x=\"{:.1f}\" y=\"{:.1f}\">{:.4g} × {:.4g} mm; the shallowest delaminated interface:</text>\n",
+      margin, ly + 12.0, (x1 - x0) * 1e3, (y1 - y0) * 1e3);
+  for (std::size_t i = 1; i <= map.after_ply.size(); ++i) {
+    ly += row_h;
+    fmt::format_to(out,
+                   "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"12\" fill=\"{}\"/><text "
+                   "x=\"{:.1f}\" y=\"{:.1f}\">interface after ply {}: {:.4g} mm² seen</text>\n",
+                   margin, ly + 2.0, cscan_colour(static_cast<int>(i)), margin + 20.0, ly + 12.0,
+                   map.after_ply[i - 1], share[i] * 1e6);
+  }
   return s + "</svg>\n";
 }
 

@@ -7,6 +7,9 @@
 #include "plyimpact/io/test_rigs.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 
+#include <Eigen/Core>
+
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,5 +52,28 @@ struct LinePlot {
 [[nodiscard]] std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onsets,
                                         double impact_x, double impact_y, const RigOutline& rig = {},
                                         int width = 640);
+
+/// A C-scan of the delaminations seen from the impacted face (time of flight): at each interface point
+/// the shallowest interface that has delaminated there (d = 1) hides those below it, as the ultrasonic echo
+/// returns from the first delaminated interface it meets. Per point: the 1-based index of that interface
+/// (from the impacted face), 0 where no interface has delaminated. `point_damage` is per interface and
+/// point (DelaminationResult::point_damage).
+[[nodiscard]] std::vector<int> shallowest_delaminated(const std::vector<std::vector<double>>& point_damage);
+/// The colour of interface `i` (1-based, from the impacted face) in a C-scan: tab10, repeating after ten.
+[[nodiscard]] const char* cscan_colour(int i);
+
+/// A C-scan picture: every interface point's cell (`cells`, corners counter-clockwise [m]) filled with the
+/// colour of its shallowest delaminated interface (`interface_of_point`, shallowest_delaminated), white
+/// where none has; a legend naming each interface by the ply above it (`after_ply`) with its projected
+/// share; the impact point and the rig marked as in svg_onset_map.
+struct CscanMap {
+  const std::vector<std::array<Eigen::Vector2d, 4>>& cells;
+  const std::vector<double>& area; ///< per point [m²]
+  const std::vector<int>& interface_of_point;
+  const std::vector<int>& after_ply;
+  double impact_x = 0.0, impact_y = 0.0;
+  RigOutline rig;
+};
+[[nodiscard]] std::string svg_cscan_map(const CscanMap& map, int width = 640);
 
 } // namespace plyimpact
