@@ -22,7 +22,8 @@ enum class SparseSolverKind {
 /// Measured (bench/README.md, "Supernodal where the factor is dense"): single plates lie at 64–134 and
 /// the 6 615-equation stacked example at 427, where the simplicial LDLᵀ ran 10–25 % faster over whole
 /// runs (many solves, few factorizations); the 107 611-equation stack of the ASTM coupon lies at 3 220,
-/// where its first factorization took 6 minutes simplicial and 15 s by supernodes.
+/// where a run spent about 6 minutes simplicial before its first step, and a 3-step run took 18.4 s in all
+/// by supernodes.
 inline constexpr double supernodal_flops_per_entry = 1000.0;
 
 /// The fill-reducing ordering of a CHOLMOD factor (bench/README.md, "Orderings", compares them).

@@ -77,13 +77,13 @@ std::optional<std::string> process_zone_warning(const ProcessZone& z, CohesiveIn
 /// Turon et al. (2010): with S/N ≠ √(G_IIc/G_Ic) the mixed-mode law does not dissipate G_c(B) along a
 /// crack front whose mixity changes (measured: MMB 1.23 G_c with N halved alone).
 std::optional<std::string> strength_ratio_warning(const CohesiveParameters& c) {
-  const double ratio = (c.shear_strength / c.normal_strength) / std::sqrt(c.G_IIc / c.G_Ic);
+  const double turon_S = turon_shear_strength(c.normal_strength, c.G_Ic, c.G_IIc);
+  const double ratio = c.shear_strength / turon_S;
   if (std::abs(ratio - 1.0) <= 0.1) return std::nullopt;
   return fmt::format("delamination: shear_strength / normal_strength = {:.3g} while sqrt(G_IIc / G_Ic) = "
                      "{:.3g}: under mixed mode the interfaces then dissipate more or less than G_c (Turon "
                      "et al. 2010; docs/delamination.md, MMB); set S = N sqrt(G_IIc / G_Ic) = {:.3g} MPa",
-                     c.shear_strength / c.normal_strength, std::sqrt(c.G_IIc / c.G_Ic),
-                     c.normal_strength * std::sqrt(c.G_IIc / c.G_Ic) * 1e-6);
+                     c.shear_strength / c.normal_strength, std::sqrt(c.G_IIc / c.G_Ic), turon_S * 1e-6);
 }
 
 /// The model equation of each equation of the stack's top sub-laminate (−1: none).

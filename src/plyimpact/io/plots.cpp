@@ -93,11 +93,6 @@ std::map<DamageLayer, std::string> damage_area_rows(const fs::path& csv, double 
   return out;
 }
 
-/// tab10, the ten colours of a panel.
-constexpr std::array<const char*, max_curves_per_panel> tab10 = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
-                                                                 "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
-                                                                 "#bcbd22", "#17becf"};
-
 PlotCurve damage_curve(const DamageLayer& layer, std::string rows, std::string title, std::size_t position) {
   PlotCurve c;
   c.using_expr = "1:2";

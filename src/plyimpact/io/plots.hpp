@@ -6,6 +6,7 @@
 // gnuplot (Debian's gnuplot-nox) from generated scripts that read the results' CSV files directly; the
 // scripts are kept next to the images so a picture can be restyled and redrawn by hand. Several results
 // folders give overlays (e.g. three impact velocities, thesis Fig. 4.8).
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -51,6 +52,10 @@ inline constexpr int plot_width_px = 900, plot_height_px = 600;
 inline constexpr int panels_width_px = 1400, panel_row_height_px = 400;
 /// Most curves in one panel: the tab10 palette's ten colours, each used once.
 inline constexpr std::size_t max_curves_per_panel = 10;
+/// tab10, the ten colours of a panel (and of a C-scan's interfaces, io/svg_plot.hpp).
+inline constexpr std::array<const char*, max_curves_per_panel> tab10 = {
+    "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+    "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
 /// Picture size of a spec in pixels: single plots plot_width_px x plot_height_px, small multiples
 /// panels_width_px wide and panel_row_height_px per row of two panels.

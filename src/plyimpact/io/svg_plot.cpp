@@ -1,5 +1,7 @@
 #include "plyimpact/io/svg_plot.hpp"
 
+#include "plyimpact/io/plots.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -138,6 +140,27 @@ std::string ramp(double t) {
                      stops[i][2] + u * (stops[i + 1][2] - stops[i][2]));
 }
 
+/// The rig's window edge (dashed) and clamp tips (open circles) over a map whose plate coordinates [m]
+/// `X`, `Y` map to the picture.
+template <class ToX, class ToY>
+std::string svg_rig_outline(const RigOutline& rig, const ToX& X, const ToY& Y) {
+  std::string s;
+  auto out = std::back_inserter(s);
+  if (!rig.window.empty()) {
+    s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
+    for (const Eigen::Vector2d& p : rig.window)
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+    s += "\"/>\n";
+  }
+  for (const Eigen::Vector2d& p : rig.clamp_tips)
+    fmt::format_to(
+        out,
+        "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
+        "stroke-width=\"1.5\"/>\n",
+        X(p.x()), Y(p.y()));
+  return s;
+}
+
 } // namespace
 
 std::string xml_escaped(std::string_view text) {
@@ -259,18 +282,7 @@ std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onse
   for (const DamageOnset& o : onsets)
     fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"/>\n", X(o.x), Y(o.y),
                    ramp(t1 > t0 ? (o.time - t0) / (t1 - t0) : 0.0));
-  if (!rig.window.empty()) {
-    s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
-    for (const Eigen::Vector2d& p : rig.window)
-      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
-    s += "\"/>\n";
-  }
-  for (const Eigen::Vector2d& p : rig.clamp_tips)
-    fmt::format_to(
-        out,
-        "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
-        "stroke-width=\"1.5\"/>\n",
-        X(p.x()), Y(p.y()));
+  s += svg_rig_outline(rig, X, Y);
   fmt::format_to(out,
                  "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" class=\"impact\"/>"
                  "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
@@ -302,8 +314,6 @@ std::vector<int> shallowest_delaminated(const std::vector<std::vector<double>>& 
 }
 
 const char* cscan_colour(int i) {
-  static constexpr std::array<const char*, 10> tab10{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
   return tab10[static_cast<std::size_t>(i - 1) % tab10.size()];
 }
 
@@ -336,18 +346,7 @@ std::string svg_cscan_map(const CscanMap& map, int width) {
                  "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
                  "stroke=\"#bbb\"/>\n",
                  X(x0), Y(y1), X(x1) - X(x0), Y(y0) - Y(y1));
-  if (!map.rig.window.empty()) {
-    s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
-    for (const Eigen::Vector2d& p : map.rig.window)
-      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
-    s += "\"/>\n";
-  }
-  for (const Eigen::Vector2d& p : map.rig.clamp_tips)
-    fmt::format_to(
-        out,
-        "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
-        "stroke-width=\"1.5\"/>\n",
-        X(p.x()), Y(p.y()));
+  s += svg_rig_outline(map.rig, X, Y);
   fmt::format_to(
       out,
       "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" stroke=\"#000\" stroke-width=\"2.5\"/>"
