@@ -7,7 +7,9 @@
 //                                                                       Fc_{n+1}; the plate's contact
 //                                                                       compliance is 0)
 //   a_{n+1} = M⁻¹ (Fc_{n+1} s_load − f_int(u_{n+1}))                   (CD3: the law once, at u_{n+1}, from
-//                                                                       the state committed before)
+//                                                                       the state committed before; M
+//                                                                       diagonal, or block-diagonal with
+//                                                                       selective mass scaling)
 //   v_{n+1} = vₙ + ½Δt (aₙ + a_{n+1})                                  (CD4: γ = ½, the time loop's update)
 //
 // Stability: the undamped central-difference step is stable for Δt ω_max < 2, ω_max the highest
@@ -41,14 +43,19 @@ namespace {
 /// The largest Δt accepted, as a fraction of the undamaged plate's stable step 2/ω_max (CD5).
 constexpr double stable_step_fraction = 0.9;
 
-/// The lumped mass as a diagonal; throws where M is not diagonal or a DOF carries no mass.
-Eigen::VectorXd diagonal_mass(const MassOperator& M, const std::string& key) {
-  if (M.diagonal().size() == 0 || !(M.diagonal().minCoeff() > 0.0))
+/// `m` where it is a diagonal mass with every DOF carrying mass; throws otherwise.
+Eigen::VectorXd diagonal_mass(const Eigen::VectorXd& m, const std::string& key) {
+  if (m.size() == 0 || !(m.minCoeff() > 0.0))
     throw std::invalid_argument(fmt::format(
         "{} needs a diagonal mass with every DOF carrying mass: set [mesh] mass = \"lumped\"; a laminate "
         "that is not symmetric couples its lumped mass (I1 != 0), use integration = \"lagged\" for it",
         key));
-  return M.diagonal();
+  return m;
+}
+
+/// The lumped mass as a diagonal; throws where M is not diagonal or a DOF carries no mass.
+Eigen::VectorXd diagonal_mass(const MassOperator& M, const std::string& key) {
+  return diagonal_mass(M.diagonal(), key);
 }
 
 class CentralDifferencePolicy;
@@ -94,7 +101,7 @@ public:
 
   std::string key_;
   std::shared_ptr<const ScaledMass> mass_; ///< M_'s diagonal, and what scaling added to it
-  Eigen::VectorXd inverse_mass_;           ///< of the mass M_, diagonal
+  Eigen::VectorXd inverse_mass_;           ///< of M_'s diagonal part (M_ itself where it has no blocks)
   double omega_max_;
 
 private:
@@ -108,11 +115,10 @@ private:
   CentralDifferencePolicy(std::shared_ptr<const ScaledMass> mass,
                           std::unique_ptr<const MechanicalModel>&& model, const StepPolicyOptions& options,
                           std::string key)
-      : ModelPolicy(std::move(model), options, MassOperator(mass->mass)), key_(std::move(key)),
-        mass_(std::move(mass)), inverse_mass_(diagonal_mass(M_, key_).cwiseInverse()),
-        omega_max_(options.explicit_omega_max
-                       ? *options.explicit_omega_max
-                       : highest_angular_frequency(model_->initial_stiffness(), M_.diagonal())) {
+      : ModelPolicy(std::move(model), options, mass_operator(*mass)), key_(std::move(key)),
+        mass_(std::move(mass)), inverse_mass_(diagonal_mass(mass_->mass, key_).cwiseInverse()),
+        omega_max_(options.explicit_omega_max ? *options.explicit_omega_max
+                                              : explicit_highest_mode(*model_, *mass_).omega_max) {
     if (options.newmark.gamma != 0.5)
       throw std::invalid_argument(fmt::format(
           "{} is central differences (gamma = 0.5), got [time] gamma = {}", key_, options.newmark.gamma));
@@ -123,13 +129,34 @@ private:
           "or dt = \"auto\" ({} x 2/omega_max, omega_max = {:.4g} rad/s; finer elements lower it)",
           key_, dt(), largest, stable_step_fraction, omega_max_));
   }
+
+  /// The mass the time loop's energies use: diagonal, or with selective scaling the sparse diag + coupling.
+  static MassOperator mass_operator(const ScaledMass& mass) {
+    if (mass.blocks) return {mass.matrix(), 0.0};
+    return MassOperator(mass.mass);
+  }
 };
+
+/// x = M⁻¹ r of the policy's mass (CD3).
+void apply_inverse_mass(const CentralDifferencePolicy& p, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+  if (p.mass_->blocks)
+    p.mass_->blocks->solve(r, x);
+  else
+    x = p.inverse_mass_.cwiseProduct(r);
+}
+
+/// sᵀM⁻¹s: 1 / the mass the contact spring moves at the impact point [1/kg].
+double contact_flexibility(const CentralDifferencePolicy& p, const Eigen::VectorXd& s) {
+  Eigen::VectorXd x(s.size());
+  apply_inverse_mass(p, s, x);
+  return s.dot(x);
+}
 
 CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy& policy,
                                                    const Impactor& impactor)
     : ModelStepper(policy, impactor), p_(policy), a_next_(Eigen::VectorXd::Zero(policy.equations())),
       force_(Eigen::VectorXd::Zero(policy.equations())),
-      contact_flexibility_(loading_.sampler().dot(policy.inverse_mass_.cwiseProduct(loading_.sampler()))) {}
+      contact_flexibility_(contact_flexibility(policy, loading_.sampler())) {}
 
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
                                                   const ContactStep& contact, Eigen::VectorXd& u_next) {
@@ -140,7 +167,7 @@ ContactSolution CentralDifferenceStepper::advance(long step, double t, const Pla
   state_->internal_force(u_next, dt, f_int_);
   loading_.scaled_load(cs.alpha, cs.force, force_);
   force_ -= f_int_;
-  a_next_ = p_.inverse_mass_.cwiseProduct(force_); // CD3
+  apply_inverse_mass(p_, force_, a_next_); // CD3
   if (!std::isfinite(a_next_.squaredNorm()))
     throw NewtonFailure(fmt::format("{}: non-finite acceleration in step {} (t = {:.6g} s); reduce time.dt",
                                     p_.key_, step, t));
@@ -173,13 +200,18 @@ double stable_time_step(double omega_max) {
 
 ScaledMass explicit_mass(const MechanicalModel& model, const std::string& key, const MassScaling& scaling) {
   const Eigen::VectorXd m = diagonal_mass(integrator_mass(model), key);
-  if (scaling.kind == MassScalingKind::none) return ScaledMass{m, {}, {}, {}};
+  if (scaling.kind == MassScalingKind::none) {
+    ScaledMass unscaled;
+    unscaled.mass = m;
+    return unscaled;
+  }
   return scaled_mass(model.initial_stiffness(), m, model.places(), model.contact_plate().mesh().node_count(),
-                     scaling);
+                     scaling, model.interface_stiffness());
 }
 
-StableStepSource explicit_highest_mode(const MechanicalModel& model, const Eigen::VectorXd& mass) {
-  const HighestMode mode = highest_mode(model.initial_stiffness(), mass);
+StableStepSource explicit_highest_mode(const MechanicalModel& model, const ScaledMass& mass) {
+  const HighestMode mode = mass.blocks ? highest_mode(model.initial_stiffness(), *mass.blocks)
+                                       : highest_mode(model.initial_stiffness(), mass.mass);
   StableStepSource source;
   source.omega_max = mode.omega;
   source.place = model.place_of(mode.equation);

@@ -84,7 +84,7 @@ std::shared_ptr<const ScaledMass> explicit_case_mass(const ImpactCaseDescription
 std::optional<StableStepSource> highest_mode(const ImpactCaseDescription& d,
                                              const MechanicalModel* explicit_plate, const ScaledMass* mass) {
   if (!explicit_plate) return std::nullopt;
-  return naming_singular_causes(d, [&] { return explicit_highest_mode(*explicit_plate, mass->mass); });
+  return naming_singular_causes(d, [&] { return explicit_highest_mode(*explicit_plate, *mass); });
 }
 
 /// The description, once its mesh is known to fit in the memory available (mesh_memory.hpp): nothing is

@@ -106,7 +106,16 @@ double ScaledMass::added_kinetic_energy(const Eigen::VectorXd& v) const {
     const double vk = v[equations[k]];
     e += added[k] * vk * vk;
   }
+  if (coupling.size() > 0) e += v.dot(coupling * v);
   return 0.5 * e;
+}
+
+SparseMatrix ScaledMass::matrix() const {
+  SparseMatrix M(mass.size(), mass.size());
+  M.setIdentity();
+  M = mass.asDiagonal() * M;
+  if (coupling.size() > 0) M += coupling;
+  return M;
 }
 
 double gershgorin_bound(const SparseMatrix& K, const Eigen::VectorXd& m,
@@ -114,8 +123,39 @@ double gershgorin_bound(const SparseMatrix& K, const Eigen::VectorXd& m,
   return gershgorin_bound(row_sums(K, m), m, places, group);
 }
 
+namespace {
+
+/// K − K_c: the sub-laminates alone, which the rotary part of selective scaling bounds.
+SparseMatrix plates_alone(const SparseMatrix& K, const MassScaling& scaling, const SparseMatrix* interfaces) {
+  if (scaling.kind != MassScalingKind::selective) return K;
+  if (!interfaces || interfaces->nonZeros() == 0)
+    throw std::invalid_argument(
+        "time.mass_scaling = \"selective\" scales the relative motion of a stack's interfaces, and this "
+        "plate has none: use \"rotary\" or \"nodal\", or add [delamination]");
+  SparseMatrix Kp = K - *interfaces;
+  Kp.prune(0.0);
+  return Kp;
+}
+
+/// MS3's K_c/ω_c² and its largest diagonal entry over the lumped mass of its DOF.
+void add_interface_mass(ScaledMass& out, const SparseMatrix& interfaces, double omega_t2) {
+  const double omega_c = interface_frequency_ratio * std::sqrt(omega_t2);
+  out.coupling = interfaces / (omega_c * omega_c); // MS3
+  out.report.interface_factor = out.coupling.diagonal().cwiseQuotient(out.mass).maxCoeff();
+  try {
+    out.blocks = std::make_shared<const BlockDiagonalMass>(out.matrix());
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format(
+        "time.mass_scaling = \"selective\" needs interfaces whose points are the nodes "
+        "([delamination] points = \"nodal\", the default): the mass then couples one node's faces only ({})",
+        e.what()));
+  }
+}
+
+} // namespace
+
 ScaledMass scaled_mass(const SparseMatrix& K, const Eigen::VectorXd& m, std::span<const EquationPlace> places,
-                       int nodes, const MassScaling& scaling) {
+                       int nodes, const MassScaling& scaling, const SparseMatrix* interfaces) {
   ScaledMass out;
   out.mass = m;
   out.report.kind = scaling.kind;
@@ -127,11 +167,11 @@ ScaledMass scaled_mass(const SparseMatrix& K, const Eigen::VectorXd& m, std::spa
   for (std::size_t i = 0; i < places.size(); ++i)
     original.raise(slot_of(places[i], nodes), places[i].dof, m[static_cast<Eigen::Index>(i)]);
   if (scaling.kind != MassScalingKind::none) {
-    const RowSums r = row_sums(K, m);
+    const RowSums r = row_sums(plates_alone(K, scaling, interfaces), m);
     const double omega_t2 = target_omega_squared(r, m, places, scaling);
     out.report.target_omega = std::sqrt(omega_t2);
     out.report.target_dt = stable_time_step(out.report.target_omega);
-    const DofGroup group = scaling.kind == MassScalingKind::rotary ? DofGroup::rotations : DofGroup::all;
+    const DofGroup group = scaling.kind == MassScalingKind::nodal ? DofGroup::all : DofGroup::rotations;
     for (std::size_t i = 0; i < places.size(); ++i) {
       const auto eq = static_cast<Eigen::Index>(i);
       if (in_group(places[i].dof, group) && gershgorin_row(r, m, eq) > omega_t2)
@@ -146,6 +186,7 @@ ScaledMass scaled_mass(const SparseMatrix& K, const Eigen::VectorXd& m, std::spa
       out.added.push_back(target - m[eq]);
       out.report.largest_factor = std::max(out.report.largest_factor, target / m[eq]);
     }
+    if (scaling.kind == MassScalingKind::selective) add_interface_mass(out, *interfaces, omega_t2);
   }
   NodeTable added(slots);
   for (std::size_t k = 0; k < out.equations.size(); ++k) {
@@ -169,6 +210,8 @@ const char* to_string(MassScalingKind kind) {
     return "rotary";
   case MassScalingKind::nodal:
     return "nodal";
+  case MassScalingKind::selective:
+    return "selective";
   }
   return "?";
 }
@@ -183,6 +226,11 @@ std::string mass_scaling_text(const MassScalingReport& r) {
   if (added_inertia > 0.0)
     s += fmt::format("; rotary inertia +{:.4g} kg m^2 ({:.3g} % of the plate's)", added_inertia,
                      inertia > 0.0 ? 100.0 * added_inertia / inertia : 0.0);
+  if (r.kind == MassScalingKind::selective)
+    s += fmt::format("; interfaces: K_c/omega_c^2 (omega_c = omega_t/2) on the faces' relative motion, up to "
+                     "{:.3g}x a DOF's lumped "
+                     "mass, none on the plate's motion",
+                     r.interface_factor);
   if (r.kind == MassScalingKind::nodal)
     s += fmt::format("; mass +{:.4g} kg ({:.3g} % of the plate's {:.4g} kg)", added_mass,
                      mass > 0.0 ? 100.0 * added_mass / mass : 0.0, mass);

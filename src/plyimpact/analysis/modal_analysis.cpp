@@ -18,13 +18,12 @@ namespace plyimpact {
 
 namespace {
 
-/// y = A x with A = S K S (S diagonal: `scale`) held by rows, blocks of rows on the element-loop threads
+/// y = A x with A symmetric (M^-½ K M^-½) held by rows, blocks of rows on the element-loop threads
 /// (parallel_rows_product: the same bits for any number of threads).
 class RowsProductOp {
 public:
   using Scalar = double;
-  RowsProductOp(const SparseMatrix& K, const Eigen::VectorXd& scale)
-      : A_(scale.asDiagonal() * K * scale.asDiagonal()), x_(A_.cols()), y_(A_.rows()) {}
+  explicit RowsProductOp(const SparseMatrix& A) : A_(A), x_(A_.cols()), y_(A_.rows()) {}
   [[nodiscard]] Eigen::Index rows() const { return A_.rows(); }
   [[nodiscard]] Eigen::Index cols() const { return A_.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
@@ -187,13 +186,12 @@ double highest_angular_frequency(const SparseMatrix& K, const Eigen::VectorXd& m
   return highest_mode(K, mass).omega;
 }
 
-HighestMode highest_mode(const SparseMatrix& K, const Eigen::VectorXd& mass) {
-  const auto n = static_cast<int>(K.rows());
-  if (n < 3) throw std::invalid_argument("highest_angular_frequency: too few DOFs");
-  if (mass.size() != n || !(mass.minCoeff() > 0.0))
-    throw std::invalid_argument("highest_angular_frequency: the mass must be diagonal and positive");
-  const Eigen::VectorXd scale = mass.cwiseSqrt().cwiseInverse();
-  RowsProductOp op(K, scale); // Spectra holds it by non-const reference
+namespace {
+
+/// The largest eigenvalue of the symmetric form A = M^-½ K M^-½ by Lanczos, as highest_mode returns it.
+HighestMode highest_of_symmetric_form(const SparseMatrix& A) {
+  const auto n = static_cast<int>(A.rows());
+  RowsProductOp op(A); // Spectra holds it by non-const reference
   Spectra::SymEigsSolver<RowsProductOp> solver(op, 1, std::min(n, 20));
   solver.init();
   solver.compute(Spectra::SortRule::LargestAlge, 1000, highest_frequency_tolerance);
@@ -204,9 +202,28 @@ HighestMode highest_mode(const SparseMatrix& K, const Eigen::VectorXd& mass) {
   HighestMode mode;
   mode.omega = std::sqrt(solver.eigenvalues()(0) * (1.0 + highest_frequency_tolerance));
   Eigen::Index largest = 0;
-  (void)solver.eigenvectors().col(0).cwiseAbs().maxCoeff(&largest); // the vector of M^½ φ: √m_i φ_i
+  (void)solver.eigenvectors().col(0).cwiseAbs().maxCoeff(&largest); // the vector of M^½ φ
   mode.equation = static_cast<int>(largest);
   return mode;
+}
+
+} // namespace
+
+HighestMode highest_mode(const SparseMatrix& K, const Eigen::VectorXd& mass) {
+  const auto n = static_cast<int>(K.rows());
+  if (n < 3) throw std::invalid_argument("highest_angular_frequency: too few DOFs");
+  if (mass.size() != n || !(mass.minCoeff() > 0.0))
+    throw std::invalid_argument("highest_angular_frequency: the mass must be diagonal and positive");
+  const Eigen::VectorXd scale = mass.cwiseSqrt().cwiseInverse();
+  return highest_of_symmetric_form(scale.asDiagonal() * K * scale.asDiagonal());
+}
+
+HighestMode highest_mode(const SparseMatrix& K, const BlockDiagonalMass& mass) {
+  if (K.rows() < 3) throw std::invalid_argument("highest_angular_frequency: too few DOFs");
+  if (mass.size() != K.rows())
+    throw std::invalid_argument("highest_angular_frequency: the mass and the stiffness differ in size");
+  const SparseMatrix S = mass.inverse_sqrt();
+  return highest_of_symmetric_form(SparseMatrix(S * K * S));
 }
 
 } // namespace plyimpact

@@ -1,5 +1,6 @@
 #pragma once
 // Free vibration K φ = ω² M φ (SPEC §8): lowest frequencies by shift-invert Lanczos (Spectra).
+#include "plyimpact/fem/block_mass.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 
 #include <vector>
@@ -45,5 +46,8 @@ struct HighestMode {
   int equation = -1;
 };
 [[nodiscard]] HighestMode highest_mode(const SparseMatrix& K, const Eigen::VectorXd& mass);
+/// The same with a block-diagonal mass (selective mass scaling), by Lanczos on M^-½ K M^-½; the equation
+/// is that of the largest entry of M^½ φ.
+[[nodiscard]] HighestMode highest_mode(const SparseMatrix& K, const BlockDiagonalMass& mass);
 
 } // namespace plyimpact

@@ -90,6 +90,9 @@ enum class MassScalingKind {
   none,   ///< the model's lumped mass as it is
   rotary, ///< the rotary inertia of the nodes (θx, θy) only: the thin-shell remedy of explicit codes
   nodal,  ///< any node, translations too: conventional target-step mass scaling, which adds real mass
+  /// a stack's interfaces: mass K_c/ω_t² on the faces' relative motion only (Olovsson et al. 2005), none on
+  /// the plate's motion, and the rotations as rotary
+  selective,
 };
 
 /// `[time] mass_scaling` and `target_dt`.

@@ -171,10 +171,10 @@ struct StableStepSource {
 /// with mass on every DOF.
 [[nodiscard]] ScaledMass explicit_mass(const MechanicalModel& model, const std::string& key,
                                        const MassScaling& scaling);
-/// ω_max of K0 φ = ω² M φ, K0 `model`'s virgin undeformed stiffness and M the diagonal `mass` (the bound
-/// CD5 takes) [rad/s], and where its mode lies (modal_analysis.hpp, highest_mode).
-[[nodiscard]] StableStepSource explicit_highest_mode(const MechanicalModel& model,
-                                                     const Eigen::VectorXd& mass);
+/// ω_max of K0 φ = ω² M φ, K0 `model`'s virgin undeformed stiffness and M the run's `mass` (diagonal, or
+/// block-diagonal with selective scaling; the bound CD5 takes) [rad/s], and where its mode lies
+/// (modal_analysis.hpp, highest_mode).
+[[nodiscard]] StableStepSource explicit_highest_mode(const MechanicalModel& model, const ScaledMass& mass);
 /// "theta_x of sub-laminate 2 at (62.5, 37.5) mm" (1-based, the top one first; only for a stack).
 [[nodiscard]] std::string stable_step_place_text(const StableStepSource& source, bool stacked);
 /// Central differences (CD1 to CD6) on any plate model with a diagonal mass: the one explicit integrator

@@ -166,6 +166,9 @@ public:
   /// The stiffness of the virgin, undeformed model: the highest frequency of the model
   /// is bounded with it (damage only lowers the stiffness; membrane tension adds little at w ~ h).
   [[nodiscard]] virtual const SparseMatrix& initial_stiffness() const = 0;
+  /// The part of initial_stiffness() that ties the faces of neighbouring sub-laminates (a stack's intact
+  /// interfaces); null for a plate without: what selective mass scaling scales (analysis/mass_scaling.hpp).
+  [[nodiscard]] virtual const SparseMatrix* interface_stiffness() const { return nullptr; }
   /// A run's state: virgin and undeformed.
   [[nodiscard]] virtual std::unique_ptr<ModelState> virgin_state() const = 0;
   /// What building the model changed about the case that the user must know (strengths lowered to a band

@@ -333,6 +333,7 @@ public:
                const std::optional<ProgressiveDamageSettings>& ply_damage,
                std::optional<StrainMeasure> large_deflection)
       : plate_(model, settings), initial_(elastic_stiffness(plate_.stack_)),
+        interfaces_(SparseMatrix(initial_ - plate_.stack_.plate_stiffness()).pruned()),
         K_plates_by_rows_(plate_.stack_.plate_stiffness()), large_deflection_(large_deflection) {
     const Kinematics kinematics = large_deflection ? Kinematics::von_karman : Kinematics::linear;
     for (int k = 0; k < plate_.stack_.sublaminate_count(); ++k) {
@@ -376,6 +377,7 @@ public:
   }
   [[nodiscard]] const SparseMatrix& mass() const override { return plate_.M_; }
   [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return initial_; }
+  [[nodiscard]] const SparseMatrix* interface_stiffness() const override { return &interfaces_; }
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
     return std::make_unique<StackedState>(*this);
   }
@@ -398,7 +400,8 @@ public:
   }
 
   StackedImpactPlate plate_;
-  SparseMatrix initial_; ///< K_plates + K_penalty, every interface point intact
+  SparseMatrix initial_;    ///< K_plates + K_penalty, every interface point intact
+  SparseMatrix interfaces_; ///< K_penalty alone
   /// K_plates stored by rows for the step's product: each entry of K u is one sequential sum over its row,
   /// in the order (and so with the bits) of the column-wise product, without scattering into K u
   Eigen::SparseMatrix<double, Eigen::RowMajor> K_plates_by_rows_;

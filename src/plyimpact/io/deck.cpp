@@ -211,6 +211,11 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
         "time.mass_scaling scales the lumped mass of explicit steps, but this deck's steps are implicit: "
         "remove mass_scaling, or choose explicit steps (integration = \"explicit\" in [time], [damage] or "
         "[delamination])");
+  if (d.time.mass_scaling.kind == MassScalingKind::selective && !d.delamination)
+    top.optional_table("time")->fail_at(
+        "mass_scaling", "time.mass_scaling = \"selective\" adds mass to the relative motion of a stack's "
+                        "interfaces, and this deck has no [delamination]: use \"rotary\" (or \"nodal\" with "
+                        "target_dt) for a single plate");
   if (d.time.adaptive && (!d.damage.criteria.empty() || d.damage.progressive || d.delamination))
     top.optional_table("time")->fail_at(
         "adaptive", "time.adaptive controls the error of the contact force only: the ply criteria, the "

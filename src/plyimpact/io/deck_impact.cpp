@@ -173,12 +173,13 @@ MassScaling read_mass_scaling(const TableReader& t) {
   MassScaling m;
   m.kind = t.optional_choice<MassScalingKind>("mass_scaling", {{"none", MassScalingKind::none},
                                                                {"rotary", MassScalingKind::rotary},
-                                                               {"nodal", MassScalingKind::nodal}})
+                                                               {"nodal", MassScalingKind::nodal},
+                                                               {"selective", MassScalingKind::selective}})
                .value_or(MassScalingKind::none);
   m.target_dt = t.optional_positive("target_dt", "s");
   if (m.target_dt && m.kind == MassScalingKind::none)
     t.fail_at("target_dt", "time.target_dt is the stable step that mass scaling aims at: add mass_scaling = "
-                           "\"rotary\" or \"nodal\", or remove target_dt");
+                           "\"rotary\", \"selective\" or \"nodal\", or remove target_dt");
   if (m.kind == MassScalingKind::nodal && !m.target_dt)
     t.fail_at("mass_scaling", "time.mass_scaling = \"nodal\" adds mass up to a stable step that the deck "
                               "gives: add target_dt (s), e.g. target_dt = 2e-8");

@@ -195,6 +195,7 @@ nlohmann::json mass_scaling_json(const MassScalingReport& m, const ImpactSetting
           {"added_mass_kg", m.added_mass_kg},
           {"rotary_inertia_kg_m2", m.rotary_inertia_kg_m2},
           {"added_rotary_inertia_kg_m2", m.added_rotary_inertia_kg_m2},
+          {"interface_mass_factor", m.interface_factor},
           {"added_kinetic_energy_max_J", or_null(r.added_mass_kinetic_energy)},
           {"added_kinetic_energy_fraction", added_energy_fraction(s, r)}};
 }
