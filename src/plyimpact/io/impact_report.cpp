@@ -1,5 +1,7 @@
 #include "plyimpact/io/impact_report.hpp"
 
+#include "plyimpact/analysis/energy_split.hpp"
+
 #include "plyimpact/analysis/delamination_shape.hpp"
 
 #include "plyimpact/fem/dof_map.hpp"
@@ -185,6 +187,18 @@ double added_energy_fraction(const ImpactSettings& s, const ImpactResult& r) {
   return r.added_mass_kinetic_energy && e0 > 0.0 ? *r.added_mass_kinetic_energy / e0 : 0.0;
 }
 
+/// summary.json `absorbed_energy_by_mechanism` (docs/output.md, analysis/energy_split.hpp): null until the
+/// impactor has left.
+nlohmann::json absorbed_by_mechanism_json(const ImpactResult& r) {
+  const std::optional<AbsorbedEnergySplit> split = absorbed_energy_split(r);
+  if (!split) return nullptr;
+  return {{"contact_J", split->contact},
+          {"ply_damage_J", split->ply_damage},
+          {"delamination_J", split->delamination},
+          {"plate_vibration_J", split->plate_vibration},
+          {"unaccounted_J", split->unaccounted}};
+}
+
 /// summary.json `mass_scaling` (docs/output.md): what was added, per sub-laminate, and what it carried.
 nlohmann::json mass_scaling_json(const MassScalingReport& m, const ImpactSettings& s, const ImpactResult& r) {
   return {{"kind", to_string(m.kind)},
@@ -217,6 +231,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   j["rebound_velocity"] = or_null(r.rebound_velocity);
   j["absorbed_energy"] = or_null(r.absorbed_energy);
   j["contact_dissipation"] = r.contact_dissipation;
+  j["absorbed_energy_by_mechanism"] = absorbed_by_mechanism_json(r);
   j["initial_energy"] = 0.5 * s.impactor.mass * s.impactor.velocity * s.impactor.velocity;
   j["contacts"] = r.episodes.size();
   j["steps"] = r.steps;
@@ -358,6 +373,11 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   t += "  absorbed energy         " +
        (r.absorbed_energy ? fmt::format("{:12.4f} J of {:.4f} J", *r.absorbed_energy, e0) : not_given(r)) +
        fmt::format(" (contact dissipation {:.4f} J)\n", r.contact_dissipation);
+  if (const std::optional<AbsorbedEnergySplit> split = absorbed_energy_split(r))
+    t += fmt::format(
+        "  absorbed by mechanism   contact {:.4f} J, ply damage {:.4f} J, delamination {:.4f} J, "
+        "plate vibration {:.4f} J (unaccounted {:.2g} J)\n",
+        split->contact, split->ply_damage, split->delamination, split->plate_vibration, split->unaccounted);
   if (r.progressive) {
     const ProgressiveDamageResult& pd = *r.progressive;
     t += fmt::format("  ply damage dissipation  {:12.4f} J (fibre tension {:.4f}, fibre compression {:.4f}, "
