@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -17,17 +18,20 @@ namespace plyimpact {
 namespace {
 
 TEST(ElementLoop, EveryElementOnceOnTwoThreads) {
+  // The loop runs in a team of two threads. Which thread takes which element is the scheduler's choice:
+  // on a loaded machine the first thread may take all 1000 before the second starts, so the test asks for
+  // the team, not for work on thread 1 (that version failed once under a sanitizer build beside other jobs).
   const ElementThreads two(2);
   EXPECT_EQ(element_threads(), 2);
-  std::vector<int> visits(1000, 0), thread_of(1000, -1);
+  std::vector<int> visits(1000, 0);
+  std::atomic<int> team{0};
   for_each_element(1000, [&](int e) {
     ++visits[static_cast<std::size_t>(e)];
-    thread_of[static_cast<std::size_t>(e)] = omp_get_thread_num();
+    team = omp_get_num_threads();
   });
   for (const int v : visits)
     EXPECT_EQ(v, 1);
-  EXPECT_NE(std::find(thread_of.begin(), thread_of.end(), 1), thread_of.end())
-      << "no work on a second thread";
+  EXPECT_EQ(team.load(), 2);
 }
 
 TEST(ElementLoop, TheErrorOfTheFirstFailingElementIsRethrown) {
