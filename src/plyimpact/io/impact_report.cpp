@@ -1,8 +1,7 @@
 #include "plyimpact/io/impact_report.hpp"
 
-#include "plyimpact/analysis/energy_split.hpp"
-
 #include "plyimpact/analysis/delamination_shape.hpp"
+#include "plyimpact/analysis/energy_split.hpp"
 
 #include "plyimpact/fem/dof_map.hpp"
 #include "plyimpact/io/history_csv.hpp"
