@@ -236,6 +236,21 @@ const std::vector<GuardCase>& guard_cases() {
       {"linear run deflected by 0.3 h: no warning",
        [] { return warning_of(large_deflection_warning(0.9e-3, 3.0e-3)); },
        {}},
+      // Selective scaling keeps the faces' added relative inertia after they crack (docs/validation.md §20):
+      // the run warns once an interface has delaminated where plies broke, not before, not unscaled.
+      {"selective scaling, delaminated interfaces over broken plies",
+       [] { return warning_of(selective_scaling_after_drop_warning(51.3, 1.31e-6, 1.0e-3)); },
+       {"interfaces delaminated (1.31 mm^2) where plies broke", "(51.3 times the unscaled)",
+        "Read the results up to the load drop (F_d)", "docs/validation.md §20"}},
+      {"selective scaling, delaminated interfaces, no broken ply: no warning",
+       [] { return warning_of(selective_scaling_after_drop_warning(51.3, 1.31e-6, 0.0)); },
+       {}},
+      {"selective scaling, broken plies, no delamination: no warning",
+       [] { return warning_of(selective_scaling_after_drop_warning(51.3, 0.0, 1.0e-3)); },
+       {}},
+      {"no selective scaling: no warning",
+       [] { return warning_of(selective_scaling_after_drop_warning(0.0, 1.31e-6, 1.0e-3)); },
+       {}},
       {"factorization larger than the available memory",
        [] {
          ImpactCaseDescription d = steel_sphere(2.68, 15, 11);

@@ -112,6 +112,15 @@ constexpr double added_mass_energy_tolerance = 0.01;
 /// impact energy `e0` at some step (its largest kinetic energy `added_kinetic`) [J].
 [[nodiscard]] std::optional<std::string> added_mass_warning(double added_kinetic, double e0);
 
+/// A warning where a run with selective mass scaling (`interface_mass_factor` > 0: how many times heavier
+/// the faces' relative motion became) delaminated an interface (`delaminated_area` [m²]) and broke plies
+/// (`fibre_dissipation` [J] > 0): the faces of a cracked interface keep the added relative inertia, and on
+/// the damage-trend study such runs matched the unscaled ones up to the load drop, not after it
+/// (docs/validation.md §20, docs/mass_scaling.md "Limits").
+[[nodiscard]] std::optional<std::string> selective_scaling_after_drop_warning(double interface_mass_factor,
+                                                                              double delaminated_area,
+                                                                              double fibre_dissipation);
+
 /// A warning suggesting `nonlinear = true` when a linear run's peak deflection exceeds
 /// max_linear_deflection times the laminate thickness h.
 [[nodiscard]] std::optional<std::string> large_deflection_warning(double peak_deflection, double thickness);

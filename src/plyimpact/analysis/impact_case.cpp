@@ -342,6 +342,13 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
       description_, [&] { return run_impact_loop(*policy_, imp, k, settings_.contact, loop, observers); });
   r.history = std::move(history.samples());
   r.fields = std::move(fields.fields());
+  if (settings_.mass_scaling && r.delamination && r.progressive) {
+    const PerDamageMode& by_mode = r.progressive->dissipated;
+    if (auto w = selective_scaling_after_drop_warning(
+            settings_.mass_scaling->interface_factor, r.delamination->projected_area,
+            by_mode[DamageMode::fibre_tension] + by_mode[DamageMode::fibre_compression]))
+      r.warnings.push_back(std::move(*w));
+  }
   return r;
 }
 
