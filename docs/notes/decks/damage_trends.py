@@ -121,6 +121,13 @@ def print_table(rows):
               f'{r["delaminated_mm2"]:.2f} mm² | {r["damaged_mm2"]:.1f} mm² | {r["balance"]:.1e} |')
 
 
+def write_force(path: pathlib.Path, history, every: int):
+    """Time [µs] and contact force [N] of every `every`-th row of a history.csv, for gnuplot."""
+    with open(path, "w") as f:
+        for row in history[::every]:
+            f.write(f'{float(row["t_s"]) * 1e6} {row["force_N"]}\n')
+
+
 def print_comparison(rows, refs, reference_out: pathlib.Path):
     """Relative differences of this study against another OUT's, case by case (the mass-scaling check)."""
     print(f"\nagainst {reference_out}: relative difference (this / reference - 1)")
@@ -150,9 +157,7 @@ def draw_comparison(rows, refs, label: str, reference_label: str, out: pathlib.P
     plots = []
     for r, ref in cases:
         for tag, row in (("this", r), ("ref", ref)):
-            with open(out / f'compare-{tag}-{r["velocity"]:g}.dat', "w") as f:
-                for h in row["history"][::10]:
-                    f.write(f'{float(h["t_s"]) * 1e6} {h["force_N"]}\n')
+            write_force(out / f'compare-{tag}-{r["velocity"]:g}.dat', row["history"], every=10)
         plots.append(f"""set title '{r["energy_mJ"]:.1f} mJ: absorbed {r["absorbed_mJ"]:.1f} against {ref["absorbed_mJ"]:.1f} mJ'
 plot '{out}/compare-ref-{r["velocity"]:g}.dat' using 1:2 with lines lw 2 lc rgb '#1f77b4' title '{reference_label}', \\
      '{out}/compare-this-{r["velocity"]:g}.dat' using 1:2 with lines lw 1 lc rgb '#d62728' title '{label}'""")
@@ -171,10 +176,8 @@ set grid
 
 
 def draw(rows, out: pathlib.Path, png: pathlib.Path):
-    for r in rows:  # force history, every 20th row
-        with open(out / f'force-{r["velocity"]:g}.dat', "w") as f:
-            for row in r["history"][::20]:
-                f.write(f'{float(row["t_s"]) * 1e6} {row["force_N"]}\n')
+    for r in rows:
+        write_force(out / f'force-{r["velocity"]:g}.dat', r["history"], every=20)
     with open(out / "energies.dat", "w") as f:
         f.write("# E0 contact matrix fibre interfaces absorbed [mJ]\n")
         for r in rows:
