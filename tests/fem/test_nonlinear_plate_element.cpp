@@ -143,6 +143,22 @@ INSTANTIATE_TEST_SUITE_P(StrainMeasures, NonlinearTangent,
                                                                                 : "green_lagrange");
                          });
 
+TEST(NonlinearElement, Mitc9ShearForceIsTheLinearShearStiffnessTimesU) {
+  // The force path multiplies K_s on (w, θx, θy) alone; the difference of the forces with and without
+  // it must be the whole 45 × 45 K_s of the linear element times u (its u, v rows and columns zero).
+  const Laminate lam = laminate_of(thesis_3_6(), "[0/45/90/-30]", 0.4e-3);
+  const ElementUnderTest el(lam, ElementFormulation::mitc9, StrainMeasure::von_karman);
+  const ElementGeometry geo = el.geometry(distorted_element());
+  ElementGeometry no_shear = geo;
+  no_shear.shear_stiffness_wt.setZero();
+  std::mt19937 rng(11);
+  const ElementVector u = random_state(rng, lam.thickness(), 0.01);
+  const ElementVector expected = geo.shear_stiffness * u;
+  const ElementVector got = el.internal_force(geo, u) - el.internal_force(no_shear, u);
+  EXPECT_GT(expected.norm(), 0.0);
+  EXPECT_LT((got - expected).norm(), 1e-12 * el.internal_force(geo, u).norm());
+}
+
 TEST(NonlinearElement, GreenLagrangeWithMitc9IsRefusedWithAClearMessage) {
   const Laminate lam = laminate_of(thesis_3_6(), "[0/90]s", 0.4e-3);
   try {

@@ -33,8 +33,9 @@ public:
 
 private:
   struct Block {
-    std::vector<int> equations;   ///< ascending
-    Eigen::MatrixXd inverse;      ///< M_b⁻¹
+    std::vector<int> equations; ///< ascending
+    /// M_b⁻¹, stored by rows: the solve reads it row by row.
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> inverse;
     Eigen::MatrixXd inverse_sqrt; ///< M_b^-½
   };
   Eigen::VectorXd diagonal_inverse_; ///< 1/M_ii of the DOFs that nothing couples, 0 for the others

@@ -161,10 +161,58 @@ struct DamagedPlateModel::Group {
   }
 };
 
+/// The DOF of field f (0 u, 1 v, 2 w, 3 θx, 4 θy) at node a of an element.
+constexpr Eigen::Index dof(Eigen::Index a, Eigen::Index f) {
+  return 5 * a + f;
+}
+
+/// Throws unless the rows ε0 and κ of S are (2.74) of the gradients (dN_dx, dN_dy), entry for entry: what
+/// DamagedPlateModel::membrane_bending_strain computes from the gradients instead of S.
+void check_membrane_bending_rows(const StrainOperator& S, const Eigen::Matrix<double, 9, 1>& dN_dx,
+                                 const Eigen::Matrix<double, 9, 1>& dN_dy) {
+  Eigen::Matrix<double, 6, q9_dofs> B = Eigen::Matrix<double, 6, q9_dofs>::Zero();
+  for (Eigen::Index a = 0; a < 9; ++a) {
+    B(0, dof(a, 0)) = B(2, dof(a, 1)) = B(3, dof(a, 3)) = B(5, dof(a, 4)) = dN_dx(a);
+    B(1, dof(a, 1)) = B(2, dof(a, 0)) = B(4, dof(a, 4)) = B(5, dof(a, 3)) = dN_dy(a);
+  }
+  if (B != S.topRows<6>())
+    throw std::logic_error("damaged plate: the element's rows ε0, κ are not (2.74) of its gradients");
+}
+
+/// The transverse-shear rows of S_p on the DOFs they read, (w, θx, θy) of each node in DOF order (their
+/// u and v entries are zero). `rows` adds the same products in the same ascending-column order as the
+/// full S_p uₑ, so γ is the same to the last bit.
+class ShearRows {
+public:
+  ShearRows() = default;
+  explicit ShearRows(const StrainOperator& S) {
+    for (Eigen::Index c = 0; c < S.cols(); ++c)
+      for (Eigen::Index r = 0; r < 2; ++r) {
+        if (c % 5 >= 2)
+          A_(r, 3 * (c / 5) + c % 5 - 2) = S(6 + r, c);
+        else if (S(6 + r, c) != 0.0)
+          throw std::logic_error("damaged plate: a transverse-shear strain reading u or v");
+      }
+  }
+  /// Rows 6 and 7 of S_p uₑ, written into e.
+  void rows(const ElementVector& ue, Eigen::Matrix<double, 8, 1>& e) const {
+    for (Eigen::Index r = 0; r < 2; ++r) {
+      double sum = 0.0;
+      for (Eigen::Index j = 0; j < 27; ++j)
+        sum += A_(r, j) * ue(dof(j / 3, 2 + j % 3));
+      e(6 + r) = sum;
+    }
+  }
+
+private:
+  Eigen::Matrix<double, 2, 27, Eigen::RowMajor> A_;
+};
+
 /// The strain operators S_p, shape-function gradients and weights w_p = w det J at the 3×3 Gauss points
 /// of one element shape.
 struct DamagedPlateModel::ElementOperators {
   std::array<StrainOperator, 9> S;
+  std::array<ShearRows, 9> S_shear; ///< S_p's rows γ, for γ = S_p uₑ
   std::array<Eigen::Matrix<double, 9, 1>, 9> dN_dx, dN_dy;
   std::array<double, 9> w{};
 };
@@ -301,10 +349,12 @@ void DamagedPlateModel::build_element_operators() {
     ElementOperators ops;
     for (std::size_t p = 0; p < gauss3x3.size(); ++p) {
       ops.S[p] = model_.element().strain_operator(xy, gauss3x3[p].xi, gauss3x3[p].eta);
+      ops.S_shear[p] = ShearRows(ops.S[p]);
       const PointKinematics k = point_kinematics(xy, gauss3x3[p].xi, gauss3x3[p].eta);
       ops.w[p] = gauss3x3[p].weight * k.detJ;
       ops.dN_dx[p] = k.dN_dx;
       ops.dN_dy[p] = k.dN_dy;
+      check_membrane_bending_rows(ops.S[p], ops.dN_dx[p], ops.dN_dy[p]);
     }
     operators_.push_back(ops);
   }
@@ -384,7 +434,29 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
 
 Eigen::Matrix<double, 8, 1> DamagedPlateModel::point_strain(const ElementOperators& ops, std::size_t p,
                                                             const ElementVector& ue) const {
-  Eigen::Matrix<double, 8, 1> e = ops.S[p] * ue;
+  Eigen::Matrix<double, 8, 1> e = membrane_bending_strain(ops, p, ue);
+  ops.S_shear[p].rows(ue, e);
+  return e;
+}
+
+Eigen::Matrix<double, 8, 1> DamagedPlateModel::membrane_bending_strain(const ElementOperators& ops,
+                                                                       std::size_t p,
+                                                                       const ElementVector& ue) const {
+  // (2.74), term by term in the column order of S_p (node by node, u before v, θx before θy): the same
+  // sums as the rows ε0 and κ of S_p uₑ to the last bit, without its zero entries.
+  Eigen::Matrix<double, 8, 1> e = Eigen::Matrix<double, 8, 1>::Zero();
+  for (Eigen::Index a = 0; a < 9; ++a) {
+    const double Nx = ops.dN_dx[p](a), Ny = ops.dN_dy[p](a);
+    const double u = ue(dof(a, 0)), v = ue(dof(a, 1)), tx = ue(dof(a, 3)), ty = ue(dof(a, 4));
+    e(0) += Nx * u; // εx = u,x
+    e(1) += Ny * v; // εy = v,y
+    e(2) += Ny * u; // γxy = u,y + v,x
+    e(2) += Nx * v;
+    e(3) += Nx * tx; // κx = θx,x
+    e(4) += Ny * ty; // κy = θy,y
+    e(5) += Ny * tx; // κxy = θx,y + θy,x
+    e(5) += Nx * ty;
+  }
   if (von_karman_) { // (2.47): the membrane strains of the slopes
     const Eigen::Vector2d g = slopes(ops, p, ue);
     e(0) += 0.5 * g(0) * g(0);
@@ -718,7 +790,7 @@ double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
   const ElementVector ue = model_.element_dofs(u, e);
   double bound = 0.0;
   for (std::size_t p = 0; p < 9; ++p)
-    bound = std::max(bound, hashin_bound(groups, point_strain(ops, p, ue).head<6>()));
+    bound = std::max(bound, hashin_bound(groups, membrane_bending_strain(ops, p, ue).head<6>()));
   return bound;
 }
 

@@ -197,6 +197,9 @@ private:
   /// The generalized strains at point p of an element with DOFs uₑ (with the kinematics' terms).
   [[nodiscard]] Eigen::Matrix<double, 8, 1> point_strain(const ElementOperators& ops, std::size_t p,
                                                          const ElementVector& ue) const;
+  /// Its rows ε0 and κ alone (the shear rows zero): what the Hashin screen reads.
+  [[nodiscard]] Eigen::Matrix<double, 8, 1>
+  membrane_bending_strain(const ElementOperators& ops, std::size_t p, const ElementVector& ue) const;
   /// The sections of active element `slot` at u with the committed damage (the lagged step); returns the
   /// strains of its damaged points (the others are left unset: their section is the undamaged one).
   PointStrains frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;

@@ -152,6 +152,39 @@ stress_hessian(std::span<const QuadraticTerm> terms, int first, int count, const
   return H;
 }
 
+/// DOF j of the element for index j of K_s's compact form: (w, θx, θy) of node j / 3.
+constexpr Eigen::Index wt_dof(Eigen::Index j) {
+  return 5 * (j / 3) + 2 + j % 3; // (u, v, w, θx, θy) per node
+}
+
+/// K_s without its rows and columns of u and v, which must be zero.
+Eigen::Matrix<double, 27, 27, Eigen::RowMajor> compact_shear(const ElementMatrix& Ks) {
+  Eigen::Matrix<double, 27, 27, Eigen::RowMajor> K;
+  for (Eigen::Index i = 0; i < 27; ++i)
+    for (Eigen::Index j = 0; j < 27; ++j)
+      K(i, j) = Ks(wt_dof(i), wt_dof(j));
+  for (Eigen::Index i = 0; i < Ks.rows(); ++i)
+    for (Eigen::Index j = 0; j < Ks.cols(); ++j)
+      if ((i % 5 < 2 || j % 5 < 2) && Ks(i, j) != 0.0)
+        throw std::logic_error("MITC9 shear stiffness with terms on the in-plane displacements");
+  return K;
+}
+
+/// f += K_s uₑ from the compact K_s: per row the same products, added in the same (ascending column)
+/// order as the full 45 × 45 product, so the result is the same to the last bit.
+void add_shear_force(const Eigen::Matrix<double, 27, 27, Eigen::RowMajor>& K, const ElementVector& ue,
+                     ElementVector& f) {
+  Eigen::Matrix<double, 27, 1> x;
+  for (Eigen::Index j = 0; j < 27; ++j)
+    x(j) = ue(wt_dof(j));
+  for (Eigen::Index i = 0; i < 27; ++i) {
+    double sum = 0.0;
+    for (Eigen::Index j = 0; j < 27; ++j)
+      sum += K(i, j) * x(j);
+    f(wt_dof(i)) += sum;
+  }
+}
+
 IntegrationPoint integration_point(const ElementCoordinates& xy, double xi, double eta, double w) {
   const PointKinematics k = point_kinematics(xy, xi, eta);
   return {k.shape.N, k.dN_dx, k.dN_dy, w * k.detJ};
@@ -177,6 +210,7 @@ ElementGeometry NonlinearMindlinQ9::geometry(const ElementCoordinates& xy,
     geo.shear[p] = integration_point(xy, gauss2x2[p].xi, gauss2x2[p].eta, gauss2x2[p].weight);
   geo.shear_stiffness = formulation() == ElementFormulation::mitc9 ? linear_.shear_stiffness(xy, section.F)
                                                                    : ElementMatrix(ElementMatrix::Zero());
+  geo.shear_stiffness_wt = compact_shear(geo.shear_stiffness);
   for (int q = 0; q < 9; ++q) {
     geo.mb_dN_dx.col(q) = geo.membrane_bending[static_cast<std::size_t>(q)].dN_dx;
     geo.mb_dN_dy.col(q) = geo.membrane_bending[static_cast<std::size_t>(q)].dN_dy;
@@ -222,7 +256,7 @@ ElementVector internal_force_with(const ElementGeometry& geo, const ElementVecto
     F.noalias() += rx.lazyProduct(geo.mb_dN_dx.transpose()) + ry.lazyProduct(geo.mb_dN_dy.transpose());
   }
   if (mitc9) {
-    f.noalias() += geo.shear_stiffness * ue; // linear shear (von Kármán only)
+    add_shear_force(geo.shear_stiffness_wt, ue, f); // linear shear (von Kármán only)
     return f;
   }
   const Eigen::Matrix<double, 3, 4> dx = U.topRows<3>().lazyProduct(geo.s_dN_dx),

@@ -50,6 +50,9 @@ struct ElementGeometry {
   std::array<IntegrationPoint, 9> membrane_bending; ///< 3×3 Gauss
   std::array<IntegrationPoint, 4> shear;            ///< 2×2 Gauss (q9)
   ElementMatrix shear_stiffness;                    ///< K_s of the linear element (MITC9 path)
+  /// K_s on the deflection and rotations alone ((w, θx, θy) of the nodes in DOF order): its rows and
+  /// columns of u and v are zero, so the force path multiplies this a third of the size.
+  Eigen::Matrix<double, 27, 27, Eigen::RowMajor> shear_stiffness_wt;
   // The same shape-function data with one column per point, so the force path takes the gradients of
   // all points of a rule in one small matrix product (U dN) and scatters back in one (R dNᵀ).
   Eigen::Matrix<double, 9, 9> mb_dN_dx, mb_dN_dy;    ///< membrane–bending points
