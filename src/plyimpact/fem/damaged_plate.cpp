@@ -161,19 +161,14 @@ struct DamagedPlateModel::Group {
   }
 };
 
-/// The DOF of field f (0 u, 1 v, 2 w, 3 θx, 4 θy) at node a of an element.
-constexpr Eigen::Index dof(Eigen::Index a, Eigen::Index f) {
-  return 5 * a + f;
-}
-
 /// Throws unless the rows ε0 and κ of S are (2.74) of the gradients (dN_dx, dN_dy), entry for entry: what
 /// DamagedPlateModel::membrane_bending_strain computes from the gradients instead of S.
 void check_membrane_bending_rows(const StrainOperator& S, const Eigen::Matrix<double, 9, 1>& dN_dx,
                                  const Eigen::Matrix<double, 9, 1>& dN_dy) {
   Eigen::Matrix<double, 6, q9_dofs> B = Eigen::Matrix<double, 6, q9_dofs>::Zero();
   for (Eigen::Index a = 0; a < 9; ++a) {
-    B(0, dof(a, 0)) = B(2, dof(a, 1)) = B(3, dof(a, 3)) = B(5, dof(a, 4)) = dN_dx(a);
-    B(1, dof(a, 1)) = B(2, dof(a, 0)) = B(4, dof(a, 4)) = B(5, dof(a, 3)) = dN_dy(a);
+    B(0, plate_dof(a, 0)) = B(2, plate_dof(a, 1)) = B(3, plate_dof(a, 3)) = B(5, plate_dof(a, 4)) = dN_dx(a);
+    B(1, plate_dof(a, 1)) = B(2, plate_dof(a, 0)) = B(4, plate_dof(a, 4)) = B(5, plate_dof(a, 3)) = dN_dy(a);
   }
   if (B != S.topRows<6>())
     throw std::logic_error("damaged plate: the element's rows ε0, κ are not (2.74) of its gradients");
@@ -186,20 +181,20 @@ class ShearRows {
 public:
   ShearRows() = default;
   explicit ShearRows(const StrainOperator& S) {
-    for (Eigen::Index c = 0; c < S.cols(); ++c)
-      for (Eigen::Index r = 0; r < 2; ++r) {
-        if (c % 5 >= 2)
-          A_(r, 3 * (c / 5) + c % 5 - 2) = S(6 + r, c);
-        else if (S(6 + r, c) != 0.0)
+    for (Eigen::Index r = 0; r < 2; ++r) {
+      for (Eigen::Index j = 0; j < 27; ++j)
+        A_(r, j) = S(6 + r, transverse_dof(j));
+      for (Eigen::Index a = 0; a < 9; ++a)
+        if (S(6 + r, plate_dof(a, 0)) != 0.0 || S(6 + r, plate_dof(a, 1)) != 0.0)
           throw std::logic_error("damaged plate: a transverse-shear strain reading u or v");
-      }
+    }
   }
   /// Rows 6 and 7 of S_p uₑ, written into e.
   void rows(const ElementVector& ue, Eigen::Matrix<double, 8, 1>& e) const {
     for (Eigen::Index r = 0; r < 2; ++r) {
       double sum = 0.0;
       for (Eigen::Index j = 0; j < 27; ++j)
-        sum += A_(r, j) * ue(dof(j / 3, 2 + j % 3));
+        sum += A_(r, j) * ue(transverse_dof(j));
       e(6 + r) = sum;
     }
   }
@@ -219,17 +214,13 @@ struct DamagedPlateModel::ElementOperators {
 
 namespace {
 
-constexpr Eigen::Index w_dof(Eigen::Index node) {
-  return 5 * node + 2; // (u, v, w, θx, θy) per node
-}
-
 /// The deflection's slopes (w,x, w,y) at point p.
 Eigen::Vector2d slopes(const DamagedPlateModel::ElementOperators& ops, std::size_t p,
                        const ElementVector& ue) {
   Eigen::Vector2d g = Eigen::Vector2d::Zero();
   for (Eigen::Index a = 0; a < 9; ++a) {
-    g(0) += ops.dN_dx[p](a) * ue(w_dof(a));
-    g(1) += ops.dN_dy[p](a) * ue(w_dof(a));
+    g(0) += ops.dN_dx[p](a) * ue(plate_dof(a, 2));
+    g(1) += ops.dN_dy[p](a) * ue(plate_dof(a, 2));
   }
   return g;
 }
@@ -240,9 +231,9 @@ StrainOperator von_karman_operator(const DamagedPlateModel::ElementOperators& op
   StrainOperator E = ops.S[p];
   for (Eigen::Index a = 0; a < 9; ++a) {
     const double nx = ops.dN_dx[p](a), ny = ops.dN_dy[p](a);
-    E(0, w_dof(a)) += g(0) * nx;
-    E(1, w_dof(a)) += g(1) * ny;
-    E(2, w_dof(a)) += g(0) * ny + g(1) * nx;
+    E(0, plate_dof(a, 2)) += g(0) * nx;
+    E(1, plate_dof(a, 2)) += g(1) * ny;
+    E(2, plate_dof(a, 2)) += g(0) * ny + g(1) * nx;
   }
   return E;
 }
@@ -447,7 +438,8 @@ Eigen::Matrix<double, 8, 1> DamagedPlateModel::membrane_bending_strain(const Ele
   Eigen::Matrix<double, 8, 1> e = Eigen::Matrix<double, 8, 1>::Zero();
   for (Eigen::Index a = 0; a < 9; ++a) {
     const double Nx = ops.dN_dx[p](a), Ny = ops.dN_dy[p](a);
-    const double u = ue(dof(a, 0)), v = ue(dof(a, 1)), tx = ue(dof(a, 3)), ty = ue(dof(a, 4));
+    const double u = ue(plate_dof(a, 0)), v = ue(plate_dof(a, 1)), tx = ue(plate_dof(a, 3)),
+                 ty = ue(plate_dof(a, 4));
     e(0) += Nx * u; // εx = u,x
     e(1) += Ny * v; // εy = v,y
     e(2) += Ny * u; // γxy = u,y + v,x
@@ -768,7 +760,7 @@ void DamagedPlateModel::add_section_differences(SparseMatrix& K, const DamageFie
       const Eigen::Vector3d dN = (dC * point_strain(ops, p, ue)).head<3>();
       for (Eigen::Index i = 0; i < 9; ++i)
         for (Eigen::Index j = 0; j < 9; ++j)
-          dK(w_dof(i), w_dof(j)) +=
+          dK(plate_dof(i, 2), plate_dof(j, 2)) +=
               dN(0) * ops.dN_dx[p](i) * ops.dN_dx[p](j) + dN(1) * ops.dN_dy[p](i) * ops.dN_dy[p](j) +
               dN(2) * (ops.dN_dx[p](i) * ops.dN_dy[p](j) + ops.dN_dy[p](i) * ops.dN_dx[p](j));
     }

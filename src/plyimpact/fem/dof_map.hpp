@@ -22,6 +22,16 @@ inline constexpr int q9_dofs = 45;
   return names.at(static_cast<std::size_t>(dof));
 }
 
+/// The plate element's DOF of field f (0 u, 1 v, 2 w, 3 θx, 4 θy) at its local node a: 5a + f.
+[[nodiscard]] constexpr Eigen::Index plate_dof(Eigen::Index a, Eigen::Index f) {
+  return dofs_per_node * a + f;
+}
+/// Element DOF of entry j of the 27 (w, θx, θy) DOFs in node order: the only DOFs that the transverse
+/// shear strains read, and the compact form the shear rows and stiffness are stored in.
+[[nodiscard]] constexpr Eigen::Index transverse_dof(Eigen::Index j) {
+  return plate_dof(j / 3, 2 + j % 3);
+}
+
 using ElementMatrix = Eigen::Matrix<double, q9_dofs, q9_dofs>;
 using ElementVector = Eigen::Matrix<double, q9_dofs, 1>;
 /// Global equation of each element DOF 5a + d (−1 when restrained).

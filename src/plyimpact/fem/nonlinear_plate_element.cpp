@@ -152,17 +152,12 @@ stress_hessian(std::span<const QuadraticTerm> terms, int first, int count, const
   return H;
 }
 
-/// DOF j of the element for index j of K_s's compact form: (w, θx, θy) of node j / 3.
-constexpr Eigen::Index wt_dof(Eigen::Index j) {
-  return 5 * (j / 3) + 2 + j % 3; // (u, v, w, θx, θy) per node
-}
-
 /// K_s without its rows and columns of u and v, which must be zero.
 Eigen::Matrix<double, 27, 27, Eigen::RowMajor> compact_shear(const ElementMatrix& Ks) {
   Eigen::Matrix<double, 27, 27, Eigen::RowMajor> K;
   for (Eigen::Index i = 0; i < 27; ++i)
     for (Eigen::Index j = 0; j < 27; ++j)
-      K(i, j) = Ks(wt_dof(i), wt_dof(j));
+      K(i, j) = Ks(transverse_dof(i), transverse_dof(j));
   for (Eigen::Index i = 0; i < Ks.rows(); ++i)
     for (Eigen::Index j = 0; j < Ks.cols(); ++j)
       if ((i % 5 < 2 || j % 5 < 2) && Ks(i, j) != 0.0)
@@ -176,12 +171,12 @@ void add_shear_force(const Eigen::Matrix<double, 27, 27, Eigen::RowMajor>& K, co
                      ElementVector& f) {
   Eigen::Matrix<double, 27, 1> x;
   for (Eigen::Index j = 0; j < 27; ++j)
-    x(j) = ue(wt_dof(j));
+    x(j) = ue(transverse_dof(j));
   for (Eigen::Index i = 0; i < 27; ++i) {
     double sum = 0.0;
     for (Eigen::Index j = 0; j < 27; ++j)
       sum += K(i, j) * x(j);
-    f(wt_dof(i)) += sum;
+    f(transverse_dof(i)) += sum;
   }
 }
 
