@@ -1,10 +1,12 @@
 #include "plyimpact/analysis/mass_scaling.hpp"
 
 #include "plyimpact/analysis/step_policy.hpp"
+#include "plyimpact/fem/element_loop.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <stdexcept>
 
@@ -101,14 +103,30 @@ std::vector<double> per_sublaminate(const std::vector<double>& node_values, int 
 } // namespace
 
 double ScaledMass::added_kinetic_energy(const Eigen::VectorXd& v) const {
+  // In 2 × 64 fixed chunks on the element loops' threads (ascending equations, then ascending columns of
+  // K_c/ω_c²), their sums added in chunk order: the same bits for any thread count, no vector per step.
+  constexpr int chunks = 64;
+  std::array<double, 2 * chunks> partial{};
+  const auto n = static_cast<Eigen::Index>(equations.size());
+  for_each_element(2 * chunks, [&](int b) {
+    double e = 0.0;
+    if (b < chunks) {
+      for (Eigen::Index k = n * b / chunks; k < n * (b + 1) / chunks; ++k) {
+        const double vk = v[equations[static_cast<std::size_t>(k)]];
+        e += added[static_cast<std::size_t>(k)] * vk * vk;
+      }
+    } else {
+      const Eigen::Index c = coupling.outerSize(), first = c * (b - chunks) / chunks,
+                         last = c * (b - chunks + 1) / chunks;
+      for (Eigen::Index col = first; col < last; ++col) // vᵀ (K_c/ω_c²) v
+        for (SparseMatrix::InnerIterator it(coupling, col); it; ++it)
+          e += v[it.row()] * it.value() * v[col];
+    }
+    partial[static_cast<std::size_t>(b)] = e;
+  });
   double e = 0.0;
-  for (std::size_t k = 0; k < equations.size(); ++k) {
-    const double vk = v[equations[k]];
-    e += added[k] * vk * vk;
-  }
-  for (int col = 0; col < coupling.outerSize(); ++col) // vᵀ (K_c/ω_c²) v, with no vector per step
-    for (SparseMatrix::InnerIterator it(coupling, col); it; ++it)
-      e += v[it.row()] * it.value() * v[col];
+  for (const double p : partial)
+    e += p;
   return 0.5 * e;
 }
 

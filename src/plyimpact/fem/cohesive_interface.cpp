@@ -1,8 +1,11 @@
 #include "plyimpact/fem/cohesive_interface.hpp"
 
+#include "plyimpact/fem/element_loop.hpp"
 #include "plyimpact/fem/quadrature.hpp"
 #include "plyimpact/fem/shape_functions.hpp"
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 namespace plyimpact {
@@ -104,6 +107,33 @@ CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& 
       for (const int eq : plate->element_equations(e))
         equations_.push_back(eq < 0 ? -1 : offset + eq);
   }
+  index_node_users(mesh);
+}
+
+void CohesiveInterface::index_node_users(const Mesh& mesh) {
+  node_first_.assign(static_cast<std::size_t>(mesh.node_count()) + 1, 0);
+  for (int e = 0; e < element_count_; ++e)
+    for (const int n : mesh.element_nodes(e))
+      ++node_first_[static_cast<std::size_t>(n) + 1];
+  std::partial_sum(node_first_.begin(), node_first_.end(), node_first_.begin());
+  node_users_.resize(static_cast<std::size_t>(node_first_.back()));
+  std::vector<int> next(node_first_.begin(), node_first_.end() - 1);
+  for (int e = 0; e < element_count_; ++e)
+    for (int a = 0; a < 9; ++a)
+      node_users_[static_cast<std::size_t>(next[static_cast<std::size_t>(mesh.element_nodes(e)[a])]++)] =
+          9 * e + a;
+  // add_node_forces writes each equation from the one mesh node it belongs to.
+  std::vector<int> owner(equations_.empty() ? 0 : static_cast<std::size_t>(std::ranges::max(equations_)) + 1,
+                         -1);
+  for (int e = 0; e < element_count_; ++e)
+    for (int a = 0; a < 9; ++a)
+      for (int l = 0; l < 10; ++l)
+        if (const int eq = equation(e, element_dof(a, l)); eq >= 0) {
+          int& o = owner[static_cast<std::size_t>(eq)];
+          if (o >= 0 && o != mesh.element_nodes(e)[a])
+            throw std::logic_error("cohesive interface: an equation shared by two mesh nodes");
+          o = mesh.element_nodes(e)[a];
+        }
 }
 
 // (DL1): the rows δ_s1, δ_s2, δ_n; columns 0–44 the upper element's DOFs, 45–89 the lower one's.
@@ -169,43 +199,83 @@ CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
 double CohesiveInterface::assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
                                         Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
                                         CohesiveDamage damage, std::vector<CohesiveState>& trial) const {
+  CohesiveWorkspace work;
+  return assemble_into(u, committed, f, tangent, damage, trial, work);
+}
+
+double CohesiveInterface::assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
+                                        Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
+                                        CohesiveDamage damage, std::vector<CohesiveState>& trial,
+                                        CohesiveWorkspace& work) const {
   trial.resize(committed.size());
-  double dissipated = 0.0;
+  work.point_energy.resize(committed.size());
+  work.node_forces.resize(9 * static_cast<std::size_t>(element_count_));
+  if (tangent) work.point_tangents.resize(committed.size());
   const int n = points_per_element();
-  std::array<Eigen::Vector3d, 9> node_traction;
-  std::array<Eigen::Matrix3d, 81> pair_tangent;
-  for (int e = 0; e < element_count_; ++e) {
+  for_each_element(element_count_, [&](int e) {
     const auto ue = element_dofs(e, u);
+    std::array<Eigen::Vector3d, 9> node_traction;
     node_traction.fill(Eigen::Vector3d::Zero());
-    if (tangent) pair_tangent.fill(Eigen::Matrix3d::Zero());
     for (int q = 0; q < n; ++q) {
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
       const CohesiveResponse r =
           point_response(law_, committed[p], point_separation(q, ue), damage, loading_band_);
       trial[p] = r.state;
-      dissipated += area_[p] * r.dissipated_energy;
+      work.point_energy[p] = area_[p] * r.dissipated_energy;
       const Eigen::Matrix<double, 9, 1>& N = shape_[static_cast<std::size_t>(q)];
       const Eigen::Vector3d t = area_[p] * r.traction;
       for (int a = 0; a < 9; ++a)
         if (N(a) != 0.0) node_traction[static_cast<std::size_t>(a)] += N(a) * t;
-      if (!tangent) continue;
-      const Eigen::Matrix3d T = area_[p] * r.tangent;
+      if (tangent) work.point_tangents[p] = area_[p] * r.tangent;
+    }
+    for (int a = 0; a < 9; ++a)
+      work.node_forces[9 * static_cast<std::size_t>(e) + static_cast<std::size_t>(a)] =
+          node_jump_.transpose() * node_traction[static_cast<std::size_t>(a)];
+  });
+  add_node_forces(work, f);
+  if (tangent) add_tangent(work, *tangent);
+  double dissipated = 0.0;
+  for (const double d : work.point_energy)
+    dissipated += d;
+  return dissipated;
+}
+
+void CohesiveInterface::add_node_forces(const CohesiveWorkspace& work, Eigen::VectorXd& f) const {
+  constexpr int blocks = 64;
+  const int nodes = static_cast<int>(node_first_.size()) - 1;
+  for_each_element(blocks, [&](int b) {
+    const auto first = static_cast<std::size_t>(node_first_[static_cast<std::size_t>(nodes * b / blocks)]);
+    const auto last =
+        static_cast<std::size_t>(node_first_[static_cast<std::size_t>(nodes * (b + 1) / blocks)]);
+    for (std::size_t k = first; k < last; ++k) {
+      const int user = node_users_[k], e = user / 9, a = user % 9;
+      const Eigen::Matrix<double, 10, 1>& fa = work.node_forces[static_cast<std::size_t>(user)];
+      for (int l = 0; l < 10; ++l)
+        if (const int eq = equation(e, element_dof(a, l)); eq >= 0) f(eq) += fa(l);
+    }
+  });
+}
+
+void CohesiveInterface::add_tangent(const CohesiveWorkspace& work,
+                                    std::vector<Eigen::Triplet<double>>& tangent) const {
+  const int n = points_per_element();
+  std::array<Eigen::Matrix3d, 81> pair_tangent;
+  for (int e = 0; e < element_count_; ++e) {
+    pair_tangent.fill(Eigen::Matrix3d::Zero());
+    for (int q = 0; q < n; ++q) {
+      const Eigen::Matrix<double, 9, 1>& N = shape_[static_cast<std::size_t>(q)];
+      const Eigen::Matrix3d& T =
+          work.point_tangents[static_cast<std::size_t>(e) * static_cast<std::size_t>(n) +
+                              static_cast<std::size_t>(q)];
       for (int a = 0; a < 9; ++a)
         for (int b = 0; b < 9; ++b)
           if (N(a) * N(b) != 0.0) pair_tangent[node_pair(a, b)] += (N(a) * N(b)) * T;
     }
-    for (int a = 0; a < 9; ++a) {
-      const Eigen::Matrix<double, 10, 1> fa =
-          node_jump_.transpose() * node_traction[static_cast<std::size_t>(a)];
-      for (int l = 0; l < 10; ++l)
-        if (const int eq = equation(e, element_dof(a, l)); eq >= 0) f(eq) += fa(l);
-      if (!tangent) continue;
+    for (int a = 0; a < 9; ++a)
       for (int b = 0; b < 9; ++b)
-        if (coupled_[node_pair(a, b)]) add_node_block(e, a, b, pair_tangent[node_pair(a, b)], *tangent);
-    }
+        if (coupled_[node_pair(a, b)]) add_node_block(e, a, b, pair_tangent[node_pair(a, b)], tangent);
   }
-  return dissipated;
 }
 
 void CohesiveInterface::add_node_block(int e, int a, int b, const Eigen::Matrix3d& C,
@@ -249,16 +319,25 @@ void CohesiveInterface::jump_row(int p, int k, std::vector<std::pair<int, double
 
 double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,
                                         std::span<const CohesiveState> states) const {
-  double energy = 0.0;
+  CohesiveWorkspace work;
+  return stored_energy(u, states, work);
+}
+
+double CohesiveInterface::stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states,
+                                        CohesiveWorkspace& work) const {
+  work.point_energy.resize(states.size());
   const int n = points_per_element();
-  for (int e = 0; e < element_count_; ++e) {
+  for_each_element(element_count_, [&](int e) {
     const auto ue = element_dofs(e, u); // once per element, not per point
     for (int q = 0; q < n; ++q) {
       const std::size_t p =
           static_cast<std::size_t>(e) * static_cast<std::size_t>(n) + static_cast<std::size_t>(q);
-      energy += area_[p] * law_.stored_energy(states[p], point_separation(q, ue));
+      work.point_energy[p] = area_[p] * law_.stored_energy(states[p], point_separation(q, ue));
     }
-  }
+  });
+  double energy = 0.0;
+  for (const double w : work.point_energy)
+    energy += w;
   return energy;
 }
 

@@ -55,6 +55,14 @@ enum class CohesiveDamage {
   lagged_mean,
 };
 
+/// Buffers of one interface evaluation on threads (CohesiveInterface::assemble_into, stored_energy), sized
+/// on first use and reused from step to step. Scratch, not state: their contents mean nothing between calls.
+struct CohesiveWorkspace {
+  std::vector<Eigen::Matrix<double, 10, 1>> node_forces; ///< per element node a: Lᵀ Σ_p area_p N_a τ_p (DL2)
+  std::vector<double> point_energy;                      ///< per point, its dissipated or stored energy [J]
+  std::vector<Eigen::Matrix3d> point_tangents;           ///< per point, area_p ∂τ/∂δ (with a tangent)
+};
+
 /// The evaluation of an interface at one displacement.
 struct CohesiveEvaluation {
   std::vector<CohesiveState> trial; ///< per point, from the committed states
@@ -97,6 +105,12 @@ public:
   double assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed, Eigen::VectorXd& f,
                        std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
                        std::vector<CohesiveState>& trial) const;
+  /// The same with the buffers of `work`: the points on every thread of the element loops
+  /// (fem/element_loop.hpp), the forces added node by node in element order, the dissipation point by point
+  /// in point order, so the numbers are those of a one-thread loop for any thread count.
+  double assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed, Eigen::VectorXd& f,
+                       std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
+                       std::vector<CohesiveState>& trial, CohesiveWorkspace& work) const;
 
   /// Each point's tangent ∂τ/∂δ times its area, as assemble adds it (DL2), into `out` (one per point).
   void point_tangents(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
@@ -107,6 +121,9 @@ public:
 
   /// Free energy stored in the interface, Σ_p area_p ψ(δ_p) [J].
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states) const;
+  /// The same with the buffers of `work`, the points on threads and summed in point order.
+  [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states,
+                                     CohesiveWorkspace& work) const;
   /// Area of the points whose damage has reached `threshold` [m²] (1: fully delaminated).
   [[nodiscard]] double damaged_area(std::span<const CohesiveState> states, double threshold) const;
 
@@ -125,6 +142,13 @@ private:
   [[nodiscard]] int equation(int e, int i) const {
     return equations_[static_cast<std::size_t>(e) * 2 * q9_dofs + static_cast<std::size_t>(i)];
   }
+  /// node_first_, node_users_ from the mesh; throws where an equation would belong to two mesh nodes.
+  void index_node_users(const Mesh& mesh);
+  /// Adds the element nodes' forces work.node_forces to f: mesh node by mesh node on threads, each node's
+  /// sum in element order (node_users_), as the one-thread element loop adds them.
+  void add_node_forces(const CohesiveWorkspace& work, Eigen::VectorXd& f) const;
+  /// Appends the tangent's triplets, element by element from work.point_tangents (DL2 by node pairs).
+  void add_tangent(const CohesiveWorkspace& work, std::vector<Eigen::Triplet<double>>& tangent) const;
   /// Adds Lᵀ C L, the block of nodes (a, b) of an element tangent, to `tangent` (DL2 by node pairs).
   void add_node_block(int e, int a, int b, const Eigen::Matrix3d& C,
                       std::vector<Eigen::Triplet<double>>& tangent) const;
@@ -143,6 +167,9 @@ private:
   std::array<bool, 81> coupled_{};                 ///< nodes a, b share a point: N_a N_b ≠ 0 (index 9a + b)
   NodeJump node_jump_;
   std::vector<int> equations_; ///< per element, its 90 stacked equations (equation())
+  /// Per mesh node n, the element nodes 9e + a on it, e ascending: node_users_[node_first_[n] …
+  /// node_first_[n + 1]). Every equation belongs to one mesh node, so nodes can be added on threads.
+  std::vector<int> node_first_, node_users_;
   std::vector<Eigen::Vector2d> position_;
   std::vector<double> area_;
 };

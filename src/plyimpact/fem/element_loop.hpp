@@ -2,7 +2,10 @@
 // Element loops on all cores, with the same bits for any thread count (issue 50). Each element's work is
 // done on whichever thread OpenMP hands it to and written to a place of its own (its state, its slot of
 // a buffer); whatever adds elements together (a global force vector, a dissipation) does so afterwards,
-// on one thread and in element order, so that every sum is made in the order of a one-thread loop.
+// in element order, so that every sum is made in the order of a one-thread loop: on one thread, or on
+// threads where each sum has an owner of its own (a global equation, gathered node by node from the
+// elements on its node in element order: CohesiveInterface). A sum that no one-thread loop fixes (an
+// energy of the mass) is made in fixed chunks, added in chunk order: the same bits for any thread count.
 //
 // The threads are those of the calling thread's OpenMP setting (omp_set_num_threads; all cores unless
 // OMP_NUM_THREADS says otherwise): a run sets it from its request (ImpactCase::run), a sweep's worker
@@ -10,6 +13,7 @@
 #include <Eigen/Core>
 #include <omp.h>
 
+#include <algorithm>
 #include <exception>
 
 namespace plyimpact {
@@ -21,7 +25,10 @@ template <class Work>
 void for_each_element(int count, const Work& work) {
   std::exception_ptr error;
   int error_at = count;
-#pragma omp parallel for schedule(dynamic, 1)
+  // About 16 chunks per thread: enough to even out elements of unequal cost (damaged points, contact),
+  // few enough that handing them out costs little next to their work.
+  const int per_fetch = std::max(1, count / (16 * omp_get_max_threads()));
+#pragma omp parallel for schedule(dynamic, per_fetch)
   for (int i = 0; i < count; ++i) {
     try {
       work(i);

@@ -16,16 +16,15 @@ public:
   /// The diagonal mass `diagonal` (a lumped mass, scaled or not).
   explicit MassOperator(const Eigen::VectorXd& diagonal);
   [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& x) const {
-    if (diagonal_.size() > 0) return diagonal_.cwiseProduct(x);
-    return M_ * x;
+    Eigen::VectorXd out(x.size());
+    apply(x, out);
+    return out;
   }
-  /// out = M x into `out` (sized once): the numbers of times(x) without a new vector.
-  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
-    if (diagonal_.size() > 0)
-      out = diagonal_.cwiseProduct(x);
-    else
-      out.noalias() = M_ * x;
-  }
+  /// out = M x into `out` (sized once): the numbers of times(x) without a new vector. A sparse M that is
+  /// symmetric to the bit (every mass the program builds) is applied on the element loops' threads, each
+  /// row's sum gathered from its column in the order of the one-thread product M_ * x: the same bits for
+  /// any thread count.
+  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   /// ½ vᵀMv.
   [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v) const { return 0.5 * v.dot(times(v)); }
   /// ½ vᵀMv with `scratch` for M v.
@@ -40,6 +39,7 @@ public:
 private:
   SparseMatrix M_;
   Eigen::VectorXd diagonal_; ///< M when diagonal, else empty
+  bool symmetric_ = false;   ///< M sparse and M = Mᵀ to the bit: apply() gathers rows from columns
 };
 
 } // namespace plyimpact

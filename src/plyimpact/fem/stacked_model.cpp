@@ -309,6 +309,8 @@ private:
   WorkOfInternalForces plate_work_; ///< ∫ Σ_k f_kᵀ du_k up to the committed state (large deflections;
                                     ///< sized 0 otherwise)
   StackedPlateState trial_buffer_;  ///< storage the interfaces' trial states are written into
+  /// the interfaces' per-point buffers, reused by every evaluation (stored_energy's too: scratch, not state)
+  mutable CohesiveWorkspace interface_work_;
   // With ply damage, per sub-laminate: its damage field, its part of u and its force.
   std::vector<DamageField> fields_;
   std::vector<Eigen::VectorXd> u_parts_, f_parts_;
@@ -501,8 +503,8 @@ void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::Ve
   f = Ku_;
   // Lagged in the two-point form: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage
   // (DL6)
-  const double dissipated =
-      m_.plate_.stack_.add_interface_forces(u, interfaces_.committed(), f, trial_buffer_, interface_damage());
+  const double dissipated = m_.plate_.stack_.add_interface_forces(
+      u, interfaces_.committed(), f, trial_buffer_, interface_damage(), interface_work_);
   interfaces_.set_trial(trial_buffer_, dissipated);
 }
 
@@ -518,7 +520,7 @@ void StackedState::start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) {
       (void)field.take_modes_changed(); // the start's modes are not a trial's
   }
   (void)m_.plate_.stack_.add_interface_forces(u_n, interfaces_.committed(), f, trial_buffer_,
-                                              CohesiveDamage::lagged_mean);
+                                              CohesiveDamage::lagged_mean, interface_work_);
 }
 
 SparseMatrix StackedState::iteration_matrix(const Eigen::VectorXd& u) const {
@@ -657,7 +659,7 @@ double StackedState::stored_energy(const Eigen::VectorXd& u) const {
   const double plates = m_.large_deflection()
                             ? plate_work_.work() - (plies_ ? plies_->dissipated().sum() : 0.0)
                             : plate_energy_;
-  return plates + m_.plate_.stack_.interface_energy(u, interfaces_.committed());
+  return plates + m_.plate_.stack_.interface_energy(u, interfaces_.committed(), interface_work_);
 }
 
 } // namespace

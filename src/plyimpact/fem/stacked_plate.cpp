@@ -162,19 +162,20 @@ StackedPlateEvaluation StackedPlateModel::assemble(const Eigen::VectorXd& u,
                                                    CohesiveDamage damage) const {
   StackedPlateEvaluation out;
   out.force = K_plates_ * u;
-  out.dissipated = add_interfaces(u, committed, out.force, out.trial, tangent, damage);
+  CohesiveWorkspace work;
+  out.dissipated = add_interfaces(u, committed, out.force, out.trial, tangent, damage, work);
   return out;
 }
 
 double StackedPlateModel::add_interfaces(const Eigen::VectorXd& u, const StackedPlateState& committed,
                                          Eigen::VectorXd& force, StackedPlateState& trial,
-                                         std::vector<Eigen::Triplet<double>>* tangent,
-                                         CohesiveDamage damage) const {
+                                         std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
+                                         CohesiveWorkspace& work) const {
   trial.interfaces.resize(interfaces_.size());
   double dissipated = 0.0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
     dissipated += interfaces_[i]->assemble_into(u, committed.interfaces[i], force, tangent, damage,
-                                                trial.interfaces[i]);
+                                                trial.interfaces[i], work);
   }
   return dissipated;
 }
@@ -208,16 +209,29 @@ double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedP
 }
 
 double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
+  CohesiveWorkspace work;
+  return interface_energy(u, state, work);
+}
+
+double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
+                                           CohesiveWorkspace& work) const {
   double energy = 0.0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
-    energy += interfaces_[i]->stored_energy(u, state.interfaces[i]);
+    energy += interfaces_[i]->stored_energy(u, state.interfaces[i], work);
   return energy;
 }
 
 double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
                                                Eigen::VectorXd& force, StackedPlateState& trial,
                                                CohesiveDamage damage) const {
-  return add_interfaces(u, committed, force, trial, nullptr, damage);
+  CohesiveWorkspace work;
+  return add_interfaces(u, committed, force, trial, nullptr, damage, work);
+}
+
+double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                               Eigen::VectorXd& force, StackedPlateState& trial,
+                                               CohesiveDamage damage, CohesiveWorkspace& work) const {
+  return add_interfaces(u, committed, force, trial, nullptr, damage, work);
 }
 
 int StackedPlateModel::equation(int k, int node, int dof) const {

@@ -154,11 +154,18 @@ public:
                                      Eigen::VectorXd& scratch) const;
   /// The interfaces' stored energy alone [J].
   [[nodiscard]] double interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const;
+  /// The same with the buffers of `work` (the interfaces one after another, each on threads).
+  [[nodiscard]] double interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
+                                        CohesiveWorkspace& work) const;
   /// The interfaces' forces at u added to `force`, their trial states from the committed ones into
   /// `trial` (its vectors reused), and the energy dissipated reaching them returned [J]: the part of
   /// internal_force() beyond K_plates u, for a caller that holds K_plates u (the explicit step).
   double add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
                               Eigen::VectorXd& force, StackedPlateState& trial, CohesiveDamage damage) const;
+  /// The same with the buffers of `work` (the interfaces one after another, each on threads).
+  double add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                              Eigen::VectorXd& force, StackedPlateState& trial, CohesiveDamage damage,
+                              CohesiveWorkspace& work) const;
 
   /// The stacked index of DOF `dof` (0..4 = u, v, w, θx, θy) of node n in sub-laminate k (−1: restrained).
   [[nodiscard]] int equation(int k, int node, int dof) const;
@@ -172,7 +179,7 @@ private:
   /// into `tangent` unless it is null; returns the energy dissipated reaching the trial states [J].
   double add_interfaces(const Eigen::VectorXd& u, const StackedPlateState& committed, Eigen::VectorXd& force,
                         StackedPlateState& trial, std::vector<Eigen::Triplet<double>>* tangent,
-                        CohesiveDamage damage) const;
+                        CohesiveDamage damage, CohesiveWorkspace& work) const;
   /// The matrices `of` the sub-laminates placed on the diagonal of the stacked numbering.
   [[nodiscard]] SparseMatrix block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const;
 
