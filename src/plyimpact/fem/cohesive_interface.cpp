@@ -317,12 +317,6 @@ void CohesiveInterface::jump_row(int p, int k, std::vector<std::pair<int, double
     if (const int eq = equation(p / n, i); eq >= 0 && J(k, i) != 0.0) out.emplace_back(eq, J(k, i));
 }
 
-double CohesiveInterface::stored_energy(const Eigen::VectorXd& u,
-                                        std::span<const CohesiveState> states) const {
-  CohesiveWorkspace work;
-  return stored_energy(u, states, work);
-}
-
 double CohesiveInterface::stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states,
                                         CohesiveWorkspace& work) const {
   work.point_energy.resize(states.size());

@@ -120,8 +120,7 @@ public:
   void jump_row(int p, int k, std::vector<std::pair<int, double>>& out) const;
 
   /// Free energy stored in the interface, Σ_p area_p ψ(δ_p) [J].
-  [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states) const;
-  /// The same with the buffers of `work`, the points on threads and summed in point order.
+  /// `work` holds its buffers: the points on threads, their energies summed in point order.
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u, std::span<const CohesiveState> states,
                                      CohesiveWorkspace& work) const;
   /// Area of the points whose damage has reached `threshold` [m²] (1: fully delaminated).

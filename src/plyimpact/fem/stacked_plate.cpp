@@ -223,13 +223,6 @@ double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const Stack
 
 double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
                                                Eigen::VectorXd& force, StackedPlateState& trial,
-                                               CohesiveDamage damage) const {
-  CohesiveWorkspace work;
-  return add_interfaces(u, committed, force, trial, nullptr, damage, work);
-}
-
-double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
-                                               Eigen::VectorXd& force, StackedPlateState& trial,
                                                CohesiveDamage damage, CohesiveWorkspace& work) const {
   return add_interfaces(u, committed, force, trial, nullptr, damage, work);
 }

@@ -160,9 +160,7 @@ public:
   /// The interfaces' forces at u added to `force`, their trial states from the committed ones into
   /// `trial` (its vectors reused), and the energy dissipated reaching them returned [J]: the part of
   /// internal_force() beyond K_plates u, for a caller that holds K_plates u (the explicit step).
-  double add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
-                              Eigen::VectorXd& force, StackedPlateState& trial, CohesiveDamage damage) const;
-  /// The same with the buffers of `work` (the interfaces one after another, each on threads).
+  /// `work` holds the buffers of the interfaces' evaluation on threads (one interface after another).
   double add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
                               Eigen::VectorXd& force, StackedPlateState& trial, CohesiveDamage damage,
                               CohesiveWorkspace& work) const;
