@@ -75,40 +75,35 @@ BlockDiagonalMass::BlockDiagonalMass(const SparseMatrix& M, int largest_block)
     largest_ = std::max(largest_, static_cast<int>(n));
     blocks_.push_back({std::move(eqs), spectral(eig, -1.0), spectral(eig, -0.5)});
   }
+  diagonal_inverse_sqrt_ = diagonal_inverse_.cwiseSqrt();
 }
 
 void BlockDiagonalMass::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
-  x = diagonal_inverse_.cwiseProduct(r);
+  apply(diagonal_inverse_, &Block::inverse, r, x);
+}
+
+void BlockDiagonalMass::apply_inverse_sqrt(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
+  apply(diagonal_inverse_sqrt_, &Block::inverse_sqrt, r, x);
+}
+
+void BlockDiagonalMass::apply(const Eigen::VectorXd& diagonal, RowMajorMatrix Block::*power,
+                              const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
+  x = diagonal.cwiseProduct(r);
   constexpr int chunks = 64; // of blocks, one per task: a block's work is too small to be one
   const auto count = static_cast<int>(blocks_.size());
   for_each_element(chunks, [&](int c) {
     for (int b = count * c / chunks; b < count * (c + 1) / chunks; ++b) {
       const Block& block = blocks_[static_cast<std::size_t>(b)];
+      const RowMajorMatrix& m = block.*power;
       const auto n = static_cast<Eigen::Index>(block.equations.size());
       for (Eigen::Index i = 0; i < n; ++i) {
         double sum = 0.0;
         for (Eigen::Index j = 0; j < n; ++j)
-          sum += block.inverse(i, j) * r[block.equations[static_cast<std::size_t>(j)]];
+          sum += m(i, j) * r[block.equations[static_cast<std::size_t>(j)]];
         x[block.equations[static_cast<std::size_t>(i)]] = sum;
       }
     }
   });
-}
-
-SparseMatrix BlockDiagonalMass::inverse_sqrt() const {
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Eigen::Index i = 0; i < size(); ++i)
-    if (diagonal_inverse_[i] > 0.0) entries.emplace_back(i, i, std::sqrt(diagonal_inverse_[i]));
-  for (const Block& block : blocks_) {
-    const auto n = static_cast<Eigen::Index>(block.equations.size());
-    for (Eigen::Index a = 0; a < n; ++a)
-      for (Eigen::Index b = 0; b < n; ++b)
-        entries.emplace_back(block.equations[static_cast<std::size_t>(a)],
-                             block.equations[static_cast<std::size_t>(b)], block.inverse_sqrt(a, b));
-  }
-  SparseMatrix S(size(), size());
-  S.setFromTriplets(entries.begin(), entries.end());
-  return S;
 }
 
 } // namespace plyimpact
