@@ -26,6 +26,7 @@
 #include "plyimpact/analysis/model_stepper.hpp"
 #include "plyimpact/analysis/nonlinear_static.hpp"
 #include "plyimpact/fem/dof_map.hpp"
+#include "plyimpact/fem/element_loop.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
 
 #include <fmt/format.h>
@@ -139,10 +140,25 @@ private:
 
 /// x = M⁻¹ r of the policy's mass (CD3).
 void apply_inverse_mass(const CentralDifferencePolicy& p, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
-  if (p.mass_->blocks)
+  if (p.mass_->blocks) {
     p.mass_->blocks->solve(r, x);
-  else
-    x = p.inverse_mass_.cwiseProduct(r);
+    return;
+  }
+  x.resize(r.size());
+  elementwise_on_threads(r.size(), [&](Eigen::Index first, Eigen::Index last) {
+    x.segment(first, last - first) =
+        p.inverse_mass_.segment(first, last - first).cwiseProduct(r.segment(first, last - first));
+  });
+}
+
+/// u_next = u + Δt v + ½Δt² a (CD1), blocks of entries on the element-loop threads.
+void predict_displacement(double dt, const PlateState& s, Eigen::VectorXd& u_next) {
+  u_next.resize(s.u.size());
+  elementwise_on_threads(s.u.size(), [&](Eigen::Index first, Eigen::Index last) {
+    const Eigen::Index n = last - first;
+    u_next.segment(first, n) =
+        s.u.segment(first, n) + dt * s.v.segment(first, n) + (0.5 * dt * dt) * s.a.segment(first, n);
+  });
 }
 
 /// sᵀM⁻¹s: 1 / the mass the contact spring moves at the impact point [1/kg].
@@ -161,12 +177,11 @@ CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
                                                   const ContactStep& contact, Eigen::VectorXd& u_next) {
   const double dt = p_.dt();
-  u_next = s.u + dt * s.v + (0.5 * dt * dt) * s.a;                               // CD1
+  predict_displacement(dt, s, u_next);                                           // CD1
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
   check_contact(step, t, cs, contact);                                           // CD6
   state_->internal_force(u_next, dt, f_int_);
-  loading_.scaled_load(cs.alpha, cs.force, force_);
-  force_ -= f_int_;
+  loading_.scaled_load_minus(cs.alpha, cs.force, f_int_, force_);
   apply_inverse_mass(p_, force_, a_next_); // CD3
   if (!std::isfinite(a_next_.squaredNorm()))
     throw NewtonFailure(fmt::format("{}: non-finite acceleration in step {} (t = {:.6g} s); reduce time.dt",

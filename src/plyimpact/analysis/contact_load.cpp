@@ -2,6 +2,7 @@
 
 #include "plyimpact/analysis/contact_rules.hpp"
 #include "plyimpact/fem/circle_load.hpp"
+#include "plyimpact/fem/element_loop.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -146,6 +147,24 @@ void ContactLoading::scaled_load(double alpha, double force, Eigen::VectorXd& ou
   else
     out.noalias() =
         force * ((1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector);
+}
+
+void ContactLoading::scaled_load_minus(double alpha, double force, const Eigen::VectorXd& f,
+                                       Eigen::VectorXd& out) const {
+  const Bracket b = bracket(alpha);
+  const Eigen::VectorXd& lower = load_entry(b.j).vector;
+  out.resize(lower.size());
+  elementwise_on_threads(out.size(), [&](Eigen::Index first, Eigen::Index last) {
+    const Eigen::Index n = last - first;
+    if (b.weight == 0.0) {
+      out.segment(first, n) = force * lower.segment(first, n) - f.segment(first, n);
+    } else {
+      const Eigen::VectorXd& upper = load_entry(b.j + 1).vector;
+      out.segment(first, n) =
+          force * ((1.0 - b.weight) * lower.segment(first, n) + b.weight * upper.segment(first, n)) -
+          f.segment(first, n);
+    }
+  });
 }
 
 double ContactLoading::load_dot(double alpha, const Eigen::VectorXd& u) const {

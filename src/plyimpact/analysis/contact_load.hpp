@@ -59,6 +59,9 @@ public:
   [[nodiscard]] Eigen::VectorXd load(double alpha) const;
   /// out = force · s_load(α), the same numbers as force * load(alpha), into a vector sized once.
   void scaled_load(double alpha, double force, Eigen::VectorXd& out) const;
+  /// out = force · s_load(α) − f, the numbers of scaled_load followed by out -= f, in one pass over blocks
+  /// of entries on the element-loop threads (elementwise_on_threads: the same bits for any thread count).
+  void scaled_load_minus(double alpha, double force, const Eigen::VectorXd& f, Eigen::VectorXd& out) const;
   /// s_load(α)ᵀ u, the numbers of load(alpha).dot(u) without forming the vector.
   [[nodiscard]] double load_dot(double alpha, const Eigen::VectorXd& u) const;
 

@@ -105,20 +105,20 @@ std::vector<double> per_sublaminate(const std::vector<double>& node_values, int 
 double ScaledMass::added_kinetic_energy(const Eigen::VectorXd& v) const {
   // In 2 × 64 fixed chunks on the element loops' threads (ascending equations, then ascending columns of
   // K_c/ω_c²), their sums added in chunk order: the same bits for any thread count, no vector per step.
-  constexpr int chunks = 64;
+  constexpr int chunks = fixed_blocks;
   std::array<double, 2 * chunks> partial{};
   const auto n = static_cast<Eigen::Index>(equations.size());
   for_each_element(2 * chunks, [&](int b) {
     double e = 0.0;
     if (b < chunks) {
-      for (Eigen::Index k = n * b / chunks; k < n * (b + 1) / chunks; ++k) {
+      const IndexRange r = block_range(n, b, chunks);
+      for (Eigen::Index k = r.first; k < r.last; ++k) {
         const double vk = v[equations[static_cast<std::size_t>(k)]];
         e += added[static_cast<std::size_t>(k)] * vk * vk;
       }
     } else {
-      const Eigen::Index c = coupling.outerSize(), first = c * (b - chunks) / chunks,
-                         last = c * (b - chunks + 1) / chunks;
-      for (Eigen::Index col = first; col < last; ++col) // vᵀ (K_c/ω_c²) v
+      const IndexRange r = block_range(coupling.outerSize(), b - chunks, chunks);
+      for (Eigen::Index col = r.first; col < r.last; ++col) // vᵀ (K_c/ω_c²) v
         for (SparseMatrix::InnerIterator it(coupling, col); it; ++it)
           e += v[it.row()] * it.value() * v[col];
     }

@@ -88,11 +88,14 @@ void BlockDiagonalMass::apply_inverse_sqrt(const Eigen::VectorXd& r, Eigen::Vect
 
 void BlockDiagonalMass::apply(const Eigen::VectorXd& diagonal, RowMajorMatrix Block::*power,
                               const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
-  x = diagonal.cwiseProduct(r);
-  constexpr int chunks = 64; // of blocks, one per task: a block's work is too small to be one
-  const auto count = static_cast<int>(blocks_.size());
-  for_each_element(chunks, [&](int c) {
-    for (int b = count * c / chunks; b < count * (c + 1) / chunks; ++b) {
+  x.resize(r.size());
+  elementwise_on_threads(r.size(), [&](Eigen::Index first, Eigen::Index last) {
+    x.segment(first, last - first) =
+        diagonal.segment(first, last - first).cwiseProduct(r.segment(first, last - first));
+  });
+  // Fixed runs of blocks, one per task: a block's work is too small to be one.
+  for_each_block(static_cast<Eigen::Index>(blocks_.size()), [&](Eigen::Index first, Eigen::Index last) {
+    for (Eigen::Index b = first; b < last; ++b) {
       const Block& block = blocks_[static_cast<std::size_t>(b)];
       const RowMajorMatrix& m = block.*power;
       const auto n = static_cast<Eigen::Index>(block.equations.size());

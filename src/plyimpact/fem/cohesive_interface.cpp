@@ -126,14 +126,16 @@ void CohesiveInterface::index_node_users(const Mesh& mesh) {
   std::vector<int> owner(equations_.empty() ? 0 : static_cast<std::size_t>(std::ranges::max(equations_)) + 1,
                          -1);
   for (int e = 0; e < element_count_; ++e)
-    for (int a = 0; a < 9; ++a)
+    for (int a = 0; a < 9; ++a) {
+      const int node = mesh.element_nodes(e)[a];
       for (int l = 0; l < 10; ++l)
         if (const int eq = equation(e, element_dof(a, l)); eq >= 0) {
           int& o = owner[static_cast<std::size_t>(eq)];
-          if (o >= 0 && o != mesh.element_nodes(e)[a])
+          if (o >= 0 && o != node)
             throw std::logic_error("cohesive interface: an equation shared by two mesh nodes");
-          o = mesh.element_nodes(e)[a];
+          o = node;
         }
+    }
 }
 
 // (DL1): the rows δ_s1, δ_s2, δ_n; columns 0–44 the upper element's DOFs, 45–89 the lower one's.
@@ -187,22 +189,6 @@ Eigen::Vector3d CohesiveInterface::separation(int p, const Eigen::VectorXd& u) c
 // (DL2) by node pairs: with J = (N_1 L, …, N_9 L), f_a = Lᵀ Σ_p area_p N_a τ_p and
 // K_ab = Lᵀ (Σ_p area_p N_a N_b ∂τ/∂δ_p) L, only for the node pairs that share a point (the diagonal
 // under the nodal rule), instead of the 90 × 90 products Jᵀ (∂τ/∂δ) J.
-CohesiveEvaluation CohesiveInterface::assemble(const Eigen::VectorXd& u,
-                                               std::span<const CohesiveState> committed, Eigen::VectorXd& f,
-                                               std::vector<Eigen::Triplet<double>>* tangent,
-                                               CohesiveDamage damage) const {
-  CohesiveEvaluation out;
-  out.dissipated = assemble_into(u, committed, f, tangent, damage, out.trial);
-  return out;
-}
-
-double CohesiveInterface::assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
-                                        Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
-                                        CohesiveDamage damage, std::vector<CohesiveState>& trial) const {
-  CohesiveWorkspace work;
-  return assemble_into(u, committed, f, tangent, damage, trial, work);
-}
-
 double CohesiveInterface::assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
                                         Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
                                         CohesiveDamage damage, std::vector<CohesiveState>& trial,
@@ -242,12 +228,10 @@ double CohesiveInterface::assemble_into(const Eigen::VectorXd& u, std::span<cons
 }
 
 void CohesiveInterface::add_node_forces(const CohesiveWorkspace& work, Eigen::VectorXd& f) const {
-  constexpr int blocks = 64;
-  const int nodes = static_cast<int>(node_first_.size()) - 1;
-  for_each_element(blocks, [&](int b) {
-    const auto first = static_cast<std::size_t>(node_first_[static_cast<std::size_t>(nodes * b / blocks)]);
-    const auto last =
-        static_cast<std::size_t>(node_first_[static_cast<std::size_t>(nodes * (b + 1) / blocks)]);
+  const auto nodes = static_cast<Eigen::Index>(node_first_.size()) - 1;
+  for_each_block(nodes, [&](Eigen::Index first_node, Eigen::Index last_node) {
+    const auto first = static_cast<std::size_t>(node_first_[static_cast<std::size_t>(first_node)]);
+    const auto last = static_cast<std::size_t>(node_first_[static_cast<std::size_t>(last_node)]);
     for (std::size_t k = first; k < last; ++k) {
       const int user = node_users_[k], e = user / 9, a = user % 9;
       const Eigen::Matrix<double, 10, 1>& fa = work.node_forces[static_cast<std::size_t>(user)];

@@ -63,12 +63,6 @@ struct CohesiveWorkspace {
   std::vector<Eigen::Matrix3d> point_tangents;           ///< per point, area_p ∂τ/∂δ (with a tangent)
 };
 
-/// The evaluation of an interface at one displacement.
-struct CohesiveEvaluation {
-  std::vector<CohesiveState> trial; ///< per point, from the committed states
-  double dissipated = 0.0;          ///< energy dissipated from the committed to the trial states [J]
-};
-
 class CohesiveInterface {
 public:
   /// `upper` and `lower` on the same mesh; their free DOFs start at `upper_offset` and `lower_offset`
@@ -95,24 +89,17 @@ public:
   [[nodiscard]] Eigen::Vector3d separation(int p, const Eigen::VectorXd& u) const;
 
   /// Adds the interface force (DL2) at u to f and, unless `tangent` is null, its tangent to `*tangent`
-  /// (triplets over the stacked equations), evaluating the law from the `committed` states; returns the
-  /// trial states.
-  CohesiveEvaluation assemble(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
-                              Eigen::VectorXd& f, std::vector<Eigen::Triplet<double>>* tangent,
-                              CohesiveDamage damage = CohesiveDamage::evolve) const;
-  /// assemble() writing the trial states into `trial` (resized; its storage reused from step to step);
-  /// returns the energy dissipated.
-  double assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed, Eigen::VectorXd& f,
-                       std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
-                       std::vector<CohesiveState>& trial) const;
-  /// The same with the buffers of `work`: the points on every thread of the element loops
-  /// (fem/element_loop.hpp), the forces added node by node in element order, the dissipation point by point
-  /// in point order, so the numbers are those of a one-thread loop for any thread count.
+  /// (triplets over the stacked equations), evaluating the law from the `committed` states; writes the
+  /// trial states into `trial` (resized; its storage reused from step to step) and returns the energy
+  /// dissipated from the committed to the trial states [J]. The buffers are `work`'s: the points on every
+  /// thread of the element loops (fem/element_loop.hpp), the forces added node by node in element order,
+  /// the dissipation point by point in point order, so the numbers are those of a one-thread loop for any
+  /// thread count.
   double assemble_into(const Eigen::VectorXd& u, std::span<const CohesiveState> committed, Eigen::VectorXd& f,
                        std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
                        std::vector<CohesiveState>& trial, CohesiveWorkspace& work) const;
 
-  /// Each point's tangent ∂τ/∂δ times its area, as assemble adds it (DL2), into `out` (one per point).
+  /// Each point's tangent ∂τ/∂δ times its area, as assemble_into adds it (DL2), into `out` (one per point).
   void point_tangents(const Eigen::VectorXd& u, std::span<const CohesiveState> committed,
                       CohesiveDamage damage, std::vector<Eigen::Matrix3d>& out) const;
   /// Appends row k of point p's jump operator over the stacked equations to `out`: δ_k = Σ c u(eq)

@@ -43,15 +43,52 @@ void for_each_element(int count, const Work& work) {
   if (error) std::rethrow_exception(error);
 }
 
+/// The indices first … last − 1 of block `block` of `blocks` equal blocks of 0 … n − 1.
+struct IndexRange {
+  Eigen::Index first, last;
+};
+[[nodiscard]] constexpr IndexRange block_range(Eigen::Index n, int block, int blocks) {
+  return {n * block / blocks, n * (block + 1) / blocks};
+}
+
+/// The blocks of rows, entries or nodes that the loops below hand to the threads: fixed, so that a block's
+/// sums are the same whatever thread makes them; enough to even out two to sixteen threads.
+constexpr int fixed_blocks = 64;
+
+/// work(first, last) for each of `blocks` fixed blocks of the indices 0 … n − 1 (block_range), on the
+/// calling thread's threads. Where each result is written by the block that owns it and summed inside it,
+/// the bits are those of one thread for any number of threads.
+template <class Work>
+void for_each_block(Eigen::Index n, const Work& work, int blocks = fixed_blocks) {
+  for_each_element(blocks, [&](int b) {
+    const IndexRange r = block_range(n, b, blocks);
+    work(r.first, r.last);
+  });
+}
+
+/// Vectors shorter than this are updated in one call by elementwise_on_threads: a parallel region costs
+/// a few microseconds, the update of 16 384 entries about as much.
+constexpr Eigen::Index elementwise_threshold = 16384;
+
+/// work(first, last) over the indices 0 … n − 1 for work that writes each index from that index alone (an
+/// elementwise vector update, no sum across indices): in for_each_block's fixed blocks on the calling
+/// thread's threads where n reaches elementwise_threshold, in one call below it or on one thread. Each
+/// entry is computed by the same operations either way: the same bits.
+template <class Work>
+void elementwise_on_threads(Eigen::Index n, const Work& work) {
+  if (n < elementwise_threshold || omp_get_max_threads() == 1)
+    work(Eigen::Index{0}, n);
+  else
+    for_each_block(n, work);
+}
+
 /// out = K u for a row-major sparse K, blocks of rows on the calling thread's threads: each row's sum is
 /// made as in a one-thread product, so the bits are those of `out = K * u` for any number of threads.
 template <class RowMajorSparse>
 void parallel_rows_product(const RowMajorSparse& K, const Eigen::VectorXd& u, Eigen::VectorXd& out) {
-  constexpr int blocks = 64;
   out.resize(K.rows());
-  for_each_element(blocks, [&](int b) {
-    const Eigen::Index first = K.rows() * b / blocks, count = K.rows() * (b + 1) / blocks - first;
-    out.segment(first, count).noalias() = K.middleRows(first, count) * u;
+  for_each_block(K.rows(), [&](Eigen::Index first, Eigen::Index last) {
+    out.segment(first, last - first).noalias() = K.middleRows(first, last - first) * u;
   });
 }
 

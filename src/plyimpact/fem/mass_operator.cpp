@@ -45,10 +45,8 @@ void MassOperator::apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
     return;
   }
   // Row i of M is its column i: (M x)_i = Σ_k M_ki x_k over k ascending, the sum M_ * x makes for row i.
-  constexpr int blocks = 64;
   out.resize(M_.rows());
-  for_each_element(blocks, [&](int b) {
-    const Eigen::Index first = M_.cols() * b / blocks, last = M_.cols() * (b + 1) / blocks;
+  for_each_block(M_.cols(), [&](Eigen::Index first, Eigen::Index last) {
     for (Eigen::Index i = first; i < last; ++i) {
       double sum = 0.0;
       for (SparseMatrix::InnerIterator it(M_, i); it; ++it)
