@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::capabilities_tests {
 namespace {
 
 const auto with = test::with_key;
@@ -120,4 +120,4 @@ TEST(Capabilities, ExplicitStepsRefuseErrorControlledSteps) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::capabilities_tests

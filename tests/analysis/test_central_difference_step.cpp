@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::central_difference_step_tests {
 namespace {
 
 const auto with = test::with_key;
@@ -95,4 +95,4 @@ TEST(CentralDifferenceStep, RefusesAStepAboveTheStableStepNamingTheKey) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::central_difference_step_tests

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::contact_point_response_tests {
 namespace {
 
 using test::thesis_3_6_deck;
@@ -131,4 +131,4 @@ TEST(ContactPointResponse, TheImpulseRunStartsWithTheUnitForceAndGrowsInChunks) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::contact_point_response_tests

@@ -14,7 +14,7 @@
 #include <set>
 #include <tuple>
 
-namespace plyimpact {
+namespace plyimpact::damage_tests {
 namespace {
 
 /// Thesis Table 4.2 plate (T300/976, [0_2/90_4/0_2], simply supported), a coarse mesh for speed,
@@ -301,4 +301,4 @@ TEST(Threshold, MonotoneWithinToleranceAndDeterministic) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::damage_tests

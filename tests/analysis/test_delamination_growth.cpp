@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::delamination_growth_tests {
 namespace {
 
 constexpr double E = test::seeded_plate_E, nu = test::seeded_plate_nu;
@@ -119,4 +119,4 @@ TEST(SeededDelaminationGrowth, GrowsAtTheClosedFormLoadWhateverItsRadiusAndScale
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::delamination_growth_tests

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::delamination_impact_tests {
 namespace {
 
 /// The §3.6 plate (127 × 76.2 × 4.65 mm, [45/90/-45/0]3s, hard simple support) on an nx × ny Q9 mesh,
@@ -187,4 +187,4 @@ TEST(DelaminationImpact, UpdatingTheFactorGivesTheRunThatFactorsAtEveryRefresh) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::delamination_impact_tests

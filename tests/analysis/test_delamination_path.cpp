@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <functional>
 
-namespace plyimpact {
+namespace plyimpact::delamination_path_tests {
 namespace {
 
 namespace bf = test::beam_fracture;
@@ -175,9 +175,9 @@ TEST(DoubleCantileverBeam, FollowsCorrectedBeamTheoryAndDissipatesTheToughness) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::delamination_path_tests
 
-namespace plyimpact {
+namespace plyimpact::delamination_path_tests {
 namespace {
 
 /// The force of a stable propagation branch (deflection growing with the crack length a) at deflection δ:
@@ -320,4 +320,4 @@ TEST(MixedModeBending, FollowsTheBenzeggaghKenaneBranchAndDissipatesItsToughness
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::delamination_path_tests

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace plyimpact {
+namespace plyimpact::delamination_shape_tests {
 namespace {
 
 /// Square cells of side h over [−L, L]², damage 1 inside the ellipse of semi-axes a, b whose a-axis makes
@@ -78,4 +78,4 @@ TEST(DelaminationShape, AnglesBetweenLinesFoldIntoZeroToNinety) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::delamination_shape_tests

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace plyimpact {
+namespace plyimpact::energy_split_tests {
 namespace {
 
 double impact_energy(const std::string& text) {
@@ -64,4 +64,4 @@ TEST(EnergySplit, NoneWhileTheImpactorHasNotLeft) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::energy_split_tests

@@ -15,7 +15,7 @@
 #include <numbers>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::explicit_damage_step_tests {
 namespace {
 
 ImpactResult run(const std::string& text) {
@@ -182,4 +182,4 @@ TEST(ExplicitDamageStep, StopsWhenTheContactSpringMakesTheStepUnstable) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::explicit_damage_step_tests

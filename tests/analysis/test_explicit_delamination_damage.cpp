@@ -19,7 +19,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::explicit_delamination_damage_tests {
 namespace {
 
 const auto with = test::with_key;
@@ -159,4 +159,4 @@ TEST(DelaminationWithPlyDamage, TheAutomaticStepIsHalfTheStacksStableStep) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::explicit_delamination_damage_tests

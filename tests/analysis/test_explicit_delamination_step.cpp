@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::explicit_delamination_step_tests {
 namespace {
 
 /// The example on 5 x 5 elements with the lumped mass, its interfaces integrated as `integration`, to `end`.
@@ -164,4 +164,4 @@ TEST(ExplicitDelamination, RunsTheWholeEventAndTheImpactorsLossIsWhatWasDissipat
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::explicit_delamination_step_tests

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::guards_tests {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -327,4 +327,4 @@ TEST(Guards, MemAvailableIsReadInBytes) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::guards_tests

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace plyimpact {
+namespace plyimpact::hertz_contact_tests {
 namespace {
 
 ContactLawParameters tan_sun() {
@@ -121,4 +121,4 @@ TEST(HertzContact, ContactForceSolvesTheScalarEquationToMachinePrecision) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::hertz_contact_tests

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::impact_tests {
 namespace {
 
 using test::run_deck;
@@ -213,4 +213,4 @@ TEST(Impact, EpisodesAndSummaryAreConsistent) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::impact_tests

@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::impact_case_tests {
 namespace {
 
 ImpactCaseDescription thesis_case(const std::string& extra = "[time]\ndt = 1.0e-6\n") {
@@ -79,4 +79,4 @@ TEST(SamePlate, MeshesReadAgainAreComparedByContent) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::impact_case_tests

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::impact_loop_tests {
 namespace {
 
 const auto with = test::with_key;
@@ -67,4 +67,4 @@ TEST(ImpactLoop, BelowTheLimitTheRunIsUnchanged) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::impact_loop_tests

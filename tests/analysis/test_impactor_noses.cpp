@@ -21,7 +21,7 @@
 #include <numbers>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::impactor_noses_tests {
 namespace {
 
 constexpr double m = 0.314, v0 = 2.92;
@@ -161,4 +161,4 @@ TEST(ImpactorNoses, SlipsAreRefusedWithTheKeyNamed) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::impactor_noses_tests

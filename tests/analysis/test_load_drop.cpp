@@ -9,7 +9,7 @@
 #include <numbers>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::load_drop_tests {
 namespace {
 
 constexpr double T = 2e-3; // contact duration [s]; the loading phase is its first half
@@ -94,4 +94,4 @@ TEST(FirstDelamination, IsTheFirstSampleBeyondTheSeed) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::load_drop_tests

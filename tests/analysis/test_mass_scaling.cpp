@@ -21,7 +21,7 @@
 #include <numeric>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::mass_scaling_tests {
 namespace {
 
 const auto with = test::with_key;
@@ -308,4 +308,4 @@ TEST(MassScaling, ImplicitStepsRefuseIt) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::mass_scaling_tests

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::mesh_memory_tests {
 namespace {
 
 TEST(MemoryEstimate, FormulaOfA15By11Mesh) {
@@ -97,4 +97,4 @@ velocity = 2.92
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::mesh_memory_tests

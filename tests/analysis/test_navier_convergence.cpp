@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <numbers>
 
-namespace plyimpact {
+namespace plyimpact::navier_convergence_tests {
 namespace {
 
 namespace nv = test::navier;
@@ -169,4 +169,4 @@ INSTANTIATE_TEST_SUITE_P(Element, NavierConvergence,
                          });
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::navier_convergence_tests

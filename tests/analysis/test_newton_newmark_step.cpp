@@ -12,7 +12,7 @@
 #include <limits>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::newton_newmark_step_tests {
 namespace {
 
 const auto with = test::with_key;
@@ -123,9 +123,9 @@ TEST(NewtonNewmarkStep, VonKarmanPliesThatCrackRunExplicitlyToo) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::newton_newmark_step_tests
 
-namespace plyimpact {
+namespace plyimpact::newton_newmark_step_tests {
 namespace {
 
 /// examples/impact-delamination-damage.toml to t = 0.1 ms (past the peak force at 91 µs and the lower
@@ -187,4 +187,4 @@ TEST(NewtonNewmarkStep, IteratedPliesAndInterfacesFollowTheExplicitRunUntilTheIn
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::newton_newmark_step_tests

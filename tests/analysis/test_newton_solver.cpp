@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::newton_solver_tests {
 namespace {
 
 /// f(x) = x³ − 2 = 0. The matrix is f'(x) at the last refactor (full: before every correction).
@@ -128,4 +128,4 @@ TEST(NewtonSolver, GivesUpAfterTheLimitOrOnANonFiniteCorrection) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::newton_solver_tests

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::nonlinear_impact_tests {
 namespace {
 
 /// The §3.6 material, 127 × 76.2 mm, hard simple support, 8×6 q9 mesh, steel sphere R = 12.7 mm,
@@ -109,4 +109,4 @@ TEST(NonlinearImpact, ElasticContactConservesTotalEnergy) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::nonlinear_impact_tests

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::nonlinear_static_tests {
 namespace {
 
 using test::isotropic;
@@ -162,4 +162,4 @@ TEST(NonlinearStatic, NewtonFailureIsAClearMessageNotANaN) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::nonlinear_static_tests

@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::progressive_impact_tests {
 namespace {
 
 std::string example_text() {
@@ -127,4 +127,4 @@ TEST(ProgressiveImpact, LaggedDamageBalanceErrorIsFirstOrderInTheStep) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::progressive_impact_tests

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace plyimpact {
+namespace plyimpact::stacked_plate_modes_tests {
 namespace {
 
 /// Ratios stacked/single of the `count` lowest frequencies of the clamped 100 mm square plate `lam` cut at
@@ -70,4 +70,4 @@ TEST(StackedPlateModes, AStackWithSofterMiddlePliesIsSofterThanTheSingleLaminate
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::stacked_plate_modes_tests

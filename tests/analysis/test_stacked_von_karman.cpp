@@ -16,7 +16,7 @@
 #include <string>
 #include <utility>
 
-namespace plyimpact {
+namespace plyimpact::stacked_von_karman_tests {
 namespace {
 
 /// The example on 5 × 5 elements with the lumped mass, at `velocity`, to `end`, the interfaces integrated
@@ -124,4 +124,4 @@ TEST(StackedVonKarman, TheImplicitStepFollowsTheExplicitOneWhereTheInterfacesCra
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::stacked_von_karman_tests

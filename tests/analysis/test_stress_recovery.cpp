@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace plyimpact {
+namespace plyimpact::stress_recovery_tests {
 namespace {
 
 namespace nv = test::navier;
@@ -160,4 +160,4 @@ TEST(StressRecovery, EquilibriumShearIsTractionFreeCarriesQAndMatchesTheSeries) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::stress_recovery_tests

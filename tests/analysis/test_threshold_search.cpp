@@ -16,6 +16,8 @@
 #include <sstream>
 #include <stdexcept>
 
+namespace threshold_search_tests {
+
 namespace {
 
 using namespace plyimpact;
@@ -159,3 +161,5 @@ TEST(DamageThreshold, NeedsAProgressiveCaseAndAPositiveArea) {
 }
 
 } // namespace
+
+} // namespace threshold_search_tests

@@ -17,7 +17,7 @@
 #include <cstdio>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::time_step_control_tests {
 namespace {
 
 using Errors = TimeStepControl::StepErrors;
@@ -280,4 +280,4 @@ TEST(AdaptiveImpact, TheNonLinearPlateRefusesAdaptiveSteps) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::time_step_control_tests

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace plyimpact {
+namespace plyimpact::unilateral_support_tests {
 namespace {
 
 // Isotropic strip, ν = 0 so that it bends as a beam; a/h = 100, so shear adds (h/a)² ~ 1e-4.
@@ -73,4 +73,4 @@ TEST(UnilateralSupport, TheOtherAnalysesRefuseItAndSayWhatToGiveInstead) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::unilateral_support_tests

@@ -18,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace cli_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -318,3 +320,5 @@ TEST(CliVersion, SaysTheVersionAndTheCommitItWasBuiltFrom) {
 }
 
 } // namespace
+
+} // namespace cli_tests

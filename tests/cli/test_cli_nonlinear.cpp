@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+namespace cli_nonlinear_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -90,3 +92,5 @@ TEST(CliNonlinear, BadValuesAreReportedWithTheirLine) {
 }
 
 } // namespace
+
+} // namespace cli_nonlinear_tests

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace examples_unchanged_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -147,3 +149,5 @@ INSTANTIATE_TEST_SUITE_P(Examples, ExampleUnchanged, ::testing::ValuesIn(referen
                          });
 
 } // namespace
+
+} // namespace examples_unchanged_tests

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+namespace exceptions_tests {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -156,3 +158,5 @@ TEST(Exceptions, EverythingThatIsThrownIsAStdException) {
 }
 
 } // namespace
+
+} // namespace exceptions_tests

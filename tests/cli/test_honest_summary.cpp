@@ -14,6 +14,8 @@
 #include <sstream>
 #include <string>
 
+namespace honest_summary_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -205,3 +207,5 @@ end = 3e-6
 }
 
 } // namespace
+
+} // namespace honest_summary_tests

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace plyimpact::test {
+namespace plyimpact::test::hostile_inputs_tests {
 namespace {
 
 /// A file the case writes into its folder before the run: a name and its text; "{dir}" in the text
@@ -868,4 +868,4 @@ TEST(HostileInputSuite, HoldsAtLeastTwoHundredCasesWithUniqueNames) {
 }
 
 } // namespace
-} // namespace plyimpact::test
+} // namespace plyimpact::test::hostile_inputs_tests

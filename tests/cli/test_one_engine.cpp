@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace one_engine_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -156,3 +158,5 @@ TEST(OneEngine, NonlinearRunGivesTheGuardWarningsOfTheLinearOne) {
 }
 
 } // namespace
+
+} // namespace one_engine_tests

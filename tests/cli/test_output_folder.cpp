@@ -18,6 +18,8 @@
 #include <unistd.h>
 #include <vector>
 
+namespace output_folder_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -347,3 +349,5 @@ TEST(OutputFolder, ASecondDifferentSweepIntoTheFolderIsRefused) {
 }
 
 } // namespace
+
+} // namespace output_folder_tests

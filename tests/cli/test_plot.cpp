@@ -17,6 +17,8 @@
 #include <cmath>
 #include <sstream>
 
+namespace plot_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -236,3 +238,5 @@ TEST(CliOutput, StaticAndModalWriteParaViewFilesWithVtkTrue) {
 }
 
 } // namespace
+
+} // namespace plot_tests

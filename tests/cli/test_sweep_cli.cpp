@@ -21,6 +21,8 @@
 #include <thread>
 #include <unistd.h>
 
+namespace sweep_cli_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -397,3 +399,5 @@ TEST(SweepCli, StrictRefusesASweepWithAnImplausibleCaseBeforeRunningAny) {
 }
 
 } // namespace
+
+} // namespace sweep_cli_tests

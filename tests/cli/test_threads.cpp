@@ -10,7 +10,7 @@
 
 #include <string>
 
-namespace plyimpact::test {
+namespace plyimpact::test::threads_tests {
 namespace {
 
 /// summary.json without its wall time.
@@ -57,4 +57,4 @@ TEST(Threads, ExplicitDelaminationWithSelectiveMassIsTheSameBitsOnOneAndTwoThrea
 }
 
 } // namespace
-} // namespace plyimpact::test
+} // namespace plyimpact::test::threads_tests

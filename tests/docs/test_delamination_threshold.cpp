@@ -9,6 +9,8 @@
 
 #include <string>
 
+namespace delamination_threshold_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -21,3 +23,5 @@ TEST(DelaminationThreshold, EnergyReleaseRateOfACentralDelaminationIsIndependent
 }
 
 } // namespace
+
+} // namespace delamination_threshold_tests

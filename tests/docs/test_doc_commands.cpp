@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+namespace doc_commands_tests {
+
 namespace {
 
 using namespace plyimpact::test;
@@ -134,3 +136,5 @@ INSTANTIATE_TEST_SUITE_P(Docs, DocCommands, ::testing::ValuesIn(doc_blocks()),
                          });
 
 } // namespace
+
+} // namespace doc_commands_tests

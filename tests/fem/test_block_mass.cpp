@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::block_mass_tests {
 namespace {
 
 /// A mass like a stack's: a lumped diagonal, plus 2 × 2 couplings k [1 −1; −1 1] (an interface spring's
@@ -99,4 +99,4 @@ TEST(BlockDiagonalMass, RefusesAMassThatIsNotPositiveOrCouplesTooMuch) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::block_mass_tests

@@ -14,6 +14,8 @@
 #include <numbers>
 #include <vector>
 
+namespace circle_load_tests {
+
 namespace {
 
 using plyimpact::circle_load;
@@ -223,3 +225,5 @@ TEST(CircleLoad, RejectsInvalidInput) {
   EXPECT_THROW((void)circle_load(X, plyimpact::hertz_pressure({0.5, 0.5}, 0.1, 1.0), CircleQuadrature{0, 8}),
                std::invalid_argument);
 }
+
+} // namespace circle_load_tests

@@ -31,6 +31,8 @@
 #include <numbers>
 #include <vector>
 
+namespace contact_load_placement_tests {
+
 namespace {
 
 using namespace plyimpact;
@@ -293,3 +295,5 @@ TEST(ContactLoadPlacement, DISABLED_PrintTables) {
       std::fflush(stdout);
     }
 }
+
+} // namespace contact_load_placement_tests

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::damaged_plate_tests {
 namespace {
 
 // T300/976 with the strengths and toughnesses of tests/support/decks.hpp (t300_976_damage), the
@@ -592,4 +592,4 @@ TEST(DamagedPlateBandLimit, LoweredStrengthsAreReportedWithTheElementsTheyConcer
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::damaged_plate_tests

@@ -7,7 +7,7 @@
 
 #include <stdexcept>
 
-namespace plyimpact {
+namespace plyimpact::dof_map_tests {
 namespace {
 
 TEST(DofMap, NodeDofInvertsTheNumberingOfEveryFreeEquation) {
@@ -25,4 +25,4 @@ TEST(DofMap, NodeDofInvertsTheNumberingOfEveryFreeEquation) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::dof_map_tests

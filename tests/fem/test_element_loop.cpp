@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::element_loop_tests {
 namespace {
 
 TEST(ElementLoop, EveryElementOnceOnTwoThreads) {
@@ -85,4 +85,4 @@ TEST(ElementLoop, RowBlockProductIsTheOneThreadProductToTheBit) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::element_loop_tests

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::mass_operator_tests {
 namespace {
 
 /// A symmetric sparse matrix of n rows with many terms of mixed magnitude per row, where another order
@@ -75,4 +75,4 @@ TEST(MassOperator, ALumpedMassIsADiagonalScaling) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::mass_operator_tests

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <random>
 
-namespace plyimpact {
+namespace plyimpact::nonlinear_plate_element_tests {
 namespace {
 
 using test::laminate_of;
@@ -194,4 +194,4 @@ TEST(NonlinearPlateModel, AssembledTangentIsTheDerivativeOfTheAssembledForce) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::nonlinear_plate_element_tests

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <functional>
 
-namespace plyimpact {
+namespace plyimpact::plate_element_tests {
 namespace {
 
 using test::all_edges;
@@ -284,9 +284,9 @@ TEST(Mesh, PointLoadIsDistributedByShapeFunctionsAndSumsToTheForce) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::plate_element_tests
 
-namespace plyimpact {
+namespace plyimpact::plate_element_tests {
 namespace {
 
 using test::all_edges;
@@ -313,4 +313,4 @@ TEST(ElementChoice, AutomaticIsMitc9Everywhere) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::plate_element_tests

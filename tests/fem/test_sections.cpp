@@ -14,7 +14,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace plyimpact {
+namespace plyimpact::sections_tests {
 namespace {
 
 PlateModel two_region_plate(const Laminate& left, const Laminate& right, const PlateGeometry& plate, int nx,
@@ -96,4 +96,4 @@ TEST(Sections, SteppedStripInCylindricalBendingMatchesTheSteppedTimoshenkoBeam) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::sections_tests

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::seeded_delamination_tests {
 namespace {
 
 constexpr double E = test::seeded_plate_E, nu = test::seeded_plate_nu, h = 2e-3, R = 0.05; // 8 plies
@@ -101,4 +101,4 @@ TEST(SeededDelamination, AddsTheRigidEdgeComplianceAndReleasesTheEnergyOfTheClos
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::seeded_delamination_tests

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::spd_solver_tests {
 namespace {
 
 class SpdSolverBackends : public ::testing::TestWithParam<SparseSolverKind> {};
@@ -301,4 +301,4 @@ INSTANTIATE_TEST_SUITE_P(Backends, SpdSolverBackends,
                          });
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::spd_solver_tests

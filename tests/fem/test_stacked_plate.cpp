@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <memory>
 
-namespace plyimpact {
+namespace plyimpact::stacked_plate_tests {
 namespace {
 
 using test::as4_peek;
@@ -358,4 +358,4 @@ TEST(StackedPlate, SliceShearCorrectionsCarryTheParabolicShearEnergyOfTheWholeSe
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::stacked_plate_tests

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::fuzz_replay_tests {
 namespace {
 
 const std::filesystem::path fuzz_dir = std::filesystem::path(PLYIMPACT_SOURCE_DIR) / "tests" / "fuzz";
@@ -118,4 +118,4 @@ INSTANTIATE_TEST_SUITE_P(
         Regression{"deep-nesting", 18, "at most 16 nested '(' groups"}));
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::fuzz_replay_tests

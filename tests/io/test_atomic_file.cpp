@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-namespace plyimpact {
+namespace plyimpact::atomic_file_tests {
 namespace {
 
 std::size_t temporary_files_in(const test::fs::path& dir) {
@@ -53,4 +53,4 @@ TEST(AtomicFile, AWriteThatCannotStartGivesTheSystemsReason) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::atomic_file_tests

@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::case_from_deck_tests {
 namespace {
 
 const std::string plate_deck = R"(
@@ -86,4 +86,4 @@ TEST(CaseFromDeck, TwoRegionsWithTheSameLaminateRunTheOneRegionImpactBitForBit) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::case_from_deck_tests

@@ -15,7 +15,7 @@
 #include <string>
 #include <thread>
 
-namespace plyimpact {
+namespace plyimpact::child_process_tests {
 namespace {
 
 /// The message of the IsolatedWorkError `work` ends in, and whether the work itself threw it.
@@ -112,4 +112,4 @@ TEST(ChildProcess, ASignalToTheWaitingCallerStopsTheChild) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::child_process_tests

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace plyimpact {
+namespace plyimpact::damage_maps_tests {
 namespace {
 
 TEST(DamageMaps, OneMapPerCriterionAndLayerWithTheFailedPoints) {
@@ -66,4 +66,4 @@ TEST(DamageMaps, OnARigTheClampTipsAndTheWindowAreDrawnAndNamed) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::damage_maps_tests

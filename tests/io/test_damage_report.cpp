@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::damage_report_tests {
 namespace {
 
 TEST(DamageReport, CsvNumbersAreTheShortestRoundTripText) {
@@ -40,4 +40,4 @@ TEST(DamageReport, CsvNumbersAreTheShortestRoundTripText) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::damage_report_tests

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::deck_tests {
 namespace {
 
 // Line numbers matter: the error cases below refer to them.
@@ -475,4 +475,4 @@ TEST(Deck, ParaViewAndReportKeysAreRead) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::deck_tests

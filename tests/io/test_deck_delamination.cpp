@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::deck_delamination_tests {
 namespace {
 
 using test::small_deck;
@@ -281,4 +281,4 @@ TEST(DeckDelamination, AnImpactRunReportsItsInterfacesInTheSummaryReportAndCsv) 
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::deck_delamination_tests

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::deck_plausibility_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -303,4 +303,4 @@ TEST(DeckPlausibilityCli, ImpactSummaryListsDeckWarningsBeforeTheGuards) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::deck_plausibility_tests

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::deck_units_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -249,4 +249,4 @@ TEST(DeckEnergyCli, TheEnergyDeckGivesThe268Result) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::deck_units_tests

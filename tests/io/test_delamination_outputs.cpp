@@ -33,7 +33,7 @@
 
 #include <unistd.h>
 
-namespace plyimpact {
+namespace plyimpact::delamination_outputs_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -266,4 +266,4 @@ TEST_F(DelaminationOutputs, ParaViewFramesCarryEachInterfacesDamage) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::delamination_outputs_tests

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::environment_tests {
 namespace {
 
 constexpr const char* variable = "PLYIMPACT_TEST_ENVIRONMENT_VALUE";
@@ -48,4 +48,4 @@ TEST(Environment, AnythingElseIsRefusedNamingTheVariableAndWhatItHolds) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::environment_tests

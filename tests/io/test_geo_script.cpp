@@ -15,7 +15,7 @@
 #include <fstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::geo_script_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -107,4 +107,4 @@ TEST(GeoScript, ADeckWhoseScriptRunsAShellCommandIsRefusedBeforeAnythingRuns) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::geo_script_tests

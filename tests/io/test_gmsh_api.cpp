@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::gmsh_api_tests {
 namespace {
 
 /// gmsh initialised for one test, finalised after it.
@@ -64,4 +64,4 @@ TEST_F(GmshApiTest, GmshsErrorCodeBecomesGmshErrorWithGmshsMessage) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::gmsh_api_tests

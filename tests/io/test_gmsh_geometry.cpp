@@ -27,7 +27,7 @@
 #include <fstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::gmsh_geometry_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -250,9 +250,9 @@ TEST(GmshGeometry, TheExampleDeckMeshesTheGeometryBesideIt) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::gmsh_geometry_tests
 
-namespace plyimpact {
+namespace plyimpact::gmsh_geometry_tests {
 namespace {
 
 // gmsh runs in a child process (io/child_process.hpp; docs/robustness.md, "gmsh in a child process").
@@ -290,4 +290,4 @@ TEST(GmshIsolation, AFifoGivenAsTheMeshFileIsRefusedWithoutBlocking) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::gmsh_geometry_tests

@@ -27,7 +27,7 @@
 #include <functional>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::gmsh_mesh_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -437,4 +437,4 @@ TEST(GmshMesh, AnImpactPointOffTheMeshIsRefused) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::gmsh_mesh_tests

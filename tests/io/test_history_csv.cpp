@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::history_csv_tests {
 namespace {
 
 TEST(HistoryCsv, StreamedFileEqualsTheInMemoryHistoryText) {
@@ -50,4 +50,4 @@ TEST(HistoryCsv, RowsAreTheShortestTextThatReadsBackAsTheSameDouble) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::history_csv_tests

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+namespace html_report_tests {
+
 namespace {
 
 using namespace plyimpact;
@@ -264,3 +266,5 @@ TEST(HtmlReport, SweepReportOpensInHeadlessChromiumWithEveryPlotAndCase) {
 }
 
 } // namespace
+
+} // namespace html_report_tests

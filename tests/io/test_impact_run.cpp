@@ -30,7 +30,7 @@
 #include <sstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::impact_run_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -212,4 +212,4 @@ TEST(ImpactRun, TheFirstLoadDropReachesTheSummary) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::impact_run_tests

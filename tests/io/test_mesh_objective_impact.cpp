@@ -17,7 +17,7 @@
 #include <tuple>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::mesh_objective_impact_tests {
 namespace {
 
 struct Reference {
@@ -153,4 +153,4 @@ INSTANTIATE_TEST_SUITE_P(Issue16, DefaultDeck,
                          });
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::mesh_objective_impact_tests

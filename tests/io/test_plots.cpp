@@ -13,6 +13,8 @@
 #include <fstream>
 #include <set>
 
+namespace plots_tests {
+
 namespace {
 
 using namespace plyimpact;
@@ -115,3 +117,5 @@ TEST(Plots, ForceIndentationAndForceDisplacementKeepOnlyTheContactPart) {
 }
 
 } // namespace
+
+} // namespace plots_tests

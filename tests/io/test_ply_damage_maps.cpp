@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::ply_damage_maps_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -149,4 +149,4 @@ TEST(PlyDamageMaps, AValueThatIsNotANumberIsNamedWithItsLine) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::ply_damage_maps_tests

@@ -13,6 +13,8 @@
 #include <numbers>
 #include <string>
 
+namespace progress_tests {
+
 namespace {
 
 using namespace plyimpact;
@@ -155,3 +157,5 @@ TEST(ImpactProgress, ExpectsTheDecksEndOrTheEndOfEventRule) {
 }
 
 } // namespace
+
+} // namespace progress_tests

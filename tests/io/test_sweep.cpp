@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::sweep_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -610,4 +610,4 @@ TEST(SweepReport, MonteCarloSamplesAreDotsNotLines) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::sweep_tests

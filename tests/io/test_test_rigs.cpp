@@ -17,7 +17,7 @@
 #include <numbers>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::test_rigs_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -212,4 +212,4 @@ TEST(TestRigs, EveryImpactPointOnTheCouponMeshes) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::test_rigs_tests

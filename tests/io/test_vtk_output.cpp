@@ -22,7 +22,7 @@
 #include <filesystem>
 #include <string>
 
-namespace plyimpact {
+namespace plyimpact::vtk_output_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -338,4 +338,4 @@ TEST(VtkOutput, ADamageEntryOutsideTheModelIsRefused) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::vtk_output_tests

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::cohesive_law_tests {
 namespace {
 
 // AS4/PEEK interface as tabulated by Camanho, Dávila & de Moura 2003 (J. Compos. Mater. 37:1415):
@@ -497,9 +497,9 @@ TEST(CohesiveLawParameters, CohesiveZoneLengthMatchesTuronMeshRule) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::cohesive_law_tests
 
-namespace plyimpact {
+namespace plyimpact::cohesive_law_tests {
 namespace {
 
 // The loading band changes the tangent only: just below the envelope (a point about to load, or about to
@@ -537,13 +537,13 @@ TEST(CohesiveLawLoadingBand, ChoosesTheLoadingTangentJustBelowTheEnvelopeAndNoth
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::cohesive_law_tests
 
 // ------------------------------------------------------------------------------------------------
 // The lagged step's mean traction (DL6): the discrete gradient of the stored energy at held damage
 // ------------------------------------------------------------------------------------------------
 
-namespace plyimpact {
+namespace plyimpact::cohesive_law_tests {
 namespace {
 
 /// ψ(δ; d) written out here (not the class's stored_energy): ½(1 − d) K (δ_s1² + δ_s2² + ⟨δ_n⟩²) + ½ K
@@ -679,4 +679,4 @@ TEST(CohesiveLawStepMean, ClappingFacesKeepTheirEnergyAcrossStepsLongerThanTheCo
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::cohesive_law_tests

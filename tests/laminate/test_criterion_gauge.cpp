@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::criterion_gauge_tests {
 namespace {
 
 /// T300/976 (thesis Table 4.2 strengths; Xt, Xc typical values) and a T700/M21-like set whose
@@ -136,4 +136,4 @@ TEST(CriterionGauge, NoneWhereTheFormIsNotAGaugeOrTheStrengthsAreMissing) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::criterion_gauge_tests

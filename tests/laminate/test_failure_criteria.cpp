@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::failure_criteria_tests {
 namespace {
 
 constexpr double kTol = 1e-12;
@@ -545,4 +545,4 @@ TEST(FailureLatch, OnceFailedStaysFailedAndReportsTheFirstMode) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::failure_criteria_tests

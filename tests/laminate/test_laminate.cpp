@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace plyimpact {
+namespace plyimpact::laminate_tests {
 namespace {
 
 Laminate make(const std::string& layup, double t,
@@ -132,4 +132,4 @@ TEST(HertzContact, ModifiedHertzConstantOfTheSpecCase) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::laminate_tests

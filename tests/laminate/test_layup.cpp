@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::layup_tests {
 namespace {
 
 using Angles = std::vector<double>;
@@ -67,4 +67,4 @@ INSTANTIATE_TEST_SUITE_P(
                       BadLayup{"", 1, "'['"}, BadLayup{"[1.2.3]", 2, "ply angle"}));
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::layup_tests

@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-namespace plyimpact {
+namespace plyimpact::ply_damage_tests {
 namespace {
 
 // T300/976 with the strengths and toughnesses of tests/support/decks.hpp (t300_976_damage).
@@ -837,4 +837,4 @@ TEST(PlyDamageInput, MissingToughnessIsNamed) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::ply_damage_tests

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace plyimpact {
+namespace plyimpact::ply_stiffness_tests {
 namespace {
 
 TEST(PlyStiffness, ReducedStiffnessMatchesHandCalculation) {
@@ -93,4 +93,4 @@ TEST(PlyStiffness, PoissonFreeModelIsWhatTheThesisProgramUsed) {
 }
 
 } // namespace
-} // namespace plyimpact
+} // namespace plyimpact::ply_stiffness_tests

@@ -11,6 +11,8 @@
 #include <functional>
 #include <vector>
 
+namespace beam_fracture_tests {
+
 namespace bf = plyimpact::test::beam_fracture;
 
 namespace {
@@ -286,3 +288,5 @@ TEST(BeamFractureMmb, WorkMinusStoredEnergyIsBKToughnessIntegratedOverNewCrack) 
   const double expected = s.width * toughness_integral;
   EXPECT_NEAR(dissipated, expected, 1e-8 * expected);
 }
+
+} // namespace beam_fracture_tests

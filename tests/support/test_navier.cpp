@@ -15,6 +15,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace navier_tests {
+
 namespace nv = plyimpact::test::navier;
 
 namespace {
@@ -583,3 +585,5 @@ TEST(NavierScope, RejectsOutOfScopeInput) {
       nv::static_field(nv::plate_from_plies(1.0, 1.0, plies), nv::uniform_load(1.0), 0.5, 0.5);
   EXPECT_THROW(nv::equilibrium_transverse_shear(plies, f, 0.006), std::invalid_argument);
 }
+
+} // namespace navier_tests

@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+namespace navier_impact_tests {
+
 namespace ni = plyimpact::test::navier_impact;
 namespace nv = plyimpact::test::navier;
 
@@ -548,3 +550,5 @@ TEST(NavierImpactReference, DISABLED_IssueLightBallT300) {
               {},
               0.1e-6});
 }
+
+} // namespace navier_impact_tests
