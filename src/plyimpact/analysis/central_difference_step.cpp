@@ -140,15 +140,10 @@ private:
 
 /// x = M⁻¹ r of the policy's mass (CD3).
 void apply_inverse_mass(const CentralDifferencePolicy& p, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
-  if (p.mass_->blocks) {
+  if (p.mass_->blocks)
     p.mass_->blocks->solve(r, x);
-    return;
-  }
-  x.resize(r.size());
-  elementwise_on_threads(r.size(), [&](Eigen::Index first, Eigen::Index last) {
-    x.segment(first, last - first) =
-        p.inverse_mass_.segment(first, last - first).cwiseProduct(r.segment(first, last - first));
-  });
+  else
+    parallel_cwise_product(p.inverse_mass_, r, x);
 }
 
 /// u_next = u + Δt v + ½Δt² a (CD1), blocks of entries on the element-loop threads.

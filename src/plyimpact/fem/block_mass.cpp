@@ -88,11 +88,7 @@ void BlockDiagonalMass::apply_inverse_sqrt(const Eigen::VectorXd& r, Eigen::Vect
 
 void BlockDiagonalMass::apply(const Eigen::VectorXd& diagonal, RowMajorMatrix Block::*power,
                               const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
-  x.resize(r.size());
-  elementwise_on_threads(r.size(), [&](Eigen::Index first, Eigen::Index last) {
-    x.segment(first, last - first) =
-        diagonal.segment(first, last - first).cwiseProduct(r.segment(first, last - first));
-  });
+  parallel_cwise_product(diagonal, r, x);
   // Fixed runs of blocks, one per task: a block's work is too small to be one.
   for_each_block(static_cast<Eigen::Index>(blocks_.size()), [&](Eigen::Index first, Eigen::Index last) {
     for (Eigen::Index b = first; b < last; ++b) {

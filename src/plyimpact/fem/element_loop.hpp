@@ -82,6 +82,15 @@ void elementwise_on_threads(Eigen::Index n, const Work& work) {
     for_each_block(n, work);
 }
 
+/// x = d ∘ r (entry by entry), through elementwise_on_threads: the numbers of `x = d.cwiseProduct(r)`.
+inline void parallel_cwise_product(const Eigen::VectorXd& d, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+  x.resize(r.size());
+  elementwise_on_threads(r.size(), [&](Eigen::Index first, Eigen::Index last) {
+    x.segment(first, last - first) =
+        d.segment(first, last - first).cwiseProduct(r.segment(first, last - first));
+  });
+}
+
 /// out = K u for a row-major sparse K, blocks of rows on the calling thread's threads: each row's sum is
 /// made as in a one-thread product, so the bits are those of `out = K * u` for any number of threads.
 template <class RowMajorSparse>
