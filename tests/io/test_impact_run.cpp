@@ -107,8 +107,8 @@ TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {
   std::string what;
   try {
     (void)run_impact(deck, impact, options);
-    ADD_FAILURE() << "expected NewtonFailure";
-  } catch (const NewtonFailure& e) {
+    ADD_FAILURE() << "expected RunFailure";
+  } catch (const RunFailure& e) {
     what = e.what();
   }
   EXPECT_NE(what.find("progressive damage:"), std::string::npos) << what;
@@ -120,6 +120,43 @@ TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {
   EXPECT_NE(summary["stop_reason"].get<std::string>().find("progressive damage:"), std::string::npos);
   const long steps = summary["steps"].get<long>();
   EXPECT_GT(steps, 0);
+  EXPECT_TRUE(fs::exists(dir / "report.html"));
+  std::ifstream history(dir / "history.csv");
+  long rows = -1; // the header
+  for (std::string line; std::getline(history, line);)
+    ++rows;
+  EXPECT_EQ(rows, steps + 1); // t = 0 and every accepted step
+}
+
+TEST(ImpactRun, ARunStoppedByTheBandLimitWritesWhatItComputedAndThenFails) {
+  // examples/damage-progressive-explicit.toml's 1.7 mm elements lie above the band limit of its matrix
+  // modes (its deck lowers their strengths: oversize = "reduce-strength"). Without that, the first mode to
+  // start there stops the run (oversize = "error"): what the steps before it computed is written,
+  // summary.json marked incomplete with the law's message, and the run then fails naming the folder.
+  const std::string text =
+      test::with_key(test::example_text("damage-progressive-explicit.toml"), "oversize", "\"error\"");
+  const Deck deck = parse_deck(text, "band-limit.toml");
+  const ImpactCase impact(impact_case_description(deck));
+  const ImpactRunOptions options = into_scratch("plyimpact-band-limit-run");
+  const fs::path dir = *options.output_dir;
+  std::string what;
+  try {
+    (void)run_impact(deck, impact, options);
+    ADD_FAILURE() << "expected RunFailure";
+  } catch (const RunFailure& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("exceeds the band limit of mode"), std::string::npos) << what;
+  EXPECT_NE(what.find(dir.string()), std::string::npos) << what;
+  std::ifstream in(dir / "summary.json");
+  ASSERT_TRUE(in.good());
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_FALSE(summary["complete"].get<bool>());
+  EXPECT_NE(summary["stop_reason"].get<std::string>().find("band limit"), std::string::npos);
+  EXPECT_NE(summary["incomplete_reason"].get<std::string>().find("band limit"), std::string::npos);
+  const long steps = summary["steps"].get<long>();
+  EXPECT_GT(steps, 0);
+  EXPECT_GT(summary["peak_force"].get<double>(), 0.0); // the contact had begun: a real part of the event
   EXPECT_TRUE(fs::exists(dir / "report.html"));
   std::ifstream history(dir / "history.csv");
   long rows = -1; // the header

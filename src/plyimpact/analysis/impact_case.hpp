@@ -131,7 +131,8 @@ struct RunRequest {
   /// plate: no observers, no history, no fields. ImpactResult::contact_point_response says whether it was.
   bool contact_point_response = false;
   /// A step that cannot be solved (NewtonFailure: the iterations stop converging, the explicit step turns
-  /// unstable) ends the run with what it has computed, ImpactResult::failure saying why, instead of
+  /// unstable) or that a ply law refuses (BandLimitError: a mode starts in an element above its band
+  /// limit) ends the run with what it has computed, ImpactResult::failure saying why, instead of
   /// throwing: for io/impact_run.cpp, which writes the results and then reports the failure.
   bool keep_failed_run = false;
   /// Threads of the run's element loops (fem/element_loop.hpp; the same bits for any number); 0: the

@@ -6,6 +6,7 @@
 #include "plyimpact/analysis/time_step_control.hpp"
 #include "plyimpact/fem/element_loop.hpp"
 #include "plyimpact/fem/mechanical_model.hpp"
+#include "plyimpact/laminate/ply_damage.hpp"
 
 #include <fmt/format.h>
 
@@ -338,6 +339,13 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
           break;
       }
     } catch (const NewtonFailure& e) { // the run ends at the last accepted step, what it computed kept
+      if (!s.keep_failed_run) throw;
+      r.failure = r.stop_reason = e.what();
+      --step;
+      t = t_accepted;
+      break;
+    } catch (
+        const BandLimitError& e) { // a ply mode starts where the mesh is too coarse for its law: the same
       if (!s.keep_failed_run) throw;
       r.failure = r.stop_reason = e.what();
       --step;

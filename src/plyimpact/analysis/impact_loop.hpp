@@ -34,7 +34,8 @@ struct LoopSettings {
   std::optional<AdaptiveTimeStep> adaptive;
   double fundamental_period = 0.0;           ///< of the plate, for the end-of-event rule [s]
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
-  bool keep_failed_run = false; ///< a step that fails ends the run (ImpactResult::failure), not a throw
+  /// a step that fails (NewtonFailure, BandLimitError) ends the run (ImpactResult::failure), not a throw
+  bool keep_failed_run = false;
   /// Laminate thickness under the impact point of a linear plate (empty: non-linear plate or rigid
   /// target): a peak deflection above guards.hpp's max_linear_deflection of it warns [m].
   std::optional<double> linear_thickness;

@@ -96,14 +96,14 @@ HistoryLayout history_layout_of(const Deck& deck, const ImpactSettings& s) {
   return layout;
 }
 
-/// A run whose step could not be solved, its results written (to `dir`, where there is one), ends in the
-/// solver's error (NewtonFailure), its message saying where the results are.
+/// A run that stopped at a step it could not take, its results written (to `dir`, where there is one), ends
+/// in RunFailure, its message the step's error and where the results are.
 void report_failure(const ImpactResult& r, const std::optional<std::filesystem::path>& dir) {
   if (r.failure.empty()) return;
-  if (!dir) throw NewtonFailure(r.failure);
-  throw NewtonFailure(fmt::format("{}; the results up to t = {:.6g} s (step {}) are in {}, marked "
-                                  "\"complete\": false",
-                                  r.failure, r.end_time, r.steps, dir->string()));
+  if (!dir) throw RunFailure(r.failure);
+  throw RunFailure(fmt::format("{}; the results up to t = {:.6g} s (step {}) are in {}, marked "
+                               "\"complete\": false",
+                               r.failure, r.end_time, r.steps, dir->string()));
 }
 
 } // namespace

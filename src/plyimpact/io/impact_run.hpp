@@ -12,6 +12,7 @@
 #include <atomic>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,9 +51,20 @@ struct ImpactRunOutcome {
 /// (through its impulse response there, analysis/contact_point_response.hpp) or "full" (every step).
 [[nodiscard]] const char* plate_response_name(const ImpactResult& result);
 
+/// A run that stopped at a step it could not take: its iterations stopped converging or its step turned
+/// unstable (NewtonFailure), or a ply mode started in an element larger than the mode's band limit
+/// (BandLimitError, `[damage] oversize = "error"`). What it computed up to the last accepted step is written
+/// first (summary.json marked incomplete, its `stop_reason` the error; the report, history.csv, ...); the
+/// message is the step's error and says where those results are.
+class RunFailure : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Runs the impact of `deck` on `impact`, which was built from this deck or from one with the same
 /// plate and time step (its factorization is reused; the deck's impactor and contact stiffness are
-/// used). Throws std::invalid_argument when the time steps differ.
+/// used). Throws std::invalid_argument when the time steps differ, RunFailure (after writing) when a step
+/// cannot be taken.
 [[nodiscard]] ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact,
                                           const ImpactRunOptions& options);
 
