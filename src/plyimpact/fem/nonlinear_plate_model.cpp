@@ -8,7 +8,9 @@
 namespace plyimpact {
 
 NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure measure)
-    : model_(model), element_(model.element(), measure), pattern_(model.pattern()) {
+    : model_(model), element_(model.element(), measure), pattern_(model.pattern()),
+      gather_(model.size(), model.mesh().element_count(),
+              [&model](int e) -> const ElementEquations& { return model.element_equations(e); }) {
   const Mesh& mesh = model.mesh();
   std::map<std::pair<int, int>, int> known; // (section, shape class) → geometry
   for (int e = 0; e < mesh.element_count(); ++e) {
@@ -41,9 +43,7 @@ void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::Vector
     element_forces[static_cast<std::size_t>(e)] =
         element_.internal_force(geometry_of(e), section_of(e), gather(u, model_.element_equations(e)));
   });
-  f.setZero(model_.size());
-  for (int e = 0; e < elements; ++e) // in element order, as a loop on one thread adds them
-    scatter_add(f, model_.element_equations(e), element_forces[static_cast<std::size_t>(e)]);
+  gather_.assemble(element_forces, f); // each equation's terms in element order, as one thread adds them
 }
 
 SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) const {

@@ -1,6 +1,7 @@
 #pragma once
 // The plate's non-linear internal force vector and tangent stiffness over the free DOFs (SPEC §8),
 // assembled from NonlinearMindlinQ9 into the sparsity pattern of the linear PlateModel.
+#include "plyimpact/fem/equation_gather.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 
@@ -22,7 +23,8 @@ public:
   /// internal_force(u) into `f` (sized once by the caller): the same numbers without a new vector.
   void internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
   /// … with the elements on the run's threads, `element_forces` (one per element, sized here on first use)
-  /// their places, added in element order: the same bits for any number of threads (element_loop.hpp).
+  /// their places, added in element order equation by equation, also on threads (EquationGather): the
+  /// same bits for any number of threads (element_loop.hpp).
   void internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
                       std::vector<ElementVector>& element_forces) const;
   /// K_T(u) = ∂f_int/∂u, same pattern as PlateModel::stiffness().
@@ -42,6 +44,7 @@ private:
   std::vector<int> geometry_index_;       ///< per element
   SparseMatrix pattern_;                  ///< structure of K_T, values zero
   std::vector<ElementSlots> slot_;        ///< (i, j) of Kₑ → index in pattern_ values
+  EquationGather gather_;                 ///< f_int from the element forces, equation by equation
 };
 
 } // namespace plyimpact
