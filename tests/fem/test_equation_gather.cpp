@@ -38,14 +38,23 @@ Elements overlapping_elements(int count) {
   return m;
 }
 
+/// The one-thread assembly: setZero, then scatter_add element after element.
+Eigen::VectorXd scattered(const Elements& m) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(m.size);
+  for (std::size_t e = 0; e < m.vectors.size(); ++e)
+    scatter_add(f, m.equations[e], m.vectors[e]);
+  return f;
+}
+
+EquationGather gather_of(const Elements& m) {
+  return {m.size, static_cast<int>(m.equations.size()),
+          [&m](int e) -> const ElementEquations& { return m.equations[static_cast<std::size_t>(e)]; }};
+}
+
 TEST(EquationGather, IsTheOneThreadScatterToTheBitOnAnyNumberOfThreads) {
   const Elements m = overlapping_elements(400); // 8 100 equations: above the size gathered in one call
-  Eigen::VectorXd serial = Eigen::VectorXd::Zero(m.size);
-  for (std::size_t e = 0; e < m.vectors.size(); ++e)
-    scatter_add(serial, m.equations[e], m.vectors[e]);
-  const EquationGather gather(
-      m.size, static_cast<int>(m.equations.size()),
-      [&](int e) -> const ElementEquations& { return m.equations[static_cast<std::size_t>(e)]; });
+  const Eigen::VectorXd serial = scattered(m);
+  const EquationGather gather = gather_of(m);
   for (const int threads : {1, 2, 3, 4}) {
     const ElementThreads setting(threads);
     Eigen::VectorXd f = Eigen::VectorXd::Constant(3, 1.0); // resized and overwritten
@@ -61,12 +70,8 @@ TEST(EquationGather, IsTheOneThreadScatterToTheBitOnAnyNumberOfThreads) {
 
 TEST(EquationGather, SmallVectorsAreGatheredInOneCallWithTheSameNumbers) {
   const Elements m = overlapping_elements(10); // 300 equations
-  Eigen::VectorXd serial = Eigen::VectorXd::Zero(m.size);
-  for (std::size_t e = 0; e < m.vectors.size(); ++e)
-    scatter_add(serial, m.equations[e], m.vectors[e]);
-  const EquationGather gather(
-      m.size, static_cast<int>(m.equations.size()),
-      [&](int e) -> const ElementEquations& { return m.equations[static_cast<std::size_t>(e)]; });
+  const Eigen::VectorXd serial = scattered(m);
+  const EquationGather gather = gather_of(m);
   const ElementThreads two(2);
   Eigen::VectorXd f;
   gather.assemble(m.vectors, f);

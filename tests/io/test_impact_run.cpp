@@ -93,6 +93,51 @@ TEST(ImpactRun, TheElementLoopsRunOnTheDecksThreadsUnlessTheCallerGivesOthers) {
   }
 }
 
+/// What a run that fails at a step left: the error's message, and the folder it wrote before failing.
+struct FailedRun {
+  std::string what;
+  fs::path dir;
+  nlohmann::json summary;
+  long history_rows = 0; ///< history.csv's lines after the header
+};
+
+/// Runs `text` into a scratch folder `name`, expecting RunFailure.
+FailedRun failing_run(const std::string& text, const std::string& name) {
+  const Deck deck = parse_deck(text, name + ".toml");
+  const ImpactCase impact(impact_case_description(deck));
+  const ImpactRunOptions options = into_scratch(name);
+  FailedRun run;
+  run.dir = *options.output_dir;
+  try {
+    (void)run_impact(deck, impact, options);
+    ADD_FAILURE() << "expected RunFailure";
+  } catch (const RunFailure& e) {
+    run.what = e.what();
+  }
+  std::ifstream in(run.dir / "summary.json");
+  EXPECT_TRUE(in.good()) << "no summary.json in " << run.dir;
+  if (in.good()) run.summary = nlohmann::json::parse(in);
+  std::ifstream history(run.dir / "history.csv");
+  run.history_rows = -1; // the header
+  for (std::string line; std::getline(history, line);)
+    ++run.history_rows;
+  return run;
+}
+
+/// The folder of a failed run holds the results up to its last accepted step, summary.json marked
+/// incomplete with the error as stop_reason (`error_says` in both), and the message names the folder.
+void expect_written_before_failing(const FailedRun& run, const std::string& error_says) {
+  EXPECT_NE(run.what.find(error_says), std::string::npos) << run.what;
+  EXPECT_NE(run.what.find(run.dir.string()), std::string::npos) << run.what;
+  ASSERT_TRUE(run.summary.is_object());
+  EXPECT_FALSE(run.summary["complete"].get<bool>());
+  EXPECT_NE(run.summary["stop_reason"].get<std::string>().find(error_says), std::string::npos);
+  const long steps = run.summary["steps"].get<long>();
+  EXPECT_GT(steps, 0);
+  EXPECT_TRUE(fs::exists(run.dir / "report.html"));
+  EXPECT_EQ(run.history_rows, steps + 1); // t = 0 and every accepted step
+}
+
 TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {
   // At 3 m/s and 1.75 µs many points soften at once and the iterated secant stops converging
   // (test_progressive_impact.cpp): the results up to the last accepted step are written, summary.json
@@ -100,32 +145,7 @@ TEST(ImpactRun, ARunWhoseStepCannotBeSolvedWritesWhatItComputedAndThenFails) {
   const std::string text =
       test::with_key(test::with_key(test::example_text("damage-progressive-lagged.toml"), "dt", "1.75e-6"),
                      "integration", "\"implicit\"");
-  const Deck deck = parse_deck(text, "failing.toml");
-  const ImpactCase impact(impact_case_description(deck));
-  const ImpactRunOptions options = into_scratch("plyimpact-failed-run");
-  const fs::path dir = *options.output_dir;
-  std::string what;
-  try {
-    (void)run_impact(deck, impact, options);
-    ADD_FAILURE() << "expected RunFailure";
-  } catch (const RunFailure& e) {
-    what = e.what();
-  }
-  EXPECT_NE(what.find("progressive damage:"), std::string::npos) << what;
-  EXPECT_NE(what.find(dir.string()), std::string::npos) << what;
-  std::ifstream in(dir / "summary.json");
-  ASSERT_TRUE(in.good());
-  const nlohmann::json summary = nlohmann::json::parse(in);
-  EXPECT_FALSE(summary["complete"].get<bool>());
-  EXPECT_NE(summary["stop_reason"].get<std::string>().find("progressive damage:"), std::string::npos);
-  const long steps = summary["steps"].get<long>();
-  EXPECT_GT(steps, 0);
-  EXPECT_TRUE(fs::exists(dir / "report.html"));
-  std::ifstream history(dir / "history.csv");
-  long rows = -1; // the header
-  for (std::string line; std::getline(history, line);)
-    ++rows;
-  EXPECT_EQ(rows, steps + 1); // t = 0 and every accepted step
+  expect_written_before_failing(failing_run(text, "plyimpact-failed-run"), "progressive damage:");
 }
 
 TEST(ImpactRun, ARunStoppedByTheBandLimitWritesWhatItComputedAndThenFails) {
@@ -135,34 +155,10 @@ TEST(ImpactRun, ARunStoppedByTheBandLimitWritesWhatItComputedAndThenFails) {
   // summary.json marked incomplete with the law's message, and the run then fails naming the folder.
   const std::string text =
       test::with_key(test::example_text("damage-progressive-explicit.toml"), "oversize", "\"error\"");
-  const Deck deck = parse_deck(text, "band-limit.toml");
-  const ImpactCase impact(impact_case_description(deck));
-  const ImpactRunOptions options = into_scratch("plyimpact-band-limit-run");
-  const fs::path dir = *options.output_dir;
-  std::string what;
-  try {
-    (void)run_impact(deck, impact, options);
-    ADD_FAILURE() << "expected RunFailure";
-  } catch (const RunFailure& e) {
-    what = e.what();
-  }
-  EXPECT_NE(what.find("exceeds the band limit of mode"), std::string::npos) << what;
-  EXPECT_NE(what.find(dir.string()), std::string::npos) << what;
-  std::ifstream in(dir / "summary.json");
-  ASSERT_TRUE(in.good());
-  const nlohmann::json summary = nlohmann::json::parse(in);
-  EXPECT_FALSE(summary["complete"].get<bool>());
-  EXPECT_NE(summary["stop_reason"].get<std::string>().find("band limit"), std::string::npos);
-  EXPECT_NE(summary["incomplete_reason"].get<std::string>().find("band limit"), std::string::npos);
-  const long steps = summary["steps"].get<long>();
-  EXPECT_GT(steps, 0);
-  EXPECT_GT(summary["peak_force"].get<double>(), 0.0); // the contact had begun: a real part of the event
-  EXPECT_TRUE(fs::exists(dir / "report.html"));
-  std::ifstream history(dir / "history.csv");
-  long rows = -1; // the header
-  for (std::string line; std::getline(history, line);)
-    ++rows;
-  EXPECT_EQ(rows, steps + 1); // t = 0 and every accepted step
+  const FailedRun run = failing_run(text, "plyimpact-band-limit-run");
+  expect_written_before_failing(run, "exceeds the band limit of mode");
+  EXPECT_NE(run.summary["incomplete_reason"].get<std::string>().find("band limit"), std::string::npos);
+  EXPECT_GT(run.summary["peak_force"].get<double>(), 0.0); // the contact had begun: a real part of the event
 }
 
 TEST(ImpactRun, ProgressiveRunWritesTheResultsPlyDamageToTheLastFrameAndToDamageElementsCsv) {
