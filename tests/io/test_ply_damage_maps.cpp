@@ -2,6 +2,7 @@
 // and ply of a 4 × 3 mesh with the damage it was given, at element centres and corners worked out by
 // hand; the projected damage is the largest over the plies; each map fills one polygon per element with
 // that element's value.
+#include "plyimpact/io/plots.hpp"
 #include "plyimpact/io/ply_damage_maps.hpp"
 #include "support/decks.hpp"
 
@@ -122,6 +123,24 @@ TEST(PlyDamageMaps, OneMapPerPlyAndTheProjectedOneEachWithAPolygonPerElementFill
   EXPECT_EQ(on_rig.front().curves[2].title, clamp_tip_note);
   EXPECT_NE(on_rig.front().curves[2].data.find("25.000000,6.250000\n125.000000,93.750000"),
             std::string::npos);
+}
+
+TEST(PlyDamageMaps, AMapOnARigIsDrawnByGnuplot) {
+  // The window edge and the clamp tips carry their own line width: gnuplot refuses a style that names lw
+  // twice ("duplicate or conflicting arguments in style specification"), and `plyimpact plot` of every
+  // progressive run on a rig failed so until 2026-12-01.
+  RigOutline rig;
+  rig.window = {{0.0125, 0.0125}, {0.1375, 0.0125}, {0.1375, 0.0875}, {0.0125, 0.0875}};
+  rig.clamp_tips = {{0.025, 0.00625}, {0.125, 0.09375}};
+  std::vector<PlotSpec> maps = ply_damage_map_plots(written_and_read("rig"), MapMarks{std::nullopt, rig});
+  maps.resize(1);
+  const fs::path out = fs::temp_directory_path() / "plyimpact-damage-maps-rig-drawn";
+  fs::remove_all(out);
+  PlotFiles files;
+  EXPECT_NO_THROW(files = draw_plots(maps, out));
+  ASSERT_EQ(files.images.size(), 2U); // svg and png
+  for (const fs::path& image : files.images)
+    EXPECT_GT(fs::file_size(image), 1000U) << image;
 }
 
 TEST(PlyDamageMaps, AFolderWithoutDamageElementsHasNoMaps) {

@@ -341,8 +341,8 @@ std::pair<std::string, std::string> plot_command(const std::vector<PlotCurve>& c
     const std::string source =
         c.data.empty() ? quoted(fs::relative(c.csv, cwd).generic_string()) : fmt::format("${}{}", tag, i);
     const std::string colour = c.colour.empty() ? "" : fmt::format(" lc rgb {}", quoted(c.colour));
-    plot += fmt::format("{}{} using {} with {} lw 2{} title {}", i ? ", \\\n     " : "", source, c.using_expr,
-                        c.style, colour, quoted(c.title));
+    plot += fmt::format("{}{} using {} with {} lw {:g}{} title {}", i ? ", \\\n     " : "", source,
+                        c.using_expr, c.style, c.line_width, colour, quoted(c.title));
   }
   return {blocks, plot + "\n"};
 }

@@ -22,8 +22,9 @@ struct PlotCurve {
   std::string using_expr;
   std::string title;
   std::string data;            ///< inline CSV (a header line, then x,y rows); replaces csv if set
-  std::string style = "lines"; ///< gnuplot style: lines, steps, ...
+  std::string style = "lines"; ///< gnuplot style: lines, steps, ... (the width is line_width's)
   std::string colour;          ///< "#rrggbb", or empty for gnuplot's cycle
+  double line_width = 2.0;     ///< gnuplot's lw
 };
 
 /// One panel of a small-multiples picture: its own title and curves (at most ~10, each distinguishable).

@@ -126,7 +126,8 @@ std::vector<PlotCurve> rig_outline_curves(const RigOutline& rig) {
       window.data += fmt::format("{:.6f},{:.6f}\n", p.x() * 1e3, p.y() * 1e3);
     }
     window.using_expr = "1:2";
-    window.style = "lines dt 2 lw 1.5";
+    window.style = "lines dt 2";
+    window.line_width = 1.5;
     window.colour = "#000000";
     window.title = "window edge";
     curves.push_back(std::move(window));
@@ -137,7 +138,8 @@ std::vector<PlotCurve> rig_outline_curves(const RigOutline& rig) {
     for (const Eigen::Vector2d& p : rig.clamp_tips)
       tips.data += fmt::format("{:.6f},{:.6f}\n", p.x() * 1e3, p.y() * 1e3);
     tips.using_expr = "1:2";
-    tips.style = "points pt 6 ps 2.4 lw 1.5";
+    tips.style = "points pt 6 ps 2.4";
+    tips.line_width = 1.5;
     tips.colour = "#000000";
     tips.title = clamp_tip_note;
     curves.push_back(std::move(tips));
