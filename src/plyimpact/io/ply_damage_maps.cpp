@@ -190,6 +190,11 @@ PlotSpec map_spec(std::string name, std::string title, const std::vector<const D
   spec.key = "at screen 0.98, 0.02 right bottom"; // bottom right corner, clear of the axes and labels
   spec.extra = map_settings(elements, values, scale);
   spec.curves = map_curves(elements, values, marks);
+  // A key of several lines (a rig's window edge and clamp tips) grows up from that corner: room for it below
+  // the x axis's numbers and label, a character height a line.
+  const auto entries = std::count_if(spec.curves.begin(), spec.curves.end(),
+                                     [](const PlotCurve& c) { return !c.title.empty(); });
+  if (entries > 1) spec.extra += fmt::format("set bmargin {}\n", 4 + entries);
   return spec;
 }
 
