@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace plyimpact {
 
@@ -315,6 +316,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     ContactSolution cs;
     const NewmarkCoefficients* step_nc = &nc;
     const double t_accepted = t;
+    std::optional<std::string> failure; // the step's error, where the run keeps what it computed
     try {
       for (;;) {
         if (control) {
@@ -338,16 +340,15 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
                                                         plate->contact_deflection(a_next))))
           break;
       }
-    } catch (const NewtonFailure& e) { // the run ends at the last accepted step, what it computed kept
+    } catch (const NewtonFailure& e) {
       if (!s.keep_failed_run) throw;
-      r.failure = r.stop_reason = e.what();
-      --step;
-      t = t_accepted;
-      break;
-    } catch (
-        const BandLimitError& e) { // a ply mode starts where the mesh is too coarse for its law: the same
+      failure = e.what();
+    } catch (const BandLimitError& e) { // a ply mode starts where the mesh is too coarse for its law
       if (!s.keep_failed_run) throw;
-      r.failure = r.stop_reason = e.what();
+      failure = e.what();
+    }
+    if (failure) { // the run ends at the last accepted step, what it computed kept (keep_failed_run)
+      r.failure = r.stop_reason = *failure;
       --step;
       t = t_accepted;
       break;

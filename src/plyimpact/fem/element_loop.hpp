@@ -72,11 +72,12 @@ constexpr Eigen::Index elementwise_threshold = 16384;
 
 /// work(first, last) over the indices 0 … n − 1 for work that writes each index from that index alone (an
 /// elementwise vector update, no sum across indices): in for_each_block's fixed blocks on the calling
-/// thread's threads where n reaches elementwise_threshold, in one call below it or on one thread. Each
-/// entry is computed by the same operations either way: the same bits.
+/// thread's threads where n reaches `threshold`, in one call below it or on one thread. Each entry is
+/// computed by the same operations either way: the same bits.
 template <class Work>
-void elementwise_on_threads(Eigen::Index n, const Work& work) {
-  if (n < elementwise_threshold || omp_get_max_threads() == 1)
+void elementwise_on_threads(Eigen::Index n, const Work& work,
+                            Eigen::Index threshold = elementwise_threshold) {
+  if (n < threshold || omp_get_max_threads() == 1)
     work(Eigen::Index{0}, n);
   else
     for_each_block(n, work);

@@ -36,7 +36,7 @@ constexpr Eigen::Index gather_threshold = 4096;
 void EquationGather::assemble(const std::vector<ElementVector>& element_vectors, Eigen::VectorXd& f) const {
   const auto size = static_cast<Eigen::Index>(first_.size()) - 1;
   f.resize(size);
-  const auto gather = [&](Eigen::Index first, Eigen::Index last) {
+  const auto sum_equations = [&](Eigen::Index first, Eigen::Index last) {
     for (Eigen::Index eq = first; eq < last; ++eq) {
       double sum = 0.0;
       const auto end = static_cast<std::size_t>(first_[static_cast<std::size_t>(eq) + 1]);
@@ -47,10 +47,8 @@ void EquationGather::assemble(const std::vector<ElementVector>& element_vectors,
       f(eq) = sum;
     }
   };
-  if (size < gather_threshold || omp_get_max_threads() == 1)
-    gather(0, size);
-  else
-    for_each_block(size, gather);
+  // Each equation is written from its own entries alone: an elementwise update, in blocks on threads.
+  elementwise_on_threads(size, sum_equations, gather_threshold);
 }
 
 } // namespace plyimpact
