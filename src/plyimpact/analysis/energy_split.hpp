@@ -23,8 +23,8 @@ struct AbsorbedEnergySplit {
   double unaccounted = 0.0;     ///< ε of ES1: the absorbed energy less the four above [J]
 };
 
-/// ES1 of a run whose impactor has left the plate (absorbed_energy given) and whose last state was
-/// recorded; empty otherwise.
+/// ES1 of a run whose impactor has left the plate (absorbed_energy given) and whose plate was followed
+/// (final_plate_energy given: not the contact-point response); empty otherwise.
 [[nodiscard]] std::optional<AbsorbedEnergySplit> absorbed_energy_split(const ImpactResult& r);
 
 } // namespace plyimpact

@@ -422,6 +422,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     pd.active_elements = d->active_elements();
     r.progressive = std::move(pd);
   }
+  if (view.plate) r.final_plate_energy = view.plate_kinetic_energy() + view.plate_strain_energy();
   r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   for (ImpactObserver* o : observers)
     o->on_finish(view, r);

@@ -120,6 +120,9 @@ struct ImpactResult {
   std::optional<double> rebound_velocity;
   std::optional<double> absorbed_energy; ///< ½ m (v0² − v_end²) [J]; empty when rebound_velocity is
   double contact_dissipation = 0.0;      ///< ∮ Fc dα at the end [J]
+  /// The plate's kinetic plus strain energy at the last step [J], kept whatever the history (the absorbed
+  /// energy's split, energy_split.hpp); empty where the plate was followed at the contact point alone.
+  std::optional<double> final_plate_energy;
   /// The plate's first period, used by the end-of-event rule [s]; empty when it was not computed
   /// (time.end given, or a rigid target).
   std::optional<double> fundamental_period;
