@@ -187,6 +187,9 @@ TEST_F(DelaminationOutputs, EachInterfacePointStandsForACellAndTheCellsAddUpToTh
   EXPECT_EQ(maps[1].name, "delamination_map_after_ply06");
   EXPECT_EQ(maps[2].name, "delamination_map_projected");
   EXPECT_EQ(maps[3].name, "delamination_cscan");
+  // Its colour box is labelled "after ply 2" … beside the box, with the box's label right of them: the
+  // script reserves a right margin for both, which gnuplot's own (with `size ratio -1`) did not leave.
+  EXPECT_NE(maps[3].extra.find("set rmargin 21\n"), std::string::npos) << maps[3].extra.substr(0, 400);
   EXPECT_NE(maps[1].title.find(fmt::format("delaminated {:.3g} mm^2", delaminated[6] * 1e6)),
             std::string::npos)
       << maps[1].title;

@@ -75,6 +75,9 @@ struct MapScale {
   std::string label;
   std::string range = "[0:1]";
   std::string tics; ///< gnuplot's cbtics, or empty for its own
+  /// Characters right of the map for the colour box, its tics and its label; 0: gnuplot's own (which,
+  /// with `size ratio -1`, leaves no room for the label beside long tic labels).
+  int right_margin = 0;
 };
 MapScale ply_scale() {
   return {damage_palette, "damage variable d (white: 0, intact; 1: fully cracked)", "[0:1]", ""};
@@ -103,6 +106,7 @@ std::string map_settings(const std::vector<const DamageElementRow*>& elements,
                    y1 * 1e3);
   s += fmt::format("set cbrange {}\nset cblabel '{}' noenhanced\n", scale.range, scale.label);
   if (!scale.tics.empty()) s += fmt::format("set cbtics {}\n", scale.tics);
+  if (scale.right_margin > 0) s += fmt::format("set rmargin {}\n", scale.right_margin);
   s += scale.palette;
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const auto& c = elements[i]->corners;
@@ -248,10 +252,15 @@ MapScale cscan_scale(const std::vector<int>& after_ply) {
   MapScale scale;
   scale.palette = fmt::format("set palette maxcolors {}\nset palette defined (0 '#ffffff'", n + 1);
   scale.tics = "(\"none\" 0";
+  std::size_t longest = 4; // "none"
   for (int i = 1; i <= n; ++i) {
+    const std::string tic = fmt::format("after ply {}", after_ply[static_cast<std::size_t>(i - 1)]);
+    longest = std::max(longest, tic.size());
     scale.palette += fmt::format(", {} '{}'", i, cscan_colour(i));
-    scale.tics += fmt::format(", \"after ply {}\" {}", after_ply[static_cast<std::size_t>(i - 1)], i);
+    scale.tics += fmt::format(", \"{}\" {}", tic, i);
   }
+  // The box (about 4 characters), the longest tic label, the rotated label (2) and a gap on each side.
+  scale.right_margin = static_cast<int>(longest) + 10;
   scale.palette += ")\n";
   scale.tics += ")";
   scale.range = fmt::format("[-0.5:{}.5]", n);
