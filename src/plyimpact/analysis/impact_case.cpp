@@ -1,5 +1,7 @@
 #include "plyimpact/analysis/impact_case.hpp"
 
+#include "plyimpact/analysis/damage_zone.hpp"
+
 #include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/mesh_memory.hpp"
 #include "plyimpact/analysis/step_policy.hpp"
@@ -60,7 +62,13 @@ auto naming_singular_causes(const ImpactCaseDescription& d, const Work& work) ->
 
 /// The laws of the case's plate and its integrator.
 PlatePhysics plate_physics(const ImpactCaseDescription& d) {
-  return {d.nonlinear, d.progressive_damage, d.delamination, case_integrator(d)};
+  std::optional<DelaminationSettings> interfaces = d.delamination;
+  if (interfaces && !d.laminates.empty()) { // the cohesive zone is checked where delaminations grow (DZ3)
+    interfaces->zone_x = d.impactor.x;
+    interfaces->zone_y = d.impactor.y;
+    interfaces->zone_radius = damage_zone_radius(d.laminates.front());
+  }
+  return {d.nonlinear, d.progressive_damage, std::move(interfaces), case_integrator(d)};
 }
 
 /// The model that central differences move in `d` (the same for ω_max and the policy); null where the

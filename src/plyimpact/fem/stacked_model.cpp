@@ -124,12 +124,20 @@ ProcessZone StackedImpactPlate::process_zone() const {
   double E2 = INFINITY;
   for (const Material& m : model_.laminate().materials())
     E2 = std::min(E2, m.E2);
-  double largest = 0.0;
-  for (int e = 0; e < model_.mesh().element_count(); ++e) {
-    const ElementCoordinates X = model_.mesh().element_coordinates(e);
-    largest = std::max(
-        {largest, X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff()});
-  }
+  const Mesh& mesh = model_.mesh();
+  const Eigen::Vector2d zone(settings_.zone_x, settings_.zone_y);
+  const auto largest_side = [&](bool in_zone_only) {
+    double largest = 0.0;
+    for (int e = 0; e < mesh.element_count(); ++e) {
+      if (in_zone_only && (mesh.map(e, 0.0, 0.0) - zone).norm() > settings_.zone_radius) continue;
+      const ElementCoordinates X = mesh.element_coordinates(e);
+      largest = std::max(
+          {largest, X.col(0).maxCoeff() - X.col(0).minCoeff(), X.col(1).maxCoeff() - X.col(1).minCoeff()});
+    }
+    return largest;
+  };
+  double largest = settings_.zone_radius > 0.0 ? largest_side(true) : 0.0;
+  if (largest == 0.0) largest = largest_side(false);
   return {std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
                    cohesive_zone_length(E2, c.G_IIc, c.shear_strength)),
           settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0};

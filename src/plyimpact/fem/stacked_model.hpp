@@ -40,6 +40,10 @@ struct DelaminationSettings {
   /// The values of the law the deck left out, each with where it came from ("G_mt of the plies at the
   /// interfaces", ...), in the order G_Ic, G_IIc, bk_exponent, normal_strength, shear_strength.
   std::vector<std::pair<std::string, std::string>> law_defaults;
+  /// Where delaminations grow: the check of the cohesive zone against the interface points' spacing
+  /// (StackedImpactPlate::process_zone) measures the elements whose centre lies within zone_radius of
+  /// (zone_x, zone_y) [m]; 0: every element.
+  double zone_x = 0.0, zone_y = 0.0, zone_radius = 0.0;
   friend bool operator==(const DelaminationSettings&, const DelaminationSettings&) = default;
 };
 
@@ -65,8 +69,9 @@ public:
   /// the mixed-mode toughness.
   [[nodiscard]] std::vector<std::string> stack_warnings() const;
   /// The cohesive zone l = E2 G_c / τ² (Hillerborg, M = 1) of the shorter mode against the spacing of the
-  /// interface points (half the largest element side with the nodal rule): fewer than three points in it
-  /// and the onset and growth of a delamination depend on the mesh.
+  /// interface points (half the largest element side with the nodal rule, over the elements of the
+  /// settings' zone, or every element where none lies in it): fewer than three points in it and the onset
+  /// and growth of a delamination depend on the mesh.
   [[nodiscard]] ProcessZone process_zone() const;
   /// The top sub-laminate's displacements (stack numbering) in the case model's numbering.
   void top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;

@@ -196,6 +196,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
     d.delamination = read_delamination(*t, d, plies_given);
     if (d.damage.progressive && !plies_given) d.damage.progressive->integration = d.delamination->integration;
   }
+  size_rig_for_damage(d); // once the damage's laws are known
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
   if (const auto t = top.optional_table("run")) read_run(*t, d);

@@ -1,5 +1,6 @@
 #include "plyimpact/io/deck_tables.hpp"
 
+#include "plyimpact/analysis/damage_zone.hpp"
 #include "plyimpact/io/gmsh_mesh.hpp"
 
 #include <fmt/format.h>
@@ -190,6 +191,50 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
   }
   d.rig = spec;
   if (mesh && mesh->has("size_at_impact")) d.geo_meshing = spec.meshing; // the user's sizes, to check
+}
+
+namespace {
+
+/// The largest √(element area) of the elements whose centre lies within `radius` of `at` [m].
+double largest_side_within(const Mesh& mesh, const Eigen::Vector2d& at, double radius) {
+  double largest = 0.0;
+  for (int e = 0; e < mesh.element_count(); ++e)
+    if ((mesh.map(e, 0.0, 0.0) - at).norm() <= radius)
+      largest = std::max(largest, std::sqrt(mesh.element_area(e)));
+  return largest;
+}
+
+} // namespace
+
+void size_rig_for_damage(Deck& d) {
+  if (!d.rig || d.geo_meshing || d.analysis != AnalysisKind::impact || !d.laminate || !d.file_mesh) return;
+  const std::optional<DamageElementSize> need =
+      damage_element_size(*d.laminate, d.damage.progressive, d.delamination);
+  if (!need || need->size >= d.rig->meshing.size_at_point.value_or(INFINITY)) return;
+  RigSpec spec = *d.rig;
+  const Eigen::Vector2d at = spec.meshing.refine_at.value_or(d.file_mesh->bounds().centre());
+  spec.meshing.size_at_point = need->size;
+  spec.meshing.uniform_radius = damage_zone_radius(*d.laminate);
+  Rig rig = build_rig(spec, false);
+  // gmsh's quadrilaterals, paired from triangles of the field's size, come out somewhat larger than
+  // it: the field is scaled by what the zone's elements measure, at most three times.
+  const double inner = spec.meshing.uniform_radius - need->size;
+  for (int again = 0; again < 3; ++again) {
+    const double measured = largest_side_within(rig.mesh, at, inner);
+    if (measured <= need->size) break;
+    spec.meshing.size_at_point = *spec.meshing.size_at_point * need->size / measured;
+    rig = build_rig(spec, false);
+  }
+  const std::string before = fmt::format("; {} elements", d.file_mesh->element_count());
+  const std::string after = fmt::format(
+      "; {} elements, at most {:.3g} mm (the square root of their area) within {:.3g} mm of the impact point "
+      "for the damage: {}, less 10 % (docs/mesh.md, \"Meshes for damage\")",
+      rig.mesh.element_count(), largest_side_within(rig.mesh, at, inner) * 1e3,
+      spec.meshing.uniform_radius * 1e3, need->reason);
+  if (const std::size_t p = d.rig_description.find(before); p != std::string::npos)
+    d.rig_description.replace(p, before.size(), after);
+  d.file_mesh = std::make_shared<const Mesh>(std::move(rig.mesh));
+  d.rig = spec;
 }
 
 std::shared_ptr<const Mesh> read_mesh_file(const TableReader& t, std::string& written,

@@ -36,6 +36,11 @@ inline constexpr long max_step_cap = 100'000'000;
 /// The preset's mesh is graded toward `refine_at` (the impact or load point), else the rig's centre.
 void read_rig(const TableReader& top, const TableReader& t, const std::optional<TableReader>& mesh,
               const std::optional<Eigen::Vector2d>& refine_at, Deck& d);
+/// A rig whose [mesh] gives no sizes, struck with progressive ply damage or [delamination]: meshed again
+/// with the elements that the damage needs within its zone about the impact point (analysis/
+/// damage_zone.hpp, DZ1–DZ3), graded beyond; the rig's description says so. Unchanged where the rig's own
+/// elements are small enough.
+void size_rig_for_damage(Deck& d);
 /// [mesh] file: the gmsh mesh it names (relative to the deck's folder), read and checked; nullptr without
 /// the key. mesh.geo: the gmsh geometry it names, meshed by gmsh, graded toward `refine_at` (the impact or
 /// load point, when the deck gives one), with the sizes it was meshed with in `meshing`.

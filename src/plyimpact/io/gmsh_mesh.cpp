@@ -279,15 +279,17 @@ void generate_quad9(const std::string& name, const GeometryMeshing& how,
     const Eigen::Vector2d at =
         how.refine_at ? *how.refine_at : Eigen::Vector2d((box[0] + box[3]) / 2.0, (box[1] + box[4]) / 2.0);
     require_reasonable_field(name, how, at, box);
-    // h(d) = min(max_size, size_at_point + (growth − 1) d), as gmsh's MathEval of the distance.
+    // h(d) = min(max_size, size_at_point + (growth − 1) ⟨d − uniform_radius⟩), as gmsh's MathEval of the
+    // distance.
     const int field = gmsh.add_field("MathEval");
     // x − a written as x + |a| for a < 0: gmsh's MathEval cannot parse "x - -0.02" (it threw from inside
     // gmsh's threads, which aborted the program: the circular rig struck at negative x or y).
     const auto minus = [](const char* var, double a) {
       return fmt::format("{} {} {:.17g}", var, a < 0.0 ? '+' : '-', std::abs(a));
     };
-    std::string h = fmt::format("{:.17g} + {:.17g} * Sqrt(({})^2 + ({})^2)", scale * *how.size_at_point,
-                                how.growth - 1.0, minus("x", at.x()), minus("y", at.y()));
+    std::string d = fmt::format("Sqrt(({})^2 + ({})^2)", minus("x", at.x()), minus("y", at.y()));
+    if (how.uniform_radius > 0.0) d = fmt::format("Max(0, {} - {:.17g})", d, how.uniform_radius);
+    std::string h = fmt::format("{:.17g} + {:.17g} * {}", scale * *how.size_at_point, how.growth - 1.0, d);
     if (how.max_size) h = fmt::format("Min({:.17g}, {})", scale * *how.max_size, h);
     gmsh.set_field_string(field, "F", h);
     gmsh.set_background_field(field);
@@ -494,7 +496,7 @@ double estimated_element_count(const BoundingBox& box, const Eigen::Vector2d& at
 }
 
 double graded_size(const GeometryMeshing& how, double d) {
-  const double h = how.size_at_point.value_or(0.0) + (how.growth - 1.0) * d;
+  const double h = how.size_at_point.value_or(0.0) + (how.growth - 1.0) * std::max(0.0, d - how.uniform_radius);
   return how.max_size ? std::min(*how.max_size, h) : h;
 }
 

@@ -46,10 +46,13 @@ struct GeometryMeshing {
   std::optional<double> size_at_point;      ///< element size at `refine_at` [m]
   std::optional<double> max_size;           ///< largest element size [m]; empty: no cap
   double growth = 1.25;                     ///< size ratio of neighbouring elements (≥ 1)
+  /// The size stays size_at_point within this distance of `refine_at` and grows from there [m] (the
+  /// damage zone of a progressive or stacked run: docs/mesh.md, "Meshes for damage"); 0: grows from it.
+  double uniform_radius = 0.0;
 };
 
-/// The element size at distance d from the refinement point: min(max_size, size_at_point + (growth − 1) d),
-/// the continuous form of sizes that grow by `growth` from one element to the next.
+/// The element size at distance d from the refinement point: min(max_size, size_at_point + (growth − 1)
+/// ⟨d − uniform_radius⟩), the continuous form of sizes that grow by `growth` from one element to the next.
 [[nodiscard]] double graded_size(const GeometryMeshing& how, double d);
 
 /// About how many quadrilaterals the size field of `how` (graded from `at`) makes on `box`: the integral of
