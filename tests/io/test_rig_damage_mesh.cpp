@@ -73,13 +73,14 @@ TEST(RigDamageMesh, TheZoneUnderTheImpactorMeetsTheBandLimitOfThePlies) {
               damaged.file_mesh->element_count(), plain.file_mesh->element_count(), (zone - size) * 1e3,
               largest * 1e3, size * 1e3, largest_side_within(*plain.file_mesh, zone - size) * 1e3);
   EXPECT_LE(largest, size);
-  EXPECT_GT(largest, 0.7 * size); // not finer than it needs
+  EXPECT_GT(largest, 0.7 * size);                                            // not finer than it needs
   EXPECT_GT(largest_side_within(*plain.file_mesh, zone - size), band_limit); // what it replaces
   EXPECT_NE(damaged.rig_description.find("for the damage: the band limit of matrix-compression of T700_M21"),
             std::string::npos)
       << damaged.rig_description;
-  EXPECT_NE(damaged.rig_description.find(fmt::format("; {} elements, at most", damaged.file_mesh->element_count())),
-            std::string::npos)
+  EXPECT_NE(
+      damaged.rig_description.find(fmt::format("; {} elements, at most", damaged.file_mesh->element_count())),
+      std::string::npos)
       << damaged.rig_description;
   // Away from the zone the rig's grading takes over: its largest elements are the rig's 5 mm cap.
   EXPECT_GT(largest_side_within(*damaged.file_mesh, 1.0), 4e-3);
@@ -98,7 +99,8 @@ TEST(RigDamageMesh, DelaminationAloneMeshesForThreePointsInTheCohesiveZone) {
   const Deck d = coupon("[delamination]\nintegration = \"explicit\"\n");
   const double size = 0.9 * 2.0 / 3.0 * 7.7e9 * 600.0 / (50e6 * 50e6);
   EXPECT_LE(largest_side_within(*d.file_mesh, 5e-3 - size), size);
-  EXPECT_NE(d.rig_description.find("three interface points in the cohesive zone (1.85 mm)"), std::string::npos)
+  EXPECT_NE(d.rig_description.find("three interface points in the cohesive zone (1.85 mm)"),
+            std::string::npos)
       << d.rig_description;
 }
 

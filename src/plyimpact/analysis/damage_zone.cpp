@@ -21,8 +21,8 @@ DamageElementSize ply_band_limit(const Laminate& laminate, const ProgressiveDama
                                   DamageMode::matrix_tension, DamageMode::matrix_compression}) {
       const double limit = law.max_characteristic_length(mode);
       if (limit < best.size)
-        best = {limit, fmt::format("the band limit of {} of {} ({:.3g} mm)", to_string(mode), m.name,
-                                   limit * 1e3)};
+        best = {limit,
+                fmt::format("the band limit of {} of {} ({:.3g} mm)", to_string(mode), m.name, limit * 1e3)};
     }
   }
   return best;

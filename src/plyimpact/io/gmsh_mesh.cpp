@@ -496,7 +496,8 @@ double estimated_element_count(const BoundingBox& box, const Eigen::Vector2d& at
 }
 
 double graded_size(const GeometryMeshing& how, double d) {
-  const double h = how.size_at_point.value_or(0.0) + (how.growth - 1.0) * std::max(0.0, d - how.uniform_radius);
+  const double h =
+      how.size_at_point.value_or(0.0) + (how.growth - 1.0) * std::max(0.0, d - how.uniform_radius);
   return how.max_size ? std::min(*how.max_size, h) : h;
 }
 
