@@ -10,6 +10,7 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/history_csv.hpp"
 #include "plyimpact/io/impact_run.hpp"
+#include "plyimpact/io/json_text.hpp"
 #include "plyimpact/io/laminate_report.hpp"
 #include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/output_folder.hpp"
@@ -88,7 +89,7 @@ ImpactRunOutput run_impact(const Deck& deck, const std::optional<std::filesystem
   options.threads = threads;
   plyimpact::ImpactRunOutcome run = plyimpact::run_impact(deck, impact, options);
   ImpactRunOutput out;
-  out.summary_json = run.summary.dump();
+  out.summary_json = plyimpact::json_text(run.summary);
   out.notes = std::move(run.notes);
   out.samples = std::move(history.samples());
   out.layout = std::move(run.history_layout);
@@ -144,7 +145,7 @@ std::string run_threshold(const Deck& deck, const std::string& criterion_name, d
   const plyimpact::ThresholdOptions options = plyimpact::threshold_options(deck, tolerance);
   const plyimpact::ImpactCase impact(description);
   const plyimpact::ThresholdResult r = plyimpact::search_threshold(impact, criterion, options, cancel);
-  return plyimpact::threshold_summary_json(deck, criterion, options, r).dump();
+  return plyimpact::json_text(plyimpact::threshold_summary_json(deck, criterion, options, r));
 }
 
 /// `plyimpact static|modal|buckling DECK [-o DIR]`: (what the command prints, summary.json text).
@@ -169,7 +170,7 @@ std::pair<std::string, std::string> run_plate_analysis(const Deck& deck, const s
       *analysis == plyimpact::AnalysisKind::static_ ? plyimpact::run_static_analysis(deck, nonlinear, folder)
       : *analysis == plyimpact::AnalysisKind::modal ? plyimpact::run_modal_analysis(deck, folder)
                                                     : plyimpact::run_buckling_analysis(deck, folder);
-  return {out.text, out.summary.dump()};
+  return {out.text, plyimpact::json_text(out.summary)};
 }
 
 struct SweepOutput {
@@ -235,7 +236,7 @@ public:
     const plyimpact::ImpactRunOutcome out = plyimpact::run_impact(deck, *case_, options);
     nlohmann::json summary = out.summary;
     summary["plate_response"] = plyimpact::plate_response_name(out.result);
-    return summary.dump();
+    return plyimpact::json_text(summary);
   }
 
 private:

@@ -6,6 +6,7 @@
 //   plyimpact static   examples/static-annex2-loads.toml -o results/static
 //   plyimpact modal    examples/modal-annex2.toml -o results/modal
 //   plyimpact buckling examples/buckling-annex2.toml -o results/buckling
+#include "interruption.hpp"
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
@@ -13,6 +14,7 @@
 #include "plyimpact/io/damage_report.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/environment.hpp"
+#include "plyimpact/io/history_check.hpp"
 #include "plyimpact/io/impact_progress.hpp"
 #include "plyimpact/io/impact_report.hpp"
 #include "plyimpact/io/impact_run.hpp"
@@ -145,23 +147,14 @@ int run_buckling(const Options& o) {
   return finish(run_buckling_analysis(deck, results_folder(lock, deck)));
 }
 
-std::atomic<bool> interrupted{false};
-
-extern "C" void on_signal(int /*signal*/) {
-  interrupted.store(true);
-}
-
 int run_impact(const Options& o) {
-  // First thing: an interrupt during set-up still ends in consistent, incomplete results.
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
   const Deck deck = read_deck_for(o, AnalysisKind::impact);
   // The case first: it refuses a mesh beyond the memory available before a folder is claimed.
   const ImpactCase impact(impact_case_description(deck, o.nonlinear));
   const OutputLock lock = claim_folder(o, deck);
   ImpactRunOptions options;
   options.output_dir = lock.dir();
-  options.cancel = &interrupted;
+  options.cancel = &cli::interrupted();
   options.threads = o.threads;
   ImpactProgress progress(impact.settings(), impact.fundamental_period(), progress_style(o.progress, stderr),
                           o.progress.line_interval_s);
@@ -186,21 +179,29 @@ int run_impact(const Options& o) {
   if (run.damage_tracked)
     fmt::print("first failures (per criterion, mode and ply/interface):\n{}",
                first_failures_text(run.first_failures));
-  if (interrupted.load()) return 130;
+  if (cli::interrupted().load()) return cli::exit_interrupted;
   return r.stop_reason.empty() ? 0 : 3; // 3: stopped early; a run cut short by time.end only warns
 }
 
 /// `plyimpact plot DIR... [-o OUT]`: PNG and SVG pictures of one run, or overlays of several.
 int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir) {
-  std::vector<PlotRun> runs;
-  for (const std::string& d : dirs) {
-    if (!std::filesystem::exists(std::filesystem::path(d) / "history.csv"))
-      throw std::runtime_error(fmt::format(
-          "{0}: not an impact results folder (no history.csv; run plyimpact impact DECK -o {0})", d));
-    runs.push_back({d, run_label(d)});
-  }
   const std::filesystem::path out =
       !output_dir.empty() ? std::filesystem::path(output_dir) : std::filesystem::path(dirs.front()) / "plots";
+  std::vector<PlotRun> runs;
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    const std::filesystem::path history = std::filesystem::path(dirs[i]) / "history.csv";
+    if (!std::filesystem::exists(history))
+      throw HistoryFileError(fmt::format(
+          "{0}: not an impact results folder (no history.csv; run plyimpact impact DECK -o {0})", dirs[i]));
+    // a regular file of well-formed rows, thinned where gnuplot would take minutes (io/history_check.hpp)
+    const CheckedHistory checked =
+        check_history_for_plot(history, out / fmt::format("history-{}.thinned.csv", i + 1));
+    if (checked.plotted < checked.rows)
+      fmt::print(stderr,
+                 "plyimpact: note: {}: {} rows, drawn from {} of them (every peak of the force kept)\n",
+                 history.string(), checked.rows, checked.plotted);
+    runs.push_back({dirs[i], run_label(dirs[i]), checked.file});
+  }
   const PlotFiles files = draw_plots(impact_plots(runs), out);
   for (const auto& f : files.images)
     fmt::print("{}\n", f.string());
@@ -233,7 +234,7 @@ int run_threshold(const Options& o) {
     j["wall_time"] = wall;
     out->write_json("summary.json", j);
   }
-  return r.found ? 0 : 4;
+  return 0; // no failure up to the limit is a result (threshold_velocity null), not an error
 }
 
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
@@ -351,6 +352,7 @@ int run(int argc, char** argv) {
     return 2;
   }
   try {
+    if (const auto note = check_openmp_threads()) fmt::print(stderr, "plyimpact: note: {}\n", *note);
     if (*laminate) return run_laminate(o);
     if (*impact) return run_impact(o);
     if (*threshold) return run_threshold(o);
@@ -358,12 +360,11 @@ int run(int argc, char** argv) {
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);
     if (*plot) return run_plot(plot_dirs, o.output_dir);
-    if (*sweep) {
-      std::signal(SIGINT, on_signal);
-      std::signal(SIGTERM, on_signal);
-      return run_sweep_command(sweep_options, interrupted);
-    }
+    if (*sweep) return run_sweep_command(sweep_options, cli::interrupted());
   } catch (const DeckError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return 2;
+  } catch (const HistoryFileError& e) { // a results folder given to plot is input, like a deck
     fmt::print(stderr, "{}\n", e.what());
     return 2;
   } catch (const EnvironmentValueError& e) { // a bad setting of the user's, like a bad option
@@ -398,8 +399,11 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   std::set_terminate(on_terminate);
+  cli::handle_interruptions(); // first: an interrupt during set-up ends as one during the run (exit 130)
   try {
-    return run(argc, argv);
+    const int code = run(argc, argv);
+    // whatever a step, gmsh or gnuplot made of the signal (an error, a cut-short run), it is an interrupt
+    return cli::interrupted().load() ? cli::exit_interrupted : code;
   } catch (...) { // nothing in plyimpact throws a type not derived from std::exception (Exceptions.*)
     std::fputs("plyimpact: internal error: an exception that is not a std::exception\n", stderr);
     std::fputs(report_internal_error, stderr);

@@ -1,6 +1,7 @@
 #include "sweep_command.hpp"
 
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/environment.hpp"
 #include "plyimpact/io/output_folder.hpp"
 #include "plyimpact/io/sweep_runner.hpp"
 
@@ -337,11 +338,23 @@ CLI::App* add_sweep_command(CLI::App& app, SweepCommandOptions& o) {
   return sub;
 }
 
+/// Seconds between progress lines: a finite number from 0 to a day (NaN, inf and negatives refused; CLI11's
+/// NonNegativeNumber let "nan" through, issue 77).
+CLI::Validator progress_interval() {
+  return {[](const std::string& text) -> std::string {
+            if (text == "0") return "";
+            const std::optional<double> value = positive_number(text);
+            if (value && *value <= 86400.0) return "";
+            return "must be a number of seconds from 0 to 86400, got " + text;
+          },
+          "SECONDS"};
+}
+
 void add_progress_options(CLI::App& sub, ProgressSettings& progress) {
   sub.add_flag("-q,--quiet", progress.quiet, "no progress display on stderr");
   sub.add_option("--progress-every", progress.line_interval_s,
                  "seconds between progress lines when stderr is not a terminal (default 10)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(progress_interval());
 }
 
 int run_sweep_command(const SweepCommandOptions& o, const std::atomic<bool>& interrupted) {

@@ -13,6 +13,7 @@
 #include "support/impact_decks.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -305,6 +306,29 @@ TEST(MassScaling, ImplicitStepsRefuseIt) {
   d.time.integration = TimeIntegration::newmark;
   d.time.mass_scaling.kind = MassScalingKind::rotary;
   EXPECT_THROW({ const ImpactCase c(d); }, std::invalid_argument);
+}
+
+// Issue 77: nodal scaling with target_dt = 1e-6 s added 19.7 kg to a 0.2 g plate and quadrupled the peak
+// force, silently. Above 5 % of the plate's mass the run is suspect, with the added mass, the plate's and
+// the fall of the frequency of a mode that moves the mass together, sqrt(m / (m + dm)).
+TEST(MassScaling, AddedMassAboveFivePercentOfThePlateMakesTheRunSuspect) {
+  MassScalingReport r;
+  r.kind = MassScalingKind::nodal;
+  r.mass_kg = {2e-4};
+  r.added_mass_kg = {19.7};
+  const auto why = added_mass_suspicion(r);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("added 19.7 kg to a plate of 0.0002 kg"), std::string::npos) << *why;
+  EXPECT_NE(why->find(fmt::format("{:.3g}", std::sqrt(2e-4 / (2e-4 + 19.7)))), std::string::npos) << *why;
+  r.added_mass_kg = {0.049 * 2e-4}; // 4.9 %: within the bound
+  EXPECT_FALSE(added_mass_suspicion(r).has_value());
+  r.added_mass_kg = {0.051 * 2e-4};
+  EXPECT_TRUE(added_mass_suspicion(r).has_value());
+  r.mass_kg = {1e-4, 1e-4}; // a stack: the plate's mass is the sum of its sub-laminates'
+  r.added_mass_kg = {0.0, 0.09 * 2e-4};
+  EXPECT_TRUE(added_mass_suspicion(r).has_value());
+  r.added_mass_kg = {0.0, 0.0}; // rotary scaling adds no translational mass
+  EXPECT_FALSE(added_mass_suspicion(r).has_value());
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -77,9 +78,9 @@ radius = 12.7e-3
 E = 207e9
 velocity = 2.92
 )");
-  // 1 µm elements at the impact point growing by 1 %: thousands of element lines each way, hundreds of
-  // gigabytes; building the mesh alone would take minutes and tens of gigabytes.
-  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-6\ngrowth = 1.01");
+  // 10 µm elements at the impact point (the smallest a deck may ask for) growing by 1 %: more than a
+  // thousand element lines each way, hundreds of gigabytes; building the mesh alone would take minutes.
+  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-5\ngrowth = 1.01");
   ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
   d.memory_limit_bytes = 16e9;
   const auto [nx, ny] = graded_mesh_size(d);
@@ -94,6 +95,41 @@ velocity = 2.92
         << e.what();
     EXPECT_NE(std::string(e.what()).find("give a larger mesh.size_at_impact"), std::string::npos);
   }
+}
+
+// Issue 77: a graded mesh whose max_size is below the size at the impact point chosen from the contact
+// radius ignored it (0.5 mm asked, 1 to 2.5 mm given): max_size caps every element, that one too.
+TEST(MemoryEstimate, AGradedMeshHonoursMaxSizeBelowTheAutomaticSizeAtTheImpact) {
+  std::string text = test::small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+)");
+  text.replace(text.find("nx = 6\nny = 4"), 13, "max_size = 0.5e-3");
+  const ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  ASSERT_TRUE(d.mesh.grading);
+  const Mesh mesh = impact_mesh(d);
+  // every element is at most max_size on a side, but those of the last row and column at the plate's
+  // edges, which take the remainder of the side: up to 2.5 max_size (fem/structured_mesh.cpp, graded_lines:
+  // the last line is moved onto the edge, so the last element is the last step and the remainder)
+  const BoundingBox box = mesh.bounds();
+  double inner = 0.0, edge = 0.0;
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const Eigen::Vector2d c = mesh.map(e, 0.0, 0.0);
+    const bool at_edge =
+        std::min({c.x() - box.x_min, box.x_max - c.x(), c.y() - box.y_min, box.y_max - c.y()}) < 0.7e-3;
+    double& largest = at_edge ? edge : inner;
+    for (int k = 0; k < 2; ++k) { // the element's sides along x and y
+      const Eigen::Vector2d side =
+          mesh.map(e, k == 0 ? 1.0 : -1.0, k == 0 ? -1.0 : 1.0) - mesh.map(e, -1.0, -1.0);
+      largest = std::max(largest, side.norm());
+    }
+  }
+  EXPECT_LE(inner, 0.5e-3 * (1.0 + 1e-9));
+  EXPECT_GT(inner, 0.4e-3); // the plate is not meshed finer than asked either
+  EXPECT_LE(edge, 1.25e-3 * (1.0 + 1e-9));
 }
 
 } // namespace

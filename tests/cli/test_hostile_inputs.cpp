@@ -28,7 +28,8 @@ namespace plyimpact::test::hostile_inputs_tests {
 namespace {
 
 /// A file the case writes into its folder before the run: a name and its text; "{dir}" in the text
-/// stands for the case's folder. A text of "<fifo>" makes a named pipe, "<dir>" a folder.
+/// stands for the case's folder. A text of "<fifo>" makes a named pipe, "<dir>" a folder, "<link>TARGET" a
+/// symbolic link to TARGET.
 struct CaseFile {
   std::string name;
   std::string text;
@@ -263,7 +264,7 @@ std::vector<HostileCase> geo_cases() {
              2, "Mesh.Algorithm"),
       script("geo_negative_length", rectangle_geo("", "", -0.01), 2, "gmsh", own_sizes),
       script("geo_tiny_length", rectangle_geo("", "", 1e-7), 2, "the time limit", own_sizes),
-      script("geo_tiny_size_field", rectangle_geo(), 0, "mesh.size_at_impact = 1e-6",
+      script("geo_tiny_size_field", rectangle_geo(), 2, "mesh.size_at_impact = 1e-06 m is below",
              mesh_deck("geo = \"plate.geo\"\nsize_at_impact = 1e-6")),
       script("geo_endless_loop", rectangle_geo("For i In {1:1e12}\nEndFor\n"), 2, "time limit"),
       script("geo_syntax_error", "Point(1) = {0, 0\n", 2, "gmsh"),
@@ -371,6 +372,280 @@ std::vector<HostileCase> geo_cases() {
   }
   for (auto& k : c)
     k.env = "PLYIMPACT_GMSH_TIME_LIMIT_S=10";
+  return c;
+}
+
+/// A script that tries to reach outside drawing a geometry (issue 77): its text before and after the
+/// rectangle, the files beside it, what the check says of it, and what the sandbox alone makes of it.
+struct Attack {
+  std::string name;
+  std::string before;
+  std::string after;
+  std::vector<CaseFile> files; ///< beside plate.geo (included scripts, links, FIFOs)
+  std::string check_says;      ///< the check's message (the lexer on)
+  int sandbox_exit = 2;        ///< the exit with the check off (PLYIMPACT_TEST_ONLY_SKIP_GEO_CHECK=1)
+  std::string sandbox_says;    ///< and what the run says then
+};
+
+/// What the run says when the kernel stopped a program (SIGSYS) and when gmsh ended itself.
+constexpr const char* sandbox_stopped = "the sandbox stopped it";
+constexpr const char* ended_itself = "ended the process itself";
+
+/// At least thirty ways to run a command, end gmsh, write or read a file: quoting and escaping tricks,
+/// macros, conditions, loops, includes, computed names, options. Each runs twice: with the check (its
+/// message), and with the check switched off, where the sandbox alone must stop it — no file made, no
+/// command run.
+std::vector<Attack> attacks() {
+  const std::string touch = "touch {dir}/pwned";
+  const std::string long_string = std::string(1023, 'x');
+  std::vector<Attack> a = {
+      {"system", "System \"" + touch + "\";\n", "", {}, "System runs a shell command", 2, sandbox_stopped},
+      {"system_single_quotes", "System '" + touch + "';\n", "", {}, "System runs", 2, sandbox_stopped},
+      {"systemcall_single_quotes",
+       "SystemCall '" + touch + "';\n",
+       "",
+       {},
+       "SystemCall runs",
+       2,
+       sandbox_stopped},
+      {"nonblocking_single_quotes",
+       "NonBlockingSystemCall '" + touch + "';\n",
+       "",
+       {},
+       "NonBlockingSystemCall runs",
+       2,
+       sandbox_stopped},
+      {"system_quote_in_single_quotes",
+       "s = '\"'; System \"" + touch + "\"; t = '\"';\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_backslash_before_quote",
+       "s = \"a\\\"; System \"" + touch + "\"; t = \"b\";\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_strcat",
+       "System StrCat(\"tou\", \"ch {dir}/pwned\");\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_sprintf",
+       "System Sprintf(\"touch %s\", \"{dir}/pwned\");\n",
+       "",
+       {},
+       "System runs",
+       2,
+       "gmsh could not read or mesh it"},
+      {"system_in_macro",
+       "Macro M\nSystem '" + touch + "';\nReturn\n",
+       "Call M;\n",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_in_function_called_by_string",
+       "Function F\nSystem \"" + touch + "\";\nReturn\n",
+       "Call 'F';\n",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_in_if",
+       "If (1)\nSystem \"" + touch + "\";\nEndIf\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_in_else",
+       "If (0)\nx = 1;\nElse\nSystem \"" + touch + "\";\nEndIf\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_in_loop",
+       "For i In {1:2}\nSystem '" + touch + "';\nEndFor\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_after_long_string",
+       "s = \"" + long_string + ";System \"" + touch + "\";//\";\n",
+       "",
+       {},
+       "gmsh reads at most 1023",
+       2,
+       "gmsh could not read or mesh it"},
+      {"system_after_nul",
+       std::string("s = \"a") + '\0' + "\"; System \"" + touch + "\"; t = \"\";\n",
+       "",
+       {},
+       "NUL byte",
+       2,
+       "gmsh could not read or mesh it"},
+      {"system_glued_to_number", "x = 1;\n2e0System \"" + touch + "\";\n", "", {}, "System runs", 2, "gmsh"},
+      {"system_in_comment_trick",
+       "/* \" */ System \"" + touch + "\"; /* \" */\n",
+       "",
+       {},
+       "System runs",
+       2,
+       sandbox_stopped},
+      {"system_in_included_script",
+       "Include \"inc.geo\";\n",
+       "",
+       {{"inc.geo", "System \"" + touch + "\";\n"}},
+       "whose line 1 holds System",
+       2,
+       sandbox_stopped},
+      {"system_in_nested_include",
+       "Include 'a.geo';\n",
+       "",
+       {{"a.geo", "Include \"b.geo\";\n"}, {"b.geo", "x = 1;\nSystemCall \"" + touch + "\";\n"}},
+       "whose line 1 holds Include",
+       2,
+       sandbox_stopped},
+      {"onelab_run",
+       "OnelabRun(\"x\", \"" + touch + "\");\n",
+       "",
+       {},
+       "OnelabRun runs a program",
+       2,
+       "Couldn't create socket"},
+      {"onelab_run_single_quotes",
+       "OnelabRun('" + touch + "');\n",
+       "",
+       {},
+       "OnelabRun runs",
+       2,
+       "Couldn't create socket"},
+      {"solver_executable",
+       "Solver.Executable0 = \"/bin/sh\";\nOnelabRun(\"x\");\n",
+       "",
+       {},
+       "Executable0 sets an option",
+       2,
+       "Couldn't create socket"},
+      {"exit", "Exit;\n", "", {}, "Exit ends gmsh", 2, ended_itself},
+      {"exit_with_code", "Exit 3;\n", "", {}, "Exit ends gmsh", 2, "gmsh could not read or mesh it"},
+      {"exit_in_if", "If (1)\nExit;\nEndIf\n", "", {}, "Exit ends gmsh", 2, ended_itself},
+      {"exit_in_included_script",
+       "Include \"inc.geo\";\n",
+       "",
+       {{"inc.geo", "Exit;\n"}},
+       "whose line 1 holds Exit",
+       2,
+       ended_itself},
+      {"save", "", "Save \"{dir}/pwned.msh\";\n", {}, "Save writes a file", 2, "Unable to open file"},
+      {"save_single_quotes_in_macro",
+       "Macro W\nSave '{dir}/pwned.msh';\nReturn\n",
+       "Call W;\n",
+       {},
+       "Save writes",
+       2,
+       "Unable to open file"},
+      {"print",
+       "",
+       "Print \"{dir}/pwned.svg\";\n",
+       {},
+       "Print writes a file",
+       2,
+       "gmsh could not read or mesh it"},
+      {"printf_to_file_single_quotes",
+       "Printf('x') > '{dir}/pwned';\n",
+       "",
+       {},
+       "Printf writes",
+       2,
+       "Unable to open file"},
+      {"printf_append",
+       "Printf(\"x\") >> \"{dir}/pwned\";\n",
+       "",
+       {},
+       "Printf writes",
+       2,
+       "Unable to open file"},
+      {"printf_to_computed_file",
+       "Printf(\"x\") > Sprintf(\"%s/pwned\", \"{dir}\");\n",
+       "",
+       {},
+       "Printf writes",
+       2,
+       "gmsh could not read or mesh it"},
+      {"create_dir", "CreateDir '{dir}/pwned';\n", "", {}, "CreateDir creates a folder", 0, "mesh:"},
+      {"options_file",
+       "General.OptionsFileName = \"{dir}/pwned\";\nGeneral.SaveOptions = 1;\n",
+       "",
+       {},
+       "OptionsFileName sets an option",
+       0,
+       "mesh:"},
+      {"include_passwd_single_quotes",
+       "Include '/etc/passwd';\n",
+       "",
+       {},
+       "outside the script's folder",
+       2,
+       "gmsh"},
+      {"include_link_out_of_folder",
+       "Include \"link.geo\";\n",
+       "",
+       {{"link.geo", "<link>/etc/passwd"}},
+       "outside the script's folder",
+       2,
+       "gmsh"},
+      {"include_fifo",
+       "Include \"pipe.geo\";\n",
+       "",
+       {{"pipe.geo", "<fifo>"}},
+       "not a regular file",
+       2,
+       "the time limit"},
+      {"merge_hostname_single_quotes",
+       "",
+       "Merge '/etc/hostname';\n",
+       {},
+       "outside the script's folder",
+       2,
+       "Unable to open file '/etc/hostname'"},
+      {"shape_from_file",
+       "SetFactory(\"OpenCASCADE\");\nv() = ShapeFromFile(\"/etc/passwd\");\n",
+       "",
+       {},
+       "ShapeFromFile reads",
+       2,
+       "gmsh"},
+      {"list_from_file",
+       "x() = ListFromFile(\"/etc/passwd\");\n",
+       "",
+       {},
+       "ListFromFile reads",
+       2,
+       "Could not open file '/etc/passwd'"},
+  };
+  return a;
+}
+
+/// Each attack with the check on (its message, exit 2) and with the check off (the sandbox alone).
+std::vector<HostileCase> sandbox_cases() {
+  const std::string deck = mesh_deck("geo = \"plate.geo\"\nsize_at_impact = 0.01\nmax_size = 0.02");
+  std::vector<HostileCase> c;
+  for (const Attack& k : attacks()) {
+    std::vector<CaseFile> files = {{"deck.toml", deck}, {"plate.geo", rectangle_geo(k.before, k.after)}};
+    files.insert(files.end(), k.files.begin(), k.files.end());
+    c.push_back({"check_" + k.name, impact(), files, 2, k.check_says, "PLYIMPACT_GMSH_TIME_LIMIT_S=10"});
+    c.push_back({"sandbox_" + k.name, impact(), files, k.sandbox_exit, k.sandbox_says,
+                 "PLYIMPACT_GMSH_TIME_LIMIT_S=10 PLYIMPACT_TEST_ONLY_SKIP_GEO_CHECK=1"});
+  }
   return c;
 }
 
@@ -497,10 +772,17 @@ std::vector<HostileCase> rig_cases() {
       "diameter");
   rig("rig_circular_1km", rig_deck("preset = \"circular\"\ndiameter = 1000.0", NAN, NAN), 1, "rig.diameter");
   rig("rig_circular_1um", rig_deck("preset = \"circular\"\ndiameter = 1e-6", NAN, NAN), 0, "rig.diameter");
-  rig("rig_tiny_elements", rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 1e-6\n"), 0,
-      "mesh.size_at_impact");
-  rig("rig_endless_elements", rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 1e-6\ngrowth = 1.0\n"), 2,
-      "give a larger mesh.size_at_impact");
+  // 1 um elements ran (17 s for 4 steps), 0.1 um ones factored for ever: below 10 um they are refused (issue
+  // 77)
+  rig("rig_tiny_elements", rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 1e-6\n"), 2,
+      "mesh.size_at_impact = 1e-06 m is below");
+  rig("rig_smallest_elements", rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 1e-5\n"), 0,
+      "rig: ASTM D7136");
+  rig("rig_endless_elements", rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 1e-5\ngrowth = 1.0\n"), 2,
+      "before meshing");
+  // meshed for 341 s before its assembly was refused for 126 GB: now refused before gmsh starts (issue 77)
+  rig("rig_uniform_fine_mesh_beyond_memory",
+      rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 2e-4\ngrowth = 1.0\n"), 2, "before meshing");
   rig("rig_huge_elements", rig_deck(astm, NAN, NAN, "[mesh]\nsize_at_impact = 10.0\n"), 0,
       "mesh.size_at_impact");
   rig("rig_and_plate", rig_deck(astm, NAN, NAN, "[plate]\na = 0.15\nb = 0.1\n"), 2, "[plate]");
@@ -636,6 +918,12 @@ shear_strength = 98.2e6
     return set_key(base, "delamination", key, value);
   };
   delam("delamination_control", base, 0, "peak force");
+  // issue 77: a seed larger than the plate cracked every interface everywhere, 15 s a step, silently
+  delam("delamination_seed_radius_huge", with("seed_radius", "1e300"), 0, "delamination.seed_radius");
+  // G_Ic = 1e300 cancelled in the B-K blend to a toughness of 0, and the message blamed the penalty stiffness
+  delam("delamination_G_Ic_1e300", with("G_Ic", "1e300"), 2, "check G_Ic and G_IIc");
+  delam("delamination_penalty_1e300", with("penalty_stiffness", "1e300"), 1,
+        "delamination.penalty_stiffness");
   for (const auto& [key, value] :
        std::vector<std::pair<std::string, std::string>>{{"G_Ic", "-969"},
                                                         {"G_Ic", "0"},
@@ -792,10 +1080,89 @@ std::vector<HostileCase> command_line_cases() {
   return c;
 }
 
+/// The re-audit of issue 77: a crash, hangs, silent wrong answers and raw messages, each reproduced.
+std::vector<HostileCase> audit_cases() {
+  std::vector<HostileCase> c;
+  const std::string deck =
+      plate_deck("[damage]\ncriteria = [\"max-stress\"]\n[threshold]\ntolerance = 0.5\n");
+  const std::string onset =
+      replace_all(deck, "rho = 1389.2\n",
+                  "rho = 1389.2\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\n");
+  const auto add = [&](const std::string& name, const std::string& args, int exit, const std::string& says,
+                       std::vector<CaseFile> files = {}, const std::string& env = {}) {
+    if (files.empty()) files = {{"deck.toml", onset}};
+    c.push_back({name, args, std::move(files), exit, says, env});
+  };
+  // OMP_NUM_THREADS=100000 crashed in libgomp (exit 139): capped to the machine, and checked
+  add("omp_threads_huge_impact", "impact deck.toml -o out", 0, "more threads than the machine", {},
+      "OMP_NUM_THREADS=100000");
+  add("omp_threads_huge_threshold", "threshold deck.toml -o out", 0, "more threads than the machine", {},
+      "OMP_NUM_THREADS=100000");
+  add("omp_threads_list", "impact deck.toml -o out", 0, "peak force", {}, "OMP_NUM_THREADS=1,1");
+  for (const std::string v : {"abc", "0", "-4", "2x", "1,,2"})
+    add("omp_threads_malformed_" + name_part(v), "impact deck.toml -o out", 2, "OMP_NUM_THREADS", {},
+        "OMP_NUM_THREADS=" + v);
+  // --progress-every nan was accepted
+  for (const std::string v : {"nan", "inf", "-1", "1e300", "x"})
+    add("progress_every_" + name_part(v), "impact deck.toml -o out --progress-every " + v, 2,
+        "--progress-every");
+  add("progress_every_zero", "impact deck.toml -o out --progress-every 0", 0, "peak force");
+  // threshold finding no failure exited 4, the internal-error code: it is a result
+  add("threshold_no_failure", "threshold deck.toml -o out", 0, "no failure up to the velocity limit",
+      {{"deck.toml", set_key(onset, "threshold", "max_velocity", "0.01")}});
+  // a rig whose element sizes are absurdly small factored for ever, deaf to Ctrl-C
+  for (const std::string size : {"1e-9", "1e-7", "5e-6"})
+    add("rig_size_at_impact_" + name_part(size), "impact deck.toml -o out", 2, "is below",
+        {{"deck.toml",
+          rig_deck("preset = \"astm-d7136\"", NAN, NAN, "[mesh]\nsize_at_impact = " + size + "\n")}});
+  // nodal mass scaling far beyond the mesh's step: a heavier plate, silently (now suspect); and a target
+  // so far that Lanczos failed with Spectra's raw message as an internal error
+  const auto explicit_deck = [&](const std::string& target) {
+    return replace_all(set_key(plate_deck(), "mesh", "mass", "\"lumped\""), "dt = 1e-6\nend = 5e-6\n",
+                       "integration = \"explicit\"\ndt = \"auto\"\nmass_scaling = \"nodal\"\ntarget_dt = " +
+                           target + "\nend = 2e-4\n");
+  };
+  add("mass_scaling_far_beyond_the_step", "impact deck.toml -o out", 0, "SUSPECT",
+      {{"deck.toml", explicit_deck("1e-5")}});
+  add("mass_scaling_target_dt_1e300", "impact deck.toml -o out", 1, "could not be computed",
+      {{"deck.toml", explicit_deck("1e300")}});
+  // plot: a results folder is input; it blocked on a FIFO, never ended on /dev/zero, took a cut or nan row
+  const std::string header = "t_s,force_N,impactor_w_m,impactor_v_m_per_s,plate_w_m,indentation_m,"
+                             "plate_kinetic_J,plate_strain_J,impactor_energy_J,contact_work_J\n";
+  const std::string rows = "0,0,0,1,0,0,0,0,1,0\n1e-6,12,1e-6,1,1e-6,0,0,0,1,0\n";
+  const auto plot_case = [&](const std::string& name, const std::string& history, const std::string& says) {
+    add("plot_history_" + name, "plot res -o pics", 2, says, {{"res/history.csv", history}});
+  };
+  plot_case("fifo", "<fifo>", "not a regular file");
+  plot_case("dev_zero", "<link>/dev/zero", "not a regular file");
+  plot_case("folder", "<dir>", "not a regular file");
+  plot_case("empty", "", "no header line");
+  plot_case("cut_mid_row", header + rows + "2e-6,12", "cut mid-row");
+  plot_case("nan_row", header + rows + "2e-6,nan,0,1,0,0,0,0,1,0\n", "not a finite number");
+  plot_case("inf_row", header + rows + "2e-6,inf,0,1,0,0,0,0,1,0\n", "not a finite number");
+  plot_case("garbage_row", header + rows + "hello world\n", "cells where the header has 10");
+  plot_case("garbage_cell", header + rows + "2e-6,12abc,0,1,0,0,0,0,1,0\n", "not a finite number");
+  plot_case("not_a_history", "a,b\n1,2\n", "not t_s");
+  add("plot_summary_with_a_string", "plot res -o pics", 0, "force_time",
+      {{"res/history.csv", header + rows},
+       {"res/summary.json", "{\"impact_velocity\": \"fast\", \"impactor_mass\": [1]}"}});
+  add("plot_summary_not_an_object", "plot res -o pics", 0, "force_time",
+      {{"res/history.csv", header + rows}, {"res/summary.json", "[1, 2]"}});
+  // a deck whose name is not UTF-8 threw json's type_error.316 when summary.json was written
+  add("deck_name_not_utf8", "impact \xff.toml -o out", 0, "peak force", {{"\xff.toml", onset}});
+  plot_case("binary",
+            std::string("\x7f"
+                        "ELF\0\x01\x02",
+                        7),
+            "error");
+  return c;
+}
+
 std::vector<HostileCase> all_cases() {
   std::vector<HostileCase> all;
-  for (const auto& family : {geo_cases(), msh_cases(), rig_cases(), nose_cases(), damage_cases(),
-                             delamination_cases(), sweep_cases(), command_line_cases()})
+  for (const auto& family :
+       {geo_cases(), sandbox_cases(), audit_cases(), msh_cases(), rig_cases(), nose_cases(), damage_cases(),
+        delamination_cases(), sweep_cases(), command_line_cases()})
     all.insert(all.end(), family.begin(), family.end());
   return all;
 }
@@ -808,10 +1175,13 @@ constexpr int case_time_limit_s = 300;
 void write_case_files(const fs::path& dir, const HostileCase& k) {
   for (const CaseFile& f : k.files) {
     const fs::path p = dir / f.name;
+    fs::create_directories(p.parent_path());
     if (f.text == "<fifo>") {
       ASSERT_EQ(::mkfifo(p.c_str(), 0600), 0) << p;
     } else if (f.text == "<dir>") {
       fs::create_directories(p);
+    } else if (f.text.starts_with("<link>")) {
+      fs::create_symlink(f.text.substr(6), p);
     } else {
       std::ofstream(p, std::ios::binary) << replace_all(f.text, "{dir}", dir.string());
     }
@@ -846,8 +1216,9 @@ TEST_P(HostileInputs, Survives) {
   } else {
     EXPECT_NE(r.out.find("error"), std::string::npos) << shown;
   }
-  // no shell command ran from the deck
-  EXPECT_FALSE(fs::exists(dir / "pwned")) << "a deck ran a command";
+  // no shell command ran from the deck, and no file was written by it
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_FALSE(entry.path().filename().string().starts_with("pwned")) << "a deck wrote " << entry.path();
   EXPECT_TRUE(fs::exists(dir / "deck.toml") || k.files.empty() || k.files.front().name != "deck.toml")
       << "a deck deleted a file";
   fs::remove_all(dir);

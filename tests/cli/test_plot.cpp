@@ -89,7 +89,7 @@ TEST(CliPlot, EveryPlotIsANonBlankPngOfTheStatedSizeAndAParsableSvg) {
   ASSERT_EQ(r.status, 0) << r.out;
   const CommandResult p = run("plot " + (dir / "out").string());
   ASSERT_EQ(p.status, 0) << p.out;
-  const auto specs = plyimpact::impact_plots({{dir / "out", "run"}});
+  const auto specs = plyimpact::impact_plots({{dir / "out", "run", dir / "out" / "history.csv"}});
   ASSERT_EQ(specs.size(), 8U);
   for (const plyimpact::PlotSpec& spec : specs) {
     const std::string& name = spec.name;
@@ -135,7 +135,7 @@ TEST(CliPlot, AProgressiveRunGetsADamageMapPerPlyAndTheProjectedMapBesideTheForc
   ASSERT_TRUE(fs::exists(dir / "out" / "damage_elements.csv"));
   const CommandResult p = run("plot " + (dir / "out").string());
   ASSERT_EQ(p.status, 0) << p.out;
-  const auto specs = plyimpact::impact_plots({{dir / "out", "run"}});
+  const auto specs = plyimpact::impact_plots({{dir / "out", "run", dir / "out" / "history.csv"}});
   std::vector<std::string> maps;
   for (const plyimpact::PlotSpec& spec : specs)
     if (spec.name.starts_with("damage_map_")) maps.push_back(spec.name);
@@ -161,7 +161,7 @@ TEST(CliPlot, AProgressiveRunGetsADamageMapPerPlyAndTheProjectedMapBesideTheForc
 TEST(CliPlot, PlotOfAFolderWithoutHistoryIsAClearError) {
   const fs::path dir = scratch("plot-bad");
   const CommandResult p = run("plot " + dir.string());
-  EXPECT_EQ(p.status, 1);
+  EXPECT_EQ(p.status, 2); // a results folder given to plot is input: a bad one is exit 2, as a bad deck
   EXPECT_NE(p.out.find("not an impact results folder"), std::string::npos) << p.out;
 }
 

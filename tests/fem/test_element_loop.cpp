@@ -51,7 +51,11 @@ TEST(ElementLoop, ThreadsAreRestoredAfterTheRun) {
   const int before = element_threads();
   {
     const ElementThreads three(3);
-    EXPECT_EQ(element_threads(), 3);
+    EXPECT_EQ(element_threads(), std::min(3, hardware_threads())); // never more than the machine has
+  }
+  {
+    const ElementThreads absurd(100000); // OMP_NUM_THREADS=100000 crashed libgomp (issue 77)
+    EXPECT_EQ(element_threads(), hardware_threads());
   }
   EXPECT_EQ(element_threads(), before);
   const ElementThreads unchanged(0); // 0: as they are

@@ -2,7 +2,10 @@
 // refusal that names the variable and what it holds (exit 2 on the command line).
 #include "plyimpact/io/environment.hpp"
 
+#include "plyimpact/fem/element_loop.hpp"
+
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cstdlib>
 #include <string>
@@ -45,6 +48,40 @@ TEST(Environment, AnythingElseIsRefusedNamingTheVariableAndWhatItHolds) {
       EXPECT_NE(what.find(std::string("\"") + bad + "\""), std::string::npos) << what;
     }
   }
+}
+
+/// check_openmp_threads with OMP_NUM_THREADS set to `text` (restored after): its note, or its refusal.
+std::string openmp_threads_with(const char* text) {
+  const char* before = std::getenv("OMP_NUM_THREADS"); // NOLINT(concurrency-mt-unsafe): one thread
+  const std::string saved = before != nullptr ? before : "";
+  ::setenv("OMP_NUM_THREADS", text, 1); // NOLINT(concurrency-mt-unsafe)
+  std::string said;
+  try {
+    said = check_openmp_threads().value_or("");
+  } catch (const EnvironmentValueError& e) {
+    said = std::string("refused: ") + e.what();
+  }
+  if (before != nullptr)
+    ::setenv("OMP_NUM_THREADS", saved.c_str(), 1); // NOLINT(concurrency-mt-unsafe)
+  else
+    ::unsetenv("OMP_NUM_THREADS"); // NOLINT(concurrency-mt-unsafe)
+  omp_set_num_threads(hardware_threads());
+  return said;
+}
+
+// Issue 77: OMP_NUM_THREADS=100000 crashed libgomp. The value is checked, and the element loops never ask
+// for more threads than the machine has.
+TEST(Environment, OpenMpThreadsAreCheckedAndCappedToTheMachine) {
+  EXPECT_EQ(openmp_threads_with("1"), "");
+  EXPECT_EQ(openmp_threads_with("1,1"), "");
+  const std::string capped = openmp_threads_with("100000");
+  EXPECT_NE(capped.find("more threads than the machine"), std::string::npos) << capped;
+  for (const char* bad : {"abc", "0", "-2", "4x", "", "1,,2", "99999999999"})
+    EXPECT_EQ(openmp_threads_with(bad).rfind("refused: the environment variable OMP_NUM_THREADS", 0), 0U)
+        << bad;
+  EXPECT_EQ(capped_threads(100000), hardware_threads());
+  EXPECT_EQ(capped_threads(1), 1);
+  EXPECT_LE(capped_threads(0), hardware_threads());
 }
 
 } // namespace

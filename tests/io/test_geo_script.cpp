@@ -11,6 +11,7 @@
 #include "test_paths.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <string>
@@ -104,6 +105,53 @@ TEST(GeoScript, ADeckWhoseScriptRunsAShellCommandIsRefusedBeforeAnythingRuns) {
   // The user's opt-in lets the script through the check (gmsh would then run it).
   const test::TrustedGeoScripts trusted;
   EXPECT_NO_THROW(require_safe_geo(dir / "plate.geo"));
+}
+
+// Issue 77: the check reads strings as gmsh's lexer does (Parser/Gmsh.l: either quote, no escapes, at most
+// 1023 characters), so the audit's tricks that hid a command inside what the old check took for a string
+// are found; what it cannot follow is refused.
+TEST(GeoScript, StringsAreReadAsGmshReadsThem) {
+  const auto quote_trick = check("s = '\"'; System \"touch x\"; t = '\"';\n");
+  ASSERT_TRUE(quote_trick.has_value());
+  EXPECT_EQ(quote_trick->command, "System");
+  const auto backslash = check("s = \"a\\\"; System \"touch x\"; t = \"b\";\n");
+  ASSERT_TRUE(backslash.has_value());
+  EXPECT_EQ(backslash->command, "System");
+  EXPECT_TRUE(check("SystemCall 'touch x';\n").has_value());
+  // a command inside a single-quoted string is a word, as in a double-quoted one
+  EXPECT_FALSE(check("Printf('System Exit');\nPrintf(\"it's fine\");\n").has_value());
+  // a number and a word are two tokens, as for gmsh: 2e0System is 2e0 then System
+  const auto glued = check("x = 1;\n2e0System \"touch x\";\n");
+  ASSERT_TRUE(glued.has_value());
+  EXPECT_EQ(glued->line, 2);
+}
+
+TEST(GeoScript, WhatTheCheckCannotFollowIsRefused) {
+  const auto long_string = check("s = \"" + std::string(1023, 'x') + ";System \"touch x\";//\";\n");
+  ASSERT_TRUE(long_string.has_value());
+  EXPECT_NE(long_string->why.find("1023"), std::string::npos) << long_string->why;
+  EXPECT_FALSE(check("s = \"" + std::string(1023, 'x') + "\";\n").has_value()); // gmsh's longest string
+  const auto nul = check(std::string("s = \"a") + '\0' + "\"; System \"touch x\";\n");
+  ASSERT_TRUE(nul.has_value());
+  EXPECT_EQ(nul->command, "NUL");
+}
+
+TEST(GeoScript, DataFilesOptionFilesAndFifosAreChecked) {
+  const fs::path dir = test::scratch("geo-data-files");
+  std::ofstream(dir / "part.step") << "ISO-10303-21;\n";
+  ASSERT_EQ(::mkfifo((dir / "pipe.geo").c_str(), 0600), 0);
+  EXPECT_FALSE(check("v() = ShapeFromFile(\"part.step\");\n", dir).has_value());
+  for (const std::string script :
+       {"v() = ShapeFromFile(\"/etc/passwd\");\n", "x() = ListFromFile('/etc/passwd');\n",
+        "v() = ShapeFromFile(StrCat(\"/etc/\", \"passwd\"));\n", "Include \"pipe.geo\";\n",
+        "General.OptionsFileName = \"x\";\n", "Solver.Executable0 = \"/bin/sh\";\n"}) {
+    EXPECT_TRUE(check(script, dir).has_value()) << script;
+  }
+  const auto fifo = check("Include \"pipe.geo\";\n", dir);
+  ASSERT_TRUE(fifo.has_value());
+  EXPECT_NE(fifo->why.find("not a regular file"), std::string::npos) << fifo->why;
+  // options that only read are untouched
+  EXPECT_FALSE(check("General.Terminal = 0;\nMesh.MeshSizeMax = 0.01;\n", dir).has_value());
 }
 
 } // namespace

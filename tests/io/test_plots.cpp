@@ -52,7 +52,7 @@ const PlotSpec& find(const std::vector<PlotSpec>& specs, const std::string& name
 
 TEST(Plots, FortySevenDamagedLayersAreSmallMultiplesOfAtMostTenCurvesInStackingOrder) {
   const fs::path dir = results_with_damage("plots-47", 24, 23);
-  const auto specs = impact_plots({{dir, "run"}});
+  const auto specs = impact_plots({{dir, "run", dir / "history.csv"}});
   const PlotSpec& damage = find(specs, "damage_area");
   ASSERT_TRUE(damage.curves.empty());
   // 23 interfaces -> 8, 8, 7; 24 plies -> 8, 8, 8 (three panels each, as even as possible).
@@ -87,7 +87,7 @@ TEST(Plots, FortySevenDamagedLayersAreSmallMultiplesOfAtMostTenCurvesInStackingO
 
 TEST(Plots, TenOrFewerDamagedLayersStayOnePlot) {
   const fs::path dir = results_with_damage("plots-8", 5, 4);
-  const auto specs = impact_plots({{dir, "run"}});
+  const auto specs = impact_plots({{dir, "run", dir / "history.csv"}});
   const PlotSpec& damage = find(specs, "damage_area");
   EXPECT_TRUE(damage.panels.empty());
   ASSERT_EQ(damage.curves.size(), 9U);
@@ -98,7 +98,7 @@ TEST(Plots, TenOrFewerDamagedLayersStayOnePlot) {
 
 TEST(Plots, ImpactorEnergyPlotStartsFromTheImpactEnergyOfTheFirstHistoryRow) {
   const fs::path dir = results_with_damage("plots-energy", 1, 0);
-  const auto specs = impact_plots({{dir, "run"}});
+  const auto specs = impact_plots({{dir, "run", dir / "history.csv"}});
   const PlotSpec& energy = find(specs, "impactor_energy");
   ASSERT_EQ(energy.curves.size(), 3U);
   EXPECT_NE(energy.curves[0].using_expr.find(":(22.05"), std::string::npos) << energy.curves[0].using_expr;
@@ -108,7 +108,7 @@ TEST(Plots, ImpactorEnergyPlotStartsFromTheImpactEnergyOfTheFirstHistoryRow) {
 
 TEST(Plots, ForceIndentationAndForceDisplacementKeepOnlyTheContactPart) {
   const fs::path dir = results_with_damage("plots-contact", 1, 0);
-  const auto specs = impact_plots({{dir, "run"}});
+  const auto specs = impact_plots({{dir, "run", dir / "history.csv"}});
   for (const char* name : {"force_indentation", "force_displacement"}) {
     const PlotSpec& spec = find(specs, name);
     ASSERT_EQ(spec.curves.size(), 1U);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 
@@ -252,6 +253,24 @@ std::string mass_scaling_text(const MassScalingReport& r) {
     s += fmt::format("; mass +{:.4g} kg ({:.3g} % of the plate's {:.4g} kg)", added_mass,
                      mass > 0.0 ? 100.0 * added_mass / mass : 0.0, mass);
   return s;
+}
+
+std::optional<std::string> added_mass_suspicion(const MassScalingReport& report) {
+  double mass = 0.0, added = 0.0;
+  for (const double m : report.mass_kg)
+    mass += m;
+  for (const double m : report.added_mass_kg)
+    added += m;
+  if (!(mass > 0.0) || !(added > added_mass_fraction_tolerance * mass)) return std::nullopt;
+  return fmt::format(
+      "[time] mass_scaling = \"{}\" added {:.4g} kg to a plate of {:.4g} kg ({:.3g} times its mass, more "
+      "than "
+      "the {:.0f} % an explicit run may add without changing the answer): the plate's modes that move its "
+      "mass together fall in frequency by a factor {:.3g}, and the contact force, deflection and energies "
+      "are those of a heavier plate. Give a shorter [time] target_dt (the step of the unscaled mesh is "
+      "the honest one), or use mass_scaling = \"rotary\" (docs/mass_scaling.md)",
+      to_string(report.kind), added, mass, added / mass, 100.0 * added_mass_fraction_tolerance,
+      std::sqrt(mass / (mass + added)));
 }
 
 } // namespace plyimpact

@@ -206,10 +206,27 @@ namespace {
 HighestMode highest_of_symmetric_form(MassNormalisedStiffnessOp op) {
   const auto n = static_cast<int>(op.rows());
   Spectra::SymEigsSolver<MassNormalisedStiffnessOp> solver(op, 1, std::min(n, 20));
-  solver.init();
-  solver.compute(Spectra::SortRule::LargestAlge, 1000, highest_frequency_tolerance);
-  if (solver.info() != Spectra::CompInfo::Successful)
-    throw std::runtime_error("highest_angular_frequency: the eigensolver did not converge");
+  // Spectra's own failures (its std::logic_error "TridiagEigen: eigen decomposition failed" reached the
+  // user as an internal error, issue 77) and a result that is not a number say what the usual cause is
+  constexpr const char* cause =
+      "the stiffness or the mass holds values far out of scale: with [time] mass_scaling, a target_dt far "
+      "beyond the mesh's own stable step (it adds masses beyond any plate's); else check the moduli, the "
+      "densities and the element sizes";
+  try {
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestAlge, 1000, highest_frequency_tolerance);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(
+        fmt::format("the highest natural frequency of the plate, which sets the explicit "
+                    "step, could not be computed (Lanczos: {}): {}",
+                    e.what(), cause));
+  }
+  if (solver.info() != Spectra::CompInfo::Successful || !std::isfinite(solver.eigenvalues()(0)))
+    throw std::runtime_error(
+        fmt::format("the highest natural frequency of the plate, which sets the explicit "
+                    "step, could not be computed (the Lanczos iterations did not "
+                    "converge): {}",
+                    cause));
   // The Ritz value θ lies below λ_max; Spectra stops where the residual ‖r‖ ≤ tol·θ, and an eigenvalue
   // lies within ‖r‖ of θ (symmetric A): θ(1 + tol) bounds the one it converged to from above.
   HighestMode mode;

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <thread>
 
 namespace plyimpact {
 
@@ -107,12 +108,23 @@ void parallel_rows_product(const RowMajorSparse& K, const Eigen::VectorXd& u, Ei
   return omp_get_max_threads();
 }
 
-/// The element loops of the calling thread on `threads` threads while it lives (0: as they are), as they
-/// were after it.
+/// The threads the machine runs at once (at least 1): no element loop asks for more (issue 77: libgomp
+/// crashed starting the 100 000 threads that OMP_NUM_THREADS=100000 asked for).
+[[nodiscard]] inline int hardware_threads() {
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+/// `threads` (0: the calling thread's OpenMP setting, OMP_NUM_THREADS or all cores) capped to the machine.
+[[nodiscard]] inline int capped_threads(int threads) {
+  return std::min(threads > 0 ? threads : omp_get_max_threads(), hardware_threads());
+}
+
+/// The element loops of the calling thread on `threads` threads while it lives (0: as they are), never
+/// more than the machine has (capped_threads), as they were after it.
 class ElementThreads {
 public:
-  explicit ElementThreads(int threads) : previous_(omp_get_max_threads()) {
-    if (threads > 0) omp_set_num_threads(threads);
+  explicit ElementThreads(int threads) : previous_(capped_threads(0)) {
+    omp_set_num_threads(capped_threads(threads));
   }
   ~ElementThreads() { omp_set_num_threads(previous_); }
   ElementThreads(const ElementThreads&) = delete;

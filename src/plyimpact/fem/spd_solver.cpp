@@ -71,7 +71,9 @@ private:
 template <class Factorization>
 class CholmodOnceAnalysed : public Factorization {
 public:
-  CholmodOnceAnalysed() = default;
+  // CHOLMOD's own printing off: "CHOLMOD warning: not positive definite" reached the user's terminal beside
+  // plyimpact's message, which names the deck values that cause it (issue 77); the status is still read
+  CholmodOnceAnalysed() { this->cholmod().print = 0; }
   CholmodOnceAnalysed(const CholmodOnceAnalysed&) = delete;
   CholmodOnceAnalysed& operator=(const CholmodOnceAnalysed&) = delete;
   CholmodOnceAnalysed(CholmodOnceAnalysed&&) = delete;
@@ -337,7 +339,10 @@ struct SpdSolver::Workspace::Buffers {
   cholmod_dense* X = nullptr; ///< the solution
   cholmod_dense* Y = nullptr; ///< work arrays
   cholmod_dense* E = nullptr;
-  Buffers() { cholmod_start(&common); }
+  Buffers() {
+    cholmod_start(&common);
+    common.print = 0; // no library text on the terminal: the solver reports its failures itself
+  }
   Buffers(const Buffers&) = delete;
   Buffers& operator=(const Buffers&) = delete;
   ~Buffers() {

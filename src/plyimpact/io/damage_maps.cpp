@@ -1,6 +1,7 @@
 #include "plyimpact/io/damage_maps.hpp"
 
 #include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/child_process.hpp"
 
 #include <fmt/format.h>
 
@@ -99,7 +100,7 @@ DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& m
     groups[{std::string(to_string(o.criterion)), ply ? "ply" : "interface", ply ? o.ply : o.interface}]
         .push_back(o);
   }
-  const bool have_gnuplot = std::system("command -v gnuplot > /dev/null 2>&1") == 0;
+  const bool have_gnuplot = program_on_path("gnuplot");
   if (!have_gnuplot && !groups.empty())
     files.warning =
         "gnuplot not found: damage map scripts written, images not drawn (apt-get install gnuplot-nox)";
@@ -128,7 +129,7 @@ DamageMapFiles write_damage_maps(const std::filesystem::path& dir, const Mesh& m
   if (pending.empty()) return files;
   const fs::path run = dir / "damage_maps.gp.tmp";
   write_file_atomically(run, batch);
-  const int status = std::system(fmt::format("gnuplot '{}' > /dev/null 2>&1", run.string()).c_str());
+  const int status = run_program({"gnuplot", run.string()}, dir).exit_code;
   fs::remove(run);
   for (const Pending& m : pending) {
     std::error_code ec;

@@ -72,7 +72,11 @@ std::string first_failures_text(const std::vector<DamageOnset>& first) {
 
 std::string threshold_text(const std::string& criterion, const ThresholdResult& r) {
   std::string t = fmt::format("threshold ({}): ", criterion);
-  if (!r.found) return t + "no failure up to the velocity limit\n";
+  if (!r.found) // a result, not an error (issue 77: it exited 4, the internal-error code)
+    return t +
+           fmt::format("no failure up to the velocity limit: the plate holds at every velocity tried, the "
+                       "highest {:.4g} m/s ({} runs); raise [threshold] max_velocity to search higher\n",
+                       r.trials.empty() ? 0.0 : r.trials.back().velocity, r.trials.size());
   t += fmt::format("{:.4f} m/s (no failure at {:.4f} m/s), {} runs\n", r.velocity, r.lower, r.trials.size());
   if (r.first_failure) t += first_failures_text({*r.first_failure});
   if (r.damage)

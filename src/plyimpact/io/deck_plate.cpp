@@ -44,6 +44,22 @@ std::array<double, 2> read_impact_offset(const TableReader& t) {
 
 namespace {
 
+/// The smallest element a deck may ask for [m]: a hundredth of the thinnest plies made (0.03 mm was the
+/// thinnest mesh of a plate model of a laminate). Below it the sizes were absurd, and the run was not merely
+/// slow: a rig with size_at_impact = 1e-7 m factored its matrix for ever (issue 77).
+constexpr double min_element_size = 1e-5;
+
+/// Refuses mesh.size_at_impact and mesh.max_size below min_element_size.
+void require_element_sizes(const TableReader& t, const std::optional<double>& at_impact,
+                           const std::optional<double>& max_size) {
+  for (const auto& [key, value] : {std::pair{"size_at_impact", at_impact}, std::pair{"max_size", max_size}})
+    if (value && *value < min_element_size)
+      t.fail_at(key,
+                fmt::format("mesh.{} = {:g} m is below {:g} m, a hundredth of the thinnest plies made: no "
+                            "plate element is that small (a unit slip? the deck is in m)",
+                            key, *value, min_element_size));
+}
+
 /// mesh.growth, the size ratio of neighbouring elements (1 … 3), of a graded or a gmsh mesh.
 std::optional<double> read_growth(const TableReader& t) {
   const auto r = t.optional_number("growth", "-");
@@ -116,6 +132,7 @@ MeshSpec read_mesh(const TableReader& t) {
     g.max_size = t.positive_or_auto("max_size", "m");
     if (const auto r = read_growth(t)) g.growth = *r;
     if (t.has("impact_offset")) g.impact_offset = read_impact_offset(t);
+    require_element_sizes(t, g.size_at_impact, g.max_size);
     if (g.size_at_impact && g.max_size && *g.max_size < *g.size_at_impact)
       t.fail_at("max_size", "mesh.max_size must not be smaller than mesh.size_at_impact");
     m.grading = g;
@@ -133,6 +150,7 @@ GeometryMeshing read_geometry_meshing(const TableReader& t, const std::optional<
       t.fail_at("growth", "mesh.growth grades the elements away from mesh.size_at_impact: give it too");
     how.growth = *r;
   }
+  require_element_sizes(t, how.size_at_point, how.max_size);
   if (how.size_at_point && how.max_size && *how.max_size < *how.size_at_point)
     t.fail_at("max_size", "mesh.max_size must not be smaller than mesh.size_at_impact");
   return how;
@@ -170,6 +188,7 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
   spec.meshing.refine_at = refine_at;
   if (d.mesh) d.mesh->grading.reset(); // the size keys grade gmsh's mesh, not a structured one
   try {
+    require_rig_mesh_fits_memory(spec);
     Rig rig = build_rig(spec, d.analysis == AnalysisKind::static_);
     d.file_mesh = std::make_shared<const Mesh>(std::move(rig.mesh));
     d.boundary = std::move(rig.boundary);

@@ -100,6 +100,8 @@ void check_damage(const Deck& d, Checks& c) {
 }
 
 /// [delamination]: the interfaces' toughnesses, strengths, B-K exponent and penalty stiffness.
+std::optional<std::array<double, 2>> plate_sides(const Deck& d);
+
 void check_delamination(const Deck& d, Checks& c) {
   if (!d.delamination) return;
   const CohesiveParameters& law = d.delamination->stack.interface;
@@ -111,6 +113,12 @@ void check_delamination(const Deck& d, Checks& c) {
   c.add({"delamination.shear_strength", law.shear_strength, "Pa", 1e6, 1e9, "an interface strength"});
   c.add({"delamination.penalty_stiffness", law.penalty_stiffness, "Pa/m", 1e11, 1e17,
          "a cohesive penalty stiffness (Turon et al. 2007: 50 E3/t, about 1e13 to 1e16 Pa/m)"});
+  // a seed larger than the plate cracks every interface everywhere (issue 77: 1e300 ran 15 s a step,
+  // silently)
+  if (const double seed = d.delamination->stack.seed_radius; seed > 0.0)
+    if (const auto sides = plate_sides(d))
+      c.add({"delamination.seed_radius", seed, "m", 1e-4, 0.5 * std::max((*sides)[0], (*sides)[1]),
+             "the radius of a seeded delamination on this plate (at most half its longer side)"});
 }
 
 /// The plate's sides [m]: [plate] a and b, or the bounding box of a mesh from gmsh (mesh.file, mesh.geo,

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace plyimpact {
@@ -27,5 +28,13 @@ inline constexpr std::string_view gmsh_time_limit_variable = "PLYIMPACT_GMSH_TIM
 /// else EnvironmentValueError naming the variable, what it holds and `what` it should be.
 [[nodiscard]] std::optional<double> positive_number_from_environment(std::string_view variable,
                                                                      std::string_view what);
+
+/// OpenMP's thread count, read by the element loops when neither --threads nor [run] threads is given.
+inline constexpr std::string_view openmp_threads_variable = "OMP_NUM_THREADS";
+
+/// Checks OMP_NUM_THREADS where it is set — a positive whole number, or OpenMP's comma-separated list of
+/// them — and caps the calling thread's OpenMP setting to the machine's cores. Throws EnvironmentValueError
+/// for a malformed value; returns a note to print where the value was larger than the machine.
+[[nodiscard]] std::optional<std::string> check_openmp_threads();
 
 } // namespace plyimpact

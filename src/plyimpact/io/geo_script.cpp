@@ -4,12 +4,17 @@
 
 #include "plyimpact/io/gmsh_mesh.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -21,6 +26,9 @@ namespace {
 
 /// Scripts that include scripts: deeper than this is refused (a script that includes itself ends here).
 constexpr int max_include_depth = 8;
+
+/// The longest string gmsh's lexer reads (Parser/Gmsh.l, parsestring: a 1024-byte buffer).
+constexpr std::size_t max_gmsh_string = 1023;
 
 struct Token {
   enum class Kind { identifier, string, other };
@@ -78,11 +86,10 @@ private:
     Token t;
     t.line = line_;
     const char c = s_[i_];
-    if (c == '"') {
+    if (c == '"' || c == '\'') { // gmsh: either quote opens a string, no escapes, at most 1023 characters
       t.kind = Token::Kind::string;
       advance();
-      while (i_ < s_.size() && s_[i_] != '"') {
-        if (s_[i_] == '\\' && i_ + 1 < s_.size()) advance();
+      while (i_ < s_.size() && s_[i_] != c) {
         t.text += s_[i_];
         advance();
       }
@@ -97,14 +104,32 @@ private:
       }
       return t;
     }
-    if (std::isdigit(static_cast<unsigned char>(c)) != 0) { // 1e-3, 0.5: one token, not an identifier e
-      while (i_ < s_.size() && (identifier_char(s_[i_]) || s_[i_] == '.'))
+    if (digit(c)) { // gmsh's numbers: 12, 1.5, 1.5e-3, 2e4 — and nothing after them (1e5System is two tokens)
+      skip_digits();
+      if (i_ < s_.size() && s_[i_] == '.') {
         advance();
+        skip_digits();
+      }
+      const std::size_t e = i_;
+      if (e < s_.size() && (s_[e] == 'e' || s_[e] == 'E')) {
+        std::size_t d = e + 1;
+        if (d < s_.size() && (s_[d] == '+' || s_[d] == '-')) ++d;
+        if (d < s_.size() && digit(s_[d])) {
+          i_ = d;
+          skip_digits();
+        }
+      }
       return t;
     }
     t.text = std::string(1, c);
     advance();
     return t;
+  }
+
+  static bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+  void skip_digits() {
+    while (i_ < s_.size() && digit(s_[i_]))
+      advance();
   }
 
   std::string_view s_;
@@ -141,12 +166,55 @@ bool inside(const std::filesystem::path& folder, const std::filesystem::path& pa
   return end == f.end();
 }
 
-std::optional<std::string> read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+/// The largest script (or included file) the check reads: a geometry is a few kilobytes.
+constexpr std::size_t max_script_bytes = 64U << 20U;
+
+/// The text of a file, or why it cannot be read: opened without blocking (a FIFO or a device would block
+/// the reader, deaf to Ctrl-C), a regular file only, at most max_script_bytes.
+struct FileText {
+  std::optional<std::string> text;
+  std::string why_not; ///< when text is empty: "does not exist", "is not a regular file", …
+};
+
+FileText read_text(const std::filesystem::path& file) {
+  const int fd =
+      ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC); // NOLINT(cppcoreguidelines-pro-type-vararg)
+  if (fd < 0) return {std::nullopt, fmt::format("cannot be opened ({})", std::strerror(errno))};
+  struct stat st {};
+  std::string text;
+  std::string why;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    why = "is not a regular file (a FIFO, a device or a folder)";
+  } else if (static_cast<std::size_t>(st.st_size) > max_script_bytes) {
+    why = fmt::format("is larger than {} MiB, far beyond any geometry script", max_script_bytes >> 20U);
+  } else {
+    text.resize(static_cast<std::size_t>(st.st_size));
+    std::size_t done = 0;
+    while (done < text.size()) {
+      const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    text.resize(done);
+  }
+  ::close(fd);
+  if (!why.empty()) return {std::nullopt, why};
+  return {std::move(text), {}};
+}
+
+/// A file named by a literal string at token k + 1 (Include, Merge) or k + 2 (ShapeFromFile("…")),
+/// resolved against the script's folder: refused outside that folder or where it is not a regular file.
+std::optional<std::string> refuse_file(const std::vector<Token>& t, std::size_t at,
+                                       const std::filesystem::path& folder, std::filesystem::path& file) {
+  file = t[at].text;
+  if (file.is_relative()) file = folder / file;
+  if (!inside(folder, file)) return fmt::format("reads \"{}\", outside the script's folder", t[at].text);
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+    return fmt::format("reads \"{}\", which is not a regular file (a FIFO, a device or a folder)",
+                       t[at].text);
+  return std::nullopt;
 }
 
 /// Include or Merge at token k: refused unless a literal file in `folder`; an included script is checked.
@@ -158,21 +226,58 @@ std::optional<UnsafeGeoCommand> check_file_command(const std::vector<Token>& t, 
   };
   if (k + 1 >= t.size() || t[k + 1].kind != Token::Kind::string || !is_symbol(t, k + 2, ';'))
     return refuse("reads a file named by an expression, not by a literal string in the script's folder");
-  std::filesystem::path file(t[k + 1].text);
-  if (file.is_relative()) file = folder / file;
-  if (!inside(folder, file))
-    return refuse(fmt::format("reads \"{}\", outside the script's folder", t[k + 1].text));
+  std::filesystem::path file;
+  if (auto why = refuse_file(t, k + 1, folder, file)) return refuse(std::move(*why));
   const std::string ext = file.extension().string();
   if (command.text == "Merge" && ext != ".geo") return std::nullopt; // a mesh or a CAD file: data
   if (depth + 1 > max_include_depth)
     return refuse(
         fmt::format("nests scripts deeper than {} (a script that includes itself?)", max_include_depth));
-  const std::optional<std::string> text = read_text(file);
-  if (!text) return std::nullopt; // gmsh will say that it cannot open it
-  if (auto inner = find_unsafe_geo_command(*text, folder, depth + 1))
+  const FileText text = read_text(file);
+  if (!text.text) return std::nullopt; // gmsh will say that it cannot open it
+  if (auto inner = find_unsafe_geo_command(*text.text, folder, depth + 1))
     return refuse(fmt::format("reads \"{}\", whose line {} holds {}: it {}", t[k + 1].text, inner->line,
                               inner->command, inner->why));
   return std::nullopt;
+}
+
+/// ShapeFromFile("…") or ListFromFile("…") at token k: data read from a literal file in `folder` only.
+std::optional<UnsafeGeoCommand> check_data_file(const std::vector<Token>& t, std::size_t k,
+                                                const std::filesystem::path& folder) {
+  const auto refuse = [&](std::string why) { return UnsafeGeoCommand{t[k].line, t[k].text, std::move(why)}; };
+  if (!is_symbol(t, k + 1, '(') || k + 2 >= t.size() || t[k + 2].kind != Token::Kind::string ||
+      !is_symbol(t, k + 3, ')'))
+    return refuse("reads a file named by an expression, not by a literal string in the script's folder");
+  std::filesystem::path file;
+  if (auto why = refuse_file(t, k + 2, folder, file)) return refuse(std::move(*why));
+  return std::nullopt;
+}
+
+/// What gmsh does with the text itself that the check cannot follow: a NUL byte ends gmsh's input where
+/// the check would read on, and gmsh cuts a string at 1023 characters and reads the rest as commands.
+std::optional<UnsafeGeoCommand> unreadable_text(std::string_view script, const std::vector<Token>& t) {
+  if (const std::size_t nul = script.find('\0'); nul != std::string_view::npos)
+    return UnsafeGeoCommand{1 + static_cast<int>(std::count(
+                                    script.begin(), script.begin() + static_cast<std::ptrdiff_t>(nul), '\n')),
+                            "NUL",
+                            "holds a NUL byte, which gmsh and this check would read differently (a geometry "
+                            "script is text)"};
+  for (const Token& token : t)
+    if (token.kind == Token::Kind::string && token.text.size() > max_gmsh_string)
+      return UnsafeGeoCommand{
+          token.line, "string",
+          fmt::format("is a string of {} characters: gmsh reads at most {} and would read "
+                      "the rest as commands",
+                      token.text.size(), max_gmsh_string)};
+  return std::nullopt;
+}
+
+/// An option that names a file gmsh writes (General.OptionsFileName, …) or a program it runs
+/// (Solver.Executable0, …), assigned at token k.
+bool names_file_or_program(const std::vector<Token>& t, std::size_t k) {
+  const std::string& name = t[k].text;
+  return k > 0 && is_symbol(t, k - 1, '.') && is_symbol(t, k + 1, '=') &&
+         (name.ends_with("FileName") || name.starts_with("Executable"));
 }
 
 /// Printf(…) > "file" or >> "file" at token k (Printf): the index after its closing parenthesis.
@@ -191,16 +296,25 @@ std::size_t after_parentheses(const std::vector<Token>& t, std::size_t k) {
 std::optional<UnsafeGeoCommand> find_unsafe_geo_command(std::string_view script,
                                                         const std::filesystem::path& folder, int depth) {
   const std::vector<Token> t = GeoLexer(script).tokens();
+  if (auto why = unreadable_text(script, t)) return why;
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t[k].kind != Token::Kind::identifier) continue;
+    if (names_file_or_program(t, k))
+      return UnsafeGeoCommand{t[k].line, t[k].text,
+                              "sets an option that names a file gmsh writes or a "
+                              "program it runs"};
     if ((k > 0 && is_symbol(t, k - 1, '.')) || is_symbol(t, k + 1, '.')) continue; // an option: Print.Width
     const std::string& name = t[k].text;
     const auto refused = std::find_if(refused_commands.begin(), refused_commands.end(),
                                       [&](const auto& c) { return c.first == name; });
     if (refused != refused_commands.end())
       return UnsafeGeoCommand{t[k].line, name, std::string(refused->second)};
-    if (name == "Include" || name == "Merge") {
+    if (name == "Include" || name == "Merge" || name == "MergeWithBoundingBox") {
       if (auto why = check_file_command(t, k, folder, depth)) return why;
+      continue;
+    }
+    if (name == "ShapeFromFile" || name == "ListFromFile") {
+      if (auto why = check_data_file(t, k, folder)) return why;
       continue;
     }
     if (name == "Printf" && is_symbol(t, after_parentheses(t, k), '>'))
@@ -209,17 +323,24 @@ std::optional<UnsafeGeoCommand> find_unsafe_geo_command(std::string_view script,
   return std::nullopt;
 }
 
+bool geo_check_skipped_for_tests() {
+  const char* value = std::getenv(skip_geo_check_variable); // NOLINT(concurrency-mt-unsafe): read, never set
+  return value != nullptr && std::string_view(value) == "1";
+}
+
 bool geo_scripts_trusted() {
   const char* value = std::getenv(trust_geo_variable); // NOLINT(concurrency-mt-unsafe): read, never set
   return value != nullptr && std::string_view(value) == "1";
 }
 
 void require_safe_geo(const std::filesystem::path& geo) {
-  if (geo_scripts_trusted()) return;
-  const std::optional<std::string> text = read_text(geo);
-  if (!text) throw MeshFileError(fmt::format("{}: error: cannot open the geometry file", geo.string()));
+  if (geo_scripts_trusted() || geo_check_skipped_for_tests()) return;
+  const FileText text = read_text(geo);
+  if (!text.text)
+    throw MeshFileError(
+        fmt::format("{}: error: cannot open the geometry file: it {}", geo.string(), text.why_not));
   std::error_code ec;
-  const auto unsafe = find_unsafe_geo_command(*text, std::filesystem::absolute(geo, ec).parent_path());
+  const auto unsafe = find_unsafe_geo_command(*text.text, std::filesystem::absolute(geo, ec).parent_path());
   if (!unsafe) return;
   throw MeshFileError(fmt::format(
       "{}:{}: error: {} {}: plyimpact does not let a geometry script run programs or write, rename or "

@@ -4,6 +4,7 @@
 
 #include "plyimpact/io/child_process.hpp"
 #include "plyimpact/io/gmsh_api.hpp"
+#include "plyimpact/io/sandbox.hpp"
 #include "plyimpact/io/system_memory.hpp"
 
 #include "plyimpact/fem/shape_functions.hpp"
@@ -397,9 +398,12 @@ RawMesh from_bytes(const std::string& in) {
   return m;
 }
 
-/// The limits of the child that runs gmsh: two minutes (a plate meshes in well under a second), and the
-/// memory available to the run on top of what the caller's address space already holds.
-IsolationLimits gmsh_limits() {
+/// The limits of the child that runs gmsh: two minutes (a plate meshes in well under a second), the
+/// memory available to the run on top of what the caller's address space already holds, and the sandbox
+/// (reads below `folder` and the system's libraries, writes in `scratch` only) unless the user trusts
+/// every script of the session (PLYIMPACT_TRUST_GEO=1).
+IsolationLimits gmsh_limits(const std::optional<std::filesystem::path>& folder,
+                            const std::filesystem::path& scratch) {
   IsolationLimits limits;
   limits.time = gmsh_time_limit_in_effect();
   const std::optional<double> available = available_memory_bytes();
@@ -411,19 +415,40 @@ IsolationLimits gmsh_limits() {
   if (available && (statm >> pages))
     limits.memory_bytes = pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE)) +
                           static_cast<std::uint64_t>(std::max(*available, library_space));
+  if (!geo_scripts_trusted()) {
+    SandboxPolicy policy{system_read_paths(), scratch};
+    if (folder) policy.readable.push_back(*folder);
+    limits.sandbox = std::move(policy);
+  }
   return limits;
 }
 
-/// read_raw_here in a child process (docs/robustness.md, "gmsh in a child process"): gmsh's aborts,
-/// crashes, Exit commands, prompts and endless loops end the child, never the caller, and become a
-/// MeshFileError that names the file and says what happened.
+/// The folder of a file that gmsh reads (a .geo and what it includes, a .msh); none for a model built
+/// in memory (a rig), which reads nothing.
+std::optional<std::filesystem::path> folder_of(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
+  return std::filesystem::absolute(file, ec).parent_path();
+}
+
+/// read_raw_here in a child process (docs/robustness.md, "gmsh in a child process" and "The sandbox"):
+/// gmsh's aborts, crashes, Exit commands, prompts and endless loops end the child, never the caller, and
+/// become a MeshFileError that names the file and says what happened; a program or a write the script
+/// attempts is stopped by the kernel.
 template <class Load>
 RawMesh read_raw(const std::filesystem::path& file, const Load& load, std::string_view advice = {}) {
   try {
+    const PrivateFolder scratch;
     return from_bytes(run_in_child_process([&] { return to_bytes(read_raw_here(file, load)); },
-                                           fmt::format("{}: error: gmsh", file.string()), gmsh_limits()));
+                                           fmt::format("{}: error: gmsh", file.string()),
+                                           gmsh_limits(folder_of(file), scratch.path())));
+  } catch (const SandboxError& e) {
+    throw MeshFileError(fmt::format("{}: error: {}", file.string(), e.what()));
   } catch (const IsolatedWorkError& e) {
     if (e.thrown_by_work()) throw MeshFileError(e.what()); // read_raw_here's own message
+    // advice on the script's options fits a crash or a time limit, not a stop by the sandbox or the user
+    if (e.cause() == IsolatedWorkError::Cause::sandbox || e.cause() == IsolatedWorkError::Cause::interrupted)
+      throw MeshFileError(fmt::format("{}; nothing of it was used", e.what()));
     throw MeshFileError(
         fmt::format("{} (reading or meshing it); nothing of it was used{}", e.what(), advice));
   }

@@ -112,10 +112,16 @@ void HistoryCsvWriter::flush() {
       if (errno == EINTR) continue;
       const std::string why = std::strerror(errno);
       buffer_.clear();
-      throw std::runtime_error(fmt::format("{}: write failed: {}", path_.string(), why));
+      // the rows of this flush that reached the disk before it filled are cut off: the file keeps whole
+      // rows only (issue 77: a full disk left a row cut mid-line under the final name)
+      const bool cut = ::ftruncate(fd_, static_cast<off_t>(whole_bytes_)) == 0;
+      throw std::runtime_error(
+          fmt::format("{}: write failed: {}; {}", path_.string(), why,
+                      cut ? "it keeps the whole rows written before" : "its last row may be cut short"));
     }
     done += static_cast<std::size_t>(n);
   }
+  whole_bytes_ += buffer_.size();
   buffer_.clear();
 }
 

@@ -79,6 +79,7 @@ private:
   std::filesystem::path path_;
   int every_;
   int fd_ = -1;
+  std::size_t whole_bytes_ = 0; ///< the file's size after the last complete flush: whole rows only
   long last_step_ = -1;
   std::string buffer_;
   ImpactSample sample_; ///< the row being formatted, its vectors reused from step to step

@@ -185,7 +185,10 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   if (damage) {
     folder->write_text("damage_onsets.csv", damage_onsets_csv(damage->onsets()));
     folder->write_text("damage_area.csv", damage_area_csv(damage->area_history()));
-    if (options.pictures) {
+    // an interrupted run writes its tables and leaves the pictures out: it has a second to end in
+    // (docs/robustness.md, "Interrupting a run"); plyimpact plot draws them later
+    const bool interrupted = options.cancel != nullptr && options.cancel->load();
+    if (options.pictures && !interrupted) {
       const DamageMapFiles maps = write_damage_maps(folder->path() / damage_maps_folder, model.mesh(),
                                                     damage->onsets(), rig_outline(deck.rig));
       if (!maps.warning.empty()) out.notes.push_back(maps.warning);

@@ -1,6 +1,7 @@
 #include "plyimpact/io/laminate_report.hpp"
 
 #include "plyimpact/analysis/contact_rules.hpp"
+#include "plyimpact/io/json_text.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -121,7 +122,7 @@ std::string laminate_report_json(const Deck& d) {
   j["symmetric"] = L.is_symmetric();
   j["balanced"] = L.is_balanced();
   if (d.impactor) j["hertz_k"] = contact_stiffness(d);
-  return j.dump(2) + "\n";
+  return json_text(j, 2) + "\n";
 }
 
 } // namespace plyimpact

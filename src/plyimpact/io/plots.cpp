@@ -1,6 +1,7 @@
 #include "plyimpact/io/plots.hpp"
 
 #include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/child_process.hpp"
 #include "plyimpact/io/ply_damage_maps.hpp"
 
 #include <fmt/format.h>
@@ -51,7 +52,7 @@ std::vector<PlotCurve> per_run(const std::vector<PlotRun>& runs, const std::stri
   std::vector<PlotCurve> curves;
   curves.reserve(runs.size());
   for (const PlotRun& r : runs)
-    curves.push_back(csv_curve(r.dir / "history.csv", using_expr, r.label));
+    curves.push_back(csv_curve(r.history, using_expr, r.label));
   return curves;
 }
 
@@ -195,7 +196,7 @@ double last_time(const fs::path& history) {
 PlotSpec impactor_energy_plot(const std::vector<PlotRun>& runs) {
   std::vector<PlotCurve> curves;
   for (const PlotRun& r : runs) {
-    const fs::path h = r.dir / "history.csv";
+    const fs::path h = r.history;
     const double e0 = first_value(h, "impactor_energy_J");
     const std::string suffix = runs.size() > 1 ? ", " + r.label : "";
     if (runs.size() == 1) {
@@ -279,7 +280,9 @@ std::string run_label(const fs::path& dir) {
   std::ifstream in(dir / "summary.json");
   if (in) {
     const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (!j.is_discarded() && j.contains("impact_velocity") && j.contains("impactor_mass"))
+    // numbers only: a summary edited to hold a string there threw json's type_error.302 (issue 77)
+    if (!j.is_discarded() && j.is_object() && j.contains("impact_velocity") && j.contains("impactor_mass") &&
+        j["impact_velocity"].is_number() && j["impactor_mass"].is_number())
       return fmt::format("v0 = {:.3g} m/s, m = {:.3g} kg", j["impact_velocity"].get<double>(),
                          j["impactor_mass"].get<double>());
   }
@@ -310,7 +313,7 @@ std::vector<PlotSpec> impact_plots(const std::vector<PlotRun>& runs) {
                         "top left"));
   p.push_back(impactor_energy_plot(runs));
   if (runs.size() == 1) {
-    const fs::path h = runs.front().dir / "history.csv";
+    const fs::path h = runs.front().history;
     p.push_back(energy_plot(h));
     if (PlotSpec delamination = delamination_area_plot(h); !delamination.curves.empty())
       p.push_back(std::move(delamination));
@@ -383,7 +386,7 @@ std::string gnuplot_script(const PlotSpec& spec, const fs::path& cwd, const std:
 }
 
 PlotFiles draw_plots(const std::vector<PlotSpec>& specs, const fs::path& out) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+  if (!program_on_path("gnuplot"))
     throw std::runtime_error("gnuplot not found (apt-get install gnuplot-nox, or run scripts/install-deps)");
   fs::create_directories(out);
   const fs::path cwd = fs::absolute(out);
@@ -396,23 +399,13 @@ PlotFiles draw_plots(const std::vector<PlotSpec>& specs, const fs::path& out) {
     const std::string svg_tmp = spec.name + ".svg.tmp", png_tmp = spec.name + ".png.tmp";
     const fs::path run = cwd / (spec.name + ".gp.tmp");
     write_file_atomically(run, gnuplot_script(spec, cwd, svg_tmp, png_tmp));
-    const std::string command =
-        fmt::format("cd {} && gnuplot {} 2>&1", quoted(cwd.string()), quoted(run.filename().string()));
-    std::string log;
-    if (FILE* pipe = popen(command.c_str(), "r")) {
-      std::array<char, 512> buffer{};
-      while (fgets(buffer.data(), int(buffer.size()), pipe) != nullptr)
-        log += buffer.data();
-      const int status = pclose(pipe);
-      fs::remove(run);
-      if (status != 0 || !fs::exists(cwd / svg_tmp) || !fs::exists(cwd / png_tmp)) {
-        std::error_code ec;
-        fs::remove(cwd / svg_tmp, ec);
-        fs::remove(cwd / png_tmp, ec);
-        throw std::runtime_error(fmt::format("gnuplot failed on {}:\n{}", gp.string(), log));
-      }
-    } else {
-      throw std::runtime_error("cannot run gnuplot");
+    const ProgramResult gnuplot = run_program({"gnuplot", run.filename().string()}, cwd);
+    fs::remove(run);
+    if (gnuplot.exit_code != 0 || !fs::exists(cwd / svg_tmp) || !fs::exists(cwd / png_tmp)) {
+      std::error_code ec;
+      fs::remove(cwd / svg_tmp, ec);
+      fs::remove(cwd / png_tmp, ec);
+      throw std::runtime_error(fmt::format("gnuplot failed on {}:\n{}", gp.string(), gnuplot.output));
     }
     fs::rename(cwd / svg_tmp, cwd / (spec.name + ".svg"));
     fs::rename(cwd / png_tmp, cwd / (spec.name + ".png"));

@@ -46,6 +46,7 @@ struct PlotSpec {
 struct PlotRun {
   std::filesystem::path dir;
   std::string label;
+  std::filesystem::path history; ///< the history to draw (checked, perhaps thinned: io/history_check.hpp)
 };
 
 inline constexpr int plot_width_px = 900, plot_height_px = 600;

@@ -2,6 +2,7 @@
 
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/json_text.hpp"
 
 #include <fmt/format.h>
 
@@ -25,7 +26,7 @@ ResultsFolder::ResultsFolder(std::filesystem::path dir, const Deck& deck) : dir_
 }
 
 void ResultsFolder::write_json(const std::string& name, const nlohmann::json& j) const {
-  write_file_atomically(dir_ / name, j.dump(2) + "\n");
+  write_file_atomically(dir_ / name, json_text(j, 2) + "\n");
 }
 
 void ResultsFolder::write_text(const std::string& name, const std::string& text) const {

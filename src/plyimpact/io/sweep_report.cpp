@@ -1,6 +1,7 @@
 #include "plyimpact/io/sweep_report.hpp"
 
 #include "plyimpact/io/html_page.hpp"
+#include "plyimpact/io/json_text.hpp"
 #include "plyimpact/io/svg_plot.hpp"
 
 #include <fmt/format.h>
@@ -243,7 +244,7 @@ std::string cell(const nlohmann::json& record, const Quantity& q) {
   if (it == r.end() || it->is_null()) return "";
   if (it->is_string()) return xml_escaped(it->get<std::string>());
   if (it->is_number_integer()) return fmt::format("{}", it->get<long>());
-  return it->is_number() ? html_number(it->get<double>(), "", q.scale) : xml_escaped(it->dump());
+  return it->is_number() ? html_number(it->get<double>(), "", q.scale) : xml_escaped(json_text(*it));
 }
 
 void table_section(std::string& h, const Sweep& sweep, const std::vector<nlohmann::json>& records) {

@@ -1,6 +1,7 @@
 #include "plyimpact/io/sweep_runner.hpp"
 
 #include "plyimpact/fem/element_loop.hpp"
+#include "plyimpact/io/json_text.hpp"
 
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
@@ -85,7 +86,7 @@ std::string cell(const nlohmann::json& j) {
   if (j.is_number_integer()) return fmt::format("{}", j.get<long>());
   if (j.is_boolean()) return j.get<bool>() ? "true" : "false";
   if (j.is_string()) return csv_field(j.get<std::string>());
-  return csv_field(j.dump());
+  return csv_field(json_text(j));
 }
 
 std::vector<std::string> value_texts(const SweepCase& c) {
@@ -203,7 +204,7 @@ void SweepFolder::write_manifest() const {
   j["cases"] = sweep_.size();
   j["samples"] = s.samples;
   j["seed"] = s.seed;
-  write_file_atomically(dir_ / "sweep.json", j.dump(2) + "\n");
+  write_file_atomically(dir_ / "sweep.json", json_text(j, 2) + "\n");
 }
 
 std::optional<nlohmann::json> SweepFolder::read_record(std::size_t index, std::string* problem) const {
@@ -471,6 +472,9 @@ std::optional<nlohmann::json> SweepWorker::run(std::size_t index) {
     record["error"] = "out of memory (std::bad_alloc): use a coarser mesh";
     record["results"] = nlohmann::json::object();
   } catch (const std::exception& e) { // a bad combination of values fails this case only
+    // unless the user interrupted it (meshing, building, stepping): a case stopped by Ctrl-C did not fail,
+    // it did not run, and --resume runs it (issue 77: it was stored as failed and never run again)
+    if (options_.cancel != nullptr && options_.cancel->load()) return std::nullopt;
     record["status"] = "failed";
     record["error"] = e.what();
     record["results"] = nlohmann::json::object();
@@ -497,7 +501,7 @@ int run_sweep_cases(const Sweep& sweep, const SweepFolder& folder, const std::ve
         const std::size_t index = pending[*position];
         const auto record = worker.run(index);
         if (!record) break; // cancelled part-way: not recorded, runs again on --resume
-        write_file_atomically(folder.record_path(index), record->dump(1) + "\n");
+        write_file_atomically(folder.record_path(index), json_text(*record, 1) + "\n");
         if (options.on_case_recorded) options.on_case_recorded();
       }
       factorizations += worker.factorizations();

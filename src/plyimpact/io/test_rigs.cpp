@@ -1,10 +1,14 @@
 #include "plyimpact/io/test_rigs.hpp"
 
+#include "plyimpact/analysis/mesh_memory.hpp"
 #include "plyimpact/io/gmsh_api.hpp"
+#include "plyimpact/io/gmsh_mesh.hpp"
+#include "plyimpact/io/system_memory.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace plyimpact {
@@ -122,6 +126,28 @@ Rig build_rig(const RigSpec& spec, bool static_analysis) {
       mesh.element_count());
   if (!note.empty()) description += "; " + note;
   return {std::move(mesh), std::move(bc), 0.008, astm_d7136_energy_per_thickness, std::move(description)};
+}
+
+BoundingBox rig_bounds(const RigSpec& spec) {
+  if (spec.kind == RigKind::circular) {
+    const double r = spec.diameter / 2.0;
+    return {-r, r, -r, r};
+  }
+  return {0.0, coupon_a, 0.0, coupon_b};
+}
+
+void require_rig_mesh_fits_memory(const RigSpec& spec) {
+  const std::optional<double> available = available_memory_bytes();
+  if (!available || !spec.meshing.size_at_point) return;
+  const BoundingBox box = rig_bounds(spec);
+  const double elements =
+      estimated_element_count(box, spec.meshing.refine_at.value_or(box.centre()), spec.meshing);
+  // a 9-node element brings about four nodes of its own to a large mesh
+  const MeshMemoryEstimate e = estimate_mesh_memory(4.0 * elements);
+  if (e.bytes <= *available) return;
+  throw MeshFileError(
+      fmt::format("before meshing: {}",
+                  memory_refusal_message(static_cast<int>(std::min(elements, 2e9)), e, *available)));
 }
 
 } // namespace plyimpact

@@ -72,6 +72,15 @@ CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) 
   for (int i = 0; i <= kMixityChecks; ++i) {
     const double B = static_cast<double>(i) / kMixityChecks;
     if (!(onset_separation(B) < final_separation(B))) {
+      const double G_c = critical_energy_release_rate(B);
+      // a toughness that is not a finite positive number comes from G_Ic and G_IIc, not from K (issue 77:
+      // G_Ic = 1e300 cancelled in the B-K blend to 0, and the message blamed the penalty stiffness)
+      if (!(G_c > 0.0) || !std::isfinite(G_c) || !std::isfinite(final_separation(B)))
+        throw std::invalid_argument(fmt::format(
+            "cohesive law: at mode mixity B = {:g} the Benzeggagh-Kenane toughness G_c = G_Ic + (G_IIc - "
+            "G_Ic) B^eta = {:g} J/m² (G_Ic = {:g}, G_IIc = {:g} J/m², eta = {:g}) is not a usable "
+            "toughness: check G_Ic and G_IIc, in J/m² (published values lie between 20 and 20 000)",
+            B, G_c, p_.G_Ic, p_.G_IIc, p_.bk_exponent));
       throw std::invalid_argument(fmt::format(
           "cohesive law: at mode mixity B = {:g} the onset separation {:g} m is not below the final "
           "separation {:g} m; raise the penalty stiffness K = {:g} Pa/m",

@@ -1,0 +1,163 @@
+// A history.csv checked and thinned for plotting (history_check.hpp).
+#include "plyimpact/io/history_check.hpp"
+
+#include "plyimpact/io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace plyimpact {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The whole file, opened without blocking and only where it is a regular file of at most
+/// max_history_bytes.
+std::string read_regular_file(const fs::path& file) {
+  const int fd =
+      ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC); // NOLINT(cppcoreguidelines-pro-type-vararg)
+  if (fd < 0)
+    throw HistoryFileError(
+        fmt::format("{}: error: cannot open it ({})", file.string(), std::strerror(errno)));
+  struct stat st {};
+  std::string why;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+    why = "not a regular file (a FIFO, a device or a folder): a results folder's history.csv is a file the "
+          "impact run wrote";
+  else if (static_cast<std::uintmax_t>(st.st_size) > max_history_bytes)
+    why = fmt::format("{:.3g} GB, larger than the {} GB a history of a run can be; write fewer rows "
+                      "([output] history_every)",
+                      static_cast<double>(st.st_size) / 1e9, max_history_bytes >> 30U);
+  std::string text;
+  if (why.empty()) {
+    text.resize(static_cast<std::size_t>(st.st_size));
+    std::size_t done = 0;
+    while (done < text.size()) {
+      const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    text.resize(done);
+  }
+  ::close(fd);
+  if (!why.empty()) throw HistoryFileError(fmt::format("{}: error: {}", file.string(), why));
+  return text;
+}
+
+/// The cells of a line split at commas.
+std::vector<std::string_view> cells(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t at = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', at);
+    out.push_back(line.substr(at, comma == std::string_view::npos ? std::string_view::npos : comma - at));
+    if (comma == std::string_view::npos) return out;
+    at = comma + 1;
+  }
+}
+
+/// A row of a history: its text and its contact force (for the thinning).
+struct Row {
+  std::string_view text;
+  double force = 0.0;
+};
+
+/// The data rows, each checked: as many cells as the header, every cell a finite number.
+std::vector<Row> checked_rows(const fs::path& file, std::string_view text, std::size_t& columns,
+                              std::string_view& header) {
+  const std::size_t end_of_header = text.find('\n');
+  if (text.empty() || end_of_header == std::string_view::npos)
+    throw HistoryFileError(
+        fmt::format("{}:1: error: no header line: the history is empty or cut short", file.string()));
+  header = text.substr(0, end_of_header);
+  const std::vector<std::string_view> names = cells(header);
+  columns = names.size();
+  const auto force_at = std::find(names.begin(), names.end(), "force_N");
+  const std::size_t force = static_cast<std::size_t>(force_at - names.begin());
+  if (names.front() != "t_s")
+    throw HistoryFileError(
+        fmt::format("{}:1: error: the header starts with \"{}\", not t_s: not a history.csv "
+                    "of plyimpact impact",
+                    file.string(), names.front()));
+  std::vector<Row> rows;
+  std::size_t at = end_of_header + 1;
+  for (std::size_t line = 2; at < text.size(); ++line) {
+    const std::size_t eol = text.find('\n', at);
+    if (eol == std::string_view::npos)
+      throw HistoryFileError(fmt::format("{}:{}: error: the last row has no end of line: the history was cut "
+                                         "mid-row (a run killed or a full disk); nothing was plotted",
+                                         file.string(), line));
+    const std::string_view row = text.substr(at, eol - at);
+    const std::vector<std::string_view> c = cells(row);
+    if (c.size() != columns)
+      throw HistoryFileError(fmt::format("{}:{}: error: {} cells where the header has {}", file.string(),
+                                         line, c.size(), columns));
+    Row r{row, 0.0};
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      double value = 0.0;
+      const auto [ptr, ec] = std::from_chars(c[k].data(), c[k].data() + c[k].size(), value);
+      if (ec != std::errc() || ptr != c[k].data() + c[k].size() || !std::isfinite(value))
+        throw HistoryFileError(
+            fmt::format("{}:{}: error: column {} (\"{}\") holds \"{}\", not a finite number", file.string(),
+                        line, k + 1, names[k], c[k]));
+      if (k == force) r.force = value;
+    }
+    rows.push_back(r);
+    at = eol + 1;
+  }
+  return rows;
+}
+
+/// Every k-th row, and in each group of k the rows of the largest and the smallest force, in order.
+std::string thinned_rows(std::string_view header, const std::vector<Row>& rows, std::size_t& kept) {
+  const std::size_t group = max_plot_rows / 4; // at most four rows kept from each
+  const std::size_t k = (rows.size() + group - 1) / group;
+  std::string out(header);
+  out += '\n';
+  kept = 0;
+  for (std::size_t first = 0; first < rows.size(); first += k) {
+    const std::size_t last = std::min(rows.size(), first + k);
+    std::size_t hi = first, lo = first;
+    for (std::size_t i = first; i < last; ++i) {
+      if (rows[i].force > rows[hi].force) hi = i;
+      if (rows[i].force < rows[lo].force) lo = i;
+    }
+    std::vector<std::size_t> pick{first, hi, lo, last - 1};
+    std::sort(pick.begin(), pick.end());
+    pick.erase(std::unique(pick.begin(), pick.end()), pick.end());
+    for (const std::size_t i : pick) {
+      out += rows[i].text;
+      out += '\n';
+      ++kept;
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+CheckedHistory check_history_for_plot(const fs::path& history, const fs::path& thinned) {
+  const std::string text = read_regular_file(history);
+  std::size_t columns = 0;
+  std::string_view header;
+  const std::vector<Row> rows = checked_rows(history, text, columns, header);
+  if (rows.size() <= max_plot_rows) return {history, rows.size(), rows.size()};
+  CheckedHistory c{thinned, rows.size(), 0};
+  write_file_atomically(thinned, thinned_rows(header, rows, c.plotted));
+  return c;
+}
+
+} // namespace plyimpact
