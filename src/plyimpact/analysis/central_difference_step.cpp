@@ -179,8 +179,14 @@ ContactSolution CentralDifferenceStepper::advance(long step, double t, const Pla
   loading_.scaled_load_minus(cs.alpha, cs.force, f_int_, force_);
   apply_inverse_mass(p_, force_, a_next_); // CD3
   if (!std::isfinite(a_next_.squaredNorm()))
-    throw NewtonFailure(fmt::format("{}: non-finite acceleration in step {} (t = {:.6g} s); reduce time.dt",
-                                    p_.key_, step, t));
+    // not only a step too long: with dt = "auto" the step is the model's stable one, and a value far out of
+    // scale (penalty_stiffness = 1e300 was told to "reduce time.dt", issue 77) overflows first
+    throw NewtonFailure(
+        fmt::format("{}: non-finite acceleration in step {} (t = {:.6g} s): a value of the deck "
+                    "far out of scale (a penalty stiffness, a modulus, a density: see its "
+                    "plausibility warnings) or a fixed time.dt above the stable step; check "
+                    "the values, or give a shorter time.dt",
+                    p_.key_, step, t));
   return cs;
 }
 
