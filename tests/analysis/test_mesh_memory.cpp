@@ -51,6 +51,19 @@ TEST(MemoryEstimate, ExceedsTheSymbolicAnalysisOfStructuredMeshes) {
   }
 }
 
+/// small_deck's plate struck by the tests' steel ball, its [mesh] nx, ny replaced by the graded mesh's keys.
+ImpactCaseDescription graded_case(const std::string& mesh_keys) {
+  std::string text = test::small_deck("impact", R"(
+[impactor]
+mass = 0.314
+radius = 12.7e-3
+E = 207e9
+velocity = 2.92
+)");
+  text.replace(text.find("nx = 6\nny = 4"), 13, mesh_keys);
+  return impact_case_description(parse_deck(text, "deck.toml"));
+}
+
 TEST(MemoryEstimate, GradedMeshSizeIsTheMeshTheImpactCaseBuilds) {
   std::string text = test::small_deck("impact", R"(
 [impactor]
@@ -71,17 +84,9 @@ x = 0.05
 }
 
 TEST(MemoryEstimate, TheImpactCaseRefusesAGradedMeshBeyondTheMemoryBeforeBuildingIt) {
-  std::string text = test::small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-)");
   // 10 µm elements at the impact point (the smallest a deck may ask for) growing by 1 %: more than a
   // thousand element lines each way, hundreds of gigabytes; building the mesh alone would take minutes.
-  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-5\ngrowth = 1.01");
-  ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  ImpactCaseDescription d = graded_case("size_at_impact = 1e-5\ngrowth = 1.01");
   d.memory_limit_bytes = 16e9;
   const auto [nx, ny] = graded_mesh_size(d);
   EXPECT_GT(estimate_mesh_memory(nx, ny).bytes, 16e9);
@@ -100,15 +105,7 @@ velocity = 2.92
 // Issue 77: a graded mesh whose max_size is below the size at the impact point chosen from the contact
 // radius ignored it (0.5 mm asked, 1 to 2.5 mm given): max_size caps every element, that one too.
 TEST(MemoryEstimate, AGradedMeshHonoursMaxSizeBelowTheAutomaticSizeAtTheImpact) {
-  std::string text = test::small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-)");
-  text.replace(text.find("nx = 6\nny = 4"), 13, "max_size = 0.5e-3");
-  const ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  const ImpactCaseDescription d = graded_case("max_size = 0.5e-3");
   ASSERT_TRUE(d.mesh.grading);
   const Mesh mesh = impact_mesh(d);
   // every element is at most max_size on a side, but those of the last row and column at the plate's

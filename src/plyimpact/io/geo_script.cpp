@@ -3,11 +3,9 @@
 #include "plyimpact/io/geo_script.hpp"
 
 #include "plyimpact/io/gmsh_mesh.hpp"
+#include "plyimpact/io/regular_file.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -169,38 +167,9 @@ bool inside(const std::filesystem::path& folder, const std::filesystem::path& pa
 /// The largest script (or included file) the check reads: a geometry is a few kilobytes.
 constexpr std::size_t max_script_bytes = 64U << 20U;
 
-/// The text of a file, or why it cannot be read: opened without blocking (a FIFO or a device would block
-/// the reader, deaf to Ctrl-C), a regular file only, at most max_script_bytes.
-struct FileText {
-  std::optional<std::string> text;
-  std::string why_not; ///< when text is empty: "does not exist", "is not a regular file", …
-};
-
-FileText read_text(const std::filesystem::path& file) {
-  const int fd =
-      ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC); // NOLINT(cppcoreguidelines-pro-type-vararg)
-  if (fd < 0) return {std::nullopt, fmt::format("cannot be opened ({})", std::strerror(errno))};
-  struct stat st {};
-  std::string text;
-  std::string why;
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    why = "is not a regular file (a FIFO, a device or a folder)";
-  } else if (static_cast<std::size_t>(st.st_size) > max_script_bytes) {
-    why = fmt::format("is larger than {} MiB, far beyond any geometry script", max_script_bytes >> 20U);
-  } else {
-    text.resize(static_cast<std::size_t>(st.st_size));
-    std::size_t done = 0;
-    while (done < text.size()) {
-      const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      done += static_cast<std::size_t>(n);
-    }
-    text.resize(done);
-  }
-  ::close(fd);
-  if (!why.empty()) return {std::nullopt, why};
-  return {std::move(text), {}};
+/// The text of a script, or why it cannot be read (a FIFO or a device would block the check).
+RegularFileText read_text(const std::filesystem::path& file) {
+  return read_regular_file(file, max_script_bytes);
 }
 
 /// A file named by a literal string at token k + 1 (Include, Merge) or k + 2 (ShapeFromFile("…")),
@@ -233,7 +202,7 @@ std::optional<UnsafeGeoCommand> check_file_command(const std::vector<Token>& t, 
   if (depth + 1 > max_include_depth)
     return refuse(
         fmt::format("nests scripts deeper than {} (a script that includes itself?)", max_include_depth));
-  const FileText text = read_text(file);
+  const RegularFileText text = read_text(file);
   if (!text.text) return std::nullopt; // gmsh will say that it cannot open it
   if (auto inner = find_unsafe_geo_command(*text.text, folder, depth + 1))
     return refuse(fmt::format("reads \"{}\", whose line {} holds {}: it {}", t[k + 1].text, inner->line,
@@ -335,7 +304,7 @@ bool geo_scripts_trusted() {
 
 void require_safe_geo(const std::filesystem::path& geo) {
   if (geo_scripts_trusted() || geo_check_skipped_for_tests()) return;
-  const FileText text = read_text(geo);
+  const RegularFileText text = read_text(geo);
   if (!text.text)
     throw MeshFileError(
         fmt::format("{}: error: cannot open the geometry file: it {}", geo.string(), text.why_not));

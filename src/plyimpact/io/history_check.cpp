@@ -2,17 +2,13 @@
 #include "plyimpact/io/history_check.hpp"
 
 #include "plyimpact/io/atomic_file.hpp"
+#include "plyimpact/io/regular_file.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,38 +19,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The whole file, opened without blocking and only where it is a regular file of at most
-/// max_history_bytes.
-std::string read_regular_file(const fs::path& file) {
-  const int fd =
-      ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC); // NOLINT(cppcoreguidelines-pro-type-vararg)
-  if (fd < 0)
-    throw HistoryFileError(
-        fmt::format("{}: error: cannot open it ({})", file.string(), std::strerror(errno)));
-  struct stat st {};
-  std::string why;
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
-    why = "not a regular file (a FIFO, a device or a folder): a results folder's history.csv is a file the "
-          "impact run wrote";
-  else if (static_cast<std::uintmax_t>(st.st_size) > max_history_bytes)
-    why = fmt::format("{:.3g} GB, larger than the {} GB a history of a run can be; write fewer rows "
-                      "([output] history_every)",
-                      static_cast<double>(st.st_size) / 1e9, max_history_bytes >> 30U);
-  std::string text;
-  if (why.empty()) {
-    text.resize(static_cast<std::size_t>(st.st_size));
-    std::size_t done = 0;
-    while (done < text.size()) {
-      const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      done += static_cast<std::size_t>(n);
-    }
-    text.resize(done);
-  }
-  ::close(fd);
-  if (!why.empty()) throw HistoryFileError(fmt::format("{}: error: {}", file.string(), why));
-  return text;
+/// The whole history, read without blocking where it is a regular file of at most max_history_bytes.
+std::string read_history(const fs::path& file) {
+  RegularFileText read = read_regular_file(file, max_history_bytes);
+  if (read.text) return std::move(*read.text);
+  const std::string advice = read.why_not.starts_with("is not a regular file")
+                                 ? ": a results folder's history.csv is a file the impact run wrote"
+                             : read.why_not.starts_with("is larger")
+                                 ? ": write fewer rows ([output] history_every)"
+                                 : "";
+  throw HistoryFileError(fmt::format("{}: error: it {}{}", file.string(), read.why_not, advice));
 }
 
 /// The cells of a line split at commas.
@@ -150,7 +124,7 @@ std::string thinned_rows(std::string_view header, const std::vector<Row>& rows, 
 } // namespace
 
 CheckedHistory check_history_for_plot(const fs::path& history, const fs::path& thinned) {
-  const std::string text = read_regular_file(history);
+  const std::string text = read_history(history);
   std::size_t columns = 0;
   std::string_view header;
   const std::vector<Row> rows = checked_rows(history, text, columns, header);

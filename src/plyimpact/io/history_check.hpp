@@ -10,6 +10,7 @@
 // gnuplot on its first plot for ten minutes): every k-th row, and in each group of k rows the rows of the
 // largest and the smallest contact force, so that the peaks are drawn where they are.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 
