@@ -51,30 +51,22 @@ TEST(MemoryEstimate, ExceedsTheSymbolicAnalysisOfStructuredMeshes) {
   }
 }
 
-/// small_deck's plate struck by the tests' steel ball, its [mesh] nx, ny replaced by the graded mesh's keys.
-ImpactCaseDescription graded_case(const std::string& mesh_keys) {
+/// small_deck's plate struck by the tests' steel ball (with `impactor_keys`), its [mesh] nx, ny replaced by
+/// the graded mesh's keys.
+ImpactCaseDescription graded_case(const std::string& mesh_keys, const std::string& impactor_keys = "") {
   std::string text = test::small_deck("impact", R"(
 [impactor]
 mass = 0.314
 radius = 12.7e-3
 E = 207e9
 velocity = 2.92
-)");
+)" + impactor_keys);
   text.replace(text.find("nx = 6\nny = 4"), 13, mesh_keys);
   return impact_case_description(parse_deck(text, "deck.toml"));
 }
 
 TEST(MemoryEstimate, GradedMeshSizeIsTheMeshTheImpactCaseBuilds) {
-  std::string text = test::small_deck("impact", R"(
-[impactor]
-mass = 0.314
-radius = 12.7e-3
-E = 207e9
-velocity = 2.92
-x = 0.05
-)");
-  text.replace(text.find("nx = 6\nny = 4"), 13, "size_at_impact = 1e-3\ngrowth = 1.2");
-  const ImpactCaseDescription d = impact_case_description(parse_deck(text, "deck.toml"));
+  const ImpactCaseDescription d = graded_case("size_at_impact = 1e-3\ngrowth = 1.2", "x = 0.05\n");
   ASSERT_TRUE(d.mesh.grading);
   const auto [nx, ny] = graded_mesh_size(d);
   const Mesh mesh = impact_mesh(d);

@@ -62,16 +62,6 @@ std::string replace_all(std::string text, const std::string& from, const std::st
 // ---------------------------------------------------------------------------------------------------
 // Decks the cases start from.
 
-constexpr const char* t300 = R"([materials.T300_976]
-E1 = 144.8e9
-E2 = 9.65e9
-G12 = 7.10e9
-G13 = 7.10e9
-G23 = 5.92e9
-nu12 = 0.30
-rho = 1389.2
-)";
-
 constexpr const char* t300_damage = R"(Xt = 1.5e9
 Xc = 1.2e9
 Yt = 55.2e6
@@ -83,12 +73,6 @@ G_fc = 79.9e3
 G_mt = 277.0
 G_mc = 788.0
 )";
-
-/// A 4 mm quasi-isotropic coupon and a 5.5 kg striker: a drop-weight test's laminate and impactor, no plate.
-std::string coupon_laminate() {
-  return std::string("analysis = \"impact\"\n") + t300 +
-         "[laminate]\nmaterial = \"T300_976\"\nlayup = \"[45/0/-45/90]2s\"\nply_thickness = 0.25e-3\n";
-}
 
 /// The first microseconds of an impact: enough to build, factor and step, short enough for hundreds of
 /// cases (the run ends in contact, with a warning and exit 0).

@@ -51,6 +51,25 @@ inline fs::path scratch(const std::string& name) {
   return dir;
 }
 
+/// A 4 mm quasi-isotropic T300/976 coupon, [45/0/-45/90]2s of 0.25 mm plies: an impact deck's material and
+/// laminate, no plate, supports or impactor.
+inline std::string coupon_laminate() {
+  return R"(analysis = "impact"
+[materials.T300_976]
+E1 = 144.8e9
+E2 = 9.65e9
+G12 = 7.10e9
+G13 = 7.10e9
+G23 = 5.92e9
+nu12 = 0.30
+rho = 1389.2
+[laminate]
+material = "T300_976"
+layup = "[45/0/-45/90]2s"
+ply_thickness = 0.25e-3
+)";
+}
+
 /// The [0_2/90_4/0_2] T300/976 plate of Annex 2 on a 6 × 4 mesh, simply supported, plus `extra`.
 inline std::string small_deck(const std::string& analysis, const std::string& extra) {
   return "analysis = \"" + analysis + R"("

@@ -188,7 +188,6 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
   spec.meshing.refine_at = refine_at;
   if (d.mesh) d.mesh->grading.reset(); // the size keys grade gmsh's mesh, not a structured one
   try {
-    require_rig_mesh_fits_memory(spec);
     Rig rig = build_rig(spec, d.analysis == AnalysisKind::static_);
     d.file_mesh = std::make_shared<const Mesh>(std::move(rig.mesh));
     d.boundary = std::move(rig.boundary);

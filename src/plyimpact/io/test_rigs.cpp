@@ -102,6 +102,7 @@ GeometryMeshing rig_meshing(const RigSpec& spec) {
 }
 
 Rig build_rig(const RigSpec& spec, bool static_analysis) {
+  require_rig_mesh_fits_memory(spec); // every rig, the one refined for damage too, before gmsh meshes
   if (spec.kind == RigKind::circular) {
     std::string note;
     Mesh mesh = mesh_gmsh_model(

@@ -66,10 +66,10 @@ inline constexpr double astm_d7136_energy_per_thickness = 6.7e3;
 /// The plate's extent on the rig [m]: the ASTM coupon, or the circular rig's disk.
 [[nodiscard]] BoundingBox rig_bounds(const RigSpec& spec);
 
-/// Refuses, before gmsh meshes anything, a rig whose size field would make a mesh larger than the memory
-/// available (a single laminate's estimate, mesh_memory.hpp): `size_at_impact = 2e-4, growth = 1` meshed
-/// for 341 s before its assembly was refused for 126 GB (issue 77). Throws MeshFileError with the count,
-/// the estimate and the memory.
+/// Refuses, before gmsh meshes anything (build_rig calls it first), a rig whose size field would make a mesh
+/// larger than the memory available (a single laminate's estimate, mesh_memory.hpp): `size_at_impact = 2e-4,
+/// growth = 1` meshed for 341 s before its assembly was refused for 126 GB (issue 77). Throws MeshFileError
+/// with the count, the estimate and the memory.
 void require_rig_mesh_fits_memory(const RigSpec& spec);
 
 [[nodiscard]] std::string_view to_string(RigKind kind);
