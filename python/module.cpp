@@ -158,7 +158,7 @@ std::pair<std::string, std::string> run_plate_analysis(const Deck& deck, const s
        *analysis != plyimpact::AnalysisKind::buckling))
     throw std::invalid_argument("analysis '" + kind + "': expected 'static', 'modal' or 'buckling'");
   plyimpact::require_sections(deck, *analysis);
-  plyimpact::check_memory_before_assembly(deck);
+  plyimpact::check_deck_fits_memory(deck);
   std::optional<plyimpact::OutputLock> lock;
   std::optional<plyimpact::ResultsFolder> folder;
   if (output_dir) {

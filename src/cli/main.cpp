@@ -7,6 +7,7 @@
 //   plyimpact modal    examples/modal-annex2.toml -o results/modal
 //   plyimpact buckling examples/buckling-annex2.toml -o results/buckling
 #include "interruption.hpp"
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/damage_tracker.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
 #include "plyimpact/analysis/threshold_search.hpp"
@@ -98,7 +99,7 @@ Deck read_deck_for(const Options& o, AnalysisKind kind) {
                                 deck.source, deck.warnings.size(), deck.warnings.size() == 1 ? "" : "s"));
   // The plate analyses' mesh; an impact's is checked where the deck becomes its case.
   if (kind == AnalysisKind::static_ || kind == AnalysisKind::modal || kind == AnalysisKind::buckling)
-    check_memory_before_assembly(deck);
+    check_deck_fits_memory(deck);
   return deck;
 }
 
@@ -237,6 +238,15 @@ int run_threshold(const Options& o) {
   return 0; // no failure up to the limit is a result (threshold_velocity null), not an error
 }
 
+/// `plyimpact capabilities`: the table of what runs and its restrictions, as docs/deck.md has them.
+int print_capabilities() {
+  fmt::print("What runs: plate models x time integrators ([time], [damage] and [delamination] "
+             "integration)\n\n{}\nWhat the models and integrators restrict (after each, the deck key that is "
+             "refused):\n\n{}",
+             capability_table_markdown(), restrictions_markdown());
+  return 0;
+}
+
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->add_option("deck", o.deck_path, "TOML input deck")->required();
@@ -249,8 +259,8 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 }
 
 const std::vector<std::string>& command_names() {
-  static const std::vector<std::string> names{"laminate", "static",    "modal", "buckling",
-                                              "impact",   "threshold", "plot",  "sweep"};
+  static const std::vector<std::string> names{"laminate",  "static", "modal", "buckling",    "impact",
+                                              "threshold", "plot",   "sweep", "capabilities"};
   return names;
 }
 
@@ -333,6 +343,8 @@ int run(int argc, char** argv) {
       app.add_subcommand("plot", "PNG and SVG plots of impact results (several folders: overlaid curves)");
   plot->add_option("results", plot_dirs, "impact results folder(s) written with -o")->required();
   plot->add_option("-o,--output", o.output_dir, "folder for the pictures (default: RESULTS/plots)");
+  CLI::App* capabilities = app.add_subcommand(
+      "capabilities", "What runs: plate models × time integrators, and the options they restrict");
   SweepCommandOptions sweep_options;
   sweep_options.command = o.command;
   CLI::App* sweep = add_sweep_command(app, sweep_options);
@@ -353,6 +365,7 @@ int run(int argc, char** argv) {
   }
   try {
     if (const auto note = check_openmp_threads()) fmt::print(stderr, "plyimpact: note: {}\n", *note);
+    if (*capabilities) return print_capabilities();
     if (*laminate) return run_laminate(o);
     if (*impact) return run_impact(o);
     if (*threshold) return run_threshold(o);

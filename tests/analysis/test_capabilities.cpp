@@ -5,11 +5,16 @@
 #include "plyimpact/analysis/capabilities.hpp"
 #include "support/impact_decks.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace plyimpact::capabilities_tests {
 namespace {
@@ -51,6 +56,12 @@ TEST(Capabilities, ArchitectureMdShowsTheTableAsTheCodeHasIt) {
   }
   EXPECT_NE(doc.find(indented), std::string::npos) << "docs/architecture.md must hold, verbatim:\n"
                                                    << indented;
+}
+
+TEST(Capabilities, DeckMdListsTheRestrictionsAsTheCodeHasThem) {
+  const std::string doc = read(std::string(PLYIMPACT_SOURCE_DIR) + "/docs/deck.md");
+  EXPECT_NE(doc.find(restrictions_markdown()), std::string::npos) << "docs/deck.md must hold, verbatim:\n"
+                                                                  << restrictions_markdown();
 }
 
 TEST(Capabilities, EveryModelRunsWithSomeIntegratorOrSaysWhyNot) {
@@ -117,6 +128,69 @@ TEST(Capabilities, ExplicitStepsRefuseErrorControlledSteps) {
       with(test::example_text("impact-adaptive-steps.toml"), "adaptive", "true\nintegration = \"explicit\"");
   const std::string why = refusal_of([&] { (void)parse_deck(deck, "a.toml"); });
   EXPECT_NE(why.find("remove adaptive = true"), std::string::npos) << why;
+}
+
+/// The restriction whose rule is `rule`.
+const Restriction& restriction(std::string_view rule) {
+  for (const Restriction& r : restrictions())
+    if (r.rule == rule) return r;
+  throw std::logic_error("no restriction " + std::string(rule));
+}
+
+/// "c.toml:LINE:" of the first line of `text` that starts with `key_line`.
+std::string place_of(const std::string& text, const std::string& key_line) {
+  const std::size_t at = text.find("\n" + key_line);
+  EXPECT_NE(at, std::string::npos) << key_line;
+  return fmt::format("c.toml:{}:",
+                     std::count(text.begin(), text.begin() + static_cast<long>(at) + 1, '\n') + 1);
+}
+
+/// A deck that breaks one restriction, the line of its key, and the same case built in code.
+struct Broken {
+  std::string rule;
+  std::string deck;
+  std::string key_line;
+  std::function<void(ImpactCaseDescription&)> break_case; ///< applied to the unbroken deck's case
+  std::string unbroken;
+};
+
+// Each restriction a deck breaks (issue 78): the deck refuses it at the key that makes the choice, the
+// facade refuses the same case built in code with the same message, and the message is the table's. The
+// non-linear plate with error-controlled steps, the Green–Lagrange strains on MITC9 and the consistent
+// mass under explicit steps were refused only once a run had started building its model.
+TEST(Capabilities, TheDeckRefusesEachRestrictionAtItsKeyAndTheFacadeWithTheSameMessage) {
+  const std::string damage = test::example_text("damage-progressive.toml");
+  const std::string expl = test::example_text("thesis-3.6-v268-explicit.toml");
+  const std::string adaptive = test::example_text("impact-adaptive-steps.toml");
+  const std::vector<Broken> cases{
+      {"ply damage needs the MITC9 element", with(damage, "element", "\"q9\""), "element = \"q9\"",
+       [](ImpactCaseDescription& d) { d.mesh.element = ElementFormulation::q9; }, damage},
+      {"Green–Lagrange strains need the q9 element",
+       with(with(expl, "strain_measure", "\"green-lagrange\""), "element", "\"mitc9\""), "strain_measure",
+       [](ImpactCaseDescription& d) {
+         d.nonlinear->measure = StrainMeasure::green_lagrange;
+         d.mesh.element = ElementFormulation::mitc9;
+       },
+       expl},
+      {"explicit steps need the lumped mass", with(expl, "mass", "\"consistent\""), "mass = \"consistent\"",
+       [](ImpactCaseDescription& d) { d.mesh.mass = MassMatrix::consistent; }, expl},
+      {"error-controlled steps: the elastic plate and the rigid target only",
+       with(adaptive, "analysis", "\"impact\"\nnonlinear = true"), "adaptive",
+       [](ImpactCaseDescription& d) { d.nonlinear = NonlinearImpactSettings{}; }, adaptive},
+      {"selective mass scaling: a stack only", with(expl, "end", "\"auto\"\nmass_scaling = \"selective\""),
+       "mass_scaling",
+       [](ImpactCaseDescription& d) { d.time.mass_scaling.kind = MassScalingKind::selective; }, expl},
+  };
+  for (const Broken& c : cases) {
+    SCOPED_TRACE(c.rule);
+    const std::string message(restriction(c.rule).message);
+    const std::string deck_error = refusal_of([&] { (void)parse_deck(c.deck, "c.toml"); });
+    EXPECT_TRUE(deck_error.starts_with(place_of(c.deck, c.key_line))) << deck_error;
+    EXPECT_NE(deck_error.find("error: " + message), std::string::npos) << deck_error;
+    ImpactCaseDescription d = impact_case_description(parse_deck(c.unbroken, "u.toml"));
+    c.break_case(d);
+    EXPECT_EQ(refusal_of([&] { const ImpactCase built(d); }), message);
+  }
 }
 
 } // namespace

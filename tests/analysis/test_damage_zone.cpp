@@ -63,7 +63,7 @@ TEST(DamageZone, InterfacesTakeThreeNodalPointsInTheirCohesiveZone) {
   const double zone = 7.7e9 * 600.0 / (50e6 * 50e6);
   EXPECT_NEAR(size->size, 0.9 * 2.0 / 3.0 * zone, 1e-12);
   // With Gauss points a third of a side apart, the side may be the zone itself.
-  interfaces.stack.rule = CohesiveIntegration::gauss;
+  interfaces.stack.rule = CohesiveQuadrature::gauss;
   EXPECT_NEAR(damage_element_size(coupon(), std::nullopt, interfaces)->size, 0.9 * zone, 1e-12);
   // Both laws: the smaller size, here the plies' band limit.
   EXPECT_NEAR(damage_element_size(coupon(), ProgressiveDamageSettings{}, interfaces)->size,

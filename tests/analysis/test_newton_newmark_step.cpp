@@ -40,12 +40,7 @@ TEST(NewtonNewmarkStep, VonKarmanPliesThatCannotCrackAreTheVonKarmanPlate) {
       impact_case_description(parse_deck(with(strong, "model", "\"onset\""), "e.toml"));
   ASSERT_TRUE(damaged.progressive_damage && damaged.nonlinear);
   ASSERT_FALSE(elastic.progressive_damage);
-  const ProgressiveDamageSettings& ds = *damaged.progressive_damage;
-  elastic.nonlinear->residual_tolerance = ds.residual_tolerance;
-  elastic.nonlinear->displacement_tolerance = ds.displacement_tolerance;
-  elastic.nonlinear->refresh_ratio = ds.refresh_ratio;
-  elastic.nonlinear->max_iterations = ds.max_iterations;
-  elastic.nonlinear->refresh_after = std::numeric_limits<int>::max();
+  elastic.newton = newton_newmark_defaults(model_kind(damaged), case_integrator(damaged));
   const ImpactResult d = run(damaged), e = run(elastic);
   ASSERT_TRUE(d.complete && e.complete);
   ASSERT_TRUE(d.progressive.has_value());

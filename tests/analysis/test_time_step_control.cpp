@@ -275,8 +275,8 @@ TEST(AdaptiveImpact, TheNonLinearPlateRefusesAdaptiveSteps) {
   Deck deck = parse_deck(plate_deck("dt = 50e-6\nadaptive = true\n"), "t.toml");
   ImpactCaseDescription d = impact_case_description(deck);
   d.nonlinear = NonlinearImpactSettings{};
-  const ImpactCase impact(d);
-  EXPECT_THROW((void)impact.run(), std::invalid_argument);
+  // refused by the table of what runs when the case is built (issue 78), before anything is assembled
+  EXPECT_THROW({ const ImpactCase impact(d); }, std::invalid_argument);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // The command line: every analysis writes DIR/summary.json with the SPEC §10 keys; bad decks exit
 // non-zero with the file:line:column message.
+#include "plyimpact/analysis/capabilities.hpp"
 #include "support/cli.hpp"
 
 #include <gtest/gtest.h>
@@ -53,6 +54,15 @@ TEST(Cli, ADeckAloneRunsItsOwnAnalysis) {
   const CommandResult r = run(deck.string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_EQ(read_json(dir / "out" / "summary.json")["analysis"], "modal");
+}
+
+// `plyimpact capabilities` prints the one table of what runs and its restrictions, as the code has them
+// (issue 78): what docs/deck.md holds too.
+TEST(Cli, CapabilitiesPrintsTheTableOfWhatRunsAndItsRestrictions) {
+  const CommandResult r = run("capabilities");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find(plyimpact::capability_table_markdown()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(plyimpact::restrictions_markdown()), std::string::npos) << r.out;
 }
 
 TEST(Cli, StaticModalBucklingSummariesCarryTheirKeys) {
@@ -262,7 +272,8 @@ TEST(Cli, AnUnknownCommandIsNamedWithTheValidOnesAndExits2) {
   EXPECT_EQ(slip.status, 2) << slip.out;
   EXPECT_EQ(slip.out,
             "plyimpact: error: unknown command 'impactt' (did you mean 'impact'?); the commands are "
-            "laminate, static, modal, buckling, impact, threshold, plot, sweep (plyimpact --help), "
+            "laminate, static, modal, buckling, impact, threshold, plot, sweep, capabilities "
+            "(plyimpact --help), "
             "or give a deck file: plyimpact DECK.toml\n");
   const CommandResult other = run("frobnicate");
   EXPECT_EQ(other.status, 2) << other.out;

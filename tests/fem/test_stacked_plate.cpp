@@ -94,7 +94,7 @@ protected:
   Mesh mesh = structured_rectangle({a, b}, 2, 2);
   StackedPlateModel stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {}, free_edges};
   /// The same stack integrated with `rule`.
-  std::unique_ptr<StackedPlateModel> stack_with(CohesiveIntegration rule) const {
+  std::unique_ptr<StackedPlateModel> stack_with(CohesiveQuadrature rule) const {
     return std::make_unique<StackedPlateModel>(mesh, lam, StackSettings{{0}, as4_peek_interface(h), rule},
                                                Discretization{}, free_edges);
   }
@@ -211,7 +211,7 @@ TEST_F(TwoSubLaminates, EachPointStandsForACellOfItsElementWithThePointsArea) {
 // The force is the gradient of the stored energy: central differences of ψ(u) along random directions
 // equal f·v (the interface part, undamaged and with a half-damaged interface), with either rule.
 TEST_F(TwoSubLaminates, ForceIsTheGradientOfTheStoredEnergy) {
-  for (const CohesiveIntegration rule : {CohesiveIntegration::nodal, CohesiveIntegration::gauss}) {
+  for (const CohesiveQuadrature rule : {CohesiveQuadrature::nodal, CohesiveQuadrature::gauss}) {
     const auto ruled = stack_with(rule);
     std::srand(7);
     const Eigen::VectorXd u = 1e-9 * Eigen::VectorXd::Random(ruled->size());
@@ -234,7 +234,7 @@ TEST_F(TwoSubLaminates, ForceIsTheGradientOfTheStoredEnergy) {
 // as a one-thread loop makes it, with either rule.
 TEST_F(TwoSubLaminates, InterfaceEvaluationIsTheSameBitsOnOneTwoAndFourThreads) {
   const Mesh fine = structured_rectangle({a, b}, 8, 6);
-  for (const CohesiveIntegration rule : {CohesiveIntegration::nodal, CohesiveIntegration::gauss}) {
+  for (const CohesiveQuadrature rule : {CohesiveQuadrature::nodal, CohesiveQuadrature::gauss}) {
     const StackedPlateModel ruled(fine, lam, StackSettings{{0}, as4_peek_interface(h), rule},
                                   Discretization{}, free_edges);
     std::srand(11);
@@ -265,7 +265,7 @@ TEST_F(TwoSubLaminates, InterfaceEvaluationIsTheSameBitsOnOneTwoAndFourThreads) 
 // Tangent = central differences of the force, across the onset of softening (FEBio's check), with either
 // rule: the nodal one couples each node pair of the faces alone, Gauss couples all nine nodes.
 TEST_F(TwoSubLaminates, TangentIsTheDerivativeOfTheForce) {
-  for (const CohesiveIntegration rule : {CohesiveIntegration::nodal, CohesiveIntegration::gauss}) {
+  for (const CohesiveQuadrature rule : {CohesiveQuadrature::nodal, CohesiveQuadrature::gauss}) {
     const auto ruled = stack_with(rule);
     std::srand(11);
     // Separations of about the onset (N/K = 80e6/5e14 = 1.6e-7 m) so that some points soften.

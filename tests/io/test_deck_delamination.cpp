@@ -72,7 +72,7 @@ TEST(DeckDelamination, ByDefaultTheLaminateIsCutWhereverTheOrientationChanges) {
   EXPECT_NEAR(law.penalty_stiffness, 50.0 * 9.65e9 / 0.93e-3, 1e-6 * law.penalty_stiffness);
   EXPECT_TRUE(d.delamination->supports_on_all);
   EXPECT_EQ(d.delamination->integration, DamageIntegration::lagged);
-  EXPECT_EQ(d.delamination->stack.rule, CohesiveIntegration::nodal);
+  EXPECT_EQ(d.delamination->stack.rule, CohesiveQuadrature::nodal);
   // The case the engine runs carries them unchanged.
   const ImpactCaseDescription c = impact_case_description(deck_with(as4_peek_law, "impact",
                                                                     "[impactor]\nmass = 0.3\nvelocity = 2.0\n"
@@ -111,7 +111,7 @@ TEST(DeckDelamination, ListedInterfacesAndTheOtherChoicesAreRead) {
   EXPECT_EQ(d.delamination->stack.cuts, (std::vector<int>{3}));
   EXPECT_EQ(d.delamination->stack.interface.penalty_stiffness, 1e15);
   EXPECT_EQ(d.delamination->stack.interface.onset, CohesiveOnset::camanho_quadratic);
-  EXPECT_EQ(d.delamination->stack.rule, CohesiveIntegration::gauss);
+  EXPECT_EQ(d.delamination->stack.rule, CohesiveQuadrature::gauss);
   EXPECT_FALSE(d.delamination->supports_on_all);
   EXPECT_EQ(d.delamination->integration, DamageIntegration::implicit);
   const Deck e = deck_with("integration = \"explicit\"\n" + as4_peek_law);

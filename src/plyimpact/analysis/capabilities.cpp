@@ -76,7 +76,92 @@ std::size_t column(Integrator i) {
   return static_cast<std::size_t>(i);
 }
 
+ElementFormulation resolved(ElementFormulation e) { // fem/plate_model.cpp: automatic is MITC9
+  return e == ElementFormulation::automatic ? ElementFormulation::mitc9 : e;
+}
+
+// clang-format off
+constexpr std::array<Restriction, 9> restriction_table{{
+  {"mesh", "element", "ply damage needs the MITC9 element",
+   "damage.model = \"progressive\" needs the MITC9 element: leave out mesh.element or set it to \"mitc9\" "
+   "(the q9 element integrates transverse shear at other points than the 3x3 Gauss points where the plies' "
+   "damage lives)",
+   [](const ModelKind& m, Integrator, const CaseOptions& o) {
+     return m.ply_damage && o.element == ElementFormulation::q9;
+   }},
+  {"", "strain_measure", "ply damage takes the von Kármán strains",
+   "progressive damage takes the von Kármán strains of a non-linear plate: set strain_measure = "
+   "\"von-karman\" (the Green–Lagrange measure is not built for the layered section whose plies crack)",
+   [](const ModelKind& m, Integrator, const CaseOptions& o) {
+     return m.von_karman && m.ply_damage && o.strain_measure == StrainMeasure::green_lagrange;
+   }},
+  {"", "strain_measure", "Green–Lagrange strains need the q9 element",
+   "the Green-Lagrange strain measure is available with the q9 element only (its transverse-shear terms "
+   "(2.55) have no MITC9 interpolation): set [mesh] element = \"q9\" or use strain_measure = \"von-karman\"",
+   [](const ModelKind& m, Integrator, const CaseOptions& o) {
+     return m.von_karman && o.strain_measure == StrainMeasure::green_lagrange &&
+            resolved(o.element) == ElementFormulation::mitc9;
+   }},
+  {"", "region", "interfaces need one laminate over the whole plate",
+   "[delamination] needs one laminate over the whole plate: [[region]] tables with other laminates are not "
+   "available with it yet (docs/delamination.md, limits)",
+   [](const ModelKind& m, Integrator, const CaseOptions& o) { return m.interfaces && o.regions; }},
+  {"mesh", "mass", "explicit steps need the lumped mass",
+   "explicit steps (central differences) need a diagonal mass: set [mesh] mass = \"lumped\" (a consistent "
+   "mass would be solved at every step), or choose implicit steps",
+   [](const ModelKind& m, Integrator i, const CaseOptions& o) {
+     return !m.rigid_target && i == Integrator::central_difference && o.mass != MassMatrix::lumped;
+   }},
+  {"time", "adaptive", "error-controlled steps are implicit",
+   "time.adaptive factors K̄ at each step level, but explicit steps solve nothing and need every step below "
+   "the stable one: remove adaptive = true, or use integration = \"implicit\"",
+   [](const ModelKind&, Integrator i, const CaseOptions& o) {
+     return o.adaptive && i == Integrator::central_difference;
+   }},
+  {"time", "adaptive", "error-controlled steps: the elastic plate and the rigid target only",
+   "time.adaptive controls the error of the contact force only: the non-linear plate, the ply criteria, the "
+   "progressive damage and the interfaces need every step at one Δt. Remove adaptive = true (and give dt), "
+   "or leave out nonlinear, [damage] and [delamination]",
+   [](const ModelKind& m, Integrator, const CaseOptions& o) {
+     return o.adaptive && (m.von_karman || m.ply_damage || m.interfaces || o.ply_criteria);
+   }},
+  {"time", "mass_scaling", "mass scaling: explicit steps only",
+   "time.mass_scaling scales the lumped mass of explicit steps, but the plate's steps are implicit: remove "
+   "mass_scaling, or choose explicit steps (integration = \"explicit\" in [time], [damage] or [delamination])",
+   [](const ModelKind&, Integrator i, const CaseOptions& o) {
+     return o.mass_scaling != MassScalingKind::none && i != Integrator::central_difference;
+   }},
+  {"time", "mass_scaling", "selective mass scaling: a stack only",
+   "time.mass_scaling = \"selective\" adds mass to the relative motion of a stack's interfaces, and this "
+   "case has no [delamination]: use \"rotary\" (or \"nodal\" with target_dt) for a single plate",
+   [](const ModelKind& m, Integrator, const CaseOptions& o) {
+     return o.mass_scaling == MassScalingKind::selective && !m.interfaces;
+   }},
+}};
+// clang-format on
+
 } // namespace
+
+std::span<const Restriction> restrictions() {
+  return restriction_table;
+}
+
+const Restriction* broken_restriction(const ModelKind& m, Integrator i, const CaseOptions& o) {
+  for (const Restriction& r : restriction_table)
+    if (r.breaks(m, i, o)) return &r;
+  return nullptr;
+}
+
+std::string restrictions_markdown() {
+  std::string md;
+  for (const Restriction& r : restriction_table) {
+    const std::string key = r.key == "region" ? std::string("[[region]]")
+                            : r.table.empty() ? std::string(r.key)
+                                              : fmt::format("{}.{}", r.table, r.key);
+    md += fmt::format("- {} (`{}`)\n", r.rule, key);
+  }
+  return md;
+}
 
 std::string_view to_string(Integrator i) {
   switch (i) {
@@ -176,8 +261,23 @@ Integrator case_integrator(const ImpactCaseDescription& d) {
   return resolve_integrator(model_kind(d), d.time.integration, damage, interfaces);
 }
 
+CaseOptions case_options(const ImpactCaseDescription& d) {
+  CaseOptions o;
+  o.element = d.mesh.element;
+  if (d.nonlinear) o.strain_measure = d.nonlinear->measure;
+  o.regions = !d.regions.empty();
+  o.mass = d.mesh.mass;
+  o.adaptive = d.time.adaptive.has_value();
+  o.mass_scaling = d.time.mass_scaling.kind;
+  return o;
+}
+
 void require_supported(const ImpactCaseDescription& d) {
-  if (auto why = refusal(model_kind(d), case_integrator(d))) throw std::invalid_argument(*why);
+  const ModelKind m = model_kind(d);
+  const Integrator i = case_integrator(d);
+  if (auto why = refusal(m, i)) throw std::invalid_argument(*why);
+  if (const Restriction* r = broken_restriction(m, i, case_options(d)))
+    throw std::invalid_argument(std::string(r->message));
 }
 
 } // namespace plyimpact

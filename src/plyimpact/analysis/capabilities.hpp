@@ -11,8 +11,11 @@
 // central differences on the lumped mass.
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
+#include "plyimpact/fem/mesh_spec.hpp"
+#include "plyimpact/fem/nonlinear_plate_element.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -62,13 +65,43 @@ struct Capability {
                                             std::optional<Integrator> damage,
                                             std::optional<Integrator> interfaces);
 
+/// What a case chooses beside its model and its integrator, where they restrict the choice.
+struct CaseOptions {
+  ElementFormulation element = ElementFormulation::automatic; ///< as asked ([mesh] element)
+  StrainMeasure strain_measure = StrainMeasure::von_karman;   ///< of von Kármán kinematics
+  bool regions = false;                                       ///< [[region]] tables with other laminates
+  MassMatrix mass = MassMatrix::lumped;                       ///< [mesh] mass
+  bool adaptive = false;                                      ///< error-controlled steps ([time] adaptive)
+  MassScalingKind mass_scaling = MassScalingKind::none;       ///< [time] mass_scaling
+  bool ply_criteria = false; ///< failure criteria tracked on the plies ([damage] criteria)
+};
+
+/// A rule of what runs beside the model × integrator table: a choice that a model or an integrator
+/// restricts, the deck key that makes it, and the refusal, with its reason and the way out.
+struct Restriction {
+  std::string_view table;   ///< the deck table of the key ("" at the top level)
+  std::string_view key;     ///< the key whose value is refused
+  std::string_view rule;    ///< what runs, in a few words (docs/deck.md, "What runs")
+  std::string_view message; ///< the refusal: what is refused, why, what to change
+  bool (*breaks)(const ModelKind&, Integrator, const CaseOptions&);
+};
+/// Every restriction, in the order they are checked (the more particular first).
+[[nodiscard]] std::span<const Restriction> restrictions();
+/// The first restriction a case breaks; null where it breaks none.
+[[nodiscard]] const Restriction* broken_restriction(const ModelKind& m, Integrator i, const CaseOptions& o);
+/// The restrictions as a Markdown list (docs/deck.md, "What runs"; `plyimpact capabilities`).
+[[nodiscard]] std::string restrictions_markdown();
+
 /// The model of a case.
 [[nodiscard]] ModelKind model_kind(const ImpactCaseDescription& d);
 /// The integrator of a case: [time] integration = "explicit", or the [damage] / [delamination]
 /// integration. Throws std::invalid_argument where they ask for different integrators (the whole plate
 /// steps with one).
 [[nodiscard]] Integrator case_integrator(const ImpactCaseDescription& d);
-/// Throws std::invalid_argument with refusal()'s message where the case's pair does not run.
+/// The options of a case that the restrictions look at.
+[[nodiscard]] CaseOptions case_options(const ImpactCaseDescription& d);
+/// Throws std::invalid_argument with refusal()'s message where the case's pair does not run, or with the
+/// message of the first restriction it breaks.
 void require_supported(const ImpactCaseDescription& d);
 
 } // namespace plyimpact

@@ -64,7 +64,7 @@ class CentralDifferencePolicy;
 class CentralDifferenceStepper final : public ModelStepper {
 public:
   CentralDifferenceStepper(const CentralDifferencePolicy& policy, const Impactor& impactor);
-  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+  ContactSolution advance(long step, double t, const PlateState& s, const CondensedContact& contact,
                           Eigen::VectorXd& u_next) override;
   void next_acceleration(const NewmarkCoefficients& /*nc*/, const PlateState& /*s*/,
                          const Eigen::VectorXd& /*u_next*/, Eigen::VectorXd& a_next) const override {
@@ -77,7 +77,7 @@ public:
 private:
   /// CD6: throws NewtonFailure, naming the step to use, where the contact spring of the step's secant
   /// stiffness on the mass 1/`contact_flexibility_` makes Δt unstable.
-  void check_contact(long step, double t, const ContactSolution& cs, const ContactStep& contact) const;
+  void check_contact(long step, double t, const ContactSolution& cs, const CondensedContact& contact) const;
 
   const CentralDifferencePolicy& p_;
   Eigen::VectorXd a_next_;
@@ -170,7 +170,7 @@ CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy
       contact_flexibility_(contact_flexibility(policy, loading_.sampler())) {}
 
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
-                                                  const ContactStep& contact, Eigen::VectorXd& u_next) {
+                                                  const CondensedContact& contact, Eigen::VectorXd& u_next) {
   const double dt = p_.dt();
   predict_displacement(dt, s, u_next);                                           // CD1
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
@@ -196,7 +196,7 @@ std::optional<double> CentralDifferenceStepper::added_mass_kinetic_energy(const 
 }
 
 void CentralDifferenceStepper::check_contact(long step, double t, const ContactSolution& cs,
-                                             const ContactStep& contact) const {
+                                             const CondensedContact& contact) const {
   const double d_alpha = cs.alpha - contact.previous_indentation();
   if (cs.force <= 0.0 || contact.previous_force() <= 0.0 || d_alpha == 0.0) return;
   const double k_secant = std::abs((cs.force - contact.previous_force()) / d_alpha);

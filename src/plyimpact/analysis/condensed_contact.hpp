@@ -1,16 +1,16 @@
 #pragma once
-// The scalar contact problem of one time step (SPEC §4): with the plate's deflection at the contact
-// point affine in the force, ws = ŵs + c Fc, the indentation is α = (ŵi − ŵs) − (βΔt²/m + c) Fc and
-// Fc = F(α) by the contact law.
+// The contact of one time step condensed to one scalar equation (SPEC §4): with the plate's deflection
+// at the contact point affine in the force, ws = ŵs + c Fc, the indentation is
+// α = (ŵi − ŵs) − (βΔt²/m + c) Fc and Fc = F(α) by the contact law.
 #include "plyimpact/analysis/hertz_contact.hpp"
 #include "plyimpact/analysis/newmark.hpp"
 
 namespace plyimpact {
 
-class ContactStep {
+class CondensedContact {
 public:
   /// `previous`: Fc and α of the last converged step.
-  ContactStep(const HertzContact& law, const NewmarkStepper& impactor, const ContactSolution& previous)
+  CondensedContact(const HertzContact& law, const NewmarkStepper& impactor, const ContactSolution& previous)
       : law_(law), impactor_(impactor), previous_(previous) {}
   /// Fc and α for the load-free plate deflection ŵs and the plate's compliance c at the contact point.
   [[nodiscard]] ContactSolution solve(double w_hat, double c) const {

@@ -44,7 +44,7 @@ public:
   /// One iteration from u_k: `solve(g, x)` puts K̄⁻¹ g into x; the contact problem at û is solved into
   /// `cs`, and u_k becomes u_{k+1}. Returns the length of the correction |u_{k+1} − u_k|.
   template <class Solve>
-  double correct(const Solve& solve, const ContactLoading& loading, const ContactStep& contact,
+  double correct(const Solve& solve, const ContactLoading& loading, const CondensedContact& contact,
                  ContactSolution& cs) {
     solve(g_, correction_);
     u_iterate_.noalias() = uk_ + correction_; // û, the iterate before the contact force

@@ -110,7 +110,7 @@ double ContactLoading::compliance(double alpha) const {
   return (1.0 - b.weight) * c0 + b.weight * response_entry(b.j + 1).compliance;
 }
 
-ContactSolution ContactLoading::solve(const ContactStep& step, double w_hat) const {
+ContactSolution ContactLoading::solve(const CondensedContact& step, double w_hat) const {
   if (!distributed()) return step.solve(w_hat, response_entry(0).compliance);
   // c depends weakly on α (through the radius): a fixed point on c converges in a few passes.
   double c = compliance(step.previous_indentation());

@@ -14,7 +14,7 @@
 // the same numbers in any order), computed when the contact first reaches them, and interpolated linearly
 // in a between two entries; so is the plate's response K̄⁻¹ s_load and the contact compliance
 // c = swᵀK̄⁻¹ s_load. The contact force and the radius of the step are solved together (no lag).
-#include "plyimpact/analysis/contact_step.hpp"
+#include "plyimpact/analysis/condensed_contact.hpp"
 #include "plyimpact/analysis/parameters.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/plate_model.hpp"
@@ -52,7 +52,7 @@ public:
 
   /// The contact force and indentation of the step, the plate's deflection being ŵ + c(α) Fc at the
   /// contact point (SPEC §4; c depends on α through the contact radius for the Hertz pressure).
-  [[nodiscard]] ContactSolution solve(const ContactStep& step, double w_hat) const;
+  [[nodiscard]] ContactSolution solve(const CondensedContact& step, double w_hat) const;
   /// u += Fc K̄⁻¹ s_load(α).
   void add_response(double alpha, double force, Eigen::VectorXd& u) const;
   /// s_load(α), the load of a unit contact force.

@@ -55,7 +55,7 @@ double ContactPointStepper::free_deflection(long n, const std::vector<double>& g
 }
 
 ContactSolution ContactPointStepper::advance(long step, double /*t*/, const PlateState& /*s*/,
-                                             const ContactStep& contact, Eigen::VectorXd& u_next) {
+                                             const CondensedContact& contact, Eigen::VectorXd& u_next) {
   const auto n = static_cast<std::size_t>(step);
   if (g_->size() <= n) g_ = response_->at_least(n + 1);
   const std::vector<double>& g = *g_;

@@ -55,7 +55,7 @@ class ContactPointStepper final : public PlateStepper {
 public:
   explicit ContactPointStepper(std::shared_ptr<const ContactPointResponse> response);
 
-  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+  ContactSolution advance(long step, double t, const PlateState& s, const CondensedContact& contact,
                           Eigen::VectorXd& u_next) override;
   void accept(const PlateState& before, const Eigen::VectorXd& u_next) override;
   /// 0: the split of the plate's energy is not known (strain_energy() holds all of it).

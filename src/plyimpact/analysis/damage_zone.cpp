@@ -36,7 +36,7 @@ DamageElementSize cohesive_zone_side(const Laminate& laminate, const Delaminatio
     E2 = std::min(E2, m.E2);
   const double l = std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
                             cohesive_zone_length(E2, c.G_IIc, c.shear_strength));
-  const bool nodal = interfaces.stack.rule == CohesiveIntegration::nodal;
+  const bool nodal = interfaces.stack.rule == CohesiveQuadrature::nodal;
   const double side = nodal ? 2.0 * l / 3.0 : l; // three points in l
   return {side, fmt::format("three interface points in the cohesive zone ({:.3g} mm)", l * 1e3)};
 }

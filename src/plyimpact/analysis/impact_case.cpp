@@ -68,7 +68,7 @@ PlatePhysics plate_physics(const ImpactCaseDescription& d) {
     interfaces->zone_y = d.impactor.y;
     interfaces->zone_radius = damage_zone_radius(d.laminates.front());
   }
-  return {d.nonlinear, d.progressive_damage, std::move(interfaces), case_integrator(d)};
+  return {d.nonlinear, d.progressive_damage, std::move(interfaces), case_integrator(d), d.newton};
 }
 
 /// The model that central differences move in `d` (the same for ω_max and the policy); null where the
@@ -106,18 +106,6 @@ ImpactCaseDescription within_memory(ImpactCaseDescription d) {
 /// throws std::invalid_argument with the reason otherwise, before anything is assembled.
 ImpactCaseDescription supported(ImpactCaseDescription d) {
   require_supported(d);
-  if (d.time.mass_scaling.kind != MassScalingKind::none &&
-      case_integrator(d) != Integrator::central_difference)
-    throw std::invalid_argument(fmt::format(
-        "time.mass_scaling = \"{}\" scales the lumped mass of explicit steps, but this case's steps are "
-        "implicit: remove mass_scaling, or choose explicit steps (integration = \"explicit\" in [time], "
-        "[damage] or [delamination])",
-        to_string(d.time.mass_scaling.kind)));
-  if (d.time.adaptive && case_integrator(d) == Integrator::central_difference)
-    throw std::invalid_argument(
-        "time.adaptive factors K̄ at each step level, but [time] integration = \"explicit\" solves nothing "
-        "and needs every step below the stable one: remove adaptive = true, or use integration = "
-        "\"implicit\"");
   return d;
 }
 

@@ -47,6 +47,9 @@ struct ImpactCaseDescription {
   /// engaged: the laminate cut into sub-laminates tied by cohesive interfaces that may delaminate
   /// (fem/stacked_model.cpp, docs/delamination.md)
   std::optional<DelaminationSettings> delamination;
+  /// Newton–Newmark's iterations, for an expert (tests give two runs the same); empty: the defaults of the
+  /// model's row of the table of what runs (analysis/newton_settings.hpp).
+  std::optional<NewtonSettings> newton;
   SparseSolverKind solver = SparseSolverKind::cholmod_simplicial;
   FillOrdering ordering = FillOrdering::amd; ///< of the factor of K̄ (bench/README.md, "Orderings")
   std::optional<double> memory_limit_bytes;  ///< refuse a factor of K̄ estimated above this

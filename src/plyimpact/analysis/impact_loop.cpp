@@ -328,7 +328,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
         } else {
           t = static_cast<double>(step) * s.dt;
         }
-        cs = plate->advance(step, t, state, ContactStep(law, impactor, {force, alpha}), u_next);
+        cs = plate->advance(step, t, state, CondensedContact(law, impactor, {force, alpha}), u_next);
         plate->next_acceleration(*step_nc, state, u_next, a_next);
         if (!control) break;
         if (cs.force == 0.0 && force == 0.0) { // out of contact: nothing to control

@@ -23,7 +23,7 @@ class LinearStepPolicy;
 class LinearStepper final : public PlateStepper {
 public:
   LinearStepper(const LinearStepPolicy& policy, const Impactor& impactor);
-  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+  ContactSolution advance(long step, double t, const PlateState& s, const CondensedContact& contact,
                           Eigen::VectorXd& u_next) override;
   [[nodiscard]] double kinetic_energy(const PlateState& s) const override;
   [[nodiscard]] double strain_energy(const PlateState& s, double force) const override;
@@ -183,7 +183,7 @@ void LinearStepper::predict(const PlateState& s) {
 }
 
 ContactSolution LinearStepper::advance(long /*step*/, double /*t*/, const PlateState& s,
-                                       const ContactStep& contact, Eigen::VectorXd& u_next) {
+                                       const CondensedContact& contact, Eigen::VectorXd& u_next) {
   const ContactLoading& loading = *loadings_[static_cast<std::size_t>(level_)];
   // 1. Load-free predictor û = K̄⁻¹ M (c0 u + c2 v + c3 a): one back-substitution.
   predict(s);

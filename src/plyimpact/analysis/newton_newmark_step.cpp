@@ -49,7 +49,7 @@ class NewtonNewmarkPolicy;
 class NewtonNewmarkStepper final : public ModelStepper {
 public:
   NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor);
-  ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+  ContactSolution advance(long step, double t, const PlateState& s, const CondensedContact& contact,
                           Eigen::VectorXd& u_next) override;
   [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
@@ -71,7 +71,7 @@ private:
   void refresh_before(long step, const Eigen::VectorXd& u);
   /// The part of the two-point trapezoidal step (DL7) fixed by its start u_n, f(u_n) − Fc_n s_n, into
   /// start_.
-  void step_start(const Eigen::VectorXd& u_n, const ContactStep& contact);
+  void step_start(const Eigen::VectorXd& u_n, const CondensedContact& contact);
 
   const NewtonNewmarkPolicy& p_;
   Factor in_use_ = Factor::shared;
@@ -205,7 +205,7 @@ void NewtonNewmarkStepper::refresh_before(long step, const Eigen::VectorXd& u) {
 // held model is linear the mean of the step's forces is then exact and the step keeps the energy, also
 // where faces open or close within it. aₙ does not enter (where the laws moved at the commit, the Newmark
 // accelerations are not the equilibrium ones).
-void NewtonNewmarkStepper::step_start(const Eigen::VectorXd& u_n, const ContactStep& contact) {
+void NewtonNewmarkStepper::step_start(const Eigen::VectorXd& u_n, const CondensedContact& contact) {
   state_->start_force(u_n, start_);
   if (contact.previous_force() != 0.0) {
     loading_.scaled_load(contact.previous_indentation(), contact.previous_force(), previous_load_);
@@ -217,7 +217,7 @@ void NewtonNewmarkStepper::step_start(const Eigen::VectorXd& u_n, const ContactS
 /// the model's trial at it, the correction with the stepper's factor and the contact solved inside it.
 class NewtonNewmarkStepper::StepProblem final : public NewtonProblem {
 public:
-  StepProblem(NewtonNewmarkStepper& stepper, const PlateState& s, const ContactStep& contact)
+  StepProblem(NewtonNewmarkStepper& stepper, const PlateState& s, const CondensedContact& contact)
       : p_(stepper), s_(s), contact_(contact) {
     p_.iteration_.predict(s, stepper.p_.options_.newmark); // constant acceleration: a_{n+1} = aₙ
     if (p_.two_point_) p_.step_start(s.u, contact);
@@ -278,14 +278,14 @@ private:
 
   NewtonNewmarkStepper& p_;
   const PlateState& s_;
-  const ContactStep& contact_;
+  const CondensedContact& contact_;
   ContactSolution cs_, cs_start_; ///< cs_start_: where the last correction started, with u_start_
   double start_residual_ = INFINITY;
   int halvings_ = 0; ///< of the last correction
 };
 
 ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateState& s,
-                                              const ContactStep& contact, Eigen::VectorXd& u_next) {
+                                              const CondensedContact& contact, Eigen::VectorXd& u_next) {
   refresh_before(step, s.u);
   StepProblem problem(*this, s, contact);
   const NewtonSettings& ns = p_.settings_;

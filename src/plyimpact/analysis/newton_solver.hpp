@@ -57,6 +57,7 @@ struct NewtonControl {
   double refresh_ratio = 0.25; ///< refactor when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
   int refresh_after = std::numeric_limits<int>::max(); ///< … or after this many corrections
   int refresh_every = 0; ///< … or after every this many corrections (0: never)
+  friend bool operator==(const NewtonControl&, const NewtonControl&) = default;
 };
 
 /// The control of a problem that factors before every correction itself (full Newton): the solver's

@@ -8,8 +8,8 @@ namespace {
 
 class RigidStepper final : public PlateStepper {
 public:
-  ContactSolution advance(long /*step*/, double /*t*/, const PlateState& /*s*/, const ContactStep& contact,
-                          Eigen::VectorXd& /*u_next*/) override {
+  ContactSolution advance(long /*step*/, double /*t*/, const PlateState& /*s*/,
+                          const CondensedContact& contact, Eigen::VectorXd& /*u_next*/) override {
     return contact.solve(0.0, 0.0);
   }
   [[nodiscard]] double kinetic_energy(const PlateState& /*s*/) const override { return 0.0; }

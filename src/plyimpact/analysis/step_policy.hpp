@@ -14,13 +14,13 @@
 // A policy is built once per case (it owns what does not depend on the impactor: matrices and their
 // factorization) and starts a PlateStepper for each run (what does: the contact point and load).
 #include "plyimpact/analysis/capabilities.hpp"
+#include "plyimpact/analysis/condensed_contact.hpp"
 #include "plyimpact/analysis/contact_load.hpp"
-#include "plyimpact/analysis/contact_step.hpp"
 #include "plyimpact/analysis/hertz_contact.hpp"
 #include "plyimpact/analysis/impact_result.hpp"
 #include "plyimpact/analysis/mass_scaling.hpp"
 #include "plyimpact/analysis/newmark.hpp"
-#include "plyimpact/analysis/newton_solver.hpp"
+#include "plyimpact/analysis/newton_settings.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/mass_operator.hpp"
@@ -54,7 +54,7 @@ public:
   PlateStepper& operator=(const PlateStepper&) = delete;
 
   /// Solves step `step` (ending at t) for the plate and the contact force together: u_{n+1} into u_next.
-  virtual ContactSolution advance(long step, double t, const PlateState& s, const ContactStep& contact,
+  virtual ContactSolution advance(long step, double t, const PlateState& s, const CondensedContact& contact,
                                   Eigen::VectorXd& u_next) = 0;
   /// a_{n+1} of the step advance() has just solved: Newmark's (2.11) from u_{n+1}, unless the plate
   /// has it from its equation of motion (the explicit steps of central_difference_step.cpp).
@@ -140,19 +140,6 @@ struct StepPolicyOptions {
 /// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
 [[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options);
-/// How Newton–Newmark iterates a step (newton_newmark_step.cpp).
-struct NewtonSettings {
-  NewtonControl control;                ///< solves per step, and when a step refactors (newton_solver.hpp)
-  double residual_tolerance = 1e-4;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
-  double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
-  /// At most every this many steps, refactor at uₙ after a step that needed more than one solve.
-  std::optional<long> refresh_interval;
-  /// A correction made with a run's own factor that does not lower the residual is halved up to this many
-  /// times (0: never; a law only piecewise smooth, whose full corrections can cycle between its pieces).
-  int max_halvings = 0;
-  std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
-  std::string advice = "reduce time.dt"; ///< what they advise
-};
 /// Newton–Newmark on any model with an iteration matrix (newton_newmark_step.cpp): the one implicit
 /// integrator of the models whose force is not linear in u.
 [[nodiscard]] std::unique_ptr<StepPolicy>
@@ -208,6 +195,9 @@ struct PlatePhysics {
   std::optional<ProgressiveDamageSettings> ply_damage;     ///< plies that crack
   std::optional<DelaminationSettings> interfaces;          ///< sub-laminates tied by cohesive interfaces
   Integrator integrator = Integrator::implicit;
+  /// Newton–Newmark's iterations (an expert's choice); empty: the defaults of the model's row of the table
+  /// of what runs (newton_newmark_defaults).
+  std::optional<NewtonSettings> newton;
 };
 /// The model of `plate` that `physics` makes (fem/mechanical_model.hpp): elastic, von Kármán, with plies
 /// that crack (either kinematics), or the laminate cut into sub-laminates tied by cohesive interfaces (one
@@ -217,7 +207,7 @@ struct PlatePhysics {
                                                                 const PlatePhysics& physics);
 /// The deck key that chose central differences for `physics`, for the messages of the explicit step.
 [[nodiscard]] std::string explicit_key(const PlatePhysics& physics);
-/// The one factory of step policies (step_policies.cpp): the linear elastic plate under implicit Newmark
+/// The one factory of step policies (step_policy.cpp): the linear elastic plate under implicit Newmark
 /// takes linear_step_policy; every other cell its mechanical_model (`model`, where the caller has built
 /// it) under Newton–Newmark (implicit, lagged) or central differences, with the iterations and messages
 /// of its laws. Throws std::invalid_argument where the cell does not run, where Δt is above the explicit

@@ -12,14 +12,14 @@ namespace plyimpact {
 
 namespace {
 
-std::vector<QuadraturePoint> rule_points(CohesiveIntegration rule) {
+std::vector<QuadraturePoint> rule_points(CohesiveQuadrature rule) {
   static constexpr auto lobatto3x3 = tensor_product(lobatto3);
-  if (rule == CohesiveIntegration::nodal) return {lobatto3x3.begin(), lobatto3x3.end()};
+  if (rule == CohesiveQuadrature::nodal) return {lobatto3x3.begin(), lobatto3x3.end()};
   return {gauss3x3.begin(), gauss3x3.end()};
 }
 
-const QuadratureRule1D<3>& rule_1d(CohesiveIntegration rule) {
-  return rule == CohesiveIntegration::nodal ? lobatto3 : gauss3;
+const QuadratureRule1D<3>& rule_1d(CohesiveQuadrature rule) {
+  return rule == CohesiveQuadrature::nodal ? lobatto3 : gauss3;
 }
 
 /// The step's traction and tangent at a point whose damage is held (`lagged`: the law's at the held
@@ -74,7 +74,7 @@ int element_dof(int a, int l) {
 } // namespace
 
 CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
-                                     int lower_offset, CohesiveLaw law, CohesiveIntegration rule,
+                                     int lower_offset, CohesiveLaw law, CohesiveQuadrature rule,
                                      double loading_band)
     : upper_(upper), lower_(lower), upper_offset_(upper_offset), lower_offset_(lower_offset),
       half_upper_(0.5 * upper.laminate().thickness()), half_lower_(0.5 * lower.laminate().thickness()),

@@ -33,7 +33,7 @@
 namespace plyimpact {
 
 /// The integration rule of the interface elements.
-enum class CohesiveIntegration {
+enum class CohesiveQuadrature {
   nodal, ///< Lobatto 3 × 3: the points are the nine nodes (Simpson weights)
   gauss, ///< Gauss 3 × 3
 };
@@ -68,7 +68,7 @@ public:
   /// `upper` and `lower` on the same mesh; their free DOFs start at `upper_offset` and `lower_offset`
   /// of the stacked vector. `loading_band`: the tangent's choice at the law's kink (CohesiveLaw::update).
   CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset, int lower_offset,
-                    CohesiveLaw law, CohesiveIntegration rule = CohesiveIntegration::nodal,
+                    CohesiveLaw law, CohesiveQuadrature rule = CohesiveQuadrature::nodal,
                     double loading_band = 0.0);
 
   [[nodiscard]] const CohesiveLaw& law() const { return law_; }

@@ -91,10 +91,6 @@ struct ProgressiveDamageSettings {
   double refactor_tolerance = 0.05; ///< refactor K̄ when some d has grown by more than this since the last
   double area_threshold = 0.5;      ///< a ply point counts as damaged when a damage variable reaches this
   double screen_fraction = 0.6;     ///< elements whose Hashin bound exceeds this fraction of 1 are active
-  int max_iterations = 60;          ///< solves per time step
-  double residual_tolerance = 1e-6; ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
-  double displacement_tolerance = 1e-8; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖ (estimated with diag K̄)
-  double refresh_ratio = 0.5; ///< refactor within a step when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
   /// Elements larger than a mode's band limit: false (default) = BandLimitError when the mode initiates
   /// there; true = the strengths of those elements are lowered to their band limit (Maimí et al. 2007,
   /// band_limited_strengths in ply_damage.hpp) and strength_reduction_warning() says by how much.

@@ -26,16 +26,10 @@ enum class StrainMeasure { von_karman, green_lagrange };
 
 [[nodiscard]] std::string to_string(StrainMeasure m);
 
-/// The deck's [nonlinear]: the strain measure of the plate, and how Newton–Newmark iterates it.
+/// The deck's non-linear plate: its strain measure (how an integrator iterates it is the integrator's:
+/// analysis/newton_settings.hpp).
 struct NonlinearImpactSettings {
   StrainMeasure measure = StrainMeasure::von_karman;
-  int max_iterations = 30;              ///< per time step
-  double residual_tolerance = 1e-4;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
-  double displacement_tolerance = 1e-6; ///< ‖Δu‖ ≤ tol · ‖u_{n+1}‖
-  int refresh_after = 4;                ///< refactor K̄ when a step needs more iterations
-  double refresh_ratio = 0.25;          ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
-  long refresh_interval =
-      200; ///< at most every this many steps, refactor at uₙ after a step needing > 1 solve
   friend bool operator==(const NonlinearImpactSettings&, const NonlinearImpactSettings&) = default;
 };
 

@@ -62,7 +62,7 @@ const Laminate& single_laminate(const PlateModel& model) {
   return model.laminate();
 }
 
-std::optional<std::string> process_zone_warning(const ProcessZone& z, CohesiveIntegration rule) {
+std::optional<std::string> process_zone_warning(const ProcessZone& z, CohesiveQuadrature rule) {
   if (z.length >= 3.0 * z.point_spacing) return std::nullopt;
   return fmt::format(
       "delamination: the cohesive zone of the interfaces, E2 G_c / strength^2 = {:.3g} mm in the shorter "
@@ -71,7 +71,7 @@ std::optional<std::string> process_zone_warning(const ProcessZone& z, CohesiveIn
       "strengths (Turon et al. 2007: tau = sqrt(9 pi E2 G_c / (32 * 3 * {:.3g} mm))) "
       "(docs/delamination.md)",
       z.length * 1e3, z.length / z.point_spacing, z.point_spacing * 1e3,
-      2.0 * z.length / 3.0 * 1e3 * (rule == CohesiveIntegration::nodal ? 1.0 : 1.5), z.point_spacing * 1e3);
+      2.0 * z.length / 3.0 * 1e3 * (rule == CohesiveQuadrature::nodal ? 1.0 : 1.5), z.point_spacing * 1e3);
 }
 
 /// Turon et al. (2010): with S/N ≠ √(G_IIc/G_Ic) the mixed-mode law does not dissipate G_c(B) along a
@@ -140,7 +140,7 @@ ProcessZone StackedImpactPlate::process_zone() const {
   if (largest == 0.0) largest = largest_side(false);
   return {std::min(cohesive_zone_length(E2, c.G_Ic, c.normal_strength),
                    cohesive_zone_length(E2, c.G_IIc, c.shear_strength)),
-          settings_.stack.rule == CohesiveIntegration::nodal ? 0.5 * largest : largest / 3.0};
+          settings_.stack.rule == CohesiveQuadrature::nodal ? 0.5 * largest : largest / 3.0};
 }
 
 void StackedImpactPlate::top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {

@@ -29,11 +29,6 @@ struct DelaminationSettings {
   /// damage updated from the converged separation; implicit: the damage iterated with the step;
   /// central_difference: explicit steps on the lumped mass, the law once per step.
   DamageIntegration integration = DamageIntegration::lagged;
-  int max_iterations = 30;              ///< per time step
-  double residual_tolerance = 1e-5;     ///< ‖r‖ ≤ tol · (‖f_int‖ + ‖M a‖ + ‖Fc s‖)
-  double displacement_tolerance = 1e-6; ///< ‖K̄_diag⁻¹ r‖ ≤ tol · ‖u_{n+1}‖
-  int refresh_after = 4;                ///< factor the tangent when a step needs more iterations
-  double refresh_ratio = 0.5;           ///< … or when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
   /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
   /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
   bool update_factor = true;

@@ -95,7 +95,7 @@ struct StackedPlateEvaluation {
 struct StackSettings {
   std::vector<int> cuts;        ///< split_laminate's cuts
   CohesiveParameters interface; ///< the law of every interface
-  CohesiveIntegration rule = CohesiveIntegration::nodal;
+  CohesiveQuadrature rule = CohesiveQuadrature::nodal;
   std::optional<double> shear_correction = std::nullopt; ///< of every sub-laminate; empty: each slice's (DL0)
   /// Newton's choice of tangent at the law's kink (CohesiveLaw::update): the loading tangent within
   /// this relative band below the softening envelope.

@@ -15,7 +15,7 @@ PlateModel plate_model(const Deck& deck) {
 }
 
 ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) {
-  check_memory_before_assembly(deck); // a uniform mesh, naming the deck; ImpactCase checks a graded one
+  check_deck_fits_memory(deck); // a uniform mesh, naming the deck; ImpactCase checks a graded one
   ImpactCaseDescription d;
   d.plate = deck.plate.value_or(PlateGeometry{});
   d.mesh_from_file = deck.file_mesh;

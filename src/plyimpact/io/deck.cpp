@@ -1,6 +1,7 @@
 // The deck parser (docs/deck.md): the top-level table and the order in which the tables are read;
 // each table has its reader in deck_*.cpp (deck_tables.hpp).
 #include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/io/deck_plausibility.hpp"
 #include "plyimpact/io/deck_table.hpp"
 #include "plyimpact/io/deck_tables.hpp"
@@ -125,13 +126,46 @@ std::optional<Eigen::Vector2d> refinement_point(const TableReader& top) {
   return std::nullopt;
 }
 
-/// Whether the deck's plate steps with central differences: [time], [damage] or [delamination] integration
-/// = "explicit" (which of them win where they differ, analysis/capabilities.hpp, is the case's to say).
-bool steps_explicitly(const Deck& d) {
-  return d.time.integration == TimeIntegration::central_difference ||
-         (d.damage.progressive &&
-          d.damage.progressive->integration == DamageIntegration::central_difference) ||
-         (d.delamination && d.delamination->integration == DamageIntegration::central_difference);
+/// The plate model the deck describes (analysis/capabilities.hpp).
+ModelKind deck_model(const Deck& d) {
+  return {d.plate && d.plate->rigid, d.nonlinear, d.damage.progressive.has_value(),
+          d.delamination.has_value()};
+}
+
+/// The options of the deck that the restrictions of what runs look at.
+CaseOptions deck_options(const Deck& d) {
+  CaseOptions o;
+  if (d.mesh) {
+    o.element = d.mesh->element;
+    o.mass = d.mesh->mass;
+  }
+  o.strain_measure = d.nonlinear_settings.measure;
+  o.regions = !d.regions.empty();
+  o.adaptive = d.time.adaptive.has_value();
+  o.mass_scaling = d.time.mass_scaling.kind;
+  o.ply_criteria = !d.damage.criteria.empty();
+  return o;
+}
+
+/// Refuses, at the key that asks for it, a deck whose plate model, integrator and options the one table of
+/// what runs refuses (analysis/capabilities.hpp): the deck and the facade say the same.
+void refuse_what_does_not_run(const TableReader& top, const Deck& d) {
+  const ModelKind model = deck_model(d);
+  std::optional<Integrator> damage, interfaces;
+  if (d.damage.progressive) damage = integrator_of(d.damage.progressive->integration);
+  if (d.delamination) interfaces = integrator_of(d.delamination->integration);
+  Integrator integrator = Integrator::implicit;
+  try {
+    integrator = resolve_integrator(model, d.time.integration, damage, interfaces);
+  } catch (const std::invalid_argument& e) {
+    top.fail_here(e.what());
+  }
+  if (auto why = refusal(model, integrator)) top.fail_here(*why);
+  const Restriction* r = broken_restriction(model, integrator, deck_options(d));
+  if (r == nullptr) return;
+  const std::optional<TableReader> table =
+      r->table.empty() ? std::optional<TableReader>(top) : top.optional_table(r->table);
+  (table ? *table : top).fail_at(r->key, std::string(r->message));
 }
 
 } // namespace
@@ -200,28 +234,7 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);
   if (const auto t = top.optional_table("output")) read_output(*t, d);
   if (const auto t = top.optional_table("run")) read_run(*t, d);
-  if (d.time.adaptive && d.time.integration == TimeIntegration::central_difference)
-    top.optional_table("time")->fail_at(
-        "adaptive",
-        "time.adaptive factors K̄ at each step level, but integration = \"explicit\" solves nothing "
-        "and needs every step below the stable one: remove adaptive = true, or use integration = "
-        "\"implicit\"");
-  if (d.time.mass_scaling.kind != MassScalingKind::none && !steps_explicitly(d))
-    top.optional_table("time")->fail_at(
-        "mass_scaling",
-        "time.mass_scaling scales the lumped mass of explicit steps, but this deck's steps are implicit: "
-        "remove mass_scaling, or choose explicit steps (integration = \"explicit\" in [time], [damage] or "
-        "[delamination])");
-  if (d.time.mass_scaling.kind == MassScalingKind::selective && !d.delamination)
-    top.optional_table("time")->fail_at(
-        "mass_scaling", "time.mass_scaling = \"selective\" adds mass to the relative motion of a stack's "
-                        "interfaces, and this deck has no [delamination]: use \"rotary\" (or \"nodal\" with "
-                        "target_dt) for a single plate");
-  if (d.time.adaptive && (!d.damage.criteria.empty() || d.damage.progressive || d.delamination))
-    top.optional_table("time")->fail_at(
-        "adaptive", "time.adaptive controls the error of the contact force only: the ply criteria, the "
-                    "progressive damage and the interfaces need every step at one Δt. Remove adaptive = true "
-                    "(and give dt), or leave out [damage] and [delamination]");
+  refuse_what_does_not_run(top, d);
   d.warnings = plausibility_warnings(d);
   return d;
 }

@@ -110,14 +110,9 @@ BucklingSettings read_buckling(const TableReader& t) {
 namespace {
 
 /// What the progressive damage law needs of the deck, checked where [damage] asks for it (a deck error
-/// with its line, before any run): every ply's strengths and toughnesses, the MITC9 element and the
-/// exact reduced stiffness.
+/// with its line, before any run): every ply's strengths and toughnesses and the exact reduced stiffness
+/// (the element: the restrictions of analysis/capabilities.hpp, deck.cpp).
 void require_progressive_damage_data(const TableReader& t, const Deck& d, const PlyDamageOptions& law) {
-  if (d.mesh && d.mesh->element == ElementFormulation::q9)
-    t.fail_at("model",
-              "damage.model = \"progressive\" needs the MITC9 element: leave out mesh.element or set it "
-              "to \"mitc9\" (the q9 element integrates transverse shear at other points than the 3x3 "
-              "Gauss points where the plies' damage lives)");
   std::set<std::string> checked;
   for (const Laminate& lam : all_laminates(d)) {
     if (lam.stiffness_model() != ReducedStiffnessModel::exact)

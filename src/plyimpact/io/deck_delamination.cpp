@@ -122,16 +122,12 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool
   t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
           "penalty_stiffness", "onset", "integration", "points", "supports", "seed_radius"});
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
-  if (!d.regions.empty())
-    t.fail_here(
-        "[delamination] needs one laminate over the whole plate: [[region]] tables with other laminates "
-        "are not available with it yet");
   DelaminationSettings s;
   s.stack.cuts = read_interfaces(t, *d.laminate);
   s.stack.interface = read_law(t, *d.laminate, s.stack.cuts, s.law_defaults);
-  s.stack.rule = t.optional_choice<CohesiveIntegration>("points", {{"nodal", CohesiveIntegration::nodal},
-                                                                   {"gauss", CohesiveIntegration::gauss}})
-                     .value_or(CohesiveIntegration::nodal);
+  s.stack.rule = t.optional_choice<CohesiveQuadrature>(
+                      "points", {{"nodal", CohesiveQuadrature::nodal}, {"gauss", CohesiveQuadrature::gauss}})
+                     .value_or(CohesiveQuadrature::nodal);
   s.supports_on_all =
       t.optional_choice<bool>("supports", {{"all", true}, {"bottom", false}}).value_or(s.supports_on_all);
   // A disk delaminated from the start in every interface, centred under the impactor (case_from_deck).

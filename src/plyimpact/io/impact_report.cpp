@@ -105,7 +105,7 @@ nlohmann::json delamination_json(const DelaminationSettings& s, const Delaminati
   for (const auto& [key, origin] : s.law_defaults)
     j["law_defaults"][key] = origin;
   j["onset"] = law.onset == CohesiveOnset::turon_bk ? "turon-bk" : "camanho-quadratic";
-  j["points"] = s.stack.rule == CohesiveIntegration::nodal ? "nodal" : "gauss";
+  j["points"] = s.stack.rule == CohesiveQuadrature::nodal ? "nodal" : "gauss";
   j["supports"] = s.supports_on_all ? "all" : "bottom";
   if (s.stack.seed_radius > 0.0) j["seed_radius_m"] = s.stack.seed_radius;
   j["integration"] = std::string(to_string(s.integration));

@@ -9,7 +9,7 @@
 
 namespace plyimpact {
 
-void check_memory_before_assembly(const Deck& deck) {
+void check_deck_fits_memory(const Deck& deck) {
   if (deck.plate && deck.plate->rigid) return;
   // a gmsh file, a .geo or a rig preset (meshed, not yet assembled), or a uniform [mesh] nx x ny; a graded
   // mesh is checked by the impact case

@@ -10,6 +10,6 @@ namespace plyimpact {
 /// For a deck with a uniform [mesh] nx × ny, or a mesh from a gmsh file, a .geo or a rig preset (estimated
 /// from its node count): throws InsufficientMemory (analysis/guards.hpp) when the estimate exceeds the
 /// available memory (io/system_memory.hpp).
-void check_memory_before_assembly(const Deck& deck);
+void check_deck_fits_memory(const Deck& deck);
 
 } // namespace plyimpact
