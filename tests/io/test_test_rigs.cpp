@@ -6,6 +6,7 @@
 #include "plyimpact/io/deck.hpp"
 #include "plyimpact/io/plate_analyses.hpp"
 #include "plyimpact/io/test_rigs.hpp"
+#include "support/cli.hpp"
 #include "test_paths.hpp"
 
 #include <gtest/gtest.h>
@@ -26,24 +27,9 @@ const fs::path examples = fs::path(PLYIMPACT_SOURCE_DIR) / "examples";
 
 /// A T300/976 [45/0/-45/90]2s (4 mm) deck on the rig, with `rest` appended.
 Deck rig_deck(const std::string& analysis, const std::string& rig, const std::string& rest) {
-  return parse_deck(fmt::format(R"(analysis = "{}"
-[materials.T300_976]
-E1 = 144.8e9
-E2 = 9.65e9
-G12 = 7.10e9
-G13 = 7.10e9
-G23 = 5.92e9
-nu12 = 0.30
-rho = 1389.2
-[laminate]
-material = "T300_976"
-layup = "[45/0/-45/90]2s"
-ply_thickness = 0.25e-3
-[rig]
-{}
-{})",
-                                analysis, rig, rest),
-                    (examples / "rig-test.toml").string());
+  std::string text = test::coupon_laminate(); // its first line is the analysis
+  text.replace(0, text.find('\n'), fmt::format("analysis = \"{}\"", analysis));
+  return parse_deck(fmt::format("{}[rig]\n{}\n{}", text, rig, rest), (examples / "rig-test.toml").string());
 }
 
 const std::string central_load = "[load.point]\nx = 0.075\ny = 0.050\nforce = 1000.0\n";
