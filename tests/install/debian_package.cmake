@@ -12,12 +12,19 @@ endif()
 execute_process(COMMAND dpkg-deb --contents ${deb} OUTPUT_VARIABLE contents)
 foreach(path ./usr/bin/plyimpact ./usr/include/plyimpact/analysis/impact_case.hpp
              ./usr/lib/cmake/plyimpact/plyimpactConfig.cmake ./usr/lib/python3/dist-packages/plyimpact/__init__.py
-             ./usr/share/doc/plyimpact/examples/thesis-3.6-v268.toml)
+             ./usr/share/doc/plyimpact/examples/thesis-3.6-v268.toml ./usr/share/doc/plyimpact/copyright
+             ./usr/share/doc/plyimpact/LICENSE)
   string(FIND "${contents}" " ${path}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "the package lacks ${path}")
   endif()
 endforeach()
+# The licence the package carries (docs/install.md, "Licence"): Debian's copyright file names it.
+execute_process(COMMAND dpkg-deb --fsys-tarfile ${deb} COMMAND tar -xO ./usr/share/doc/plyimpact/copyright
+                OUTPUT_VARIABLE copyright)
+if(NOT copyright MATCHES "Files: \\*\nCopyright: [^\n]+\nLicense: GPL-3\\+")
+  message(FATAL_ERROR "the package's copyright file does not name the licence:\n${copyright}")
+endif()
 execute_process(COMMAND dpkg-deb --field ${deb} Depends OUTPUT_VARIABLE depends)
 message("Depends: ${depends}")
 foreach(package libgmsh libcholmod gnuplot-nox)

@@ -14,6 +14,17 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E env PLYIMPACT_CMAKE_BUILD_DIR=${BUIL
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "pip install failed (${rc}):\n${out}")
 endif()
+# The licence travels with the wheel (docs/install.md, "Licence"): LICENSE in its metadata folder, and the
+# licence named in its metadata.
+file(GLOB license ${WORK_DIR}/venv/lib/python3*/site-packages/plyimpact-*.dist-info/LICENSE)
+file(GLOB metadata ${WORK_DIR}/venv/lib/python3*/site-packages/plyimpact-*.dist-info/METADATA)
+if(NOT license OR NOT metadata)
+  message(FATAL_ERROR "the installed package carries no LICENSE or METADATA")
+endif()
+file(READ ${metadata} metadata_text)
+if(NOT metadata_text MATCHES "License: GPL-3.0-or-later")
+  message(FATAL_ERROR "the package's metadata does not name the licence:\n${metadata_text}")
+endif()
 execute_process(COMMAND ${WORK_DIR}/venv/bin/plyimpact --version OUTPUT_VARIABLE version RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0 OR NOT version MATCHES "^plyimpact [0-9]+\\.[0-9]+\\.[0-9]+")
   message(FATAL_ERROR "the installed command: --version gave ${rc}: ${version}")
