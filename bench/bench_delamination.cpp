@@ -74,7 +74,7 @@ void BM_Section36_ThreeInterfacesExplicit(benchmark::State& state) {
   d.mesh.mass = MassMatrix::lumped;
   d.time.dt.reset();
   d.delamination = three_interfaces_that_hold();
-  d.delamination->integration = DamageIntegration::central_difference;
+  d.time.laws = Integrator::central_difference;
   run_case(state, d);
   state.counters["dt_ns"] = ImpactCase(d).settings().dt * 1e9;
 }

@@ -116,7 +116,7 @@ TEST(Capabilities, ThePlateStepsWithOneIntegrator) {
   // Left out, the plies' step follows [time]: explicit.
   const Deck deck = parse_deck(with(damage, "end", "1.5e-4\nintegration = \"explicit\""), "e.toml");
   ASSERT_TRUE(deck.damage.progressive.has_value());
-  EXPECT_EQ(deck.damage.progressive->integration, DamageIntegration::central_difference);
+  EXPECT_EQ(deck.time.laws, Integrator::central_difference);
   // The same conflict built in code (Python, sweeps) is refused by the facade.
   ImpactCaseDescription d = impact_case_description(parse_deck(damage, "d.toml"));
   d.time.integration = TimeIntegration::central_difference;

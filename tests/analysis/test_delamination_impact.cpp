@@ -2,7 +2,9 @@
 // interfaces. With interfaces that hold, the run is the single laminate's; a time step too long for
 // the interfaces' softening is refused. After the impactor leaves, delaminated faces that open and
 // close keep the energy.
+#include "plyimpact/analysis/capabilities.hpp"
 #include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/analysis/newton_settings.hpp"
 #include "plyimpact/io/case_from_deck.hpp"
 #include "plyimpact/io/deck.hpp"
 #include "support/cli.hpp"
@@ -166,7 +168,8 @@ TEST(DelaminationImpact, UpdatingTheFactorGivesTheRunThatFactorsAtEveryRefresh) 
   text = test::with_line(text, "end = 0.35e-3", "end = 0.3e-3");
   ImpactCaseDescription d = impact_case_description(parse_deck(text, "test.toml"));
   const ImpactResult updated = ImpactCase(d).run();
-  d.delamination->update_factor = false;
+  d.newton = newton_newmark_defaults(model_kind(d), case_integrator(d));
+  d.newton->update_factor = false;
   const ImpactResult factored = ImpactCase(d).run();
   ASSERT_TRUE(updated.delamination && factored.delamination);
   std::printf(

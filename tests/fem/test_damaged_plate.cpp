@@ -505,7 +505,7 @@ TEST(DamagedPlateEnergy, WorkOfTheReactionIsStoredPlusDissipated) {
   EXPECT_EQ(b.dissipated_in_unloading, 0.0);
 }
 
-// The lagged step (DamageIntegration::lagged) solves with the damage of the last commit:
+// The lagged step (LawTrials::hold) solves with the damage of the last commit:
 // frozen_internal_force must be the secant K_s(dₙ) u, the matrix the step factors, with the damage held
 // (at the committed u, where the modes are those of the commit, it is the law's force).
 // In a [90]4 element in homogeneous uniaxial transverse tension (v free) σ22 = (1 − d_mt)E2 ε22 exactly:

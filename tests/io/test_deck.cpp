@@ -342,11 +342,8 @@ std::string damage_deck_error(const std::string& keys) {
 
 TEST(Deck, DamageIntegrationChoosesTheIteratedOrTheLaggedSecant) {
   // [damage] integration: "implicit" (default) or "lagged"; only with the progressive model.
-  EXPECT_EQ(damage_deck("model = \"progressive\"\n").damage.progressive->integration,
-            DamageIntegration::implicit);
-  EXPECT_EQ(
-      damage_deck("model = \"progressive\"\nintegration = \"lagged\"\n").damage.progressive->integration,
-      DamageIntegration::lagged);
+  EXPECT_EQ(damage_deck("model = \"progressive\"\n").time.laws, Integrator::implicit);
+  EXPECT_EQ(damage_deck("model = \"progressive\"\nintegration = \"lagged\"\n").time.laws, Integrator::lagged);
   const std::string misspelt = damage_deck_error("model = \"progressive\"\nintegration = \"lag\"\n");
   EXPECT_NE(misspelt.find("lagged"), std::string::npos) << misspelt;
   const std::string onset = damage_deck_error("integration = \"lagged\"\n");

@@ -71,7 +71,7 @@ TEST(DeckDelamination, ByDefaultTheLaminateIsCutWhereverTheOrientationChanges) {
   // interface is the 2-ply one, 2 × 0.465 mm: K = 50 × 9.65e9 / 0.93e-3 = 5.18817e14 Pa/m.
   EXPECT_NEAR(law.penalty_stiffness, 50.0 * 9.65e9 / 0.93e-3, 1e-6 * law.penalty_stiffness);
   EXPECT_TRUE(d.delamination->supports_on_all);
-  EXPECT_EQ(d.delamination->integration, DamageIntegration::lagged);
+  EXPECT_EQ(d.time.laws, Integrator::lagged);
   EXPECT_EQ(d.delamination->stack.rule, CohesiveQuadrature::nodal);
   // The case the engine runs carries them unchanged.
   const ImpactCaseDescription c = impact_case_description(deck_with(as4_peek_law, "impact",
@@ -113,9 +113,9 @@ TEST(DeckDelamination, ListedInterfacesAndTheOtherChoicesAreRead) {
   EXPECT_EQ(d.delamination->stack.interface.onset, CohesiveOnset::camanho_quadratic);
   EXPECT_EQ(d.delamination->stack.rule, CohesiveQuadrature::gauss);
   EXPECT_FALSE(d.delamination->supports_on_all);
-  EXPECT_EQ(d.delamination->integration, DamageIntegration::implicit);
+  EXPECT_EQ(d.time.laws, Integrator::implicit);
   const Deck e = deck_with("integration = \"explicit\"\n" + as4_peek_law);
-  EXPECT_EQ(e.delamination->integration, DamageIntegration::central_difference);
+  EXPECT_EQ(e.time.laws, Integrator::central_difference);
 }
 
 TEST(DeckDelamination, InMillimetreUnitsTheLawBecomesSI) {
@@ -203,18 +203,17 @@ TEST(DeckDelamination, WhatCannotRunIsRefusedWithTheKeyNamed) {
 
 // The plate steps with one integrator: a deck that names ply damage and delamination and no integration
 // runs both lagged (the step that runs a whole event, docs/delamination.md); one that names it in one
-// table has it in both.
+// table has it for both (one value: Deck::time.laws).
 TEST(DeckDelamination, PliesAndInterfacesStepWithTheIntegrationOneOfThemGives) {
   const auto integrations = [](const std::string& damage, const std::string& interfaces) {
     const Deck d = parse_deck(plies_and_interfaces(damage, interfaces), "deck.toml");
-    return std::pair{d.damage.progressive->integration, d.delamination->integration};
+    return d.time.laws;
   };
-  using enum DamageIntegration;
-  EXPECT_EQ(integrations("", ""), std::pair(lagged, lagged));
-  EXPECT_EQ(integrations("integration = \"implicit\"\n", ""), std::pair(implicit, implicit));
-  EXPECT_EQ(integrations("", "integration = \"implicit\"\n"), std::pair(implicit, implicit));
-  EXPECT_EQ(integrations("", "integration = \"explicit\"\n"),
-            std::pair(central_difference, central_difference));
+  using enum Integrator;
+  EXPECT_EQ(integrations("", ""), lagged);
+  EXPECT_EQ(integrations("integration = \"implicit\"\n", ""), implicit);
+  EXPECT_EQ(integrations("", "integration = \"implicit\"\n"), implicit);
+  EXPECT_EQ(integrations("", "integration = \"explicit\"\n"), central_difference);
 }
 
 TEST(DeckDelamination, ALayupOfOneOrientationNeedsItsInterfacesListed) {

@@ -217,18 +217,6 @@ std::string integrators_that_run(const ModelKind& m) {
   return list.empty() ? "none" : list;
 }
 
-Integrator integrator_of(DamageIntegration i) {
-  switch (i) {
-  case DamageIntegration::implicit:
-    return Integrator::implicit;
-  case DamageIntegration::lagged:
-    return Integrator::lagged;
-  case DamageIntegration::central_difference:
-    return Integrator::central_difference;
-  }
-  return Integrator::implicit;
-}
-
 Integrator resolve_integrator(const ModelKind& m, TimeIntegration time, std::optional<Integrator> damage,
                               std::optional<Integrator> interfaces) {
   const auto differ = [&](std::string_view first, Integrator a, std::string_view second, Integrator b) {
@@ -255,10 +243,12 @@ ModelKind model_kind(const ImpactCaseDescription& d) {
 }
 
 Integrator case_integrator(const ImpactCaseDescription& d) {
-  std::optional<Integrator> damage, interfaces;
-  if (d.progressive_damage) damage = integrator_of(d.progressive_damage->integration);
-  if (d.delamination) interfaces = integrator_of(d.delamination->integration);
-  return resolve_integrator(model_kind(d), d.time.integration, damage, interfaces);
+  std::optional<Integrator> laws = d.time.laws;
+  if (!laws && d.delamination && d.time.integration != TimeIntegration::central_difference)
+    laws = Integrator::lagged; // the stack's default
+  const bool plies = d.progressive_damage.has_value();
+  return resolve_integrator(model_kind(d), d.time.integration, plies ? laws : std::nullopt,
+                            plies ? std::nullopt : laws);
 }
 
 CaseOptions case_options(const ImpactCaseDescription& d) {

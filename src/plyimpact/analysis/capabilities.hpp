@@ -31,15 +31,6 @@ struct ModelKind {
   bool interfaces = false;   ///< sub-laminates tied by cohesive interfaces ([delamination])
 };
 
-/// The time integrator of a case (the whole plate steps with one).
-enum class Integrator {
-  implicit,           ///< Newmark: linear (one factor) or Newton–Newmark
-  lagged,             ///< Newton–Newmark with the laws' state of the step before held fixed
-  central_difference, ///< explicit central differences on the lumped mass
-};
-
-/// The deck spelling: "implicit", "lagged", "explicit".
-[[nodiscard]] std::string_view to_string(Integrator i);
 /// "elastic plate", "von Kármán plate with ply damage and interfaces", …
 [[nodiscard]] std::string model_name(const ModelKind& m);
 
@@ -56,8 +47,6 @@ struct Capability {
 
 /// The integrators the model runs with, in the deck's spelling ("implicit, lagged, explicit").
 [[nodiscard]] std::string integrators_that_run(const ModelKind& m);
-/// [damage] and [delamination] integration as an integrator.
-[[nodiscard]] Integrator integrator_of(DamageIntegration i);
 /// The one integrator of a plate model `m` from what the deck asks: `time` ([time] integration), the
 /// laws' own choices (`damage`, `interfaces`; empty where the model has no such law). Throws
 /// std::invalid_argument, naming the keys and what runs, where they ask for different integrators.

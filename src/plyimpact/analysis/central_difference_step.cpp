@@ -9,7 +9,9 @@
 //   a_{n+1} = M⁻¹ (Fc_{n+1} s_load − f_int(u_{n+1}))                   (CD3: the law once, at u_{n+1}, from
 //                                                                       the state committed before; M
 //                                                                       diagonal, or block-diagonal with
-//                                                                       selective mass scaling)
+//                                                                       selective mass scaling; again
+//                                                                       where the model admits an element
+//                                                                       that reached a failure surface)
 //   v_{n+1} = vₙ + ½Δt (aₙ + a_{n+1})                                  (CD4: γ = ½, the time loop's update)
 //
 // Stability: the undamped central-difference step is stable for Δt ω_max < 2, ω_max the highest
@@ -176,6 +178,7 @@ ContactSolution CentralDifferenceStepper::advance(long step, double t, const Pla
   const ContactSolution cs = contact.solve(loading_.sampler().dot(u_next), 0.0); // CD2
   check_contact(step, t, cs, contact);                                           // CD6
   state_->internal_force(u_next, dt, f_int_);
+  if (!state_->admit(u_next)) state_->internal_force(u_next, dt, f_int_); // with what joined at u_{n+1}
   loading_.scaled_load_minus(cs.alpha, cs.force, f_int_, force_);
   apply_inverse_mass(p_, force_, a_next_); // CD3
   if (!std::isfinite(a_next_.squaredNorm()))

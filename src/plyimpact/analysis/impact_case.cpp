@@ -145,7 +145,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
     s.dt = std::ldexp(s.dt, d.time.adaptive->levels - 1);
   s.adaptive = d.time.adaptive;
   s.integration = case_integrator(d);
-  if (d.delamination && d.delamination->integration != DamageIntegration::central_difference && !d.time.dt &&
+  if (d.delamination && s.integration != Integrator::central_difference && !d.time.dt &&
       !d.laminates.empty()) // within the interfaces' limit (DL5)
     s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
                                                                d.time.newmark_beta));

@@ -9,7 +9,7 @@
 // K̄ of the virgin undeformed model is factored once per case and shared by its runs until a run refreshes
 // it (modified Newton) where it pays:
 // - within a step, when the iterations slow down (contraction ratio above `refresh_ratio`, or more than
-//   `refresh_after` solves); where the matrix is that of the last trial (lagged damage) the refresh waits
+//   `refresh_after` solves); where the matrix is that of the last trial (held damage) the refresh waits
 //   for the trial at the next iterate, and a trial that changed a law's branch (a crack opened or closed)
 //   refreshes it at once (semi-smooth Newton on the modes);
 // - before a step, when the model says its state has drifted from the factored one (damage grown beyond
@@ -91,10 +91,13 @@ private:
 class NewtonNewmarkPolicy final : public ModelPolicy {
 public:
   NewtonNewmarkPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
-                      NewtonSettings settings)
+                      NewtonSettings settings, bool hold_laws)
       : ModelPolicy(std::move(model), options), settings_(std::move(settings)),
         initial_(options.solver, options.ordering) {
-    const SparseMatrix Kbar = iteration_kbar(*model_->virgin_state(), Eigen::VectorXd::Zero(model_->size()));
+    const std::unique_ptr<ModelState> virgin = model_->virgin_state();
+    trials_ = law_trials(*virgin, hold_laws);
+    virgin->set_law_trials(trials_);
+    const SparseMatrix Kbar = iteration_kbar(*virgin, Eigen::VectorXd::Zero(model_->size()));
     if (options.memory_limit_bytes)
       check_factor_memory(estimate_factor_memory(initial_, Kbar), *options.memory_limit_bytes);
     initial_.factorize(Kbar);
@@ -109,20 +112,28 @@ public:
     return state.iteration_matrix(u) + options_.newmark.c0 * M_.matrix();
   }
 
+  /// Held laws give the end forces of the trapezoid's two-point form (DL7) where the model has one and
+  /// the Newmark parameters are the trapezoid's (β = ¼, γ = ½).
+  [[nodiscard]] LawTrials law_trials(const ModelState& state, bool hold_laws) const {
+    if (!hold_laws) return LawTrials::advance;
+    const NewmarkCoefficients& nc = options_.newmark;
+    return state.two_point_form() && nc.beta == 0.25 && nc.gamma == 0.5 ? LawTrials::hold_step_mean
+                                                                        : LawTrials::hold;
+  }
+
   NewtonSettings settings_;
-  SpdSolver initial_;                ///< K̄ of the virgin undeformed model, shared by the runs
-  Eigen::VectorXd initial_diagonal_; ///< its diagonal
+  LawTrials trials_ = LawTrials::advance; ///< what the runs' trials do with the laws
+  SpdSolver initial_;                     ///< K̄ of the virgin undeformed model, shared by the runs
+  Eigen::VectorXd initial_diagonal_;      ///< its diagonal
 };
 
 NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor)
     : ModelStepper(policy, impactor), p_(policy), factor_(policy.options_.solver, policy.options_.ordering),
       kbar_diagonal_(policy.initial_diagonal_), start_(Eigen::VectorXd::Zero(policy.equations())),
       previous_load_(Eigen::VectorXd::Zero(policy.equations())),
-      two_point_(state_->two_point_form() && policy.options_.newmark.beta == 0.25 &&
-                 policy.options_.newmark.gamma == 0.5),
-      iteration_(policy.equations()) {
+      two_point_(policy.trials_ == LawTrials::hold_step_mean), iteration_(policy.equations()) {
   factor_.adopt_analysis_of(policy.initial_);
-  state_->use_two_point_form(two_point_);
+  state_->set_law_trials(policy.trials_);
   use_factor(Factor::shared);
   stats_.factorizations = 1; // the shared factor
   if (policy.settings_.max_halvings > 0) u_start_.resize(policy.equations());
@@ -152,7 +163,7 @@ void NewtonNewmarkStepper::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
 }
 
 void NewtonNewmarkStepper::refactor(const Eigen::VectorXd& at) {
-  if (in_use_ == Factor::cholesky && update_factor(at)) return;
+  if (in_use_ == Factor::cholesky && p_.settings_.update_factor && update_factor(at)) return;
   const SparseMatrix Kbar = p_.iteration_kbar(*state_, at);
   Factor factor = Factor::cholesky;
   if (state_->iteration_matrix_symmetric()) {
@@ -304,8 +315,8 @@ ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateSt
 
 std::unique_ptr<StepPolicy> newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model,
                                                        const StepPolicyOptions& options,
-                                                       NewtonSettings settings) {
-  return std::make_unique<NewtonNewmarkPolicy>(std::move(model), options, std::move(settings));
+                                                       NewtonSettings settings, bool hold_laws) {
+  return std::make_unique<NewtonNewmarkPolicy>(std::move(model), options, std::move(settings), hold_laws);
 }
 
 } // namespace plyimpact

@@ -23,6 +23,10 @@ struct NewtonSettings {
   /// A correction made with a run's own factor that does not lower the residual is halved up to this many
   /// times (0: never; a law only piecewise smooth, whose full corrections can cycle between its pieces).
   int max_halvings = 0;
+  /// A refresh takes the model's low-rank change of the matrix where it gives one (ModelState::
+  /// matrix_change: the held stack's interface points, DL8) and updates the factor instead of making it
+  /// anew; false: every refresh factors.
+  bool update_factor = true;
   std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
   std::string advice = "reduce time.dt"; ///< what they advise
   friend bool operator==(const NewtonSettings&, const NewtonSettings&) = default;

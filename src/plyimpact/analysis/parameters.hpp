@@ -104,6 +104,18 @@ struct MassScaling {
   friend bool operator==(const MassScaling&, const MassScaling&) = default;
 };
 
+/// The time integrator of a case (the whole plate steps with one: capabilities.hpp). The laws' trials
+/// follow it (fem/mechanical_model.hpp, LawTrials): implicit and central differences advance the laws
+/// with each trial, lagged holds them at the step before and advances them once, at the commit.
+enum class Integrator {
+  implicit,           ///< Newmark: linear (one factor) or Newton–Newmark, the laws iterated with the step
+  lagged,             ///< Newton–Newmark with the laws' state of the step before held fixed
+  central_difference, ///< explicit central differences on the lumped mass
+};
+
+/// The deck spelling: "implicit", "lagged", "explicit".
+[[nodiscard]] std::string_view to_string(Integrator i);
+
 /// Newmark time stepping (2.11)–(2.16).
 struct TimeStepping {
   std::optional<double> dt;  ///< [s]; empty = "auto"
@@ -119,6 +131,10 @@ struct TimeStepping {
   /// estimated local error of the indentation exceeds the tolerance
   std::optional<AdaptiveTimeStep> adaptive;
   MassScaling mass_scaling; ///< explicit runs only
+  /// [damage] / [delamination] integration: how the laws step, one value for both (the plate steps with
+  /// one integrator); empty: explicit where `integration` is, else lagged with interfaces, else implicit
+  /// (case_integrator, capabilities.hpp).
+  std::optional<Integrator> laws;
   friend bool operator==(const TimeStepping&, const TimeStepping&) = default;
 };
 

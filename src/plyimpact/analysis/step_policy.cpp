@@ -72,7 +72,8 @@ std::unique_ptr<StepPolicy> step_policy(const PlateModel& plate, const StepPolic
     return central_difference_step_policy(std::move(model), options, explicit_key(p));
   if (p.interfaces && !p.ply_damage) check_delamination_time_step(plate, options, *p.interfaces);
   return newton_newmark_step_policy(
-      std::move(model), options, p.newton.value_or(newton_newmark_defaults(model_kind_of(p), p.integrator)));
+      std::move(model), options, p.newton.value_or(newton_newmark_defaults(model_kind_of(p), p.integrator)),
+      p.integrator == Integrator::lagged);
 }
 
 double largest_delamination_time_step(const Laminate& laminate, const StackSettings& stack,

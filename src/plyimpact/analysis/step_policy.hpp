@@ -141,10 +141,11 @@ struct StepPolicyOptions {
 [[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
                                                              const StepPolicyOptions& options);
 /// Newton–Newmark on any model with an iteration matrix (newton_newmark_step.cpp): the one implicit
-/// integrator of the models whose force is not linear in u.
+/// integrator of the models whose force is not linear in u. `hold_laws`: the lagged step, whose trials
+/// hold the laws at the step before (LawTrials), else the laws are iterated with the step.
 [[nodiscard]] std::unique_ptr<StepPolicy>
 newton_newmark_step_policy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
-                           NewtonSettings settings);
+                           NewtonSettings settings, bool hold_laws = false);
 /// CD5: the largest Δt accepted for a plate whose highest angular frequency is ω_max: 0.9 · 2/ω_max [s].
 [[nodiscard]] double stable_time_step(double omega_max);
 /// What sets the stable step of a model moved by central differences: ω_max and where its mode lies.

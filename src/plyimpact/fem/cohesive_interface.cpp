@@ -22,11 +22,11 @@ const QuadratureRule1D<3>& rule_1d(CohesiveQuadrature rule) {
   return rule == CohesiveQuadrature::nodal ? lobatto3 : gauss3;
 }
 
-/// The step's traction and tangent at a point whose damage is held (`lagged`: the law's at the held
-/// damage; `lagged_mean`: 2 τ̄ − τ(δ₀) and 2 ∂τ̄/∂δ, DL6); the response's state is not the trial one.
+/// The step's traction and tangent at a point whose damage is held (`held`: the law's at the held
+/// damage; `held_step_mean`: 2 τ̄ − τ(δ₀) and 2 ∂τ̄/∂δ, DL6); the response's state is not the trial one.
 CohesiveResponse held_response(const CohesiveLaw& law, const CohesiveState& committed,
                                const Eigen::Vector3d& delta, CohesiveDamage damage) {
-  if (damage == CohesiveDamage::lagged) return law.at_fixed_damage(committed, delta);
+  if (damage == CohesiveDamage::held) return law.at_fixed_damage(committed, delta);
   CohesiveResponse mean = law.step_mean(committed, delta);
   mean.traction = 2.0 * mean.traction - law.at_fixed_damage(committed, committed.separation).traction;
   mean.tangent *= 2.0;

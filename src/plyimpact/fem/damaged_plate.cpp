@@ -833,8 +833,8 @@ bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& 
   return reached;
 }
 
-void DamagedPlateModel::explicit_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
-                                                Eigen::VectorXd& f) const {
+void DamagedPlateModel::joined_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
+                                              Eigen::VectorXd& f) const {
   internal_force_into(u, dt, field, f);
   if (activate_reached(u, field)) internal_force_into(u, dt, field, f);
 }

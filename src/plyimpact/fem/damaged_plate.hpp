@@ -39,44 +39,10 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace plyimpact {
-
-/// How a time step finds the damage it uses.
-enum class DamageIntegration {
-  /// Iterate within the step until the force and the damage the law returns at u_{n+1} agree (secant
-  /// iterations, docs/progressive_damage.md).
-  implicit,
-  /// The step is solved with the damage committed at the end of the previous step, d_n, held fixed; the
-  /// cracks open or close with the step's own strain (the loaded modes of PD7). That problem is convex
-  /// (its stress is continuous and monotone in the strain) and semi-smooth Newton on the modes solves it
-  /// in a few iterations; the law then gives d_{n+1} at u_{n+1} once. No iteration on the damage, so no
-  /// step stalls; the price is a lag of one step in the damage, which dissipates more than the law
-  /// records: O(Δt) while points soften over several steps, more where a point breaks within one step
-  /// (docs/progressive_damage.md, "The lagged step").
-  lagged,
-  /// Explicit central differences with the lumped mass (Abaqus/Explicit, LS-DYNA, OpenRadioss): the plate's
-  /// u_{n+1} follows from the state at n, the law is evaluated once at u_{n+1} and gives a_{n+1}; nothing
-  /// is solved or iterated. Stable below the step 2/ω_max of the undamaged plate, which the run checks
-  /// (docs/progressive_damage.md, "The explicit step").
-  central_difference,
-};
-
-/// The deck spelling of `[damage] integration` ("implicit", "lagged", "explicit").
-[[nodiscard]] constexpr std::string_view to_string(DamageIntegration i) {
-  switch (i) {
-  case DamageIntegration::implicit:
-    return "implicit";
-  case DamageIntegration::lagged:
-    return "lagged";
-  case DamageIntegration::central_difference:
-    return "explicit";
-  }
-  return "unknown";
-}
 
 /// The plate's kinematics under a section whose plies crack.
 enum class Kinematics {
@@ -86,8 +52,7 @@ enum class Kinematics {
 
 /// Settings of the progressive damage of the plies.
 struct ProgressiveDamageSettings {
-  PlyDamageOptions law; ///< α, viscosity η
-  DamageIntegration integration = DamageIntegration::implicit;
+  PlyDamageOptions law;             ///< α, viscosity η
   double refactor_tolerance = 0.05; ///< refactor K̄ when some d has grown by more than this since the last
   double area_threshold = 0.5;      ///< a ply point counts as damaged when a damage variable reaches this
   double screen_fraction = 0.6;     ///< elements whose Hashin bound exceeds this fraction of 1 are active
@@ -148,19 +113,18 @@ public:
   void internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field, Eigen::VectorXd& f) const;
   /// K_s with the trial damage of the last internal_force() (K0 where no element is active).
   [[nodiscard]] SparseMatrix secant_stiffness(const DamageField& field) const;
-  /// The matrix of a Newton iteration at u: secant_stiffness() with linear kinematics; with von Kármán's,
+  /// The matrix of an iteration at u: secant_stiffness() with linear kinematics; with von Kármán's,
   /// the elastic plate's tangent K_T(u) plus the damaged sections' difference taken with E_p at u, and the
   /// initial-stress term of their membrane resultants' difference.
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const;
-  /// The explicit step's evaluation: internal_force() at u, and again when an element the screen left out
-  /// has reached a Hashin surface at u (activate_reached(); no solve, u does not depend on it).
-  /// Into `f`, sized once by the caller: no allocation per step.
-  void explicit_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
-                               Eigen::VectorXd& f) const;
+  /// internal_force() at u, and again when an element the screen left out has reached a Hashin surface
+  /// at u (activate_reached(): it joins; u does not depend on it). Into `f`, sized once by the caller.
+  void joined_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
+                             Eigen::VectorXd& f) const;
   /// Activates the inactive elements that have reached a Hashin surface at u. True when there were any:
   /// the trial did not evaluate them, and the step must be iterated again.
   [[nodiscard]] bool activate_reached(const Eigen::VectorXd& u, DamageField& field) const;
-  /// The lagged step's force: the damage held at the committed d_n, the loaded modes (open or closed
+  /// The force with the damage held at the committed d_n, the loaded modes (open or closed
   /// cracks) chosen by the strain at u, K_s(d_n, u) u; the sections are kept, so secant_stiffness() is
   /// the matrix of the last call. No law update.
   [[nodiscard]] Eigen::VectorXd frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const;
@@ -196,7 +160,7 @@ private:
   /// Its rows ε0 and κ alone (the shear rows zero): what the Hashin screen reads.
   [[nodiscard]] Eigen::Matrix<double, 8, 1>
   membrane_bending_strain(const ElementOperators& ops, std::size_t p, const ElementVector& ue) const;
-  /// The sections of active element `slot` at u with the committed damage (the lagged step); returns the
+  /// The sections of active element `slot` at u with the committed damage (held damage); returns the
   /// strains of its damaged points (the others are left unset: their section is the undamaged one).
   PointStrains frozen_sections(DamageField& field, std::size_t slot, const Eigen::VectorXd& u) const;
   /// E_pᵀ w (C(d) − C0) ε_p (E_p = S_p with linear kinematics) summed over element `slot`'s damaged points
@@ -308,7 +272,7 @@ public:
   /// largest increment of any damage variable in the step (an upper bound of the largest growth).
   [[nodiscard]] double growth_since_factorization() const { return growth_; }
   void mark_factorized() { growth_ = 0.0; }
-  /// True when a lagged evaluation (frozen_internal_force) has changed the loaded modes (a crack opened or
+  /// True when a held evaluation (frozen_internal_force) has changed the loaded modes (a crack opened or
   /// closed) of some point since the last call of this function.
   [[nodiscard]] bool take_modes_changed() { return std::exchange(modes_changed_, false); }
   [[nodiscard]] int active_elements() const override { return static_cast<int>(active_.size()); }
@@ -322,8 +286,8 @@ private:
     int element = 0;
     std::vector<PlyDamageState> committed; ///< [point][ply][g]
     std::vector<PlyDamageState> trial;
-    std::vector<unsigned char> modes; ///< loaded modes of the last lagged evaluation (PlySecant::modes)
-    PerDamageMode trial_dissipation;  ///< of the trial increment [J]
+    std::vector<unsigned char> modes;         ///< loaded modes of the last held evaluation (PlySecant::modes)
+    PerDamageMode trial_dissipation;          ///< of the trial increment [J]
     std::array<SectionStiffness, 9> sections; ///< trial secant sections at the 9 points
     bool evaluated = false;                   ///< trial responses are those of the last internal_force()
     bool has_sections = false;                ///< `sections` hold the secant of some evaluation
@@ -332,7 +296,7 @@ private:
     std::array<bool, 9> pristine{true, true, true, true, true, true, true, true, true};
     std::array<bool, 9> pristine_trial{true, true, true, true, true, true, true, true, true};
     std::array<bool, 9> trial_touched{}; ///< the trial states of point p differ from the committed ones
-    bool modes_changed = false;          ///< the last lagged evaluation changed the loaded modes
+    bool modes_changed = false;          ///< the last held evaluation changed the loaded modes
   };
   std::vector<ActiveElement> active_;
   std::vector<int> slot_of_element_; ///< index into active_, −1 when inactive

@@ -125,22 +125,16 @@ class DamagingState final : public ModelState {
 public:
   explicit DamagingState(const DamagedPlateModel& plate)
       : plate_(plate), field_(plate.virgin_field()), work_(plate.size()) {}
+  void set_law_trials(LawTrials trials) override { held_ = trials != LawTrials::advance; }
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override {
     dt_ = dt;
-    switch (plate_.settings().integration) {
-    case DamageIntegration::central_difference:
-      plate_.explicit_internal_force(u, dt, field_, f);
-      return;
-    case DamageIntegration::implicit:
+    if (held_)
+      plate_.frozen_internal_force_into(u, field_, f); // the damage of the last commit
+    else
       plate_.internal_force_into(u, dt, field_, f);
-      return;
-    case DamageIntegration::lagged: // the damage of the last commit held fixed
-      plate_.frozen_internal_force_into(u, field_, f);
-      return;
-    }
   }
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override {
-    if (lagged()) {
+    if (held_) {
       // The law once, at u_{n+1} (elements that reached a surface there join first); its secant sections
       // are those of the next step.
       (void)plate_.activate_reached(u, field_);
@@ -161,19 +155,15 @@ public:
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override {
     return plate_.iteration_matrix(u, field_);
   }
-  bool admit(const Eigen::VectorXd& u) override {
-    return plate_.settings().integration != DamageIntegration::implicit ||
-           !plate_.activate_reached(u, field_);
-  }
+  bool admit(const Eigen::VectorXd& u) override { return held_ || !plate_.activate_reached(u, field_); }
   [[nodiscard]] bool matrix_outdated() const override {
     return field_.growth_since_factorization() > plate_.settings().refactor_tolerance;
   }
   void matrix_factorized(const Eigen::VectorXd& /*u*/) override { field_.mark_factorized(); }
-  bool take_branch_changed() override { return lagged() && field_.take_modes_changed(); }
-  [[nodiscard]] bool refresh_at_next_trial() const override { return lagged(); }
+  bool take_branch_changed() override { return held_ && field_.take_modes_changed(); }
+  [[nodiscard]] bool refresh_at_next_trial() const override { return held_; }
 
 private:
-  [[nodiscard]] bool lagged() const { return plate_.settings().integration == DamageIntegration::lagged; }
   void commit_with(const Eigen::VectorXd& u, const Eigen::VectorXd& f) {
     plate_.commit(u, f, field_);
     if (plate_.kinematics() != Kinematics::linear) work_.add(u, f);
@@ -182,8 +172,9 @@ private:
   const DamagedPlateModel& plate_;
   DamageField field_;
   WorkOfInternalForces work_;
-  Eigen::VectorXd law_force_; ///< the lagged step's force of the law at the commit
+  Eigen::VectorXd law_force_; ///< with held laws: the force of the law at the commit
   double dt_ = 0.0;           ///< of the last trial: the viscous regularisation's time at the commit
+  bool held_ = false;         ///< the trials hold the committed damage (LawTrials)
 };
 
 class DamagingPlate final : public MechanicalModel {

@@ -51,22 +51,37 @@ struct LowRankChange {
   [[nodiscard]] Eigen::Index rank() const { return up.cols() + down.cols(); }
 };
 
+/// What a run's trials do with the laws' state: the integrator's choice (analysis/step_policy.cpp), which
+/// the model follows. A model without laws (the elastic and the von Kármán plate) ignores it.
+enum class LawTrials {
+  /// Each trial advances every law from the committed state to u; the commit keeps the last trial's.
+  advance,
+  /// Each trial holds the laws at the committed state (their secant or tangent there; open or closed
+  /// cracks follow the trial's strain); the laws advance once, at the commit, to its u.
+  hold,
+  /// As hold, the held laws giving the end tractions of the step's mean (DL6): the trials are the end
+  /// forces of the trapezoidal rule's two-point form, with start_force().
+  hold_step_mean,
+};
+
 /// One run's state of a model's integration points.
 class ModelState : public ModelResults {
 public:
-  /// f_int(u) of a trial state: the laws advanced from the committed state to u over a step of dt (the
-  /// viscous regularisation's time), into `f` (sized by the caller; no allocation). Does not commit.
+  /// What the trials do with the laws' state; `advance` until told otherwise (before the first trial).
+  virtual void set_law_trials(LawTrials /*trials*/) {}
+  /// f_int(u) of a trial state from the committed one at u, over a step of dt (the viscous
+  /// regularisation's time), into `f` (sized by the caller; no allocation). Does not commit.
   virtual void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) = 0;
-  /// The trial state of the last internal_force() at u, whose force was f, becomes the committed one.
+  /// The trial state of the last internal_force() at u, whose force was f, becomes the committed one
+  /// (with held laws: the laws advanced to u first).
   virtual void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) = 0;
   /// Energy stored in the plate in the committed state, whose displacement is u [J].
   [[nodiscard]] virtual double stored_energy(const Eigen::VectorXd& u) const = 0;
   /// Energy the model's laws have dissipated up to the committed state [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
 
-  // What Newton–Newmark iterations ask of the state (newton_newmark_step.cpp); central differences ask
-  // none of it.
-  /// The stiffness of a Newton iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
+  // What an implicit integrator asks of the state (analysis/newton_newmark_step.cpp).
+  /// The stiffness of an iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
   /// of the von Kármán plate, the secant of the damage of the last trial, K of the elastic plate, the
   /// stack's K_plates plus its interfaces' tangent. Throws std::logic_error on a model that only central
   /// differences drive.
@@ -74,8 +89,9 @@ public:
   /// False where iteration_matrix() may be unsymmetric (the tangent of interfaces that soften under mixed
   /// mode with their damage iterated): the integrator then factors it by sparse LU instead of Cholesky.
   [[nodiscard]] virtual bool iteration_matrix_symmetric() const { return true; }
-  /// Once the iterations have found equilibrium at u: false where the trial left out a part that must
-  /// join (an element whose plies have reached a failure surface at u), and the step iterates on.
+  /// After a trial at u whose laws advanced: false where it left out a part that must join (an element
+  /// whose plies have reached a failure surface at u), which joins now; the next trial includes it. True
+  /// after a trial with held laws (their commit admits what has reached a surface).
   virtual bool admit(const Eigen::VectorXd& /*u*/) { return true; }
   /// The refactor hint: the committed state has drifted from that of the last factored matrix (damage
   /// grown beyond a tolerance), so the next step starts from a new one.
@@ -91,19 +107,16 @@ public:
   /// The last matrix_change() is in the factor now.
   virtual void matrix_changed() {}
   /// True once after a trial that changed which branch of a law holds at some point (a crack opened or
-  /// closed under lagged damage): its matrix is then factored before the next correction.
+  /// closed under held damage): its matrix is then factored before the next correction.
   virtual bool take_branch_changed() { return false; }
   /// True where a refresh of the iteration matrix waits for the trial at the next iterate instead of
-  /// being made at once: the matrix of lagged damage is that of the last trial, and where a trial costs
+  /// being made at once: the matrix of held damage is that of the last trial, and where a trial costs
   /// little against a factorization (the stacked plate) the next iterate may converge without one.
   [[nodiscard]] virtual bool refresh_at_next_trial() const { return false; }
-  /// True where the trials may be the end forces of a step whose laws are held at the committed state, to
-  /// be solved in the trapezoidal rule's two-point form with start_force() (DL7, docs/delamination.md): the
-  /// lagged stack, whose delaminated faces clapping under the law's end tractions create energy otherwise.
+  /// True where held trials may be the end forces of the step's mean (LawTrials::hold_step_mean), to be
+  /// solved in the trapezoidal rule's two-point form with start_force() (DL7, docs/delamination.md): the
+  /// stack, whose delaminated faces clapping under the law's end tractions create energy otherwise.
   [[nodiscard]] virtual bool two_point_form() const { return false; }
-  /// Whether the integrator solves the steps in that form (Newmark's trapezoidal rule, β = ¼, γ = ½): the
-  /// held laws then give the end tractions of the step's mean (DL6), otherwise their own.
-  virtual void use_two_point_form(bool /*on*/) {}
   /// With two_point_form(): the force at the step's start u_n with the laws held at the committed state,
   /// into `f` (sized by the caller).
   virtual void start_force(const Eigen::VectorXd& /*u_n*/, Eigen::VectorXd& /*f*/) {}
@@ -184,11 +197,9 @@ public:
 [[nodiscard]] std::unique_ptr<MechanicalModel> von_karman_plate_model(const PlateModel& plate,
                                                                       StrainMeasure measure);
 /// The plate whose plies crack (DamagedPlateModel, docs/progressive_damage.md), over all equations, with
-/// `kinematics` (linear, or von Kármán: a composition). How a trial finds its damage follows
-/// settings.integration: central differences evaluate the law at u, again where an element the screen
-/// had left out has reached a Hashin surface at u (DamagedPlateModel::explicit_internal_force); the
-/// implicit step evaluates it at u and admits u once no such element is left; the lagged step holds the
-/// committed damage in its trials and evaluates the law once, at the commit.
+/// `kinematics` (linear, or von Kármán: a composition). Trials that advance the law evaluate it at u and
+/// admit u once no element the screen had left out has reached a Hashin surface there; held trials keep
+/// the committed damage, and the commit evaluates the law once, at u.
 [[nodiscard]] std::unique_ptr<MechanicalModel>
 damaging_plate_model(const PlateModel& plate, const ProgressiveDamageSettings& settings,
                      Kinematics kinematics = Kinematics::linear);

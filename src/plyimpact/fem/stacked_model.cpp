@@ -1,31 +1,30 @@
 // The stacked plate whose interfaces delaminate (stacked_plate.hpp) as a model of mechanical_model.hpp,
-// with what builds it from an impact's plate (stacked_model.hpp), which central differences drive
-// (central_difference_step.cpp), as the stacked-shell impact models of the literature run in LS-DYNA and
-// Abaqus/Explicit. Each trial evaluates the interface law once, at u, from the committed states
-// (CohesiveDamage::evolve: the damage grows with the step's own separation and its dissipation is the law's),
-// and
+// with what builds it from an impact's plate (stacked_model.hpp), as the stacked-shell impact models of the
+// literature run in LS-DYNA and Abaqus/Explicit. How the trials treat the laws is the integrator's choice
+// (LawTrials; analysis/step_policy.cpp). Trials that advance them evaluate the interface law once, at u,
+// from the committed states (CohesiveDamage::evolve: the damage grows with the step's own separation and
+// its dissipation is the law's), and
 //
 //   f_int(u) = K_plates u + Σ f_coh(u; d(u))                                                     (CD3)
 //
-// Nothing is solved: faces that clap after the impactor leaves, which cost the Newton step ~10 solves a
-// step, cost one evaluation here. The stable step (CD5) comes from the elastic stack, K_plates plus the
-// interfaces' penalty K (which also holds closed faces apart); softening only lowers the frequencies. The
-// shear penalty usually sets it: it moves each face by its translation and its rotation times half its
-// thickness, and with the Mindlin rotary inertia ρh³/12 the faces of masses per area m_u, m_l vibrate at
-// ω² ≥ 4 K (1/m_u + 1/m_l) (DL9, docs/delamination.md "The explicit step").
+// With central differences nothing is solved: faces that clap after the impactor leaves, which cost an
+// implicit step ~10 solves, cost one evaluation here. The stable step (CD5) comes from the elastic stack,
+// K_plates plus the interfaces' penalty K (which also holds closed faces apart); softening only lowers the
+// frequencies. The shear penalty usually sets it: it moves each face by its translation and its rotation
+// times half its thickness, and with the Mindlin rotary inertia ρh³/12 the faces of masses per area m_u,
+// m_l vibrate at ω² ≥ 4 K (1/m_u + 1/m_l) (DL9, docs/delamination.md "The explicit step").
 //
 // With ply damage (docs/delamination.md, "Ply damage and delamination together") each sub-laminate is a
 // damaged plate (fem/damaged_plate.hpp) on its own plies: K_plates u becomes Σ_k f_k(u_k; d_k), each
-// sub-laminate's law evaluated once at u as the damaging plate's trial does, and the model shows the
-// plies' damage of the whole laminate (fem/stacked_damage.hpp). Damage only softens, so the elastic
-// stack's stable step still holds.
+// sub-laminate's law evaluated at u as the damaging plate's trial does, and the model shows the plies'
+// damage of the whole laminate (fem/stacked_damage.hpp). Damage only softens, so the elastic stack's
+// stable step still holds.
 //
-// With [delamination] integration = "lagged" (ply damage: lagged too) the same model is driven by
-// Newton–Newmark (newton_newmark_step.cpp): its trials hold every law at the committed state (the plies'
-// damage d_n with their cracks' modes at u, the interfaces' end tractions 2 τ̄ − τ(δ_n) at their held
-// damage, DL6), its start force f(u_n) completes the trapezoidal two-point form (DL7), its iteration
-// matrix is K_plates + the interfaces' held tangent + the damaged sections' secant difference, and the
-// laws move once per step, at the commit (docs/delamination.md, "The lagged step").
+// Trials that hold the laws (LawTrials::hold_step_mean, the lagged step of docs/delamination.md) keep every
+// law at the committed state (the plies' damage d_n with their cracks' modes at u, the interfaces' end
+// tractions 2 τ̄ − τ(δ_n) at their held damage, DL6); the start force f(u_n) completes the trapezoidal
+// two-point form (DL7), the iteration matrix is K_plates + the interfaces' held tangent + the damaged
+// sections' secant difference, and the laws move once per step, at the commit.
 //
 // With large deflections (nonlinear = true) each sub-laminate is a von Kármán plate on its own mid-plane
 // (NonlinearPlateModel; with ply damage DamagedPlateModel with Kinematics::von_karman): K_plates u becomes
@@ -238,6 +237,7 @@ class StackedModel;
 class StackedState final : public ModelState {
 public:
   explicit StackedState(const StackedModel& model);
+  void set_law_trials(LawTrials trials) override { trials_ = trials; }
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override;
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override;
   /// ½ uᵀ K_plates u from the product the committed trial made, + the interfaces' stored energy.
@@ -255,13 +255,13 @@ public:
     return interfaces_.result();
   }
 
-  // Newton–Newmark: with the interfaces' damage iterated (implicit, the stack without ply damage), or
-  // with the laws of the step before held (lagged: plies and interfaces).
-  /// K_plates, the interfaces' tangent (at their held damage where lagged) and the damaged sections'
+  // What an implicit integrator asks: with the laws advanced by each trial (iterated with the step), or
+  // held at the committed state (plies and interfaces).
+  /// K_plates, the interfaces' tangent (at their held damage where held) and the damaged sections'
   /// secant difference of the last trial, each sub-laminate on its diagonal block.
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override;
   /// The tangent of damage iterated with the step is unsymmetric under mixed mode; the held one is not.
-  [[nodiscard]] bool iteration_matrix_symmetric() const override { return lagged(); }
+  [[nodiscard]] bool iteration_matrix_symmetric() const override { return held(); }
   [[nodiscard]] bool matrix_outdated() const override;
   void matrix_factorized(const Eigen::VectorXd& u) override;
   [[nodiscard]] std::optional<LowRankChange> matrix_change(const Eigen::VectorXd& u) override;
@@ -270,17 +270,16 @@ public:
     bool changed = false;
     for (DamageField& field : fields_)
       changed = field.take_modes_changed() || changed; // every field's flag taken
-    return changed && lagged();
+    return changed && held();
   }
-  /// With the plies iterated: false where an element has reached a Hashin surface at u (it joins, and the
-  /// step iterates on), as for one damaged plate.
+  /// With the plies' laws advanced: false where an element has reached a Hashin surface at u (it joins,
+  /// and the next trial includes it), as for one damaged plate.
   bool admit(const Eigen::VectorXd& u) override;
   /// With ply damage the matrix is that of the last trial; the linear stack's trial is one product and the
   /// interfaces' law, against a factorization. (The von Kármán stack refreshes at once: measured so, and
   /// kept so that its example's numbers stay.)
   [[nodiscard]] bool refresh_at_next_trial() const override;
-  [[nodiscard]] bool two_point_form() const override { return lagged(); }
-  void use_two_point_form(bool on) override { two_point_ = on; }
+  [[nodiscard]] bool two_point_form() const override { return true; }
   void start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) override;
 
 private:
@@ -290,23 +289,30 @@ private:
   void sublaminate_forces(const Eigen::VectorXd& u, const PartForce& part_force);
   /// Σ_k f_k(u_k; d_k) of the damaged sub-laminates at u into Ku_ (each law once, trial states kept).
   void damaged_plate_forces(const Eigen::VectorXd& u, double dt);
-  /// K_plates u, or the von Kármán sub-laminates' forces, or the damaged ones' (held where lagged: the
-  /// damage of the last commit), into Ku_.
+  /// K_plates u, or the von Kármán sub-laminates' forces, or the damaged ones' (held: the damage of the
+  /// last commit), into Ku_.
   void plate_forces(const Eigen::VectorXd& u, double dt);
   /// The damaged (or von Kármán) sub-laminates' iteration matrices less their elastic K_k, each on its
   /// diagonal block.
   [[nodiscard]] SparseMatrix sublaminate_corrections(const Eigen::VectorXd& u) const;
-  [[nodiscard]] bool lagged() const;
-  /// The plies' damage iterated with the step (implicit): each trial evaluates their law at u.
-  [[nodiscard]] bool plies_iterated() const;
+  /// The trials hold the laws at the committed state (LawTrials::hold, hold_step_mean).
+  [[nodiscard]] bool held() const { return trials_ != LawTrials::advance; }
+  /// The plies' laws advanced by each trial: each evaluates them at u.
+  [[nodiscard]] bool plies_advanced() const { return !fields_.empty() && !held(); }
   /// How the interfaces' trials take their damage: evolving with the step, held with the end tractions
   /// of the step's mean (the two-point form, DL6), or held with the law's own.
   [[nodiscard]] CohesiveDamage interface_damage() const {
-    return !lagged()    ? CohesiveDamage::evolve
-           : two_point_ ? CohesiveDamage::lagged_mean
-                        : CohesiveDamage::lagged;
+    switch (trials_) {
+    case LawTrials::advance:
+      return CohesiveDamage::evolve;
+    case LawTrials::hold:
+      return CohesiveDamage::held;
+    case LawTrials::hold_step_mean:
+      return CohesiveDamage::held_step_mean;
+    }
+    return CohesiveDamage::evolve;
   }
-  /// The lagged linear stack refreshes its factor by updates where few interface points changed (DL8);
+  /// The held linear stack refreshes its factor by updates where few interface points changed (DL8);
   /// the sub-laminates of a stack with ply damage or large deflections change everywhere.
   [[nodiscard]] bool updates_factor() const;
 
@@ -324,9 +330,9 @@ private:
   std::vector<Eigen::VectorXd> u_parts_, f_parts_;
   std::vector<std::vector<ElementVector>> element_forces_; ///< per part: the von Kármán element loop's places
   std::optional<StackedDamageField> plies_;                ///< the fields seen as the laminate's plies
-  double dt_ = 0.0;       ///< of the last trial (the laws' viscous time at a commit)
-  bool two_point_ = true; ///< lagged: the integrator solves the trapezoid's two-point form (DL7)
-  // The lagged linear stack's factor updates (DL8): each interface point's tangent in the factor, the
+  double dt_ = 0.0;                       ///< of the last trial (the laws' viscous time at a commit)
+  LawTrials trials_ = LawTrials::advance; ///< what the trials do with the laws (the integrator's choice)
+  // The held linear stack's factor updates (DL8): each interface point's tangent in the factor, the
   // changes of the last matrix_change(), the rank-one terms since the factorization.
   std::vector<std::vector<Eigen::Matrix3d>> factored_tangents_;
   struct TangentChange {
@@ -357,9 +363,6 @@ public:
 
   /// The sub-laminates' force is not linear in u: their stored energy is the work of their forces.
   [[nodiscard]] bool large_deflection() const { return large_deflection_.has_value(); }
-
-  /// Trials hold the interfaces' (and plies') damage of the last commit: the lagged Newton–Newmark step.
-  [[nodiscard]] bool lagged() const { return plate_.settings_.integration == DamageIntegration::lagged; }
 
   [[nodiscard]] int size() const override { return plate_.stack_.size(); }
   [[nodiscard]] const PlateModel& contact_plate() const override { return plate_.stack_.sublaminate(0); }
@@ -455,12 +458,8 @@ void StackedState::sublaminate_forces(const Eigen::VectorXd& u, const PartForce&
 
 void StackedState::damaged_plate_forces(const Eigen::VectorXd& u, double dt) {
   sublaminate_forces(u, [&](std::size_t k) {
-    m_.damaged_[k]->explicit_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
+    m_.damaged_[k]->joined_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
   });
-}
-
-bool StackedState::lagged() const {
-  return m_.lagged();
 }
 
 bool StackedState::refresh_at_next_trial() const {
@@ -468,7 +467,7 @@ bool StackedState::refresh_at_next_trial() const {
 }
 
 bool StackedState::updates_factor() const {
-  return lagged() && m_.plate_.settings_.update_factor && fields_.empty() && !m_.large_deflection();
+  return held() && fields_.empty() && !m_.large_deflection();
 }
 
 void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
@@ -478,24 +477,18 @@ void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
     });
   else if (fields_.empty())
     parallel_rows_product(m_.K_plates_by_rows_, u, Ku_);
-  else if (lagged())
+  else if (held())
     sublaminate_forces(u, [&](std::size_t k) {
       m_.damaged_[k]->frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);
     });
-  else if (plies_iterated())
+  else
     sublaminate_forces(u, [&](std::size_t k) {
       m_.damaged_[k]->internal_force_into(u_parts_[k], dt, fields_[k], f_parts_[k]);
     });
-  else
-    damaged_plate_forces(u, dt);
-}
-
-bool StackedState::plies_iterated() const {
-  return !fields_.empty() && m_.damaged_.front()->settings().integration == DamageIntegration::implicit;
 }
 
 bool StackedState::admit(const Eigen::VectorXd& u) {
-  if (!plies_iterated()) return true;
+  if (!plies_advanced()) return true;
   bool joined = false;
   for (std::size_t k = 0; k < fields_.size(); ++k) {
     const DamagedPlateModel& part = *m_.damaged_[k];
@@ -509,7 +502,7 @@ void StackedState::internal_force(const Eigen::VectorXd& u, double dt, Eigen::Ve
   dt_ = dt;
   plate_forces(u, dt);
   f = Ku_;
-  // Lagged in the two-point form: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage
+  // Held in the two-point form: the end tractions 2 τ̄ − τ(δ_n) of the step's mean τ̄ at the held damage
   // (DL6)
   const double dissipated = m_.plate_.stack_.add_interface_forces(
       u, interfaces_.committed(), f, trial_buffer_, interface_damage(), interface_work_);
@@ -522,13 +515,13 @@ void StackedState::start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) {
   if (fields_.empty() && m_.von_karman_.empty()) {
     f.noalias() = m_.K_plates_by_rows_ * u_n;
   } else {
-    plate_forces(u_n, dt_); // lagged: the damage held
+    plate_forces(u_n, dt_); // the damage held
     f = Ku_;
     for (DamageField& field : fields_)
       (void)field.take_modes_changed(); // the start's modes are not a trial's
   }
   (void)m_.plate_.stack_.add_interface_forces(u_n, interfaces_.committed(), f, trial_buffer_,
-                                              CohesiveDamage::lagged_mean, interface_work_);
+                                              CohesiveDamage::held_step_mean, interface_work_);
 }
 
 SparseMatrix StackedState::iteration_matrix(const Eigen::VectorXd& u) const {
@@ -583,8 +576,8 @@ void StackedState::matrix_factorized(const Eigen::VectorXd& u) {
   update_rank_ = 0;
 }
 
-// The lagged step's matrix is K̄ = K_plates + c0 M + Σ_p J_pᵀ T_p J_p, T_p the point's 3 × 3 tangent at the
-// held damage: a refresh compares each point's T_p with the one in the factor and splits each change
+// With held laws the step's matrix is K̄ = K_plates + c0 M + Σ_p J_pᵀ T_p J_p, T_p the point's 3 × 3 tangent
+// at the held damage: a refresh compares each point's T_p with the one in the factor and splits each change
 // ΔT_p = V Λ Vᵀ by the signs of its eigenvalues into the columns √|λ| J_pᵀ v of C₊ or C₋ (DL8,
 // docs/delamination.md). More than max_update_rank terms, more than max_total_update_rank since the
 // factorization (their round-off adds up) or an unsymmetric change: no update.
@@ -642,14 +635,14 @@ void StackedState::matrix_changed() {
 }
 
 void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/) {
-  if (lagged() && !fields_.empty()) {
+  if (held() && !fields_.empty()) {
     // The plies' laws once, at u_{n+1} (elements that reached a surface there join first).
     for (std::size_t k = 0; k < fields_.size(); ++k) {
       const DamagedPlateModel& part = *m_.damaged_[k];
       u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
       (void)part.activate_reached(u_parts_[k], fields_[k]);
     }
-    damaged_plate_forces(u, dt_); // the lagged step's commit: each sub-laminate's law once, at u
+    damaged_plate_forces(u, dt_); // held laws' commit: each sub-laminate's law once, at u
   }
   interfaces_.accept();
   if (m_.large_deflection())

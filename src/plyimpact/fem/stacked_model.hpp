@@ -25,13 +25,6 @@ namespace plyimpact {
 struct DelaminationSettings {
   StackSettings stack;         ///< the cuts, the interface law, its integration rule
   bool supports_on_all = true; ///< the supports hold every sub-laminate; false: the bottom one only
-  /// lagged: each step solved with the interfaces' damage of the last accepted step held fixed, then the
-  /// damage updated from the converged separation; implicit: the damage iterated with the step;
-  /// central_difference: explicit steps on the lumped mass, the law once per step.
-  DamageIntegration integration = DamageIntegration::lagged;
-  /// lagged: a refresh where few interface points changed their tangent updates the factor (rank updates,
-  /// SpdSolver::modify) instead of factoring anew; false: every refresh factors
-  bool update_factor = true;
   /// The values of the law the deck left out, each with where it came from ("G_mt of the plies at the
   /// interfaces", ...), in the order G_Ic, G_IIc, bk_exponent, normal_strength, shear_strength.
   std::vector<std::pair<std::string, std::string>> law_defaults;
@@ -114,7 +107,7 @@ struct SofteningMode {
 [[nodiscard]] SofteningMode fastest_softening(const Laminate& laminate, const StackSettings& stack);
 
 /// The stacked plate as a model of fem/mechanical_model.hpp, for the integrators written once against it
-/// (central differences, Newton–Newmark with the laws lagged: stacked_model.cpp). With `ply_damage` each
+/// (its trials advance or hold the laws, LawTrials: stacked_model.cpp). With `ply_damage` each
 /// sub-laminate's plies crack too; with `large_deflection` each sub-laminate is a geometrically non-linear
 /// plate with that strain measure (von Kármán's where the plies crack).
 [[nodiscard]] std::unique_ptr<MechanicalModel>

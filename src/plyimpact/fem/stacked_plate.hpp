@@ -139,7 +139,7 @@ public:
              const std::function<bool(const Eigen::Vector2d&)>& cracked) const;
 
   /// f(u), its tangent and the trial states, from the committed states (their damage held in the forces of
-  /// the lagged modes, CohesiveDamage).
+  /// the held modes, CohesiveDamage).
   [[nodiscard]] StackedPlateEvaluation evaluate(const Eigen::VectorXd& u, const StackedPlateState& committed,
                                                 CohesiveDamage damage = CohesiveDamage::evolve) const;
   /// f(u) and the trial states without the tangent (left empty): the iterations of a step that keep

@@ -151,12 +151,9 @@ CaseOptions deck_options(const Deck& d) {
 /// what runs refuses (analysis/capabilities.hpp): the deck and the facade say the same.
 void refuse_what_does_not_run(const TableReader& top, const Deck& d) {
   const ModelKind model = deck_model(d);
-  std::optional<Integrator> damage, interfaces;
-  if (d.damage.progressive) damage = integrator_of(d.damage.progressive->integration);
-  if (d.delamination) interfaces = integrator_of(d.delamination->integration);
   Integrator integrator = Integrator::implicit;
-  try {
-    integrator = resolve_integrator(model, d.time.integration, damage, interfaces);
+  try { // the laws' integration is resolved as their tables are read (d.time.laws)
+    integrator = resolve_integrator(model, d.time.integration, d.time.laws, std::nullopt);
   } catch (const std::invalid_argument& e) {
     top.fail_here(e.what());
   }
@@ -228,7 +225,6 @@ Deck parse_deck_table(const toml::table& root, std::string_view text, const std:
     const auto damage = top.optional_table("damage");
     const bool plies_given = damage && damage->node("integration") != nullptr;
     d.delamination = read_delamination(*t, d, plies_given);
-    if (d.damage.progressive && !plies_given) d.damage.progressive->integration = d.delamination->integration;
   }
   size_rig_for_damage(d); // once the damage's laws are known
   if (const auto t = top.optional_table("threshold")) d.threshold = read_threshold(*t, d);

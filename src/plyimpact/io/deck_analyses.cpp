@@ -136,7 +136,13 @@ void require_progressive_damage_data(const TableReader& t, const Deck& d, const 
 
 } // namespace
 
-DamageSettings read_damage(const TableReader& t, const Deck& d) {
+std::optional<Integrator> optional_law_integrator(const TableReader& t) {
+  return t.optional_choice<Integrator>("integration", {{"implicit", Integrator::implicit},
+                                                       {"lagged", Integrator::lagged},
+                                                       {"explicit", Integrator::central_difference}});
+}
+
+DamageSettings read_damage(const TableReader& t, Deck& d) {
   DamageSettings damage;
   t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
           "area_threshold", "oversize", "integration"});
@@ -161,19 +167,16 @@ DamageSettings read_damage(const TableReader& t, const Deck& d) {
     p.reduce_strengths_above_band_limit =
         t.optional_choice<bool>("oversize", {{"error", false}, {"reduce-strength", true}}).value_or(false);
     // [time] integration = "explicit" makes the plies' step explicit too (the plate steps with one).
-    p.integration = t.optional_choice<DamageIntegration>(
-                         "integration", {{"implicit", DamageIntegration::implicit},
-                                         {"lagged", DamageIntegration::lagged},
-                                         {"explicit", DamageIntegration::central_difference}})
-                        .value_or(d.time.integration == TimeIntegration::central_difference
-                                      ? DamageIntegration::central_difference
-                                      : p.integration);
+    const Integrator plies = optional_law_integrator(t).value_or(
+        d.time.integration == TimeIntegration::central_difference ? Integrator::central_difference
+                                                                  : Integrator::implicit);
     try {
-      (void)resolve_integrator(ModelKind{false, d.nonlinear, true, false}, d.time.integration,
-                               integrator_of(p.integration), std::nullopt);
+      (void)resolve_integrator(ModelKind{false, d.nonlinear, true, false}, d.time.integration, plies,
+                               std::nullopt);
     } catch (const std::invalid_argument& e) {
       t.fail_at("integration", e.what());
     }
+    d.time.laws = plies;
     require_progressive_damage_data(t, d, p.law);
     damage.progressive = p;
   } else {

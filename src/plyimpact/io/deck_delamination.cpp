@@ -118,7 +118,7 @@ CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, cons
 
 } // namespace
 
-DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool plies_given) {
+DelaminationSettings read_delamination(const TableReader& t, Deck& d, bool plies_given) {
   t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
           "penalty_stiffness", "onset", "integration", "points", "supports", "seed_radius"});
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
@@ -134,26 +134,20 @@ DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool
   s.stack.seed_radius = t.optional_positive("seed_radius", "m").value_or(0.0);
   // The plate steps with one integrator: left out, the interfaces' step is [time]'s where that is explicit,
   // else the plies' where [damage] gives it, else lagged (and the plies then follow, deck.cpp).
-  const bool plies_lead = d.damage.progressive && plies_given;
-  s.integration = t.optional_choice<DamageIntegration>("integration",
-                                                       {{"lagged", DamageIntegration::lagged},
-                                                        {"implicit", DamageIntegration::implicit},
-                                                        {"explicit", DamageIntegration::central_difference}})
-                      .value_or(d.time.integration == TimeIntegration::central_difference
-                                    ? DamageIntegration::central_difference
-                                : plies_lead ? d.damage.progressive->integration
-                                             : s.integration);
+  const std::optional<Integrator> plies =
+      d.damage.progressive && plies_given ? d.time.laws : std::optional<Integrator>();
+  const Integrator interfaces = optional_law_integrator(t).value_or(
+      d.time.integration == TimeIntegration::central_difference ? Integrator::central_difference
+                                                                : plies.value_or(Integrator::lagged));
   // The one table of what runs (analysis/capabilities.hpp).
   const ModelKind kind{false, d.nonlinear, d.damage.progressive.has_value(), true};
   try {
-    const Integrator integrator = resolve_integrator(
-        kind, d.time.integration,
-        plies_lead ? std::optional(integrator_of(d.damage.progressive->integration)) : std::nullopt,
-        integrator_of(s.integration));
+    const Integrator integrator = resolve_integrator(kind, d.time.integration, plies, interfaces);
     if (auto why = refusal(kind, integrator)) t.fail_here(fmt::format("[delamination]: {}", *why));
   } catch (const std::invalid_argument& e) {
     t.fail_here(fmt::format("[delamination]: {}", e.what()));
   }
+  d.time.laws = interfaces; // plies that leave their integration out follow the interfaces'
   return s;
 }
 

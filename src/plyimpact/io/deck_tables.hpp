@@ -70,16 +70,19 @@ void read_nonlinear_keys(const TableReader& top, Deck& d);
                                    const Mesh* file_mesh);
 [[nodiscard]] ModalSettings read_modal(const TableReader& t);
 [[nodiscard]] BucklingSettings read_buckling(const TableReader& t);
-[[nodiscard]] DamageSettings read_damage(const TableReader& t, const Deck& d);
+/// [damage]; with progressive damage its `integration` (given, or as [time] implies) sets d.time.laws.
+[[nodiscard]] DamageSettings read_damage(const TableReader& t, Deck& d);
 /// [threshold]; `d` has its [damage] already (damage criteria need the progressive model).
 [[nodiscard]] ThresholdSettings read_threshold(const TableReader& t, const Deck& d);
 
 // deck_delamination.cpp
 /// [delamination]; `d` has its laminate and [damage] already (the cuts follow the layup; progressive ply
 /// damage runs with the stacked plate in the same steps: capabilities.hpp).
-/// `plies_given`: [damage] gives its `integration`; where it does not, the plies follow the interfaces'
-/// (the caller sets them).
-[[nodiscard]] DelaminationSettings read_delamination(const TableReader& t, const Deck& d, bool plies_given);
+/// `plies_given`: [damage] gives its `integration`; where it does not, the plies follow the interfaces'.
+/// Sets d.time.laws to the interfaces' integration (the plate steps with one).
+[[nodiscard]] DelaminationSettings read_delamination(const TableReader& t, Deck& d, bool plies_given);
+/// [damage] or [delamination] `integration` where given: "implicit", "lagged" or "explicit".
+[[nodiscard]] std::optional<Integrator> optional_law_integrator(const TableReader& t);
 
 // deck_output.cpp
 void read_output(const TableReader& t, Deck& d);

@@ -83,8 +83,8 @@ nlohmann::json shapes_json(const DelaminationResult& d) {
 }
 
 /// The stacked plate's interfaces (docs/delamination.md): the law, the areas, the energy, the zone.
-nlohmann::json delamination_json(const DelaminationSettings& s, const DelaminationResult& d,
-                                 const std::optional<NewtonStatistics>& newton) {
+nlohmann::json delamination_json(const DelaminationSettings& s, Integrator integration,
+                                 const DelaminationResult& d, const std::optional<NewtonStatistics>& newton) {
   const CohesiveParameters& law = s.stack.interface;
   nlohmann::json j;
   j["interfaces_after_ply"] = d.interface_after_ply;
@@ -108,7 +108,7 @@ nlohmann::json delamination_json(const DelaminationSettings& s, const Delaminati
   j["points"] = s.stack.rule == CohesiveQuadrature::nodal ? "nodal" : "gauss";
   j["supports"] = s.supports_on_all ? "all" : "bottom";
   if (s.stack.seed_radius > 0.0) j["seed_radius_m"] = s.stack.seed_radius;
-  j["integration"] = std::string(to_string(s.integration));
+  j["integration"] = std::string(to_string(integration));
   if (newton) {
     j["iterations"] = newton->iterations;
     j["max_iterations_per_step"] = newton->max_iterations_per_step;
@@ -275,7 +275,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
     const ProgressiveDamageResult& pd = *r.progressive;
     nlohmann::json d;
     d["model"] = "progressive";
-    d["integration"] = std::string(to_string(s.progressive_damage->integration));
+    d["integration"] = std::string(to_string(s.integration));
     d["dissipated_energy"] = pd.dissipated.sum();
     for (const DamageMode m : all_damage_modes)
       d["dissipated_energy_by_mode"][std::string(to_string(m))] = pd.dissipated[m];
@@ -301,7 +301,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
     j["damage"] = d;
   }
   if (r.delamination && s.delamination) { // the stacked plate's interfaces (docs/delamination.md)
-    j["delamination"] = delamination_json(*s.delamination, *r.delamination, r.newton);
+    j["delamination"] = delamination_json(*s.delamination, s.integration, *r.delamination, r.newton);
     if (r.force_history) {
       const std::optional<FirstDelamination>& grew = r.force_history->first_delamination;
       j["delamination"]["first_growth"] =
@@ -391,7 +391,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                              to_string(*pd.first_mode), first->ply, first->time * 1e6, first->force)
                : std::string("  first ply damage                none\n");
     t += first_damage_by_mode_text(pd);
-    if (s.progressive_damage->integration == DamageIntegration::central_difference)
+    if (s.integration == Integrator::central_difference)
       t += fmt::format("  damage step                 explicit: no solve, dt = {:.4g} us\n", s.dt * 1e6);
     else if (r.newton)
       t += fmt::format("  damage iterations       {:12d} solves in {} steps (at most {} in a step), {} "
