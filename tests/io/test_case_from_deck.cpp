@@ -1,6 +1,11 @@
 // From decks to the engine's descriptions: regions of a deck reach the plate, and a deck whose two
-// halves are regions with the plate's own laminate runs the one-region impact bit for bit.
+// halves are regions with the plate's own laminate runs the one-region impact bit for bit; the deck's
+// one Newton key becomes the case's Newton settings.
 #include "plyimpact/io/case_from_deck.hpp"
+
+#include "plyimpact/analysis/capabilities.hpp"
+#include "plyimpact/analysis/newton_settings.hpp"
+#include "plyimpact/io/deck.hpp"
 
 #include <gtest/gtest.h>
 
@@ -82,6 +87,30 @@ TEST(CaseFromDeck, TwoRegionsWithTheSameLaminateRunTheOneRegionImpactBitForBit) 
   for (std::size_t i = 0; i < one.history.size(); ++i) {
     EXPECT_EQ(one.history[i].force, two.history[i].force) << i;
     EXPECT_EQ(one.history[i].plate_strain, two.history[i].plate_strain) << i;
+  }
+}
+
+// [damage] refactor_tolerance is how Newton–Newmark refreshes its matrix, not the plies' law: it reaches
+// the case's NewtonSettings over the defaults of its row of the table of what runs, and leaves the law's
+// settings as they are; left out, the case takes the row's defaults (newton empty).
+TEST(CaseFromDeck, RefactorToleranceIsTheIntegratorsSetting) {
+  std::string text = plate_deck;
+  text.replace(text.find("rho = 1540.0\n"), 13,
+               "rho = 1540.0\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\n"
+               "S23 = 32.94e6\nG_ft = 91.6e3\nG_fc = 79.9e3\nG_mt = 277.0\nG_mc = 788.0\n");
+  const std::string damage = "[damage]\nmodel = \"progressive\"\n";
+  for (const std::string integration : {"implicit", "lagged"}) {
+    const std::string keys = damage + "integration = \"" + integration + "\"\n";
+    const ImpactCaseDescription given =
+        impact_case_description(parse_deck(text + keys + "refactor_tolerance = 0.2\n", "d.toml"));
+    const ImpactCaseDescription left_out = impact_case_description(parse_deck(text + keys, "d.toml"));
+    ASSERT_TRUE(given.newton.has_value()) << integration;
+    NewtonSettings expected = newton_newmark_defaults(model_kind(given), case_integrator(given));
+    EXPECT_EQ(expected.refactor_tolerance, 0.05) << integration;
+    expected.refactor_tolerance = 0.2;
+    EXPECT_EQ(*given.newton, expected) << integration;
+    EXPECT_FALSE(left_out.newton.has_value()) << integration;
+    EXPECT_EQ(given.progressive_damage, left_out.progressive_damage) << integration;
   }
 }
 

@@ -199,7 +199,7 @@ bool NewtonNewmarkStepper::update_factor(const Eigen::VectorXd& at) {
 
 void NewtonNewmarkStepper::refresh_before(long step, const Eigen::VectorXd& u) {
   const NewtonSettings& ns = p_.settings_;
-  if (state_->matrix_outdated()) {
+  if (state_->drift_since_factorization() > ns.refactor_tolerance) {
     refactor(u);
     return;
   }

@@ -27,6 +27,9 @@ struct NewtonSettings {
   /// matrix_change: the held stack's interface points, DL8) and updates the factor instead of making it
   /// anew; false: every refresh factors.
   bool update_factor = true;
+  /// Refactor before a step once the model's state has drifted by more than this since the last
+  /// factorization (ModelState::drift_since_factorization: the largest growth of a ply's damage).
+  double refactor_tolerance = 0.05;
   std::string physics = "impact";        ///< the subject of the failure messages ("non-linear impact")
   std::string advice = "reduce time.dt"; ///< what they advise
   friend bool operator==(const NewtonSettings&, const NewtonSettings&) = default;

@@ -151,6 +151,9 @@ struct DamageSettings {
   /// [damage] model = "progressive": the plies lose stiffness as they crack (docs/progressive_damage.md);
   /// empty = "onset" (criteria evaluated on the undamaged plate, today's default).
   std::optional<ProgressiveDamageSettings> progressive;
+  /// [damage] refactor_tolerance where given: Newton–Newmark's NewtonSettings::refactor_tolerance for the
+  /// case (case_from_deck); empty: the default of the table of what runs.
+  std::optional<double> refactor_tolerance;
   std::vector<std::string> criteria; ///< deck names, e.g. "choi-chang-matrix"
   int every = 1;
   bool delamination_ply_n_lower = false; ///< (2.43): ply k+1 plays "n" (thesis wording) instead of ply k

@@ -381,8 +381,6 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
     throw std::invalid_argument("progressive damage needs the MITC9 element ([mesh] element = \"mitc9\" or "
                                 "\"auto\"): the q9 element integrates transverse shear at other points than "
                                 "the 3x3 Gauss points where the plies' damage lives");
-  if (!(settings.refactor_tolerance > 0.0))
-    throw std::invalid_argument("progressive damage: refactor_tolerance must be positive");
   for (const Laminate& lam : model.laminates())
     if (lam.stiffness_model() != ReducedStiffnessModel::exact)
       throw std::invalid_argument("progressive damage needs the exact reduced stiffness (1.3) "

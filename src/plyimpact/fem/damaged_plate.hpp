@@ -52,10 +52,9 @@ enum class Kinematics {
 
 /// Settings of the progressive damage of the plies.
 struct ProgressiveDamageSettings {
-  PlyDamageOptions law;             ///< α, viscosity η
-  double refactor_tolerance = 0.05; ///< refactor K̄ when some d has grown by more than this since the last
-  double area_threshold = 0.5;      ///< a ply point counts as damaged when a damage variable reaches this
-  double screen_fraction = 0.6;     ///< elements whose Hashin bound exceeds this fraction of 1 are active
+  PlyDamageOptions law;         ///< α, viscosity η
+  double area_threshold = 0.5;  ///< a ply point counts as damaged when a damage variable reaches this
+  double screen_fraction = 0.6; ///< elements whose Hashin bound exceeds this fraction of 1 are active
   /// Elements larger than a mode's band limit: false (default) = BandLimitError when the mode initiates
   /// there; true = the strengths of those elements are lowered to their band limit (Maimí et al. 2007,
   /// band_limited_strengths in ply_damage.hpp) and strength_reduction_warning() says by how much.

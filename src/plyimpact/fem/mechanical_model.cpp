@@ -156,8 +156,8 @@ public:
     return plate_.iteration_matrix(u, field_);
   }
   bool admit(const Eigen::VectorXd& u) override { return held_ || !plate_.activate_reached(u, field_); }
-  [[nodiscard]] bool matrix_outdated() const override {
-    return field_.growth_since_factorization() > plate_.settings().refactor_tolerance;
+  [[nodiscard]] double drift_since_factorization() const override {
+    return field_.growth_since_factorization();
   }
   void matrix_factorized(const Eigen::VectorXd& /*u*/) override { field_.mark_factorized(); }
   bool take_branch_changed() override { return held_ && field_.take_modes_changed(); }

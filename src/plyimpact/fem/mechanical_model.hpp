@@ -93,9 +93,10 @@ public:
   /// whose plies have reached a failure surface at u), which joins now; the next trial includes it. True
   /// after a trial with held laws (their commit admits what has reached a surface).
   virtual bool admit(const Eigen::VectorXd& /*u*/) { return true; }
-  /// The refactor hint: the committed state has drifted from that of the last factored matrix (damage
-  /// grown beyond a tolerance), so the next step starts from a new one.
-  [[nodiscard]] virtual bool matrix_outdated() const { return false; }
+  /// How far the committed state has drifted from that of the last factored matrix: the largest growth of
+  /// a law's state variable since matrix_factorized() (a ply's damage); the integrator refactors before
+  /// a step beyond its tolerance.
+  [[nodiscard]] virtual double drift_since_factorization() const { return 0.0; }
   /// The iteration matrix at u has just been factored.
   virtual void matrix_factorized(const Eigen::VectorXd& /*u*/) {}
   /// The iteration matrix at u as a low-rank change of the one in the factor (the last factored, with the

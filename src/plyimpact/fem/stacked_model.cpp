@@ -262,7 +262,8 @@ public:
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override;
   /// The tangent of damage iterated with the step is unsymmetric under mixed mode; the held one is not.
   [[nodiscard]] bool iteration_matrix_symmetric() const override { return held(); }
-  [[nodiscard]] bool matrix_outdated() const override;
+  /// The sub-laminates' largest.
+  [[nodiscard]] double drift_since_factorization() const override;
   void matrix_factorized(const Eigen::VectorXd& u) override;
   [[nodiscard]] std::optional<LowRankChange> matrix_change(const Eigen::VectorXd& u) override;
   void matrix_changed() override;
@@ -558,10 +559,11 @@ SparseMatrix StackedState::sublaminate_corrections(const Eigen::VectorXd& u) con
   return dK;
 }
 
-bool StackedState::matrix_outdated() const {
-  return std::any_of(fields_.begin(), fields_.end(), [&](const DamageField& field) {
-    return field.growth_since_factorization() > m_.damaged_.front()->settings().refactor_tolerance;
-  });
+double StackedState::drift_since_factorization() const {
+  double drift = 0.0;
+  for (const DamageField& field : fields_)
+    drift = std::max(drift, field.growth_since_factorization());
+  return drift;
 }
 
 void StackedState::matrix_factorized(const Eigen::VectorXd& u) {

@@ -1,5 +1,7 @@
 #include "plyimpact/io/case_from_deck.hpp"
 
+#include "plyimpact/analysis/capabilities.hpp"
+#include "plyimpact/analysis/newton_settings.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 #include "plyimpact/io/memory_estimate.hpp"
 #include "plyimpact/io/system_memory.hpp"
@@ -38,6 +40,12 @@ ImpactCaseDescription impact_case_description(const Deck& deck, bool nonlinear) 
   if (d.delamination) { // the seed (if any) lies under the impactor
     d.delamination->stack.seed_x = d.impactor.x;
     d.delamination->stack.seed_y = d.impactor.y;
+  }
+  const Integrator integrator = case_integrator(d);
+  if (deck.damage.refactor_tolerance && integrator != Integrator::central_difference) {
+    // the one Newton key of the deck: the integrator's setting, over the row's defaults
+    d.newton = newton_newmark_defaults(model_kind(d), integrator);
+    d.newton->refactor_tolerance = *deck.damage.refactor_tolerance;
   }
   d.memory_limit_bytes = available_memory_bytes(); // factorization guard (docs/robustness.md)
   return d;

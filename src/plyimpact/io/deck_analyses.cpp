@@ -159,7 +159,7 @@ DamageSettings read_damage(const TableReader& t, Deck& d) {
       t.fail_at("alpha", fmt::format("damage.alpha weighs shear in Hashin's fibre-tension mode and must lie "
                                      "in [0, 1], got {}",
                                      p.law.alpha));
-    p.refactor_tolerance = t.optional_positive("refactor_tolerance", "-").value_or(p.refactor_tolerance);
+    damage.refactor_tolerance = t.optional_positive("refactor_tolerance", "-");
     p.area_threshold = t.optional_positive("area_threshold", "-").value_or(p.area_threshold);
     if (p.area_threshold > 1.0)
       t.fail_at("area_threshold", fmt::format("damage.area_threshold is a damage variable in (0, 1], got {}",
