@@ -831,12 +831,6 @@ bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& 
   return reached;
 }
 
-void DamagedPlateModel::joined_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
-                                              Eigen::VectorXd& f) const {
-  internal_force_into(u, dt, field, f);
-  if (activate_reached(u, field)) internal_force_into(u, dt, field, f);
-}
-
 void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int,
                                DamageField& field) const {
   for (const DamageField::ActiveElement& a : field.active_)

@@ -116,10 +116,6 @@ public:
   /// the elastic plate's tangent K_T(u) plus the damaged sections' difference taken with E_p at u, and the
   /// initial-stress term of their membrane resultants' difference.
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const;
-  /// internal_force() at u, and again when an element the screen left out has reached a Hashin surface
-  /// at u (activate_reached(): it joins; u does not depend on it). Into `f`, sized once by the caller.
-  void joined_internal_force(const Eigen::VectorXd& u, double dt, DamageField& field,
-                             Eigen::VectorXd& f) const;
   /// Activates the inactive elements that have reached a Hashin surface at u. True when there were any:
   /// the trial did not evaluate them, and the step must be iterated again.
   [[nodiscard]] bool activate_reached(const Eigen::VectorXd& u, DamageField& field) const;

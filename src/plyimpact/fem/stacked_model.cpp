@@ -288,7 +288,8 @@ private:
   /// `part_force(k)` writes f_k into f_parts_[k].
   template <class PartForce>
   void sublaminate_forces(const Eigen::VectorXd& u, const PartForce& part_force);
-  /// Σ_k f_k(u_k; d_k) of the damaged sub-laminates at u into Ku_ (each law once, trial states kept).
+  /// Σ_k f_k(u_k; d_k) of the damaged sub-laminates at u into Ku_, each law advanced to u (trial states
+  /// kept).
   void damaged_plate_forces(const Eigen::VectorXd& u, double dt);
   /// K_plates u, or the von Kármán sub-laminates' forces, or the damaged ones' (held: the damage of the
   /// last commit), into Ku_.
@@ -459,7 +460,7 @@ void StackedState::sublaminate_forces(const Eigen::VectorXd& u, const PartForce&
 
 void StackedState::damaged_plate_forces(const Eigen::VectorXd& u, double dt) {
   sublaminate_forces(u, [&](std::size_t k) {
-    m_.damaged_[k]->joined_internal_force(u_parts_[k], dt, fields_[k], f_parts_[k]);
+    m_.damaged_[k]->internal_force_into(u_parts_[k], dt, fields_[k], f_parts_[k]);
   });
 }
 
@@ -483,9 +484,7 @@ void StackedState::plate_forces(const Eigen::VectorXd& u, double dt) {
       m_.damaged_[k]->frozen_internal_force_into(u_parts_[k], fields_[k], f_parts_[k]);
     });
   else
-    sublaminate_forces(u, [&](std::size_t k) {
-      m_.damaged_[k]->internal_force_into(u_parts_[k], dt, fields_[k], f_parts_[k]);
-    });
+    damaged_plate_forces(u, dt);
 }
 
 bool StackedState::admit(const Eigen::VectorXd& u) {
@@ -644,7 +643,7 @@ void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/
       u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
       (void)part.activate_reached(u_parts_[k], fields_[k]);
     }
-    damaged_plate_forces(u, dt_); // held laws' commit: each sub-laminate's law once, at u
+    damaged_plate_forces(u, dt_); // held laws' commit: each sub-laminate's law once, at u, as one plate's
   }
   interfaces_.accept();
   if (m_.large_deflection())
