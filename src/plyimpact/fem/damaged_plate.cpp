@@ -15,22 +15,6 @@ namespace plyimpact {
 
 namespace {
 
-/// Engineering strain (x, y, xy) in plate axes → (11, 22, 12) in material axes.
-Eigen::Matrix3d strain_to_material(double angle_deg) {
-  const auto [c, s] = cos_sin_degrees(angle_deg);
-  Eigen::Matrix3d T;
-  T << c * c, s * s, c * s, s * s, c * c, -c * s, -2.0 * c * s, 2.0 * c * s, c * c - s * s;
-  return T;
-}
-
-/// Transverse shear strain (yz, xz) in plate axes → (23, 13) in material axes.
-Eigen::Matrix2d shear_to_material(double angle_deg) {
-  const auto [c, s] = cos_sin_degrees(angle_deg);
-  Eigen::Matrix2d T;
-  T << c, -s, s, c;
-  return T;
-}
-
 using Section8 = Eigen::Matrix<double, 8, 8>;
 
 Section8 as_matrix(const SectionStiffness& s) {
@@ -41,125 +25,6 @@ Section8 as_matrix(const SectionStiffness& s) {
 }
 
 } // namespace
-
-/// One ply's data at the points through its thickness.
-struct DamagedPlateModel::PlyPoints {
-  std::size_t material = 0;
-  Eigen::Matrix3d T_strain;
-  Eigen::Matrix2d T_shear;
-  std::array<double, 2> z{};
-  double weight = 0.0;   ///< t/2
-  std::size_t group = 0; ///< its Group in the section's groups (the same in every length class)
-
-  /// The ply strain in material axes at height z from the generalized strains (ε0, κ, γ) of a point;
-  /// root_k = √K puts the plate's transverse shear energy into the ply.
-  [[nodiscard]] PlyStrain strain_at(double z_point, const Eigen::Matrix<double, 8, 1>& s,
-                                    double root_k) const {
-    PlyStrain ps;
-    ps.in_plane = T_strain * (s.head<3>() + z_point * s.segment<3>(3));
-    ps.transverse_shear = root_k * (T_shear * s.tail<2>());
-    return ps;
-  }
-
-  /// The undamaged ply's terms of add_to(), T_εᵀ Q T_ε and k t/2 T_γᵀ G T_γ: every undamaged point of the ply
-  /// adds these, computed once by the same expressions (so the sections are the same bit for bit).
-  Eigen::Matrix3d undamaged_in_plane = Eigen::Matrix3d::Zero();
-  Eigen::Matrix2d undamaged_shear_term = Eigen::Matrix2d::Zero();
-
-  /// Adds this ply's point at height z, with secant stiffnesses C (in-plane) and G (transverse shear) in
-  /// material axes, to the section (DP1); k is the shear correction. Only the upper triangle of the
-  /// membrane–bending block: symmetric_section() completes it.
-  void add_to(SectionStiffness& sec, double z_point, double k, const Eigen::Matrix3d& C,
-              const Eigen::Matrix2d& G) const {
-    add_in_plane(sec, z_point, T_strain.transpose() * C * T_strain);
-    sec.F += (weight * k) * (T_shear.transpose() * G * T_shear);
-  }
-  /// add_to() with the undamaged stiffnesses.
-  void add_undamaged_to(SectionStiffness& sec, double z_point) const {
-    add_in_plane(sec, z_point, undamaged_in_plane);
-    sec.F += undamaged_shear_term;
-  }
-  /// Caches the undamaged terms from the ply law's undamaged stiffnesses; k is the shear correction.
-  void cache_undamaged(const PlyDamageLaw& law, double k) {
-    undamaged_in_plane = T_strain.transpose() * law.undamaged_stiffness() * T_strain;
-    undamaged_shear_term = (weight * k) * (T_shear.transpose() * law.undamaged_transverse_shear() * T_shear);
-  }
-
-private:
-  void add_in_plane(SectionStiffness& sec, double z_point, const Eigen::Matrix3d& Cbar) const {
-    sec.C_mb.topLeftCorner<3, 3>() += weight * Cbar;
-    sec.C_mb.topRightCorner<3, 3>() += (weight * z_point) * Cbar;
-    sec.C_mb.bottomRightCorner<3, 3>() += (weight * z_point * z_point) * Cbar;
-  }
-};
-
-namespace {
-
-SectionStiffness empty_section() {
-  SectionStiffness sec;
-  sec.C_mb.setZero();
-  sec.F.setZero();
-  return sec;
-}
-
-/// Completes the B block below the diagonal of a section built with PlyPoints::add_to.
-void symmetric_section(SectionStiffness& sec) {
-  sec.C_mb.bottomLeftCorner<3, 3>() = sec.C_mb.topRightCorner<3, 3>().transpose();
-}
-
-} // namespace
-
-/// Plies of one section with the same material and angle, and the z range they span: the Hashin indices
-/// are convex in z, so their largest value over the range is at one of its ends (the screening bound).
-struct DamagedPlateModel::Group {
-  std::size_t material = 0;
-  Eigen::Matrix3d T_strain;
-  Eigen::Matrix3d Q; ///< undamaged reduced stiffness, material axes
-  double z_min = 0.0, z_max = 0.0;
-  /// Material-axes stress of the undamaged ply at z_min and z_max from (ε0, κ): Q T_ε [I, z I].
-  Eigen::Matrix<double, 3, 6> at_min = Eigen::Matrix<double, 3, 6>::Zero();
-  Eigen::Matrix<double, 3, 6> at_max = Eigen::Matrix<double, 3, 6>::Zero();
-  /// Hashin's coefficients (PD2): 1/Xt², α/S12², 1/Xc², 1/Yt², 1/S12², 1/(2S23)², [(Yc/2S23)² − 1]/Yc.
-  double ft = 0.0, ft_shear = 0.0, fc = 0.0, mt = 0.0, shear = 0.0, mc = 0.0, mc_linear = 0.0;
-
-  void finish(const Strengths& st, double alpha) {
-    for (auto [M, z] : {std::pair{&at_min, z_min}, std::pair{&at_max, z_max}}) {
-      M->leftCols<3>() = Q * T_strain;
-      M->rightCols<3>() = z * (Q * T_strain);
-    }
-    const auto inv2 = [](double x) { return 1.0 / (x * x); };
-    ft = inv2(*st.Xt);
-    fc = inv2(*st.Xc);
-    mt = inv2(*st.Yt);
-    shear = inv2(*st.S12);
-    ft_shear = alpha * shear;
-    mc = inv2(2.0 * *st.S23);
-    mc_linear = (*st.Yc * *st.Yc * mc - 1.0) / *st.Yc;
-  }
-  /// The active Hashin index of the fibre and matrix pairs at stress s (sign conditions applied).
-  [[nodiscard]] double index(const Eigen::Vector3d& s) const {
-    const double t2 = s(2) * s(2);
-    const double fibre = s(0) >= 0.0 ? ft * s(0) * s(0) + ft_shear * t2 : fc * s(0) * s(0);
-    const double matrix =
-        s(1) >= 0.0 ? mt * s(1) * s(1) + shear * t2 : mc * s(1) * s(1) + mc_linear * s(1) + shear * t2;
-    return std::max(fibre, matrix);
-  }
-  /// An upper bound of the undamaged plies' active Hashin index over the group's z range at a point with
-  /// membrane strain and curvature `strain`. Each branch of a pair (fibre, matrix) is convex in z and the
-  /// stress affine: the largest active index is at an end of the range or where the sign of σ11 (σ22)
-  /// changes, where both branches reduce to their shear terms.
-  [[nodiscard]] double bound(const Eigen::Matrix<double, 6, 1>& strain) const {
-    const Eigen::Vector3d s0 = at_min * strain, s1 = at_max * strain;
-    double b = std::max(index(s0), index(s1));
-    for (const int c : {0, 1})
-      if (s0(c) * s1(c) < 0.0) {
-        const double f = s0(c) / (s0(c) - s1(c)); // where σ_cc = 0
-        const double t = s0(2) + f * (s1(2) - s0(2));
-        b = std::max(b, (c == 0 ? ft_shear : shear) * t * t);
-      }
-    return b;
-  }
-};
 
 /// Throws unless the rows ε0 and κ of S are (2.74) of the gradients (dN_dx, dN_dy), entry for entry: what
 /// DamagedPlateModel::membrane_bending_strain computes from the gradients instead of S.
@@ -242,26 +107,6 @@ StrainOperator von_karman_operator(const DamagedPlateModel::ElementOperators& op
 
 namespace {
 
-std::vector<DamagedPlateModel::PlyPoints> ply_points(const Laminate& lam) {
-  std::vector<DamagedPlateModel::PlyPoints> plies;
-  const double offset = 0.5 / std::sqrt(3.0);
-  for (std::size_t k = 0; k < lam.ply_count(); ++k) {
-    const Ply& ply = lam.plies()[k];
-    const double mid = 0.5 * (lam.z_top(k) + lam.z_bottom(k));
-    const double t = lam.z_bottom(k) - lam.z_top(k);
-    plies.push_back({ply.material,
-                     strain_to_material(ply.angle_deg),
-                     shear_to_material(ply.angle_deg),
-                     {mid - offset * t, mid + offset * t},
-                     0.5 * t});
-  }
-  return plies;
-}
-
-} // namespace
-
-namespace {
-
 /// The laminate's materials as the law of an element of characteristic length Lc sees them: the data of
 /// the deck, or (Lc > 0) with the strengths lowered to the band limit of Lc (band_limited_strengths).
 std::vector<Material> class_materials(const Laminate& lam, double Lc, double alpha) {
@@ -272,63 +117,6 @@ std::vector<Material> class_materials(const Laminate& lam, double Lc, double alp
           m.strength.Xc && m.strength.Yt && m.strength.Yc && m.strength.S12)
         m.strength = band_limited_strengths(m, Lc, alpha);
   return materials;
-}
-
-/// One damage law per material the laminate's plies use (null for the others).
-std::vector<std::unique_ptr<PlyDamageLaw>>
-section_laws(const Laminate& lam, const std::vector<Material>& materials, const PlyDamageOptions& options) {
-  std::vector<std::unique_ptr<PlyDamageLaw>> laws;
-  for (std::size_t i = 0; i < materials.size(); ++i) {
-    const bool used =
-        std::any_of(lam.plies().begin(), lam.plies().end(), [i](const Ply& p) { return p.material == i; });
-    if (!used) {
-      laws.emplace_back();
-      continue;
-    }
-    try {
-      laws.push_back(std::make_unique<PlyDamageLaw>(materials[i], options));
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(fmt::format(
-          "{} ([materials.{}]: strengths in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
-          "docs/progressive_damage.md lists published values)",
-          e.what(), materials[i].name));
-    }
-  }
-  return laws;
-}
-
-/// The laminate's plies grouped by (material, angle), each group with the z range it spans (the
-/// screening bound), and the group of each ply.
-struct SectionGroups {
-  std::vector<DamagedPlateModel::Group> groups;
-  std::vector<std::size_t> of_ply;
-};
-
-SectionGroups section_groups(const Laminate& lam, const std::vector<Material>& materials, double alpha) {
-  SectionGroups sg;
-  std::vector<DamagedPlateModel::Group>& groups = sg.groups;
-  for (std::size_t k = 0; k < lam.ply_count(); ++k) {
-    const Ply& ply = lam.plies()[k];
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const DamagedPlateModel::Group& g) {
-      return g.material == ply.material && g.T_strain.isApprox(strain_to_material(ply.angle_deg), 0.0);
-    });
-    sg.of_ply.push_back(static_cast<std::size_t>(it - groups.begin()));
-    if (it == groups.end()) {
-      DamagedPlateModel::Group g;
-      g.material = ply.material;
-      g.T_strain = strain_to_material(ply.angle_deg);
-      g.Q = reduced_stiffness(materials[ply.material]);
-      g.z_min = lam.z_top(k);
-      g.z_max = lam.z_bottom(k);
-      groups.push_back(g);
-      continue;
-    }
-    it->z_min = std::min(it->z_min, lam.z_top(k));
-    it->z_max = std::max(it->z_max, lam.z_bottom(k));
-  }
-  for (DamagedPlateModel::Group& g : groups)
-    g.finish(materials[g.material].strength, alpha);
-  return sg;
 }
 
 } // namespace
@@ -387,29 +175,11 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
                                   "([laminate] reduced_stiffness = \"exact\"): the damage law degrades it");
   build_element_operators();
   build_length_classes();
-  std::vector<std::vector<std::size_t>> group_of_ply; // [section][ply]: the same plies in every class
   for (const double Lc : class_length_) {
-    std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>> laws;
-    std::vector<std::vector<Group>> groups;
-    group_of_ply.clear();
-    for (const Laminate& lam : model.laminates()) {
-      const std::vector<Material> materials = class_materials(lam, Lc, settings_.law.alpha);
-      laws.push_back(section_laws(lam, materials, settings_.law));
-      SectionGroups sg = section_groups(lam, materials, settings_.law.alpha);
-      groups.push_back(std::move(sg.groups));
-      group_of_ply.push_back(std::move(sg.of_ply));
-    }
-    laws_.push_back(std::move(laws));
-    groups_.push_back(std::move(groups));
-  }
-  for (std::size_t s = 0; s < model.laminates().size(); ++s) {
-    const Laminate& lam = model.laminates()[s];
-    std::vector<PlyPoints> plies = ply_points(lam);
-    for (std::size_t k = 0; k < plies.size(); ++k) {
-      plies[k].cache_undamaged(*laws_.front()[s][plies[k].material], lam.shear_correction());
-      plies[k].group = group_of_ply[s][k];
-    }
-    plies_.push_back(std::move(plies));
+    std::vector<LayeredSection> sections;
+    for (const Laminate& lam : model.laminates())
+      sections.emplace_back(lam, class_materials(lam, Lc, settings_.law.alpha), settings_.law);
+    sections_.push_back(std::move(sections));
   }
   K0_ = model.stiffness();
   const SparseMatrix& pattern = model.pattern();
@@ -458,6 +228,11 @@ Eigen::Matrix<double, 8, 1> DamagedPlateModel::membrane_bending_strain(const Ele
 
 DamagedPlateModel::~DamagedPlateModel() = default;
 
+const LayeredSection& DamagedPlateModel::layered_section(int e) const {
+  const auto c = static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
+  return sections_[c][static_cast<std::size_t>(model_.section_index(e))];
+}
+
 const DamagedPlateModel::ElementOperators& DamagedPlateModel::operators_of(int e) const {
   return operators_[static_cast<std::size_t>(model_.mesh().shape_class(e))];
 }
@@ -470,10 +245,11 @@ std::optional<std::string> DamagedPlateModel::strength_reduction_warning() const
   } largest;
   std::vector<bool> class_reduced(class_length_.size(), false);
   for (std::size_t c = 0; c < class_length_.size(); ++c)
-    for (std::size_t s = 0; s < laws_[c].size(); ++s)
-      for (std::size_t i = 0; i < laws_[c][s].size(); ++i) {
-        if (!laws_[c][s][i]) continue;
-        const Material& m = laws_[c][s][i]->material();
+    for (std::size_t s = 0; s < sections_[c].size(); ++s)
+      for (std::size_t i = 0; i < model_.laminates()[s].materials().size(); ++i) {
+        const PlyDamageLaw* law = sections_[c][s].law(i);
+        if (!law) continue;
+        const Material& m = law->material();
         const Material& deck = model_.laminates()[s].materials()[i];
         const std::tuple<const char*, std::optional<double>, std::optional<double>> pairs[] = {
             {"Xt", deck.strength.Xt, m.strength.Xt},
@@ -509,8 +285,8 @@ DamageField DamagedPlateModel::virgin_field() const {
   f.u_committed_ = Eigen::VectorXd::Zero(model_.size());
   for (const Laminate& lam : model_.laminates())
     f.ply_area_.resize(std::max(f.ply_area_.size(), lam.ply_count()), 0.0);
-  for (const std::vector<Group>& groups : groups_.front())
-    f.groups_ = std::max(f.groups_, groups.size());
+  for (const LayeredSection& section : sections_.front())
+    f.groups_ = std::max(f.groups_, section.group_count());
   return f;
 }
 
@@ -518,83 +294,35 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
                                                                     double dt, DamageField& field,
                                                                     std::vector<double>& group_bound) const {
   DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
-  const int section = model_.section_index(e);
-  const Laminate& lam = model_.laminates()[static_cast<std::size_t>(section)];
-  const std::vector<PlyPoints>& plies = plies_[static_cast<std::size_t>(section)];
-  const auto& laws = laws_[class_of(e)][static_cast<std::size_t>(section)];
-  const std::vector<Group>& groups = groups_[class_of(e)][static_cast<std::size_t>(section)];
-  const double root_k = std::sqrt(lam.shear_correction());
-  const double k = lam.shear_correction();
+  const LayeredSection& section = layered_section(e);
   const double Lc = characteristic_length(e);
   const ElementOperators& ops = operators_of(e);
-  const SectionStiffness& undamaged = model_.section(section).stiffness;
+  const SectionStiffness& undamaged = model_.section(model_.section_index(e)).stiffness;
   const ElementVector ue = model_.element_dofs(u, e);
-  const std::size_t per_point = 2 * plies.size();
+  const std::size_t per_point = section.states_per_point();
   a.trial_dissipation = {};
   PointStrains strains;
   for (std::size_t p = 0; p < 9; ++p) {
     strains[p] = point_strain(ops, p, ue);
-    const Eigen::Matrix<double, 8, 1>& strain = strains[p];
-    const std::size_t first = p * per_point;
+    const std::span<PlyDamageState> committed(a.committed.data() + p * per_point, per_point);
+    const std::span<PlyDamageState> trial(a.trial.data() + p * per_point, per_point);
     if (a.pristine[p]) {
-      if (hashin_bound(groups, strain.head<6>()) < 1.0) {
+      if (section.hashin_bound(strains[p].head<6>()) < 1.0) {
         // Undamaged and below every Hashin surface: the elastic section, no law call.
-        if (a.trial_touched[p])
-          std::copy_n(a.committed.begin() + static_cast<std::ptrdiff_t>(first), per_point,
-                      a.trial.begin() + static_cast<std::ptrdiff_t>(first));
+        if (a.trial_touched[p]) std::copy(committed.begin(), committed.end(), trial.begin());
         a.trial_touched[p] = false;
         a.pristine_trial[p] = true;
         a.sections[p] = undamaged;
         continue;
       }
       // The law integrates from the strain of the committed state: the point's strain at the last commit.
-      const Eigen::Matrix<double, 8, 1> before =
-          point_strain(ops, p, model_.element_dofs(field.u_committed_, e));
-      std::size_t index = first;
-      for (const PlyPoints& ply : plies)
-        for (const double z : ply.z)
-          a.committed[index++].strain = ply.strain_at(z, before, root_k);
+      section.set_strains(committed, point_strain(ops, p, model_.element_dofs(field.u_committed_, e)));
     }
-    SectionStiffness sec = empty_section();
-    bool initiated = false;
-    std::size_t index = first;
-    std::fill(group_bound.begin(), group_bound.end(), -1.0);
-    // A virgin ply whose group is below every Hashin surface: the law would answer it elastically
-    // (PlyDamageLaw::advance), so its state and the cached section terms stand for the call.
-    const auto below_surfaces = [&](const PlyPoints& ply) {
-      double& bound = group_bound[ply.group];
-      if (bound < 0.0) bound = groups[ply.group].bound(strain.head<6>());
-      return bound < 1.0;
-    };
-    for (const PlyPoints& ply : plies) {
-      const PlyDamageLaw& law = *laws[ply.material];
-      for (const double z : ply.z) {
-        if (a.committed[index].virgin() && below_surfaces(ply)) {
-          a.trial[index] = a.committed[index];
-          a.trial[index].strain = ply.strain_at(z, strain, root_k);
-          ++index;
-          ply.add_undamaged_to(sec, z); // (DP1)
-          for (const DamageMode m : all_damage_modes)
-            a.trial_dissipation[m] += 0.0; // the law's zero dissipation: -0 + 0 = +0 as with the call
-          continue;
-        }
-        const PlyDamageUpdate r = law.advance(a.committed[index], ply.strain_at(z, strain, root_k), Lc, dt);
-        a.trial[index] = r.state;
-        ++index;
-        for (const DamageMode m : all_damage_modes)
-          initiated = initiated || r.state.initiated(m);
-        if (r.undamaged())
-          ply.add_undamaged_to(sec, z); // (DP1)
-        else
-          ply.add_to(sec, z, k, r.secant, r.transverse_shear_secant); // (DP1)
-        for (const DamageMode m : all_damage_modes)
-          a.trial_dissipation[m] += r.dissipation[m] * ply.weight * ops.w[p];
-      }
-    }
-    symmetric_section(sec);
-    a.sections[p] = sec;
+    const LayeredSection::Increment r =
+        section.advance(committed, trial, strains[p], Lc, dt, ops.w[p], a.trial_dissipation, group_bound);
+    a.sections[p] = r.secant;
     a.trial_touched[p] = true;
-    a.pristine_trial[p] = !initiated;
+    a.pristine_trial[p] = !r.initiated;
   }
   a.evaluated = true;
   a.has_sections = true;
@@ -662,11 +390,8 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
                                                                    const Eigen::VectorXd& u) const {
   DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
-  const int section = model_.section_index(e);
-  const std::vector<PlyPoints>& plies = plies_[static_cast<std::size_t>(section)];
-  const auto& laws = laws_[class_of(e)][static_cast<std::size_t>(section)];
-  const double k = model_.laminates()[static_cast<std::size_t>(section)].shear_correction();
-  const double root_k = std::sqrt(k);
+  const LayeredSection& section = layered_section(e);
+  const std::size_t per_point = section.states_per_point();
   const ElementOperators& ops = operators_of(e);
   const ElementVector ue = model_.element_dofs(u, e);
   PointStrains strains;
@@ -674,21 +399,11 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
     a.pristine_trial[p] = a.pristine[p];
     if (a.pristine[p]) continue; // never initiated: the undamaged section (K0 u holds it)
     strains[p] = point_strain(ops, p, ue);
-    SectionStiffness sec = empty_section();
-    std::size_t index = p * 2 * plies.size();
-    for (const PlyPoints& ply : plies)
-      for (const double z : ply.z) {
-        const PlySecant c = laws[ply.material]->secant_at(a.committed[index].regularised_damage,
-                                                          ply.strain_at(z, strains[p], root_k));
-        if (a.modes[index] != c.modes) {
-          a.modes[index] = static_cast<unsigned char>(c.modes);
-          a.modes_changed = true;
-        }
-        ++index;
-        ply.add_to(sec, z, k, c.in_plane, c.transverse_shear); // (DP1)
-      }
-    symmetric_section(sec);
-    a.sections[p] = sec;
+    const LayeredSection::Held h =
+        section.held(std::span<const PlyDamageState>(a.committed.data() + p * per_point, per_point),
+                     std::span<unsigned char>(a.modes.data() + p * per_point, per_point), strains[p]);
+    a.modes_changed = a.modes_changed || h.modes_changed;
+    a.sections[p] = h.secant;
   }
   a.has_sections = true;
   return strains;
@@ -766,21 +481,13 @@ void DamagedPlateModel::add_section_differences(SparseMatrix& K, const DamageFie
   }
 }
 
-double DamagedPlateModel::hashin_bound(const std::vector<Group>& groups,
-                                       const Eigen::Matrix<double, 6, 1>& strain) {
-  double bound = 0.0;
-  for (const Group& g : groups)
-    bound = std::max(bound, g.bound(strain));
-  return bound;
-}
-
 double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
-  const std::vector<Group>& groups = groups_[class_of(e)][static_cast<std::size_t>(model_.section_index(e))];
+  const LayeredSection& section = layered_section(e);
   const ElementOperators& ops = operators_of(e);
   const ElementVector ue = model_.element_dofs(u, e);
   double bound = 0.0;
   for (std::size_t p = 0; p < 9; ++p)
-    bound = std::max(bound, hashin_bound(groups, membrane_bending_strain(ops, p, ue).head<6>()));
+    bound = std::max(bound, section.hashin_bound(membrane_bending_strain(ops, p, ue).head<6>()));
   return bound;
 }
 

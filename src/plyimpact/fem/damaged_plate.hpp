@@ -1,20 +1,11 @@
 #pragma once
 // The plate whose plies crack (issue 18): the MITC9 plate of PlateModel with a damage state per element,
-// 3×3 Gauss point, ply and through-thickness point, and the continuum damage law of
-// laminate/ply_damage.hpp at each of them. OOFEM's picture: the element asks its cross-section for
-// stresses at an integration point; the section asks every ply for its secant stiffness.
+// 3×3 Gauss point, ply and through-thickness point. OOFEM's picture: the element asks its cross-section
+// for stresses at an integration point (fem/layered_section.hpp); the section asks every ply's law.
 //
 //   generalized strains (ε0, κ, γ) = S_p uₑ at Gauss point p (MITC9 strains, plate_element.hpp)
-//   ply strain at z_g:  ε_ply = T_ε(θ) (ε0 + z_g κ),  γ_ply = √K T_s(θ) γ   (material axes)
-//   law:                C(d), G(d) = secant stiffnesses (ply_damage.hpp, PD3–PD5)
-//   section (DP1):      [[A, B], [B, D]](d) = Σ_plies Σ_g w_g t [[1, z_g], [z_g, z_g²]] ⊗ T_εᵀ C(d) T_ε
-//                       F(d) = K Σ_plies Σ_g w_g t T_sᵀ G(d) T_s
+//   section:            [[A, B], [B, D]](d), F(d) = LayeredSection's secant at those strains (DP1)
 //   internal force:     f = Σₑ Σ_p w_p S_pᵀ [[A, B], [B, D]](d) (ε0, κ) ⊕ F(d) γ = K_s(d) u  (secant)
-//
-// Two Gauss points through each ply (z_g = z_mid ± t/(2√3), w_g = ½) integrate the undamaged A, B, D
-// exactly, so a plate without damage is the elastic plate. √K in the ply's transverse shear strain
-// makes the ply's shear energy the plate's (F carries the shear correction K), so the energy the law
-// reports dissipated is the energy the plate loses.
 //
 // Kinematics × section: with von Kármán kinematics (SPEC §8) the generalized strains at a point gain the
 // membrane terms of the deflection's slopes, e = S_p uₑ + (½ w,x², ½ w,y², w,x w,y, 0, …), the section is
@@ -29,6 +20,7 @@
 // elements), evaluate the law; the others are the elastic element. Each accepted step screens the
 // inactive elements with a bound of the Hashin indices over each ply group's thickness range
 // (docs/progressive_damage.md); an element found beyond the surface asks for the step to be solved again.
+#include "plyimpact/fem/layered_section.hpp"
 #include "plyimpact/fem/nonlinear_plate_model.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/laminate/ply_damage.hpp"
@@ -133,10 +125,8 @@ public:
   /// Returns the number of elements newly activated.
   int screen(const Eigen::VectorXd& u, DamageField& field) const;
 
-  // Implementation types (defined in damaged_plate.cpp).
-  struct Group; ///< plies of one (section, material, angle): the screening bound's unit
+  // Implementation type (defined in damaged_plate.cpp).
   struct ElementOperators;
-  struct PlyPoints;
 
 private:
   void build_element_operators();
@@ -144,11 +134,10 @@ private:
   /// lowered to the band limit, otherwise one class for all.
   void build_length_classes();
   [[nodiscard]] const ElementOperators& operators_of(int e) const;
-  [[nodiscard]] std::size_t class_of(int e) const {
-    return static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
-  }
+  /// The layered section of element e (its laminate, in its length class).
+  [[nodiscard]] const LayeredSection& layered_section(int e) const;
   /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
-  using PointStrains = std::array<Eigen::Matrix<double, 8, 1>, 9>;
+  using PointStrains = std::array<GeneralizedStrain, 9>;
   /// The generalized strains at point p of an element with DOFs uₑ (with the kinematics' terms).
   [[nodiscard]] Eigen::Matrix<double, 8, 1> point_strain(const ElementOperators& ops, std::size_t p,
                                                          const ElementVector& ue) const;
@@ -180,10 +169,6 @@ private:
   /// `group_bound`: scratch of the calling thread (the point's bound of each ply group, −1: not computed).
   PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field,
                                 std::vector<double>& group_bound) const;
-  /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
-  /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
-  [[nodiscard]] static double hashin_bound(const std::vector<Group>& groups,
-                                           const Eigen::Matrix<double, 6, 1>& strain);
   /// The largest hashin_bound over element e's points at u.
   [[nodiscard]] double element_bound(int e, const Eigen::VectorXd& u) const;
   void activate(int e, DamageField& field) const;
@@ -201,13 +186,11 @@ private:
   /// product without its scatter
   Eigen::SparseMatrix<double, Eigen::RowMajor> K0_by_rows_;
   std::vector<double> length_, area_;
-  std::vector<int> class_of_element_; ///< length class of each element
-  std::vector<double> class_length_;  ///< L_c of each class (0: the deck's strengths)
-  std::vector<std::vector<std::vector<std::unique_ptr<PlyDamageLaw>>>> laws_; ///< [class][section][material]
-  std::vector<std::vector<std::vector<Group>>> groups_;                       ///< [class][section]
-  std::vector<std::vector<PlyPoints>> plies_;                                 ///< [section][ply]
-  std::vector<ElementOperators> operators_;                                   ///< per shape class
-  std::vector<ElementSlots> slot_; ///< (i, j) of Kₑ → index in K0_ values
+  std::vector<int> class_of_element_;                 ///< length class of each element
+  std::vector<double> class_length_;                  ///< L_c of each class (0: the deck's strengths)
+  std::vector<std::vector<LayeredSection>> sections_; ///< [class][section]
+  std::vector<ElementOperators> operators_;           ///< per shape class
+  std::vector<ElementSlots> slot_;                    ///< (i, j) of Kₑ → index in K0_ values
 };
 
 /// What a run reports of its plies' damage at the last commit: the energies, the areas and the maps. One
