@@ -6,9 +6,9 @@
 // proportional): the single laminate's linear run, and the plate cut after plies 6, 12 and 18 with
 // interfaces that hold, for each sparse solver, and with explicit central differences at the stack's
 // stable step. Counters: DOFs, µs per step, solves per step (the explicit run: its Δt in ns).
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -7,7 +7,7 @@
 //
 // on the thesis §3.6 plate (K̄ = K + M/(β Δt²), β = 1/4, Δt = 1 µs, all DOFs). Counters: dofs,
 // nnz_L (strictly lower) and the estimate in MB.
-#include "plyimpact/analysis/guards.hpp"
+#include "plyimpact/analysis/impact/guards.hpp"
 #include "plyimpact/fem/boundary.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"

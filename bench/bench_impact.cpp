@@ -2,9 +2,9 @@
 //   ./build/release/bench/bench_impact --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // Counters: steps, us_per_step, solve_us (one triangular solve pair with the same factor, measured
 // in the same process) and overhead = us_per_step / solve_us − 1.
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -3,9 +3,9 @@
 //   ./build/release/bench/bench_nonlinear_impact --benchmark_repetitions=3
 //   --benchmark_report_aggregates_only=true
 // Counters: steps, us_per_step, newton_per_step (iterations per time step), factorizations of K̄.
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <benchmark/benchmark.h>
 

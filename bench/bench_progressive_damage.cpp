@@ -10,9 +10,9 @@
 //   explicit      the example with integration = "explicit" at Δt = 35 ns, below its stable step 38 ns
 //                 (docs/progressive_damage.md, "The explicit step").
 // Counters: steps, us_per_step, solves_per_step, factorizations, active_elements (at the end).
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Time to accuracy (issue 22): the peak force of an impact against its converged value, and the time
 of the whole process, for meshes × time steps, on two cases of the mesh-objective contact's reference
-(docs/notes/contact-reference.md, tests/io/test_mesh_objective_impact.cpp), both run with the program's
+(docs/notes/contact-reference.md, tests/io/run/test_mesh_objective_impact.cpp), both run with the program's
 defaults (Hertz pressure, MITC9), which converge:
 
   heavy  the §3.6 impact, examples/thesis-3.6-v268.toml without its thesis choices (point force, q9,

@@ -1,6 +1,6 @@
 // libFuzzer target: the deck parser (TOML text → Deck) must either return a Deck or throw DeckError
 // with a located message. Any other exception, crash, hang, leak or undefined behaviour is a finding.
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <cstddef>
 #include <cstdint>

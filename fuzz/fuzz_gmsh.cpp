@@ -1,10 +1,10 @@
 // libFuzzer target: a gmsh file as a deck hands it to plyimpact — a mesh (.msh, when the input starts with
 // $MeshFormat) read by read_gmsh_mesh, or a geometry script (.geo, anything else) checked by the safe-.geo
-// policy and meshed by mesh_gmsh_geometry. gmsh runs in a child process (io/child_process.hpp): whatever the
-// input makes it do — crash, abort, Exit, loop — the caller must get a Mesh or a MeshFileError. Any other
-// exception, a crash or hang of this process, a leak or undefined behaviour is a finding
+// policy and meshed by mesh_gmsh_geometry. gmsh runs in a child process (io/system/child_process.hpp):
+// whatever the input makes it do — crash, abort, Exit, loop — the caller must get a Mesh or a MeshFileError.
+// Any other exception, a crash or hang of this process, a leak or undefined behaviour is a finding
 // (docs/robustness.md, "Fuzzing").
-#include "plyimpact/io/gmsh_mesh.hpp"
+#include "plyimpact/io/mesh/gmsh_mesh.hpp"
 
 #include <unistd.h>
 

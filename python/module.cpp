@@ -1,23 +1,23 @@
 // plyimpact._core: the library's facade for Python (pybind11). The Pythonic layer,
 // python/plyimpact/__init__.py, builds on these few functions; nothing here re-implements the engine:
-// a deck is parsed by the deck parser, an impact runs through io/impact_run.hpp exactly as the
+// a deck is parsed by the deck parser, an impact runs through io/run/impact_run.hpp exactly as the
 // `impact` command runs it, and the summary is the JSON of summary.json.
 //
 // The GIL is released while the C++ engine runs, so Python threads can run cases side by side.
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/analysis/recorders.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
-#include "plyimpact/io/history_csv.hpp"
-#include "plyimpact/io/impact_run.hpp"
-#include "plyimpact/io/json_text.hpp"
-#include "plyimpact/io/laminate_report.hpp"
-#include "plyimpact/io/memory_estimate.hpp"
-#include "plyimpact/io/output_folder.hpp"
-#include "plyimpact/io/plate_analyses.hpp"
-#include "plyimpact/io/sweep_runner.hpp"
-#include "plyimpact/io/sweep_spec.hpp"
-#include "plyimpact/io/threshold_run.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/analysis/impact/recorders.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
+#include "plyimpact/io/deck/json_text.hpp"
+#include "plyimpact/io/results/history_csv.hpp"
+#include "plyimpact/io/results/laminate_report.hpp"
+#include "plyimpact/io/results/output_folder.hpp"
+#include "plyimpact/io/run/impact_run.hpp"
+#include "plyimpact/io/run/plate_analyses.hpp"
+#include "plyimpact/io/sweeps/sweep_runner.hpp"
+#include "plyimpact/io/sweeps/sweep_spec.hpp"
+#include "plyimpact/io/sweeps/threshold_run.hpp"
+#include "plyimpact/io/system/memory_estimate.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -44,7 +44,7 @@ namespace {
 
 using plyimpact::Deck;
 
-/// One row per recorded step, the columns of history.csv (io/history_csv.hpp).
+/// One row per recorded step, the columns of history.csv (io/results/history_csv.hpp).
 py::array_t<double> history_array(const std::vector<plyimpact::ImpactSample>& samples, std::size_t columns) {
   py::array_t<double> a({samples.size(), columns});
   auto m = a.mutable_unchecked<2>();

@@ -1,10 +1,10 @@
 // One impact through the engine's facade, as a program of your own would run it: read a deck, build the
-// case (plate, mesh, step policy: analysis/impact_case.hpp), run it, print what a test lab reads off a
+// case (plate, mesh, step policy: analysis/impact/impact_case.hpp), run it, print what a test lab reads off a
 // drop-weight test. Then the same plate struck at twice the energy (the case is built once; each run
 // changes only the impactor).
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -7,26 +7,26 @@
 //   plyimpact modal    examples/modal-annex2.toml -o results/modal
 //   plyimpact buckling examples/buckling-annex2.toml -o results/buckling
 #include "interruption.hpp"
-#include "plyimpact/analysis/capabilities.hpp"
-#include "plyimpact/analysis/damage_tracker.hpp"
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/analysis/threshold_search.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/damage_report.hpp"
-#include "plyimpact/io/deck.hpp"
-#include "plyimpact/io/environment.hpp"
-#include "plyimpact/io/history_check.hpp"
-#include "plyimpact/io/impact_progress.hpp"
-#include "plyimpact/io/impact_report.hpp"
-#include "plyimpact/io/impact_run.hpp"
-#include "plyimpact/io/laminate_report.hpp"
-#include "plyimpact/io/memory_estimate.hpp"
-#include "plyimpact/io/output_folder.hpp"
-#include "plyimpact/io/plate_analyses.hpp"
-#include "plyimpact/io/plots.hpp"
-#include "plyimpact/io/progress.hpp"
-#include "plyimpact/io/results.hpp"
-#include "plyimpact/io/threshold_run.hpp"
+#include "plyimpact/analysis/fields/damage_tracker.hpp"
+#include "plyimpact/analysis/impact/capabilities.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/analysis/thresholds/threshold_search.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
+#include "plyimpact/io/results/damage_report.hpp"
+#include "plyimpact/io/results/history_check.hpp"
+#include "plyimpact/io/results/impact_report.hpp"
+#include "plyimpact/io/results/laminate_report.hpp"
+#include "plyimpact/io/results/output_folder.hpp"
+#include "plyimpact/io/results/plots.hpp"
+#include "plyimpact/io/results/results.hpp"
+#include "plyimpact/io/run/impact_progress.hpp"
+#include "plyimpact/io/run/impact_run.hpp"
+#include "plyimpact/io/run/plate_analyses.hpp"
+#include "plyimpact/io/run/progress.hpp"
+#include "plyimpact/io/sweeps/threshold_run.hpp"
+#include "plyimpact/io/system/environment.hpp"
+#include "plyimpact/io/system/memory_estimate.hpp"
 #include "sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -104,7 +104,7 @@ Deck read_deck_for(const Options& o, AnalysisKind kind) {
 }
 
 /// The results folder of this run (-o, else <[output] dir>/<deck name>/), locked for the run and
-/// cleared of another run's results (--overwrite) or refused (io/output_folder.hpp). Says where.
+/// cleared of another run's results (--overwrite) or refused (io/results/output_folder.hpp). Says where.
 OutputLock claim_folder(const Options& o, const Deck& deck) {
   const std::filesystem::path dir = o.output_dir.empty() ? default_output_dir(deck.output_dir, o.deck_path)
                                                          : std::filesystem::path(o.output_dir);
@@ -194,7 +194,8 @@ int run_plot(const std::vector<std::string>& dirs, const std::string& output_dir
     if (!std::filesystem::exists(history))
       throw HistoryFileError(fmt::format(
           "{0}: not an impact results folder (no history.csv; run plyimpact impact DECK -o {0})", dirs[i]));
-    // a regular file of well-formed rows, thinned where gnuplot would take minutes (io/history_check.hpp)
+    // a regular file of well-formed rows, thinned where gnuplot would take minutes
+    // (io/results/history_check.hpp)
     const CheckedHistory checked =
         check_history_for_plot(history, out / fmt::format("history-{}.thinned.csv", i + 1));
     if (checked.plotted < checked.rows)

@@ -1,9 +1,9 @@
 #include "sweep_command.hpp"
 
-#include "plyimpact/io/deck.hpp"
-#include "plyimpact/io/environment.hpp"
-#include "plyimpact/io/output_folder.hpp"
-#include "plyimpact/io/sweep_runner.hpp"
+#include "plyimpact/io/deck/deck.hpp"
+#include "plyimpact/io/results/output_folder.hpp"
+#include "plyimpact/io/sweeps/sweep_runner.hpp"
+#include "plyimpact/io/system/environment.hpp"
 
 #include <fmt/format.h>
 

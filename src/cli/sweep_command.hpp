@@ -1,7 +1,7 @@
 #pragma once
 // `plyimpact sweep DECK -o DIR`: parameter studies on all cores (--jobs) and across machines
 // (mpirun/srun, docs/cluster.md), resumable (--resume). See docs/sweep.md.
-#include "plyimpact/io/progress.hpp"
+#include "plyimpact/io/run/progress.hpp"
 
 #include <CLI/CLI.hpp>
 

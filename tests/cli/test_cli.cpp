@@ -1,6 +1,6 @@
 // The command line: every analysis writes DIR/summary.json with the SPEC §10 keys; bad decks exit
 // non-zero with the file:line:column message.
-#include "plyimpact/analysis/capabilities.hpp"
+#include "plyimpact/analysis/impact/capabilities.hpp"
 #include "support/cli.hpp"
 
 #include <gtest/gtest.h>
@@ -240,7 +240,7 @@ end = 1e-4
   EXPECT_NE(warnings[3].get<std::string>().find("is still in contact"), std::string::npos);
 
   // The memory limit (overridden by the environment) refuses the factorization with the estimate.
-  // (the mesh's estimate, io/memory_estimate.hpp, refuses it before assembly)
+  // (the mesh's estimate, io/system/memory_estimate.hpp, refuses it before assembly)
   const std::string limited = "PLYIMPACT_MEMORY_LIMIT_BYTES=1000 " + std::string(PLYIMPACT_EXE) + " impact " +
                               deck.string() + " -o " + (dir / "mem").string() + " > " +
                               (dir / "mem.txt").string() + " 2>&1";

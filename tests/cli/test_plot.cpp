@@ -1,6 +1,6 @@
 // Pictures and reports from an impact run: `plyimpact plot` makes non-blank PNGs of the stated size and
 // SVGs that parse as XML; ParaView frames are listed in plate.pvd; report.txt echoes the run.
-#include "plyimpact/io/plots.hpp"
+#include "plyimpact/io/results/plots.hpp"
 
 #include "support/cli.hpp"
 

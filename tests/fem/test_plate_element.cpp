@@ -1,7 +1,7 @@
 // The 9-node Mindlin element and its assembly: patch tests, symmetry, positive definiteness, mass,
 // zero-energy modes.
-#include "plyimpact/analysis/modal_analysis.hpp"
-#include "plyimpact/analysis/static_analysis.hpp"
+#include "plyimpact/analysis/plate_analyses/modal_analysis.hpp"
+#include "plyimpact/analysis/plate_analyses/static_analysis.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/quadrature.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"

@@ -1,7 +1,7 @@
 // Sections per element (issue 15): a plate whose elements carry different laminates. Two regions with
 // the same laminate are the one-region plate bit for bit; a strip in cylindrical bending with a
 // thickness step at mid-span matches the stepped Timoshenko beam.
-#include "plyimpact/analysis/static_analysis.hpp"
+#include "plyimpact/analysis/plate_analyses/static_analysis.hpp"
 #include "plyimpact/fem/loads.hpp"
 #include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/regions.hpp"

@@ -4,11 +4,11 @@
 // (docs/delamination_threshold.md, (4)); hence G = 3P²/(32π²D) whatever a. Here the stacked plate
 // (two Mindlin sub-laminates, cohesive interface, the seed's points at d = 1 held, their faces in
 // contact through the penalty) on the circular rig's mesh, solved statically.
-#include "plyimpact/analysis/impact_case.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/fem/stacked_model.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 #include "support/seeded_plate.hpp"
 
 #include <gtest/gtest.h>

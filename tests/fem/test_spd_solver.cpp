@@ -102,9 +102,9 @@ TEST_P(SpdSolverBackends, AMatrixOfTheAnalysedPatternReusesTheAnalysisAndGetsThe
 }
 
 TEST_P(SpdSolverBackends, TheAnalysisTellsTheSizeOfTheFactorBeforeItIsMade) {
-  // The memory guard reads the factor's size from the analysis (analysis/guards.hpp): for the simplicial
-  // factors it is the count of the factor made after it, which reuses that analysis; a supernodal factor
-  // stores its supernodes whole, at least the lower triangle of the matrix. Fill-in makes the factor
+  // The memory guard reads the factor's size from the analysis (analysis/impact/guards.hpp): for the
+  // simplicial factors it is the count of the factor made after it, which reuses that analysis; a supernodal
+  // factor stores its supernodes whole, at least the lower triangle of the matrix. Fill-in makes the factor
   // larger than the matrix's lower triangle.
   const PlateModel model = small_plate("ss");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
@@ -124,8 +124,8 @@ TEST_P(SpdSolverBackends, TheAnalysisTellsTheSizeOfTheFactorBeforeItIsMade) {
 }
 
 TEST_P(SpdSolverBackends, ASolverThatAdoptsAnotherOnesAnalysisGetsTheFreshFactor) {
-  // The factors of K̄ at two time-step levels (analysis/linear_step.cpp): the second solver takes the
-  // first one's analysis and factors its own matrix of the same pattern, bit for bit as a solver that
+  // The factors of K̄ at two time-step levels (analysis/integrators/linear_step.cpp): the second solver takes
+  // the first one's analysis and factors its own matrix of the same pattern, bit for bit as a solver that
   // analyses it afresh; a matrix of another pattern is still analysed anew. Only a solver of the same
   // kind and ordering can lend its analysis.
   const PlateModel model = small_plate("ss");
@@ -160,7 +160,7 @@ TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
 
 TEST(SpdSolver, CholmodSimplicialHasAboutTheFillOfEigensLdlt) {
   // Both order by AMD (CHOLMOD's own AMD and Eigen's port of it differ in details: 5 175 against 5 550
-  // here), so the memory estimate built on Eigen's symbolic analysis (analysis/guards) holds for both.
+  // here), so the memory estimate built on Eigen's symbolic analysis (analysis/impact/guards) holds for both.
   const PlateModel model = small_plate("clamped");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   SpdSolver eigen(SparseSolverKind::simplicial_ldlt), cholmod(SparseSolverKind::cholmod_simplicial);

@@ -1,7 +1,7 @@
 // Replays the fuzz corpus and every regression input found by the fuzz targets (fuzz/, docs/robustness.md)
 // in the ordinary test suite, so the release and ASan/UBSan builds check them too.
-#include "plyimpact/io/deck.hpp"
-#include "plyimpact/io/gmsh_mesh.hpp"
+#include "plyimpact/io/deck/deck.hpp"
+#include "plyimpact/io/mesh/gmsh_mesh.hpp"
 #include "plyimpact/laminate/layup.hpp"
 #include "test_paths.hpp"
 

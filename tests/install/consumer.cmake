@@ -10,7 +10,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefi
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc})")
 endif()
-foreach(installed bin/plyimpact include/plyimpact/analysis/impact_case.hpp lib/cmake/plyimpact/plyimpactConfig.cmake
+foreach(installed bin/plyimpact include/plyimpact/analysis/impact/impact_case.hpp lib/cmake/plyimpact/plyimpactConfig.cmake
                   share/doc/plyimpact/examples/thesis-3.6-v268.toml)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "not installed: ${installed}")

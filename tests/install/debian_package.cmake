@@ -10,7 +10,7 @@ if(NOT rc EQUAL 0 OR NOT deb)
   message(FATAL_ERROR "cpack failed (${rc}):\n${out}")
 endif()
 execute_process(COMMAND dpkg-deb --contents ${deb} OUTPUT_VARIABLE contents)
-foreach(path ./usr/bin/plyimpact ./usr/include/plyimpact/analysis/impact_case.hpp
+foreach(path ./usr/bin/plyimpact ./usr/include/plyimpact/analysis/impact/impact_case.hpp
              ./usr/lib/cmake/plyimpact/plyimpactConfig.cmake ./usr/lib/python3/dist-packages/plyimpact/__init__.py
              ./usr/share/doc/plyimpact/examples/thesis-3.6-v268.toml ./usr/share/doc/plyimpact/copyright
              ./usr/share/doc/plyimpact/LICENSE)

@@ -1,16 +1,16 @@
 #pragma once
 // Plate meshes made with the gmsh library (as a user makes them in gmsh) and saved as .msh files, for
-// the tests of mesh files (io/gmsh_mesh.hpp): a disk, an annulus, and a rectangle meshed by transfinite
+// the tests of mesh files (io/mesh/gmsh_mesh.hpp): a disk, an annulus, and a rectangle meshed by transfinite
 // lines. The options say how the surface is meshed, so that the tests can also make the meshes that
 // plyimpact must refuse.
-#include "plyimpact/io/geo_script.hpp"
+#include "plyimpact/io/mesh/geo_script.hpp"
 
 #include <cstdlib>
 #include <filesystem>
 
 namespace plyimpact::test {
 
-/// PLYIMPACT_TRUST_GEO=1 while it lives (the user's opt-in of io/geo_script.hpp), unset after.
+/// PLYIMPACT_TRUST_GEO=1 while it lives (the user's opt-in of io/mesh/geo_script.hpp), unset after.
 class TrustedGeoScripts {
 public:
   TrustedGeoScripts() { ::setenv(trust_geo_variable, "1", 1); } // NOLINT(concurrency-mt-unsafe)

@@ -1,9 +1,9 @@
 #pragma once
 // Impact decks for tests that run the engine from TOML text: the shipped examples read as text with a
 // key replaced, the thesis §3.6 plate and the rigid target written out in full, and the run of a deck.
-#include "plyimpact/analysis/impact_case.hpp"
-#include "plyimpact/io/case_from_deck.hpp"
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/analysis/impact/impact_case.hpp"
+#include "plyimpact/io/deck/case_from_deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 #include "test_paths.hpp"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // The plate of the delamination-threshold checks (docs/delamination_threshold.md): isotropic (E = 70 GPa,
 // ν = 0.3, so that D is a number), 8 plies, one interface after the fourth (mid-plane), on the `circular`
 // rig, with an optional seed — the deck the seeded-delamination tests build their stacked plate from.
-#include "plyimpact/io/deck.hpp"
+#include "plyimpact/io/deck/deck.hpp"
 
 #include <fmt/format.h>
 

@@ -1,11 +1,11 @@
 #pragma once
 // A mass matrix that is block-diagonal: the lumped mass plus a mass that couples a few DOFs at a time —
-// the selective mass scaling of a stack's interfaces (analysis/mass_scaling.hpp), whose nodal penalty ties
-// the faces of the sub-laminates at one node only. Central differences need M⁻¹ r every step
-// (analysis/central_difference_step.cpp), and the stable step needs products with the symmetric form
-// M^-½ K M^-½ (analysis/modal_analysis.hpp). Both are exact and cheap here: the blocks are the connected
-// components of M's graph, each inverted once (Eigen's self-adjoint eigensolver: M_b = V Λ Vᵀ,
-// M_b⁻¹ = V Λ⁻¹ Vᵀ, M_b^-½ = V Λ^-½ Vᵀ); a DOF that nothing couples is a 1 × 1 block, its inverse a
+// the selective mass scaling of a stack's interfaces (analysis/impact/mass_scaling.hpp), whose nodal penalty
+// ties the faces of the sub-laminates at one node only. Central differences need M⁻¹ r every step
+// (analysis/integrators/central_difference_step.cpp), and the stable step needs products with the symmetric
+// form M^-½ K M^-½ (analysis/plate_analyses/modal_analysis.hpp). Both are exact and cheap here: the blocks
+// are the connected components of M's graph, each inverted once (Eigen's self-adjoint eigensolver: M_b = V Λ
+// Vᵀ, M_b⁻¹ = V Λ⁻¹ Vᵀ, M_b^-½ = V Λ^-½ Vᵀ); a DOF that nothing couples is a 1 × 1 block, its inverse a
 // division.
 #include "plyimpact/fem/mass_operator.hpp"
 

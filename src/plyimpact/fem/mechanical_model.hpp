@@ -51,8 +51,9 @@ struct LowRankChange {
   [[nodiscard]] Eigen::Index rank() const { return up.cols() + down.cols(); }
 };
 
-/// What a run's trials do with the laws' state: the integrator's choice (analysis/step_policy.cpp), which
-/// the model follows. A model without laws (the elastic and the von Kármán plate) ignores it.
+/// What a run's trials do with the laws' state: the integrator's choice
+/// (analysis/integrators/step_policy.cpp), which the model follows. A model without laws (the elastic and the
+/// von Kármán plate) ignores it.
 enum class LawTrials {
   /// Each trial advances every law from the committed state to u; the commit keeps the last trial's.
   advance,
@@ -80,7 +81,7 @@ public:
   /// Energy the model's laws have dissipated up to the committed state [J].
   [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
 
-  // What an implicit integrator asks of the state (analysis/newton_newmark_step.cpp).
+  // What an implicit integrator asks of the state (analysis/integrators/newton_newmark_step.cpp).
   /// The stiffness of an iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
   /// of the von Kármán plate, the secant of the damage of the last trial, K of the elastic plate, the
   /// stack's K_plates plus its interfaces' tangent. Throws std::logic_error on a model that only central
@@ -181,7 +182,8 @@ public:
   /// is bounded with it (damage only lowers the stiffness; membrane tension adds little at w ~ h).
   [[nodiscard]] virtual const SparseMatrix& initial_stiffness() const = 0;
   /// The part of initial_stiffness() that ties the faces of neighbouring sub-laminates (a stack's intact
-  /// interfaces); null for a plate without: what selective mass scaling scales (analysis/mass_scaling.hpp).
+  /// interfaces); null for a plate without: what selective mass scaling scales
+  /// (analysis/impact/mass_scaling.hpp).
   [[nodiscard]] virtual const SparseMatrix* interface_stiffness() const { return nullptr; }
   /// A run's state: virgin and undeformed.
   [[nodiscard]] virtual std::unique_ptr<ModelState> virgin_state() const = 0;

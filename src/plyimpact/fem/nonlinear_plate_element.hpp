@@ -27,7 +27,7 @@ enum class StrainMeasure { von_karman, green_lagrange };
 [[nodiscard]] std::string to_string(StrainMeasure m);
 
 /// The deck's non-linear plate: its strain measure (how an integrator iterates it is the integrator's:
-/// analysis/newton_settings.hpp).
+/// analysis/integrators/newton_settings.hpp).
 struct NonlinearImpactSettings {
   StrainMeasure measure = StrainMeasure::von_karman;
   friend bool operator==(const NonlinearImpactSettings&, const NonlinearImpactSettings&) = default;

@@ -55,8 +55,8 @@ public:
   /// analysis, numbers only; the factor is the same, bit for bit. Throws NotPositiveDefinite.
   void factorize(const Eigen::SparseMatrix<double>& A);
   /// The analysis alone (unless A has the pattern analysed last): returns the entries the factor of A
-  /// will hold below its diagonal, so that its memory is known before it is made (analysis/guards.hpp);
-  /// factorize(A) then reuses the analysis.
+  /// will hold below its diagonal, so that its memory is known before it is made
+  /// (analysis/impact/guards.hpp); factorize(A) then reuses the analysis.
   [[nodiscard]] long analyse(const Eigen::SparseMatrix<double>& A);
   /// Takes the analysis `other` made last (same kind and ordering), so that a matrix of its pattern is
   /// factored here without being ordered again: the factors of K̄ at each time-step level, all of one
@@ -81,7 +81,7 @@ public:
   };
 
   /// x = A⁻¹ b with the current factor. The solves may be called from several threads at once (runs
-  /// that share a case, io/sweep_runner.hpp): each solve(b, x, w) works in its workspace's CHOLMOD
+  /// that share a case, io/sweeps/sweep_runner.hpp): each solve(b, x, w) works in its workspace's CHOLMOD
   /// common, the others take turns in the factor's own.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// x = A⁻¹ b into x (sized once), with the buffers of `w`: the same numbers as solve(b). With

@@ -1,9 +1,9 @@
 // The stacked plate whose interfaces delaminate (stacked_plate.hpp) as a model of mechanical_model.hpp,
 // with what builds it from an impact's plate (stacked_model.hpp), as the stacked-shell impact models of the
 // literature run in LS-DYNA and Abaqus/Explicit. How the trials treat the laws is the integrator's choice
-// (LawTrials; analysis/step_policy.cpp). Trials that advance them evaluate the interface law once, at u,
-// from the committed states (CohesiveDamage::evolve: the damage grows with the step's own separation and
-// its dissipation is the law's), and
+// (LawTrials; analysis/integrators/step_policy.cpp). Trials that advance them evaluate the interface law
+// once, at u, from the committed states (CohesiveDamage::evolve: the damage grows with the step's own
+// separation and its dissipation is the law's), and
 //
 //   f_int(u) = K_plates u + Σ f_coh(u; d(u))                                                     (CD3)
 //
@@ -32,7 +32,7 @@
 // energy is the work of their internal forces, trapezoidal from commit to commit. Tied faces move as one
 // laminate's: with u_k = u₀ − z_k w' the membrane strain u_k' + ½ w'² − (z − z_k) w'' of sub-laminate k is
 // the whole laminate's u₀' + ½ w'² − z w'' at every height z, so a stack whose interfaces hold is the
-// von Kármán laminate (tests/analysis/test_stacked_von_karman.cpp).
+// von Kármán laminate (tests/analysis/impact/test_stacked_von_karman.cpp).
 #include "plyimpact/fem/stacked_model.hpp"
 
 #include "plyimpact/fem/element_loop.hpp"

@@ -2,7 +2,7 @@
 // Lipschitz gauges of the failure criteria: upper bounds of a criterion's index that change by no more
 // than a known constant times the change of the stresses, so that a tracker can prove that a point
 // cannot fail (or raise the peak index) before its stresses have moved by a given amount, and skip it
-// (analysis/damage_tracker.hpp; docs/failure_criteria.md, "Skipping points that cannot fail").
+// (analysis/fields/damage_tracker.hpp; docs/failure_criteria.md, "Skipping points that cannot fail").
 //
 // Every criterion of chapter 2.5 is, mode by mode, a quadratic form plus a linear term of the
 // stresses, with the sign of a stress choosing the mode (Tsai–Hill: the strengths inside its form).

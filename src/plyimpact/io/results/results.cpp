@@ -1,0 +1,69 @@
+#include "plyimpact/io/results/results.hpp"
+
+#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/io/deck/json_text.hpp"
+#include "plyimpact/io/system/atomic_file.hpp"
+
+#include <fmt/format.h>
+
+namespace plyimpact {
+
+nlohmann::json summary_header(const Deck& deck, const std::string& analysis) {
+  nlohmann::json j = {{"analysis", analysis},
+                      {"program", "plyimpact"},
+                      {"version", PLYIMPACT_VERSION},
+                      {"deck", deck.source}};
+  if (!deck.rig_description.empty()) j["rig"] = deck.rig_description; // what [rig] built
+  if (!deck.warnings.empty()) j["warnings"] = deck.warnings;          // plausibility (deck_plausibility.hpp)
+  return j;
+}
+
+ResultsFolder::ResultsFolder(std::filesystem::path dir, const Deck& deck) : dir_(std::move(dir)) {
+  std::filesystem::create_directories(dir_);
+  write_text("deck.toml", deck.text);
+  write_json("provenance.json",
+             {{"program", "plyimpact"}, {"version", PLYIMPACT_VERSION}, {"deck", deck.source}});
+}
+
+void ResultsFolder::write_json(const std::string& name, const nlohmann::json& j) const {
+  write_file_atomically(dir_ / name, json_text(j, 2) + "\n");
+}
+
+void ResultsFolder::write_text(const std::string& name, const std::string& text) const {
+  write_file_atomically(dir_ / name, text);
+}
+
+void ResultsFolder::write_nodal_field(const std::string& name, const PlateModel& model,
+                                      const Eigen::VectorXd& u) const {
+  const Eigen::VectorXd full = model.to_nodal(u);
+  std::string csv = "node,x_m,y_m,u_m,v_m,w_m,thetax_rad,thetay_rad\n";
+  for (int n = 0; n < model.mesh().node_count(); ++n) {
+    const auto& p = model.mesh().node(n);
+    csv += fmt::format("{},{:.9g},{:.9g}", n + 1, p.x(), p.y());
+    for (int d = 0; d < 5; ++d)
+      csv += fmt::format(",{:.9e}", full(5 * n + d));
+    csv += "\n";
+  }
+  write_text(name, csv);
+}
+
+void ResultsFolder::write_mode_shapes(const std::string& name, const PlateModel& model,
+                                      const Eigen::MatrixXd& modes, const std::string& label) const {
+  std::string csv = "node,x_m,y_m";
+  for (Eigen::Index k = 0; k < modes.cols(); ++k)
+    csv += fmt::format(",w_{}_{}", label, k + 1);
+  csv += "\n";
+  std::vector<Eigen::VectorXd> full;
+  for (Eigen::Index k = 0; k < modes.cols(); ++k)
+    full.push_back(model.to_nodal(modes.col(k)));
+  for (int n = 0; n < model.mesh().node_count(); ++n) {
+    const auto& p = model.mesh().node(n);
+    csv += fmt::format("{},{:.9g},{:.9g}", n + 1, p.x(), p.y());
+    for (const auto& f : full)
+      csv += fmt::format(",{:.9e}", f(5 * n + 2));
+    csv += "\n";
+  }
+  write_text(name, csv);
+}
+
+} // namespace plyimpact

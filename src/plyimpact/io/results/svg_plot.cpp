@@ -1,0 +1,371 @@
+#include "plyimpact/io/results/svg_plot.hpp"
+
+#include "plyimpact/io/results/plots.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+namespace plyimpact {
+
+namespace {
+
+/// Plot area inside the picture: margins for the tick labels, the axis labels and the title.
+struct Frame {
+  double left = 72.0, right = 16.0, top = 34.0, bottom = 48.0;
+  double width = 0.0, height = 0.0;
+  double x0 = 0.0, x1 = 1.0, y0 = 0.0, y1 = 1.0; ///< data range shown
+
+  [[nodiscard]] double px(double x) const { return left + (x - x0) / (x1 - x0) * (width - left - right); }
+  [[nodiscard]] double py(double y) const {
+    return height - bottom - (y - y0) / (y1 - y0) * (height - top - bottom);
+  }
+};
+
+/// The shortest tick label: 0.5, 2, 1e+04 (fmt's general format with 4 significant digits).
+std::string tick_label(double v, double step) {
+  if (std::abs(v) < 1e-9 * step) v = 0.0;
+  return fmt::format("{:.4g}", v);
+}
+
+std::pair<double, double> finite_range(const std::vector<double>& v) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const double x : v)
+    if (std::isfinite(x)) {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  return {lo, hi};
+}
+
+void axes(std::string& s, const Frame& f, const std::vector<double>& xt, const std::vector<double>& yt,
+          const LinePlot& plot) {
+  auto out = std::back_inserter(s);
+  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1.0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+  for (const double x : xt)
+    fmt::format_to(out,
+                   "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" class=\"grid\"/>"
+                   "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>\n",
+                   f.px(x), f.py(f.y0), f.py(f.y1), f.py(f.y0) + 16.0, tick_label(x, xstep));
+  for (const double y : yt)
+    fmt::format_to(out,
+                   "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" class=\"grid\"/>"
+                   "<text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\">{5}</text>\n",
+                   f.px(f.x0), f.py(y), f.px(f.x1), f.px(f.x0) - 6.0, f.py(y) + 4.0, tick_label(y, ystep));
+  fmt::format_to(out,
+                 "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" class=\"frame\"/>\n",
+                 f.left, f.top, f.width - f.left - f.right, f.height - f.top - f.bottom);
+  fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" class=\"label\">{}</text>\n",
+                 0.5 * (f.left + f.width - f.right), f.height - 10.0, xml_escaped(plot.x_label));
+  fmt::format_to(out,
+                 "<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\" "
+                 "class=\"label\">{}</text>\n",
+                 0.5 * (f.top + f.height - f.bottom), xml_escaped(plot.y_label));
+  fmt::format_to(out, "<text x=\"{:.1f}\" y=\"20\" text-anchor=\"middle\" class=\"title\">{}</text>\n",
+                 0.5 * f.width, xml_escaped(plot.title));
+}
+
+void polyline(std::string& s, const Frame& f, const PlotSeries& series) {
+  auto out = std::back_inserter(s);
+  const std::size_t n = std::min(series.x.size(), series.y.size());
+  const auto shown = [&series](std::size_t i) {
+    return std::isfinite(series.x[i]) && std::isfinite(series.y[i]);
+  };
+  // A point that is not finite is a gap: each run of shown points is a line of its own.
+  for (std::size_t i = 0; series.line && i < n;) {
+    if (!shown(i)) {
+      ++i;
+      continue;
+    }
+    fmt::format_to(out, "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\"{} points=\"",
+                   series.color, series.dashed ? " stroke-dasharray=\"6 4\"" : "");
+    for (; i < n && shown(i); ++i)
+      fmt::format_to(out, "{:.1f},{:.1f} ", f.px(series.x[i]), f.py(series.y[i]));
+    s += "\"/>\n";
+  }
+  if (series.markers)
+    for (std::size_t i = 0; i < n; ++i)
+      if (shown(i))
+        fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>\n",
+                       f.px(series.x[i]), f.py(series.y[i]), series.color);
+}
+
+void legend(std::string& s, const Frame& f, const std::vector<PlotSeries>& series) {
+  if (series.size() < 2) return;
+  auto out = std::back_inserter(s);
+  const double x = f.width - f.right - 190.0;
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const double y = f.top + 14.0 + 16.0 * static_cast<double>(k);
+    fmt::format_to(out,
+                   "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" "
+                   "stroke-width=\"2\"{4}/><text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
+                   x, y, x + 22.0, series[k].color, series[k].dashed ? " stroke-dasharray=\"6 4\"" : "",
+                   x + 28.0, y + 4.0, xml_escaped(series[k].label));
+  }
+}
+
+std::string svg_open(int width, int height, std::string_view kind, std::string_view label) {
+  return fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"{}\" viewBox=\"0 0 {} {}\" width=\"{}\" "
+      "height=\"{}\" role=\"img\" aria-label=\"{}\">\n",
+      kind, width, height, width, height, xml_escaped(label));
+}
+
+/// Orientation colours: 0° blue, 90° red, ±45° green and purple, others between by angle.
+std::string ply_color(double angle_deg) {
+  double a = std::fmod(angle_deg, 180.0);
+  if (a < -90.0) a += 180.0;
+  if (a > 90.0) a -= 180.0;
+  if (std::abs(a) < 1e-9) return "#4e79a7";
+  if (std::abs(std::abs(a) - 90.0) < 1e-9) return "#e15759";
+  if (std::abs(a - 45.0) < 1e-9) return "#59a14f";
+  if (std::abs(a + 45.0) < 1e-9) return "#b07aa1";
+  return fmt::format("hsl({:.0f}, 45%, 60%)", 200.0 + a);
+}
+
+/// Five-stop perceptual ramp (viridis) at t in [0, 1].
+std::string ramp(double t) {
+  static constexpr double stops[5][3] = {
+      {68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(t));
+  const double u = t - i;
+  return fmt::format("rgb({:.0f},{:.0f},{:.0f})", stops[i][0] + u * (stops[i + 1][0] - stops[i][0]),
+                     stops[i][1] + u * (stops[i + 1][1] - stops[i][1]),
+                     stops[i][2] + u * (stops[i + 1][2] - stops[i][2]));
+}
+
+/// The rig's window edge (dashed) and clamp tips (open circles) over a map whose plate coordinates [m]
+/// `X`, `Y` map to the picture.
+template <class ToX, class ToY>
+std::string svg_rig_outline(const RigOutline& rig, const ToX& X, const ToY& Y) {
+  std::string s;
+  auto out = std::back_inserter(s);
+  if (!rig.window.empty()) {
+    s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
+    for (const Eigen::Vector2d& p : rig.window)
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+    s += "\"/>\n";
+  }
+  for (const Eigen::Vector2d& p : rig.clamp_tips)
+    fmt::format_to(
+        out,
+        "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
+        "stroke-width=\"1.5\"/>\n",
+        X(p.x()), Y(p.y()));
+  return s;
+}
+
+} // namespace
+
+std::string xml_escaped(std::string_view text) {
+  std::string s;
+  s.reserve(text.size());
+  for (const char c : text)
+    switch (c) {
+    case '&':
+      s += "&amp;";
+      break;
+    case '<':
+      s += "&lt;";
+      break;
+    case '>':
+      s += "&gt;";
+      break;
+    case '"':
+      s += "&quot;";
+      break;
+    default:
+      s += c;
+    }
+  return s;
+}
+
+std::vector<double> nice_ticks(double lo, double hi, int target) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0.0, hi = 1.0;
+  if (hi <= lo) {
+    const double pad = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
+    lo -= pad;
+    hi += pad;
+  }
+  const double raw = (hi - lo) / std::max(1, target);
+  const int exponent = static_cast<int>(std::floor(std::log10(raw)));
+  const double magnitude = std::pow(10.0, std::abs(exponent)); // exact for the exponents plots meet
+  double mantissa = 10.0;                                      // step = mantissa × 10^exponent
+  for (const double m : {1.0, 2.0, 5.0})
+    if ((exponent < 0 ? m / magnitude : m * magnitude) >= raw) {
+      mantissa = m;
+      break;
+    }
+  // k·mantissa is an integer: one rounding (a division by 10^n) gives 0.3, not 3 × 0.1.
+  const auto tick = [&](long k) {
+    const double units = static_cast<double>(k) * mantissa;
+    return exponent < 0 ? units / magnitude : units * magnitude;
+  };
+  const double step = tick(1);
+  const auto first = static_cast<long>(std::floor(lo / step + 1e-9));
+  const auto last = std::max(first + 1, static_cast<long>(std::ceil(hi / step - 1e-9)));
+  std::vector<double> ticks;
+  for (long k = first; k <= last; ++k)
+    ticks.push_back(tick(k));
+  return ticks;
+}
+
+std::string svg_line_plot(const LinePlot& plot, int width, int height) {
+  double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
+  for (const PlotSeries& s : plot.series) {
+    const auto [a, b] = finite_range(s.x);
+    const auto [c, d] = finite_range(s.y);
+    xlo = std::min(xlo, a), xhi = std::max(xhi, b), ylo = std::min(ylo, c), yhi = std::max(yhi, d);
+  }
+  const std::vector<double> xt = nice_ticks(xlo, xhi), yt = nice_ticks(ylo, yhi);
+  Frame f;
+  f.width = width;
+  f.height = height;
+  f.x0 = xt.front(), f.x1 = xt.back(), f.y0 = yt.front(), f.y1 = yt.back();
+  std::string s = svg_open(width, height, "plot", plot.title);
+  axes(s, f, xt, yt, plot);
+  for (const PlotSeries& series : plot.series)
+    polyline(s, f, series);
+  legend(s, f, plot.series);
+  return s + "</svg>\n";
+}
+
+std::string svg_ply_stack(const Laminate& laminate) {
+  const int n = static_cast<int>(laminate.ply_count());
+  const double ply_h = std::clamp(360.0 / n, 4.0, 22.0);
+  const int width = 360, height = static_cast<int>(std::ceil(ply_h * n)) + 40;
+  std::string s = svg_open(width, height, "plies", "ply stack, ply 1 (impacted face) on top");
+  auto out = std::back_inserter(s);
+  fmt::format_to(out, "<text x=\"10\" y=\"14\" class=\"label\">impacted face</text>\n");
+  for (int k = 0; k < n; ++k) {
+    const auto& ply = laminate.plies()[static_cast<std::size_t>(k)];
+    const double y = 20.0 + ply_h * k;
+    fmt::format_to(
+        out, "<rect x=\"10\" y=\"{:.1f}\" width=\"200\" height=\"{:.1f}\" fill=\"{}\" class=\"ply\"/>\n", y,
+        ply_h, ply_color(ply.angle_deg));
+    if (ply_h >= 9.0)
+      fmt::format_to(out, "<text x=\"218\" y=\"{:.1f}\">{} {:g}° {}</text>\n", y + 0.5 * ply_h + 4.0, k + 1,
+                     ply.angle_deg, xml_escaped(laminate.material_of(static_cast<std::size_t>(k)).name));
+  }
+  fmt::format_to(out, "<text x=\"10\" y=\"{:.1f}\" class=\"label\">back face ({} plies, {:.3g} mm)</text>\n",
+                 20.0 + ply_h * n + 14.0, n, laminate.thickness() * 1e3);
+  return s + "</svg>\n";
+}
+
+std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onsets, double impact_x,
+                          double impact_y, const RigOutline& rig, int width) {
+  const BoundingBox& box = mesh.bounds();
+  const double margin = 20.0, legend_h = 46.0;
+  const double scale = (width - 2.0 * margin) / std::max(box.x_max - box.x_min, 1e-12);
+  const int height = static_cast<int>(std::ceil((box.y_max - box.y_min) * scale + 2.0 * margin + legend_h));
+  const auto X = [&](double x) { return margin + (x - box.x_min) * scale; };
+  const auto Y = [&](double y) { return height - legend_h - margin - (y - box.y_min) * scale; };
+  std::string s = svg_open(width, height, "map", "damage onsets on the plate");
+  auto out = std::back_inserter(s);
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    s += "<polygon class=\"element\" points=\"";
+    for (const auto& [xi, eta] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+      const Eigen::Vector2d p = mesh.map(e, xi, eta);
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+    }
+    s += "\"/>\n";
+  }
+  double t0 = std::numeric_limits<double>::infinity(), t1 = -t0;
+  for (const DamageOnset& o : onsets)
+    t0 = std::min(t0, o.time), t1 = std::max(t1, o.time);
+  for (const DamageOnset& o : onsets)
+    fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"/>\n", X(o.x), Y(o.y),
+                   ramp(t1 > t0 ? (o.time - t0) / (t1 - t0) : 0.0));
+  s += svg_rig_outline(rig, X, Y);
+  fmt::format_to(out,
+                 "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" class=\"impact\"/>"
+                 "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
+                 X(impact_x), Y(impact_y), X(impact_x) + 9.0, Y(impact_y) - 9.0);
+  const double ly = height - legend_h + 8.0;
+  for (int k = 0; k < 40; ++k)
+    fmt::format_to(out, "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"5\" height=\"12\" fill=\"{}\"/>",
+                   margin + 5.0 * k, ly, ramp(k / 39.0));
+  if (onsets.empty())
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">no onset</text>\n", margin + 210.0, ly + 10.0);
+  else
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">onset time {:.4g} … {:.4g} µs ({} onsets)</text>\n",
+                   margin + 210.0, ly + 10.0, t0 * 1e6, t1 * 1e6, onsets.size());
+  if (!rig.clamp_tips.empty())
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">○ {}; - - window edge</text>\n", margin, ly + 30.0,
+                   xml_escaped(clamp_tip_note));
+  return s + "</svg>\n";
+}
+
+std::vector<int> shallowest_delaminated(const std::vector<std::vector<double>>& point_damage) {
+  std::vector<int> interface_of(point_damage.empty() ? 0 : point_damage.front().size(), 0);
+  for (std::size_t q = 0; q < interface_of.size(); ++q)
+    for (std::size_t i = 0; i < point_damage.size(); ++i)
+      if (point_damage[i][q] >= 1.0) {
+        interface_of[q] = static_cast<int>(i) + 1;
+        break;
+      }
+  return interface_of;
+}
+
+const char* cscan_colour(int i) {
+  return tab10[static_cast<std::size_t>(i - 1) % tab10.size()];
+}
+
+std::string svg_cscan_map(const CscanMap& map, int width) {
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const auto& cell : map.cells)
+    for (const Eigen::Vector2d& c : cell)
+      x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
+  for (const Eigen::Vector2d& p : map.rig.window)
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  const double margin = 20.0, row_h = 18.0;
+  const double legend_h = row_h * static_cast<double>(map.after_ply.size() + 2) + 8.0;
+  const double scale = (width - 2.0 * margin) / std::max(x1 - x0, 1e-12);
+  const int height = static_cast<int>(std::ceil((y1 - y0) * scale + 2.0 * margin + legend_h));
+  const auto X = [&](double x) { return margin + (x - x0) * scale; };
+  const auto Y = [&](double y) { return height - legend_h - margin - (y - y0) * scale; };
+  std::string s = svg_open(width, height, "map", "C-scan of the delaminations from the impacted face");
+  auto out = std::back_inserter(s);
+  std::vector<double> share(map.after_ply.size() + 1, 0.0); // projected area per interface [m²]
+  for (std::size_t q = 0; q < map.cells.size(); ++q) {
+    const int i = map.interface_of_point[q];
+    if (i == 0) continue; // intact: the background
+    share[static_cast<std::size_t>(i)] += map.area[q];
+    s += fmt::format("<polygon fill=\"{0}\" stroke=\"{0}\" stroke-width=\"0.6\" points=\"", cscan_colour(i));
+    for (const Eigen::Vector2d& c : map.cells[q])
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(c.x()), Y(c.y()));
+    s += "\"/>\n";
+  }
+  fmt::format_to(out,
+                 "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
+                 "stroke=\"#bbb\"/>\n",
+                 X(x0), Y(y1), X(x1) - X(x0), Y(y0) - Y(y1));
+  s += svg_rig_outline(map.rig, X, Y);
+  fmt::format_to(
+      out,
+      "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" stroke=\"#000\" stroke-width=\"2.5\"/>"
+      "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
+      X(map.impact_x), Y(map.impact_y), X(map.impact_x) + 9.0, Y(map.impact_y) - 9.0);
+  double ly = height - legend_h + 8.0;
+  fmt::format_to(
+      out,
+      "<text x=\"{:.1f}\" y=\"{:.1f}\">{:.4g} × {:.4g} mm; the shallowest delaminated interface:</text>\n",
+      margin, ly + 12.0, (x1 - x0) * 1e3, (y1 - y0) * 1e3);
+  for (std::size_t i = 1; i <= map.after_ply.size(); ++i) {
+    ly += row_h;
+    fmt::format_to(out,
+                   "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"12\" fill=\"{}\"/><text "
+                   "x=\"{:.1f}\" y=\"{:.1f}\">interface after ply {}: {:.4g} mm² seen</text>\n",
+                   margin, ly + 2.0, cscan_colour(static_cast<int>(i)), margin + 20.0, ly + 12.0,
+                   map.after_ply[i - 1], share[i] * 1e6);
+  }
+  return s + "</svg>\n";
+}
+
+} // namespace plyimpact
