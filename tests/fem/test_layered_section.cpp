@@ -75,7 +75,7 @@ TEST(LayeredSection, HashinScreenBoundsEveryUndamagedPlyPointFromAbove) {
       e(i) = strain(rng);
       e(3 + i) = curvature(rng);
     }
-    const double bound = section.hashin_bound(e.head<6>());
+    const double bound = section.onset_bound(e.head<6>());
     double largest = 0.0; // over each ply's faces, middle and Gauss points
     for (std::size_t k = 0; k < lam.ply_count(); ++k) {
       const double top = lam.z_top(k), bottom = lam.z_bottom(k), t = bottom - top;

@@ -247,7 +247,7 @@ std::optional<std::string> DamagedPlateModel::strength_reduction_warning() const
   for (std::size_t c = 0; c < class_length_.size(); ++c)
     for (std::size_t s = 0; s < sections_[c].size(); ++s)
       for (std::size_t i = 0; i < model_.laminates()[s].materials().size(); ++i) {
-        const PlyDamageLaw* law = sections_[c][s].law(i);
+        const PlyLaw* law = sections_[c][s].law(i);
         if (!law) continue;
         const Material& m = law->material();
         const Material& deck = model_.laminates()[s].materials()[i];
@@ -307,7 +307,7 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
     const std::span<PlyDamageState> committed(a.committed.data() + p * per_point, per_point);
     const std::span<PlyDamageState> trial(a.trial.data() + p * per_point, per_point);
     if (a.pristine[p]) {
-      if (section.hashin_bound(strains[p].head<6>()) < 1.0) {
+      if (section.onset_bound(strains[p].head<6>()) < 1.0) {
         // Undamaged and below every Hashin surface: the elastic section, no law call.
         if (a.trial_touched[p]) std::copy(committed.begin(), committed.end(), trial.begin());
         a.trial_touched[p] = false;
@@ -487,7 +487,7 @@ double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
   const ElementVector ue = model_.element_dofs(u, e);
   double bound = 0.0;
   for (std::size_t p = 0; p < 9; ++p)
-    bound = std::max(bound, section.hashin_bound(membrane_bending_strain(ops, p, ue).head<6>()));
+    bound = std::max(bound, section.onset_bound(membrane_bending_strain(ops, p, ue).head<6>()));
   return bound;
 }
 

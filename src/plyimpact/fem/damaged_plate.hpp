@@ -169,7 +169,7 @@ private:
   /// `group_bound`: scratch of the calling thread (the point's bound of each ply group, −1: not computed).
   PointStrains evaluate_element(int e, const Eigen::VectorXd& u, double dt, DamageField& field,
                                 std::vector<double>& group_bound) const;
-  /// The largest hashin_bound over element e's points at u.
+  /// The largest onset_bound over element e's points at u.
   [[nodiscard]] double element_bound(int e, const Eigen::VectorXd& u) const;
   void activate(int e, DamageField& field) const;
   /// field.bound_ (element_bound) of every inactive element at u, on the run's threads.

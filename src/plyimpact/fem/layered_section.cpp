@@ -68,7 +68,7 @@ struct LayeredSection::PlyPoints {
     sec.F += undamaged_shear_term;
   }
   /// Caches the undamaged terms from the ply law's undamaged stiffnesses; k is the shear correction.
-  void cache_undamaged(const PlyDamageLaw& law, double k) {
+  void cache_undamaged(const PlyLaw& law, double k) {
     undamaged_in_plane = T_strain.transpose() * law.undamaged_stiffness() * T_strain;
     undamaged_shear_term = (weight * k) * (T_shear.transpose() * law.undamaged_transverse_shear() * T_shear);
   }
@@ -97,8 +97,9 @@ void symmetric_section(SectionStiffness& sec) {
 
 } // namespace
 
-/// Plies of one section with the same material and angle, and the z range they span: the Hashin indices
-/// are convex in z, so their largest value over the range is at one of its ends (the screening bound).
+/// Plies of one section with the same material and angle, and the z range they span: the undamaged ply's
+/// stress is affine in z, so the law bounds its onset index over the range from the stresses at its ends
+/// (PlyLaw::onset_bound): the screen.
 struct LayeredSection::Group {
   std::size_t material = 0;
   Eigen::Matrix3d T_strain;
@@ -107,45 +108,19 @@ struct LayeredSection::Group {
   /// Material-axes stress of the undamaged ply at z_min and z_max from (ε0, κ): Q T_ε [I, z I].
   Eigen::Matrix<double, 3, 6> at_min = Eigen::Matrix<double, 3, 6>::Zero();
   Eigen::Matrix<double, 3, 6> at_max = Eigen::Matrix<double, 3, 6>::Zero();
-  /// Hashin's coefficients (PD2): 1/Xt², α/S12², 1/Xc², 1/Yt², 1/S12², 1/(2S23)², [(Yc/2S23)² − 1]/Yc.
-  double ft = 0.0, ft_shear = 0.0, fc = 0.0, mt = 0.0, shear = 0.0, mc = 0.0, mc_linear = 0.0;
+  const PlyLaw* law = nullptr;
 
-  void finish(const Strengths& st, double alpha) {
+  void finish(const PlyLaw& ply_law) {
     for (auto [M, z] : {std::pair{&at_min, z_min}, std::pair{&at_max, z_max}}) {
       M->leftCols<3>() = Q * T_strain;
       M->rightCols<3>() = z * (Q * T_strain);
     }
-    const auto inv2 = [](double x) { return 1.0 / (x * x); };
-    ft = inv2(*st.Xt);
-    fc = inv2(*st.Xc);
-    mt = inv2(*st.Yt);
-    shear = inv2(*st.S12);
-    ft_shear = alpha * shear;
-    mc = inv2(2.0 * *st.S23);
-    mc_linear = (*st.Yc * *st.Yc * mc - 1.0) / *st.Yc;
+    law = &ply_law;
   }
-  /// The active Hashin index of the fibre and matrix pairs at stress s (sign conditions applied).
-  [[nodiscard]] double index(const Eigen::Vector3d& s) const {
-    const double t2 = s(2) * s(2);
-    const double fibre = s(0) >= 0.0 ? ft * s(0) * s(0) + ft_shear * t2 : fc * s(0) * s(0);
-    const double matrix =
-        s(1) >= 0.0 ? mt * s(1) * s(1) + shear * t2 : mc * s(1) * s(1) + mc_linear * s(1) + shear * t2;
-    return std::max(fibre, matrix);
-  }
-  /// An upper bound of the undamaged plies' active Hashin index over the group's z range at a point with
-  /// membrane strain and curvature `strain`. Each branch of a pair (fibre, matrix) is convex in z and the
-  /// stress affine: the largest active index is at an end of the range or where the sign of σ11 (σ22)
-  /// changes, where both branches reduce to their shear terms.
+  /// An upper bound of the undamaged plies' onset index over the group's z range at a point with
+  /// membrane strain and curvature `strain`.
   [[nodiscard]] double bound(const Eigen::Matrix<double, 6, 1>& strain) const {
-    const Eigen::Vector3d s0 = at_min * strain, s1 = at_max * strain;
-    double b = std::max(index(s0), index(s1));
-    for (const int c : {0, 1})
-      if (s0(c) * s1(c) < 0.0) {
-        const double f = s0(c) / (s0(c) - s1(c)); // where σ_cc = 0
-        const double t = s0(2) + f * (s1(2) - s0(2));
-        b = std::max(b, (c == 0 ? ft_shear : shear) * t * t);
-      }
-    return b;
+    return law->onset_bound(at_min * strain, at_max * strain);
   }
 };
 
@@ -167,14 +142,10 @@ std::vector<LayeredSection::PlyPoints> ply_points(const Laminate& lam) {
   return plies;
 }
 
-} // namespace
-
-namespace {
-
 /// One damage law per material the laminate's plies use (null for the others).
-std::vector<std::unique_ptr<PlyDamageLaw>>
-section_laws(const Laminate& lam, const std::vector<Material>& materials, const PlyDamageOptions& options) {
-  std::vector<std::unique_ptr<PlyDamageLaw>> laws;
+std::vector<std::unique_ptr<PlyLaw>> section_laws(const Laminate& lam, const std::vector<Material>& materials,
+                                                  const PlyDamageOptions& options) {
+  std::vector<std::unique_ptr<PlyLaw>> laws;
   for (std::size_t i = 0; i < materials.size(); ++i) {
     const bool used =
         std::any_of(lam.plies().begin(), lam.plies().end(), [i](const Ply& p) { return p.material == i; });
@@ -183,7 +154,7 @@ section_laws(const Laminate& lam, const std::vector<Material>& materials, const 
       continue;
     }
     try {
-      laws.push_back(std::make_unique<PlyDamageLaw>(materials[i], options));
+      laws.push_back(make_ply_law(materials[i], options));
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format(
           "{} ([materials.{}]: strengths in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
@@ -201,7 +172,8 @@ struct SectionGroups {
   std::vector<std::size_t> of_ply;
 };
 
-SectionGroups section_groups(const Laminate& lam, const std::vector<Material>& materials, double alpha) {
+SectionGroups section_groups(const Laminate& lam, const std::vector<Material>& materials,
+                             const std::vector<std::unique_ptr<PlyLaw>>& laws) {
   SectionGroups sg;
   std::vector<LayeredSection::Group>& groups = sg.groups;
   for (std::size_t k = 0; k < lam.ply_count(); ++k) {
@@ -224,7 +196,7 @@ SectionGroups section_groups(const Laminate& lam, const std::vector<Material>& m
     it->z_max = std::max(it->z_max, lam.z_bottom(k));
   }
   for (LayeredSection::Group& g : groups)
-    g.finish(materials[g.material].strength, alpha);
+    g.finish(*laws[g.material]);
   return sg;
 }
 
@@ -233,7 +205,7 @@ SectionGroups section_groups(const Laminate& lam, const std::vector<Material>& m
 LayeredSection::LayeredSection(const Laminate& laminate, const std::vector<Material>& materials,
                                const PlyDamageOptions& options)
     : laws_(section_laws(laminate, materials, options)), shear_correction_(laminate.shear_correction()) {
-  SectionGroups sg = section_groups(laminate, materials, options.alpha);
+  SectionGroups sg = section_groups(laminate, materials, laws_);
   groups_ = std::move(sg.groups);
   plies_ = ply_points(laminate);
   for (std::size_t k = 0; k < plies_.size(); ++k) {
@@ -254,7 +226,7 @@ std::size_t LayeredSection::group_count() const {
   return groups_.size();
 }
 
-double LayeredSection::hashin_bound(const Eigen::Matrix<double, 6, 1>& strain) const {
+double LayeredSection::onset_bound(const Eigen::Matrix<double, 6, 1>& strain) const {
   double bound = 0.0;
   for (const Group& g : groups_)
     bound = std::max(bound, g.bound(strain));
@@ -280,7 +252,7 @@ LayeredSection::Increment LayeredSection::advance(std::span<const PlyDamageState
   Increment out{empty_section(), false};
   std::fill(group_bound.begin(), group_bound.end(), -1.0);
   // A virgin ply whose group is below every Hashin surface: the law would answer it elastically
-  // (PlyDamageLaw::advance), so its state and the cached section terms stand for the call.
+  // (PlyLaw::advance), so its state and the cached section terms stand for the call.
   const auto below_surfaces = [&](const PlyPoints& ply) {
     double& bound = group_bound[ply.group];
     if (bound < 0.0) bound = groups_[ply.group].bound(strain.head<6>());
@@ -288,7 +260,7 @@ LayeredSection::Increment LayeredSection::advance(std::span<const PlyDamageState
   };
   std::size_t index = 0;
   for (const PlyPoints& ply : plies_) {
-    const PlyDamageLaw& law = *laws_[ply.material];
+    const PlyLaw& law = *laws_[ply.material];
     for (const double z : ply.z) {
       if (committed[index].virgin() && below_surfaces(ply)) {
         trial[index] = committed[index];

@@ -16,11 +16,12 @@
 //
 // The section is constant (one per laminate and, where strengths are lowered to a band limit, per element
 // length class); the laws' states live with the run (DamageField), 2 per ply at each point, in ply order
-// ([ply][g]), and are handed to the section as spans. Its Hashin screen bounds the undamaged plies'
-// indices over each ply group's thickness range (docs/progressive_damage.md), so that points far below
-// every surface never call the law.
+// ([ply][g]), and are handed to the section as spans. The laws are PlyLaws (laminate/ply_law.hpp, made by
+// make_ply_law): the section knows a law only through that interface. Its screen asks each law for a
+// bound of its onset index over each ply group's thickness range (PlyLaw::onset_bound; for Hashin's,
+// docs/progressive_damage.md), so that points far below every onset surface never call the law.
 #include "plyimpact/fem/section.hpp"
-#include "plyimpact/laminate/ply_damage.hpp"
+#include "plyimpact/laminate/ply_law.hpp"
 
 #include <Eigen/Core>
 
@@ -51,11 +52,11 @@ public:
   /// Ply groups (plies of one material and angle): the size of advance()'s scratch.
   [[nodiscard]] std::size_t group_count() const;
   /// The law of material i, or null when no ply uses it.
-  [[nodiscard]] const PlyDamageLaw* law(std::size_t material) const { return laws_[material].get(); }
+  [[nodiscard]] const PlyLaw* law(std::size_t material) const { return laws_[material].get(); }
 
-  /// An upper bound of the Hashin indices of the undamaged plies over the thickness at a point with
-  /// membrane strain and curvature `strain` (the indices are convex in z: the ends of each group's range).
-  [[nodiscard]] double hashin_bound(const Eigen::Matrix<double, 6, 1>& strain) const;
+  /// An upper bound of the undamaged plies' onset indices over the thickness at a point with membrane
+  /// strain and curvature `strain` (each law's bound over each ply group's range).
+  [[nodiscard]] double onset_bound(const Eigen::Matrix<double, 6, 1>& strain) const;
 
   /// Sets the strain of a point's states to the ply strains of `strain`: where the law's next increment
   /// starts from.
@@ -87,7 +88,7 @@ public:
   struct Group;     ///< plies of one material and angle: the screening bound's unit
 
 private:
-  std::vector<std::unique_ptr<PlyDamageLaw>> laws_; ///< by material
+  std::vector<std::unique_ptr<PlyLaw>> laws_; ///< by material (make_ply_law)
   std::vector<Group> groups_;
   std::vector<PlyPoints> plies_;
   double shear_correction_ = 0.0;

@@ -417,6 +417,34 @@ PlyDamageLaw::PlyDamageLaw(Material material, PlyDamageOptions options)
     toughness_[mode] = *toughness_of(material_.toughness, mode);
   undamaged_stiffness_ = degraded_reduced_stiffness(material_, {});
   undamaged_transverse_shear_ = degraded_transverse_shear(material_, 0.0);
+  const Strengths& st = material_.strength;
+  const auto inv2 = [](double x) { return 1.0 / (x * x); };
+  screen_.ft = inv2(*st.Xt);
+  screen_.fc = inv2(*st.Xc);
+  screen_.mt = inv2(*st.Yt);
+  screen_.shear = inv2(*st.S12);
+  screen_.ft_shear = options_.alpha * screen_.shear;
+  screen_.mc = inv2(2.0 * *st.S23);
+  screen_.mc_linear = (*st.Yc * *st.Yc * screen_.mc - 1.0) / *st.Yc;
+}
+
+double PlyDamageLaw::HashinScreen::index(const Eigen::Vector3d& s) const {
+  const double t2 = s(2) * s(2);
+  const double fibre = s(0) >= 0.0 ? ft * s(0) * s(0) + ft_shear * t2 : fc * s(0) * s(0);
+  const double matrix =
+      s(1) >= 0.0 ? mt * s(1) * s(1) + shear * t2 : mc * s(1) * s(1) + mc_linear * s(1) + shear * t2;
+  return std::max(fibre, matrix);
+}
+
+double PlyDamageLaw::onset_bound(const Eigen::Vector3d& s0, const Eigen::Vector3d& s1) const {
+  double b = std::max(screen_.index(s0), screen_.index(s1));
+  for (const int c : {0, 1})
+    if (s0(c) * s1(c) < 0.0) {
+      const double f = s0(c) / (s0(c) - s1(c)); // where σ_cc = 0
+      const double t = s0(2) + f * (s1(2) - s0(2));
+      b = std::max(b, (c == 0 ? screen_.ft_shear : screen_.shear) * t * t);
+    }
+  return b;
 }
 
 PlyDamageUpdate PlyDamageLaw::elastic_response(const PlyDamageState& previous,
