@@ -1,7 +1,7 @@
 // Benchmarks of the FE core on the thesis §3.6 plate (bench/README.md has the commands and results):
 //
-//   assemble_K/<nx>x<ny>               PlateModel::stiffness()
-//   assemble_M/<nx>x<ny>               PlateModel::mass() (lumped, 3-point Lobatto)
+//   assemble_K/<nx>x<ny>               DiscretePlate::stiffness()
+//   assemble_M/<nx>x<ny>               DiscretePlate::mass() (lumped, 3-point Lobatto)
 //   factor_K/<backend>/<nx>x<ny>       SpdSolver::factorize(K): ordering + symbolic + numeric
 //   factor_Keff/<backend>/<nx>x<ny>    SpdSolver::factorize(K + M/(β Δt²)), β = 1/4, Δt = 1 µs,
 //                                      the matrix the impact solver factors once per run
@@ -23,8 +23,8 @@
 // flops_L = CHOLMOD's floating-point operation count of the numeric factorization (Common->fl).
 // The label of the CHOLMOD runs names the fill-reducing ordering CHOLMOD chose.
 #include "plyimpact/fem/boundary.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/loads.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 #include "plyimpact/laminate/layup.hpp"
@@ -67,7 +67,7 @@ BoundaryConditions all_edges_ss() {
 
 /// One mesh: the model and its matrices, built once and shared by every benchmark of that mesh.
 struct Case {
-  PlateModel model;
+  DiscretePlate model;
   SparseMatrix K, M, Keff;
   Eigen::VectorXd f;
 

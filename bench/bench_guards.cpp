@@ -9,7 +9,7 @@
 // nnz_L (strictly lower) and the estimate in MB.
 #include "plyimpact/analysis/impact/guards.hpp"
 #include "plyimpact/fem/boundary.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 #include "plyimpact/laminate/layup.hpp"
@@ -22,7 +22,7 @@ namespace {
 
 using namespace plyimpact;
 
-PlateModel thesis_plate(int nx, int ny) {
+DiscretePlate thesis_plate(int nx, int ny) {
   Material m;
   m.name = "thesis_3_6";
   m.E1 = 129e9;
@@ -37,13 +37,14 @@ PlateModel thesis_plate(int nx, int ny) {
   return {Laminate({m}, plies), {0.127, 0.0762}, {nx, ny, MassMatrix::lumped, ElementFormulation::q9}, bc};
 }
 
-SparseMatrix effective_stiffness(const PlateModel& model) {
+SparseMatrix effective_stiffness(const DiscretePlate& model) {
   constexpr double beta = 0.25, dt = 1e-6;
   return model.stiffness() + model.mass() / (beta * dt * dt);
 }
 
 void memory_estimate(benchmark::State& state) {
-  const PlateModel model = thesis_plate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const DiscretePlate model =
+      thesis_plate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const SparseMatrix Keff = effective_stiffness(model);
   FactorMemoryEstimate e;
   for (auto _ : state) {
@@ -56,7 +57,8 @@ void memory_estimate(benchmark::State& state) {
 }
 
 void factor_Keff(benchmark::State& state) {
-  const PlateModel model = thesis_plate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const DiscretePlate model =
+      thesis_plate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const SparseMatrix Keff = effective_stiffness(model);
   for (auto _ : state) {
     SpdSolver solver(SparseSolverKind::simplicial_ldlt);
@@ -67,7 +69,8 @@ void factor_Keff(benchmark::State& state) {
 }
 
 void finite_check(benchmark::State& state) {
-  const PlateModel model = thesis_plate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const DiscretePlate model =
+      thesis_plate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const Eigen::VectorXd u = Eigen::VectorXd::Constant(model.size(), 1e-3);
   for (auto _ : state) {
     check_finite_vector(100, 1e-4, "u", u);

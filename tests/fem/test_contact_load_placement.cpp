@@ -15,8 +15,8 @@
 //      elements at the impact point are no larger than the contact radius, gives the Navier compliance
 //      within 0.03 % wherever the point lies, with q9 as well as MITC9.
 #include "plyimpact/fem/circle_load.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/loads.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/quadrature.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
@@ -61,7 +61,7 @@ BoundaryConditions simply_supported() {
 
 enum class Element { q9, q9_full_shear, mitc9 };
 
-PlateModel model_of(int nx, int ny, Element element) {
+DiscretePlate model_of(int nx, int ny, Element element) {
   MeshSpec spec;
   spec.nx = nx;
   spec.ny = ny;
@@ -70,7 +70,7 @@ PlateModel model_of(int nx, int ny, Element element) {
 }
 
 // K of the model; for q9_full_shear the 2×2 shear term of every element is replaced by 3×3 Gauss.
-SparseMatrix stiffness(const PlateModel& model, Element element) {
+SparseMatrix stiffness(const DiscretePlate& model, Element element) {
   SparseMatrix K = model.stiffness();
   if (element != Element::q9_full_shear) return K;
   const Eigen::Matrix2d F = model.laminate().F();
@@ -102,7 +102,7 @@ struct PointLoadSolution {
   Eigen::VectorXd w_nodal; // nodal w, m/N
 };
 
-PointLoadSolution point_load(const PlateModel& model, Element element, double x, double y) {
+PointLoadSolution point_load(const DiscretePlate& model, Element element, double x, double y) {
   SpdSolver solver(SparseSolverKind::cholmod);
   solver.factorize(stiffness(model, element));
   const Eigen::VectorXd s = plyimpact::point_load(model, x, y, 1.0);
@@ -134,7 +134,7 @@ double navier_hertz_compliance(double c) {
   return ni::ModalPlate(plate, {1000, 600}, 0.5 * plate_a, 0.5 * plate_b).static_compliance(c);
 }
 
-PlateModel graded_model(const std::vector<double>& xs, const std::vector<double>& ys, Element element) {
+DiscretePlate graded_model(const std::vector<double>& xs, const std::vector<double>& ys, Element element) {
   const PlateGeometry plate{plate_a, plate_b, false};
   return {structured_rectangle(plate, xs, ys), PlateSections{{t300_cross_ply()}, {}},
           Discretization{MassMatrix::lumped,
@@ -144,7 +144,7 @@ PlateModel graded_model(const std::vector<double>& xs, const std::vector<double>
 
 // w at (x0, y0) under a unit Hertz pressure of radius c centred there (consistent nodal forces from
 // circle_load on every element the circle touches).
-double hertz_compliance(const PlateModel& model, double x0, double y0, double c) {
+double hertz_compliance(const DiscretePlate& model, double x0, double y0, double c) {
   const Mesh& mesh = model.mesh();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
   for (int e = 0; e < mesh.element_count(); ++e) {
@@ -174,7 +174,7 @@ double hertz_compliance(const PlateModel& model, double x0, double y0, double c)
 TEST(ContactLoadPlacement, Q9HourglassModeSoftensCornerNodeLoads) {
   const int nx = 30, ny = 18; // square elements 4.23 mm
   const double hx = plate_a / nx, hy = plate_b / ny;
-  const PlateModel q9 = model_of(nx, ny, Element::q9), mitc9 = model_of(nx, ny, Element::mitc9);
+  const DiscretePlate q9 = model_of(nx, ny, Element::q9), mitc9 = model_of(nx, ny, Element::mitc9);
   const double xc = 0.5 * plate_a, yc = 0.5 * plate_b;
   const PointLoadSolution corner_q9 = point_load(q9, Element::q9, xc, yc);
   const PointLoadSolution corner_mitc9 = point_load(mitc9, Element::mitc9, xc, yc);
@@ -211,7 +211,7 @@ TEST(ContactLoadPlacement, PointLoadCompliancesFollowTheLogSingularityWithANodeO
   for (const int nx : {30, 60}) {
     const int ny = nx * 3 / 5;
     const double hx = plate_a / nx, hy = plate_b / ny;
-    const PlateModel mitc9 = model_of(nx, ny, Element::mitc9);
+    const DiscretePlate mitc9 = model_of(nx, ny, Element::mitc9);
     corner.push_back(point_load(mitc9, Element::mitc9, xc, yc).compliance);
     const double centre = point_load(mitc9, Element::mitc9, xc + 0.5 * hx, yc + 0.5 * hy).compliance;
     // Global part of the difference between the two points (the local singular part cancels).
@@ -240,8 +240,8 @@ TEST(ContactLoadPlacement, ResolvedHertzPressureIsPlacementIndependent) {
     double point_min = 1.0, point_max = 0.0;
     for (const auto& [ox, oy] :
          {std::pair{0.0, 0.0}, std::pair{0.5, 0.0}, std::pair{0.5, 0.5}, std::pair{0.3, 0.17}}) {
-      const PlateModel model = graded_model(graded_lines(plate_a, x0, c, 1.25, ox),
-                                            graded_lines(plate_b, y0, c, 1.25, oy), element);
+      const DiscretePlate model = graded_model(graded_lines(plate_a, x0, c, 1.25, ox),
+                                               graded_lines(plate_b, y0, c, 1.25, oy), element);
       const double C = hertz_compliance(model, x0, y0, c);
       EXPECT_NEAR(C / reference, 1.0, 5e-4) << ox << " " << oy;
       const double point = point_load(model, element, x0, y0).compliance;
@@ -268,7 +268,7 @@ TEST(ContactLoadPlacement, DISABLED_PrintTables) {
          {"mid-side", {xc + 0.5 * hx, yc}},
          {"centre", {xc + 0.5 * hx, yc + 0.5 * hy}},
          {"interior", {xc + 0.3 * hx, yc + 0.17 * hy}}}};
-    const PlateModel q9 = model_of(nx, ny, Element::q9), mitc9 = model_of(nx, ny, Element::mitc9);
+    const DiscretePlate q9 = model_of(nx, ny, Element::q9), mitc9 = model_of(nx, ny, Element::mitc9);
     for (const auto& [name, p] : points) {
       const double navier = ni::ModalPlate(plate, {400, 240}, p[0], p[1]).static_compliance(3e-3);
       std::printf("%3d x %2d %-8s %.4f %.4f %.4f   %.6f\n", nx, ny, name,
@@ -287,8 +287,8 @@ TEST(ContactLoadPlacement, DISABLED_PrintTables) {
       std::printf("h0/c = %.1f %-5s", ratio, element == Element::q9 ? "q9" : "mitc9");
       for (const auto& [ox, oy] :
            {std::pair{0.0, 0.0}, std::pair{0.5, 0.0}, std::pair{0.5, 0.5}, std::pair{0.3, 0.17}}) {
-        const PlateModel model = graded_model(graded_lines(plate_a, xc, ratio * c, 1.25, ox),
-                                              graded_lines(plate_b, yc, ratio * c, 1.25, oy), element);
+        const DiscretePlate model = graded_model(graded_lines(plate_a, xc, ratio * c, 1.25, ox),
+                                                 graded_lines(plate_b, yc, ratio * c, 1.25, oy), element);
         std::printf("  %+.4f", 100.0 * (hertz_compliance(model, xc, yc, c) / reference - 1.0));
       }
       std::printf("\n");

@@ -4,7 +4,7 @@
 // crack area), the crack-band regularisation on three meshes, the undamaged section, and the energy
 // balance work = stored + dissipated. docs/progressive_damage.md, "Plate-level tests".
 #include "plyimpact/fem/damaged_plate.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/regions.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 #include "support/decks.hpp"
@@ -91,7 +91,7 @@ struct Membrane {
   /// In pure shear σ22 = 0 and the law picks matrix tension (G_mt) or compression (G_mc) by the sign
   /// of σ̂22, which is then round-off (ε11 ≈ ±1e-20): a transverse strain of 1e-6 γ makes it tension.
   static constexpr double transverse_bias = 1e-6;
-  PlateModel model;
+  DiscretePlate model;
   std::vector<int> prescribed;
   std::vector<double> weights;
 };
@@ -101,7 +101,7 @@ struct Membrane {
 /// committed. The reaction is the sum of f_int over the prescribed equations, weighted.
 class DisplacementControl {
 public:
-  DisplacementControl(const DamagedPlateModel& damaged, const Membrane& membrane)
+  DisplacementControl(const DamagedPlate& damaged, const Membrane& membrane)
       : damaged_(damaged), field_(damaged.virgin_field()), prescribed_(membrane.prescribed),
         weights_(membrane.weights), u_(Eigen::VectorXd::Zero(damaged.size())) {
     is_prescribed_.assign(static_cast<std::size_t>(damaged.size()), false);
@@ -186,7 +186,7 @@ public:
   static constexpr double tolerance = 1e-10; ///< ‖r‖ ≤ tolerance · the largest ‖f_int‖ so far
 
 private:
-  const DamagedPlateModel& damaged_;
+  const DamagedPlate& damaged_;
   DamageField field_;
   std::vector<int> prescribed_, unknown_;
   std::vector<double> weights_;
@@ -248,7 +248,7 @@ TEST_P(SingleElement, LinearToTheStrengthSofteningToZeroAndGPerUnitCrackArea) {
   const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, c.drive, true);
   ProgressiveDamageSettings settings;
   settings.screen_fraction = 0.0; // the one element is active from the start
-  const DamagedPlateModel damaged(membrane.model, settings);
+  const DamagedPlate damaged(membrane.model, settings);
   ASSERT_LT(h, 2.0 * c.toughness * c.modulus / (c.strength * c.strength)); // band limit of this state
   ASSERT_DOUBLE_EQ(damaged.characteristic_length(0), h);
 
@@ -315,7 +315,7 @@ TEST(DamagedPlateLimitation, EndDrivenElementLocalisesIntoTwoOfItsThreeGaussColu
   const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial);
   ProgressiveDamageSettings settings;
   settings.screen_fraction = 0.0;
-  const DamagedPlateModel damaged(membrane.model, settings);
+  const DamagedPlate damaged(membrane.model, settings);
   DisplacementControl control(damaged, membrane);
   const double u0 = Yt / t300().E2 * h, uf = 2.0 * G_mt / Yt;
   for (const std::vector<double>& leg : {ramp(0.0, 0.99 * u0, 10), ramp(u0, 1.05 * uf, 200)})
@@ -368,7 +368,7 @@ StripRun run_strip(int k, double G_weak, const std::vector<double>& path) {
   if (in_band != k) throw std::logic_error("the weakened band is not one element wide");
   const Membrane membrane(plate, 10 * k, k, PlateSections{{sound, weakened}, std::move(of_element)},
                           Drive::axial);
-  const DamagedPlateModel damaged(membrane.model, ProgressiveDamageSettings{});
+  const DamagedPlate damaged(membrane.model, ProgressiveDamageSettings{});
   DisplacementControl control(damaged, membrane);
   StripRun run;
   run.h = h;
@@ -470,7 +470,7 @@ struct TransverseTensionElement {
   }
   Laminate lam = test::laminate_of(t300(), "[90]4", ply_thickness);
   Membrane membrane{{h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial, true};
-  DamagedPlateModel damaged{membrane.model, all_active()};
+  DamagedPlate damaged{membrane.model, all_active()};
 };
 
 // Energy balance over a tension-softening history with an unloading to a third and a reloading in the
@@ -481,7 +481,7 @@ TEST(DamagedPlateEnergy, WorkOfTheReactionIsStoredPlusDissipated) {
   const TransverseTensionElement element;
   const double h = TransverseTensionElement::h;
   const Laminate& lam = element.lam;
-  const DamagedPlateModel& damaged = element.damaged;
+  const DamagedPlate& damaged = element.damaged;
   DisplacementControl control(damaged, element.membrane);
   const double u0 = Yt / t300().E2 * h, uf = 2.0 * G_mt / Yt, um = 0.5 * (u0 + uf);
   std::vector<double> path = ramp(0.0, 0.99 * u0, 10);
@@ -514,7 +514,7 @@ TEST(DamagedPlateEnergy, WorkOfTheReactionIsStoredPlusDissipated) {
 TEST(DamagedPlateLagged, FrozenForceIsTheCommittedSecantAndHoldsTheDamage) {
   const TransverseTensionElement element;
   const double h = TransverseTensionElement::h;
-  const DamagedPlateModel& damaged = element.damaged;
+  const DamagedPlate& damaged = element.damaged;
   DisplacementControl control(damaged, element.membrane);
   const double u0 = Yt / t300().E2 * h, uf = 2.0 * G_mt / Yt;
   double reaction = 0.0;
@@ -542,11 +542,11 @@ TEST(DamagedPlateLagged, FrozenForceIsTheCommittedSecantAndHoldsTheDamage) {
 // f_int = K0 u, to 1e-12 relative, for an unsymmetric angle-ply laminate (A, B, D and F all full).
 TEST(DamagedPlateSection, WithoutDamageTheSecantIsTheElasticStiffness) {
   const Laminate lam = test::laminate_of(t300(), "[0/45/-45/90/30]", ply_thickness);
-  const PlateModel model(lam, {20e-3, 12e-3}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
-                         BoundaryConditions::on_edges("clamped", "free", "free", "free"));
+  const DiscretePlate model(lam, {20e-3, 12e-3}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
+                            BoundaryConditions::on_edges("clamped", "free", "free", "free"));
   ProgressiveDamageSettings settings;
   settings.screen_fraction = 0.0;
-  const DamagedPlateModel damaged(model, settings);
+  const DamagedPlate damaged(model, settings);
   DamageField field = damaged.virgin_field();
   std::mt19937 rng(18);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -575,12 +575,12 @@ TEST(DamagedPlateSection, WithoutDamageTheSecantIsTheElasticStiffness) {
 // to √(0.176/6.3) ≈ 0.16 of its value (a little less with the margin and the Poisson bound).
 TEST(DamagedPlateBandLimit, LoweredStrengthsAreReportedWithTheElementsTheyConcern) {
   const Laminate lam = test::laminate_of(t300(), "[0/90]s", ply_thickness);
-  const PlateModel model(lam, {20e-3, 12e-3}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
-                         BoundaryConditions::on_edges("clamped", "free", "free", "free"));
+  const DiscretePlate model(lam, {20e-3, 12e-3}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
+                            BoundaryConditions::on_edges("clamped", "free", "free", "free"));
   ProgressiveDamageSettings settings;
-  EXPECT_FALSE(DamagedPlateModel(model, settings).strength_reduction_warning().has_value());
+  EXPECT_FALSE(DamagedPlate(model, settings).strength_reduction_warning().has_value());
   settings.reduce_strengths_above_band_limit = true;
-  const std::optional<std::string> w = DamagedPlateModel(model, settings).strength_reduction_warning();
+  const std::optional<std::string> w = DamagedPlate(model, settings).strength_reduction_warning();
   ASSERT_TRUE(w.has_value());
   const double Lc = std::sqrt(20e-3 / 3 * 12e-3 / 2);
   const double lowered = *band_limited_strengths(t300(), Lc, 0.0).Yc;

@@ -1,6 +1,6 @@
 // The equation numbering (fem/dof_map.hpp): node_dof inverts equation() on every free DOF of a supported
 // plate, and refuses an equation that does not exist (restrained DOFs have none).
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "support/decks.hpp"
 
 #include <gtest/gtest.h>
@@ -12,8 +12,8 @@ namespace {
 
 TEST(DofMap, NodeDofInvertsTheNumberingOfEveryFreeEquation) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
-  const PlateModel model(lam, {0.12, 0.08}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
-                         test::all_edges("ss"));
+  const DiscretePlate model(lam, {0.12, 0.08}, {3, 2, MassMatrix::lumped, ElementFormulation::mitc9},
+                            test::all_edges("ss"));
   const DofMap& dofs = model.dofs();
   ASSERT_LT(dofs.free_count(), dofs.total_count()); // the supports restrain some DOFs
   for (int e = 0; e < dofs.free_count(); ++e) {

@@ -1,7 +1,7 @@
 // The geometrically non-linear element (SPEC §8): its tangent is the derivative of its internal force
 // (central finite differences at random states), it reduces to the linear element at u = 0, and the
 // assembled model agrees with the element.
-#include "plyimpact/fem/nonlinear_plate_model.hpp"
+#include "plyimpact/fem/nonlinear_plate.hpp"
 #include "support/decks.hpp"
 
 #include <gtest/gtest.h>
@@ -169,11 +169,11 @@ TEST(NonlinearElement, GreenLagrangeWithMitc9IsRefusedWithAClearMessage) {
   }
 }
 
-TEST(NonlinearPlateModel, AssembledTangentIsTheDerivativeOfTheAssembledForce) {
+TEST(NonlinearPlate, AssembledTangentIsTheDerivativeOfTheAssembledForce) {
   const Laminate lam = laminate_of(thesis_3_6(), "[0/90]s", 0.5e-3);
-  const PlateModel model(lam, {0.04, 0.03}, {3, 2, MassMatrix::lumped, ElementFormulation::q9},
-                         test::all_edges("ss"));
-  const NonlinearPlateModel nl(model, StrainMeasure::von_karman);
+  const DiscretePlate model(lam, {0.04, 0.03}, {3, 2, MassMatrix::lumped, ElementFormulation::q9},
+                            test::all_edges("ss"));
+  const NonlinearPlate nl(model, StrainMeasure::von_karman);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> r(-1.0, 1.0);
   Eigen::VectorXd u(model.size());

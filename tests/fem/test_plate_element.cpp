@@ -2,7 +2,7 @@
 // zero-energy modes.
 #include "plyimpact/analysis/plate_analyses/modal_analysis.hpp"
 #include "plyimpact/analysis/plate_analyses/static_analysis.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/quadrature.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 #include "support/decks.hpp"
@@ -34,8 +34,8 @@ TEST(ShapeFunctions, PartitionOfUnityAndKroneckerProperty) {
 
 /// A 3×3 mesh of the unit square whose four interior corner nodes are moved off the grid; mid-side
 /// and centre nodes follow the bilinear map of each element's corners (straight-sided elements).
-PlateModel distorted_patch(const Laminate& lam, ElementFormulation formulation) {
-  PlateModel model(lam, {1.0, 1.0}, {3, 3, MassMatrix::consistent, formulation}, all_edges("free"));
+DiscretePlate distorted_patch(const Laminate& lam, ElementFormulation formulation) {
+  DiscretePlate model(lam, {1.0, 1.0}, {3, 3, MassMatrix::consistent, formulation}, all_edges("free"));
   Mesh& mesh = model.mutable_mesh();
   const auto node_id = [](int i, int j) { return 7 * j + i; }; // structured 3×3 mesh: 7 nodes a row
   const double shift[4][2] = {{0.05, 0.03}, {-0.04, 0.06}, {0.07, -0.05}, {-0.03, -0.04}};
@@ -60,7 +60,7 @@ using Field = std::function<Eigen::Matrix<double, 5, 1>(double x, double y)>;
 
 /// Prescribes the exact field on the boundary nodes, solves K_II u_I = −K_IB u_B and returns the
 /// largest nodal error at the interior nodes, relative to the largest nodal value.
-double patch_error(const PlateModel& model, const Field& exact) {
+double patch_error(const DiscretePlate& model, const Field& exact) {
   const Mesh& mesh = model.mesh();
   const SparseMatrix K = model.stiffness(); // all DOFs free: equation = 5 n + d
   const int n = static_cast<int>(K.rows());
@@ -102,7 +102,7 @@ class PatchTest : public ::testing::TestWithParam<ElementFormulation> {};
 TEST_P(PatchTest, ConstantMembraneStateIsReproducedOnADistortedMesh) {
   // Unsymmetric angle-ply laminate: A, B, D all full, so membrane strains also load bending terms.
   const Laminate lam = test::laminate_of(test::t300_976(), "[30/-45/0]", 0.5e-3);
-  const PlateModel model = distorted_patch(lam, GetParam());
+  const DiscretePlate model = distorted_patch(lam, GetParam());
   const Field membrane = [](double x, double y) {
     Eigen::Matrix<double, 5, 1> u;
     u << 1e-3 * x + 2e-3 * y, -1e-3 * x + 0.5e-3 * y, 0.0, 0.0, 0.0;
@@ -114,7 +114,7 @@ TEST_P(PatchTest, ConstantMembraneStateIsReproducedOnADistortedMesh) {
 TEST_P(PatchTest, ConstantCurvatureStateIsReproducedOnADistortedMesh) {
   // Pure bending: θx = κx x + κxy y/2, θy = κy y + κxy x/2, w = −(κx x² + κy y² + κxy x y)/2 (γ = 0).
   const Laminate lam = test::laminate_of(test::t300_976(), "[30/-45/0]", 0.5e-3);
-  const PlateModel model = distorted_patch(lam, GetParam());
+  const DiscretePlate model = distorted_patch(lam, GetParam());
   const double kx = 0.02, ky = -0.01, kxy = 0.015;
   const Field bending = [=](double x, double y) {
     Eigen::Matrix<double, 5, 1> u;
@@ -140,8 +140,8 @@ INSTANTIATE_TEST_SUITE_P(Element, PatchTest,
 TEST(Assembly, StiffnessAndMassAreSymmetricAndPositiveDefiniteOnceSupported) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[45/-45/0/90]", 0.25e-3); // unsymmetric
   for (const auto formulation : {ElementFormulation::q9, ElementFormulation::mitc9}) {
-    const PlateModel model(lam, {0.12, 0.08}, {6, 4, MassMatrix::consistent, formulation},
-                           all_edges("clamped"));
+    const DiscretePlate model(lam, {0.12, 0.08}, {6, 4, MassMatrix::consistent, formulation},
+                              all_edges("clamped"));
     const SparseMatrix K = model.stiffness();
     const SparseMatrix M = model.mass();
     const SparseMatrix Kt = K.transpose(), Mt = M.transpose();
@@ -162,7 +162,7 @@ TEST(Assembly, TotalTranslationalMassIsI0TimesArea) {
   heavy.rho = 4000.0;
   const Laminate lam({test::t300_976(), heavy}, {{0.0, 1e-3, 0}, {90.0, 1e-3, 1}});
   for (const auto kind : {MassMatrix::lumped, MassMatrix::consistent}) {
-    const PlateModel model(lam, {0.127, 0.0762}, {5, 3, kind, ElementFormulation::q9}, all_edges("free"));
+    const DiscretePlate model(lam, {0.127, 0.0762}, {5, 3, kind, ElementFormulation::q9}, all_edges("free"));
     const SparseMatrix M = model.mass();
     for (int d = 0; d < 3; ++d) {
       Eigen::VectorXd r = Eigen::VectorXd::Zero(M.rows());
@@ -175,8 +175,8 @@ TEST(Assembly, TotalTranslationalMassIsI0TimesArea) {
 
 TEST(Assembly, LumpedMassIsBlockDiagonalPerNode) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
-  const PlateModel model(lam, {0.1, 0.1}, {3, 3, MassMatrix::lumped, ElementFormulation::q9},
-                         all_edges("ss"));
+  const DiscretePlate model(lam, {0.1, 0.1}, {3, 3, MassMatrix::lumped, ElementFormulation::q9},
+                            all_edges("ss"));
   const SparseMatrix M = model.mass();
   for (int k = 0; k < M.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(M, k); it; ++it) {
@@ -205,7 +205,7 @@ TEST_P(ZeroEnergyModes, CountMatchesRigidBodyMotionsPlusKnownMechanisms) {
   for (int e = 0; e < 4; ++e)
     bc.set(to_string(static_cast<Edge>(e)), c.edges[e]);
   const Laminate lam = test::laminate_of(test::thesis_3_6(), "[45/90/-45/0]3s", 0.19375e-3);
-  const PlateModel model(lam, {0.127, 0.0762}, {c.nx, c.ny, MassMatrix::lumped, c.formulation}, bc);
+  const DiscretePlate model(lam, {0.127, 0.0762}, {c.nx, c.ny, MassMatrix::lumped, c.formulation}, bc);
   const ModalResult r = solve_modal(model, 12);
   EXPECT_EQ(r.zero_energy_modes, c.expected) << c.name;
 }
@@ -240,7 +240,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(StaticAnalysis, UnrestrainedPlateIsAClearErrorNamingTheFreeMotions) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
-  const PlateModel free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
+  const DiscretePlate free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
   StaticLoad load;
   load.pressure = 1e4;
   try {
@@ -251,7 +251,7 @@ TEST(StaticAnalysis, UnrestrainedPlateIsAClearErrorNamingTheFreeMotions) {
     EXPECT_NE(msg.find("translation along z (w)"), std::string::npos) << msg;
     EXPECT_NE(msg.find("x0 = 00000"), std::string::npos) << msg;
   }
-  const PlateModel soft(lam, {0.1, 0.1}, {4, 4}, all_edges("ss-soft"));
+  const DiscretePlate soft(lam, {0.1, 0.1}, {4, 4}, all_edges("ss-soft"));
   try {
     (void)solve_static(soft, load);
     FAIL();
@@ -275,7 +275,7 @@ TEST(Mesh, ThesisElement83IsTheCentreOfThe15x11Mesh) {
 
 TEST(Mesh, PointLoadIsDistributedByShapeFunctionsAndSumsToTheForce) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
-  const PlateModel model(lam, {0.127, 0.0762}, {15, 11}, all_edges("free"));
+  const DiscretePlate model(lam, {0.127, 0.0762}, {15, 11}, all_edges("free"));
   const Eigen::VectorXd f = point_load(model, 0.031, 0.052, 1000.0);
   EXPECT_NEAR(f.sum(), 1000.0, 1e-9);
   EXPECT_NEAR(pressure_load(model, 2.0).sum(), 2.0 * 0.127 * 0.0762, 1e-15);
@@ -295,20 +295,21 @@ using test::all_edges;
 // node 3-5 % more compliant than MITC9 even where the edges hold it (docs/notes/contact-reference.md).
 TEST(ElementChoice, AutomaticIsMitc9Everywhere) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
-  const PlateModel free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
+  const DiscretePlate free_plate(lam, {0.1, 0.1}, {4, 4}, all_edges("free"));
   EXPECT_EQ(free_plate.formulation(), ElementFormulation::mitc9);
   EXPECT_EQ(solve_modal(free_plate, 8).zero_energy_modes, 6); // rigid-body modes only
   BoundaryConditions cantilever = all_edges("free");
   cantilever.set("x0", "clamped");
-  EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, cantilever).formulation(), ElementFormulation::mitc9);
-  EXPECT_EQ(PlateModel(lam, {0.1, 0.1}, {4, 4}, all_edges("ss")).formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(DiscretePlate(lam, {0.1, 0.1}, {4, 4}, cantilever).formulation(), ElementFormulation::mitc9);
+  EXPECT_EQ(DiscretePlate(lam, {0.1, 0.1}, {4, 4}, all_edges("ss")).formulation(), ElementFormulation::mitc9);
   // Four corner point supports leave q9's mode alive (it vanishes at every element-corner node).
   BoundaryConditions corners = all_edges("free");
   corners.corners = *parse_restraint("00100", Edge::x0);
-  const PlateModel on_points(lam, {0.1, 0.1}, {4, 4}, corners);
+  const DiscretePlate on_points(lam, {0.1, 0.1}, {4, 4}, corners);
   EXPECT_EQ(on_points.formulation(), ElementFormulation::mitc9);
   EXPECT_EQ(solve_modal(on_points, 6).zero_energy_modes, 3); // u, v and rotation about z only
-  const PlateModel q9_on_points(lam, {0.1, 0.1}, {4, 4, MassMatrix::lumped, ElementFormulation::q9}, corners);
+  const DiscretePlate q9_on_points(lam, {0.1, 0.1}, {4, 4, MassMatrix::lumped, ElementFormulation::q9},
+                                   corners);
   EXPECT_EQ(solve_modal(q9_on_points, 6).zero_energy_modes, 4);
 }
 

@@ -2,8 +2,8 @@
 // the same laminate are the one-region plate bit for bit; a strip in cylindrical bending with a
 // thickness step at mid-span matches the stepped Timoshenko beam.
 #include "plyimpact/analysis/plate_analyses/static_analysis.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/loads.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/regions.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 #include "support/decks.hpp"
@@ -17,8 +17,8 @@
 namespace plyimpact::sections_tests {
 namespace {
 
-PlateModel two_region_plate(const Laminate& left, const Laminate& right, const PlateGeometry& plate, int nx,
-                            int ny, const BoundaryConditions& bc) {
+DiscretePlate two_region_plate(const Laminate& left, const Laminate& right, const PlateGeometry& plate,
+                               int nx, int ny, const BoundaryConditions& bc) {
   Mesh mesh = structured_rectangle(plate, nx, ny);
   const Region r{"right", 1, plate.a / 2, plate.a, 0.0, plate.b};
   std::vector<int> of_element = element_laminates(mesh, {r});
@@ -37,8 +37,8 @@ TEST(Sections, TwoRegionsWithTheSameLaminateAreTheOneRegionPlateBitForBit) {
   const Laminate lam = test::laminate_of(test::thesis_3_6(), "[45/90/-45/0]3s", 0.19375e-3);
   const PlateGeometry plate{0.127, 0.0762};
   const BoundaryConditions bc = test::all_edges("ss");
-  const PlateModel one(lam, plate, {15, 11, MassMatrix::lumped, ElementFormulation::q9}, bc);
-  const PlateModel two = two_region_plate(lam, lam, plate, 15, 11, bc);
+  const DiscretePlate one(lam, plate, {15, 11, MassMatrix::lumped, ElementFormulation::q9}, bc);
+  const DiscretePlate two = two_region_plate(lam, lam, plate, 15, 11, bc);
   ASSERT_FALSE(two.single_section());
   const auto same = [](const SparseMatrix& a, const SparseMatrix& b) {
     return a.nonZeros() == b.nonZeros() &&
@@ -82,7 +82,7 @@ TEST(Sections, SteppedStripInCylindricalBendingMatchesTheSteppedTimoshenkoBeam) 
   const Laminate thick = test::laminate_of(test::t300_976(), "[0/90]2s", 0.25e-3);
   const double L = 0.2, b = 0.02, q = 1.0e3;
   const BoundaryConditions bc = BoundaryConditions::on_edges("11101", "ss", "01001", "01001");
-  const PlateModel model = two_region_plate(thin, thick, {L, b}, 20, 2, bc);
+  const DiscretePlate model = two_region_plate(thin, thick, {L, b}, 20, 2, bc);
   const StaticResult r = solve_static(model, StaticLoad{q, std::nullopt, std::nullopt});
   for (const double xi : {L / 4, L / 2, 3 * L / 4}) {
     const double fe = model.sampler(xi, b / 2).value(r.u);

@@ -34,8 +34,8 @@ struct CentreResponse {
 CentreResponse centre_response(double seed_radius) {
   const ImpactCaseDescription d =
       impact_case_description(test::seeded_plate_deck({.seed_radius = seed_radius}));
-  const PlateModel model = impact_plate_model(d); // the case's plate, without its time stepping
-  const StackedPlateModel stack = impact_stack(model, *d.delamination);
+  const DiscretePlate model = impact_plate_model(d); // the case's plate, without its time stepping
+  const StackedPlate stack = impact_stack(model, *d.delamination);
   const StackedPlateState state = stack.initial_state();
   int centre = 0;
   for (int n = 0; n < model.mesh().node_count(); ++n)

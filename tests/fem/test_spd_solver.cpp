@@ -16,14 +16,14 @@ namespace {
 
 class SpdSolverBackends : public ::testing::TestWithParam<SparseSolverKind> {};
 
-PlateModel small_plate(const std::string& edges) {
+DiscretePlate small_plate(const std::string& edges) {
   const Laminate lam = test::laminate_of(test::thesis_3_6(), "[45/90/-45/0]s", 0.5e-3);
   return {lam, {0.127, 0.0762}, {4, 3, MassMatrix::lumped, ElementFormulation::q9}, test::all_edges(edges)};
 }
 
 TEST_P(SpdSolverBackends, SolvesTheEffectiveStiffnessToRoundOff) {
   // K̄ = K + 4M/Δt² at Δt = 1 µs, as in the impact time loop; reference: dense LLᵀ of the same matrix.
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(Kbar.rows(), -1.0, 2.0);
   const Eigen::VectorXd reference = Eigen::MatrixXd(Kbar).llt().solve(b);
@@ -42,7 +42,7 @@ TEST_P(SpdSolverBackends, WorkspaceSolveGivesTheNumbersOfThePlainSolve) {
   SpdSolver::Workspace workspace;
   Eigen::VectorXd x;
   for (const char* edges : {"ss", "clamped"}) {
-    const PlateModel model = small_plate(edges);
+    const DiscretePlate model = small_plate(edges);
     const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
     solver.factorize(Kbar);
     for (int call = 0; call < 3; ++call) {
@@ -62,7 +62,7 @@ TEST_P(SpdSolverBackends, AMatrixOfTheAnalysedPatternReusesTheAnalysisAndGetsThe
   // A matrix of another pattern, of the same size (one coupling more, v (eᵢ + eⱼ)(eᵢ + eⱼ)ᵀ, positive
   // semi-definite) or of another size, is analysed anew: an entry outside the kept pattern would be
   // lost and miss the dense solution by the coupling's whole effect.
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix first = model.stiffness() + (4.0 / 1e-12) * model.mass();
   const SparseMatrix refreshed = model.stiffness() + (4.0 / 4e-12) * model.mass();
   const auto n = static_cast<int>(first.rows());
@@ -75,7 +75,7 @@ TEST_P(SpdSolverBackends, AMatrixOfTheAnalysedPatternReusesTheAnalysisAndGetsThe
   const SparseMatrix coupled = refreshed + pair;
   ASSERT_GT(coupled.nonZeros(), refreshed.nonZeros()); // another pattern, the same size
   const SparseMatrix other_size = [] {
-    const PlateModel clamped = small_plate("clamped");
+    const DiscretePlate clamped = small_plate("clamped");
     return SparseMatrix(clamped.stiffness() + (4.0 / 1e-12) * clamped.mass());
   }();
   ASSERT_NE(other_size.rows(), first.rows());
@@ -106,7 +106,7 @@ TEST_P(SpdSolverBackends, TheAnalysisTellsTheSizeOfTheFactorBeforeItIsMade) {
   // simplicial factors it is the count of the factor made after it, which reuses that analysis; a supernodal
   // factor stores its supernodes whole, at least the lower triangle of the matrix. Fill-in makes the factor
   // larger than the matrix's lower triangle.
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   const long lower = (Kbar.nonZeros() - Kbar.rows()) / 2;
   SpdSolver solver(GetParam());
@@ -128,10 +128,10 @@ TEST_P(SpdSolverBackends, ASolverThatAdoptsAnotherOnesAnalysisGetsTheFreshFactor
   // the first one's analysis and factors its own matrix of the same pattern, bit for bit as a solver that
   // analyses it afresh; a matrix of another pattern is still analysed anew. Only a solver of the same
   // kind and ordering can lend its analysis.
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix level0 = model.stiffness() + (4.0 / 4e-12) * model.mass();
   const SparseMatrix level1 = model.stiffness() + (4.0 / 1e-12) * model.mass();
-  const PlateModel clamped = small_plate("clamped");
+  const DiscretePlate clamped = small_plate("clamped");
   const SparseMatrix other = clamped.stiffness() + (4.0 / 1e-12) * clamped.mass();
   SpdSolver first(GetParam());
   first.factorize(level0);
@@ -153,7 +153,7 @@ TEST_P(SpdSolverBackends, ASolverThatAdoptsAnotherOnesAnalysisGetsTheFreshFactor
 
 TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
   // A plate with free edges has six rigid-body motions: K is singular.
-  const PlateModel model = small_plate("00000");
+  const DiscretePlate model = small_plate("00000");
   SpdSolver solver(GetParam());
   EXPECT_THROW(solver.factorize(model.stiffness()), NotPositiveDefinite);
 }
@@ -161,7 +161,7 @@ TEST_P(SpdSolverBackends, RefusesASingularStiffness) {
 TEST(SpdSolver, CholmodSimplicialHasAboutTheFillOfEigensLdlt) {
   // Both order by AMD (CHOLMOD's own AMD and Eigen's port of it differ in details: 5 175 against 5 550
   // here), so the memory estimate built on Eigen's symbolic analysis (analysis/impact/guards) holds for both.
-  const PlateModel model = small_plate("clamped");
+  const DiscretePlate model = small_plate("clamped");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   SpdSolver eigen(SparseSolverKind::simplicial_ldlt), cholmod(SparseSolverKind::cholmod_simplicial);
   eigen.factorize(Kbar);
@@ -188,7 +188,7 @@ TEST(SpdSolver, RankUpdatesGiveTheFactorOfTheModifiedMatrix) {
   // 4.5e-11, downdated 1.0e-9; springs 1000 times the diagonal: 1.1e-8 and 8.7e-7): enough for an
   // iteration matrix, whose Newton residual is evaluated exactly, while a wrong update misses by the
   // springs' whole effect (above 1e-3).
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   const auto n = static_cast<int>(Kbar.rows());
   const SparseMatrix C = spring_columns(n, Kbar.diagonal().maxCoeff());
@@ -208,7 +208,7 @@ TEST(SpdSolver, RankUpdatesGiveTheFactorOfTheModifiedMatrix) {
 }
 
 TEST(SpdSolver, ADowndateThatLeavesNoPositiveMatrixOrABackendWithoutUpdatesAsksForAFactorization) {
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   const SparseMatrix C = spring_columns(static_cast<int>(Kbar.rows()), 1e3 * Kbar.diagonal().maxCoeff());
   SpdSolver simplicial(SparseSolverKind::cholmod_simplicial);
@@ -257,7 +257,7 @@ TEST(SpdSolver, ADenseFactorIsMadeBySupernodesAndAPlatesBySimplicialColumns) {
   SpdSolver singular(SparseSolverKind::cholmod_simplicial);
   EXPECT_THROW(singular.factorize(kms_matrix(n, 1.0)), NotPositiveDefinite);
 
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   SpdSolver plate(SparseSolverKind::cholmod_simplicial);
   plate.factorize(model.stiffness() + (4.0 / 1e-12) * model.mass());
   EXPECT_FALSE(plate.supernodal_factor());
@@ -266,7 +266,7 @@ TEST(SpdSolver, ADenseFactorIsMadeBySupernodesAndAPlatesBySimplicialColumns) {
 TEST(SpdSolver, EveryFillOrderingSolvesToRoundOffAndChangesOnlyTheFill) {
   // A fill-reducing ordering permutes the unknowns: the solution is the same to round-off whichever
   // CHOLMOD uses, and the orderings differ (on 12 elements, METIS and NESDIS find other fills than AMD).
-  const PlateModel model = small_plate("ss");
+  const DiscretePlate model = small_plate("ss");
   const SparseMatrix Kbar = model.stiffness() + (4.0 / 1e-12) * model.mass();
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(Kbar.rows(), -1.0, 2.0);
   const Eigen::VectorXd reference = Eigen::MatrixXd(Kbar).llt().solve(b);

@@ -92,11 +92,11 @@ protected:
   static constexpr double a = 0.04, b = 0.03, h = 1e-3;
   Laminate lam{{as4_peek()}, {{0.0, h, 0}, {90.0, 2.0 * h, 0}}};
   Mesh mesh = structured_rectangle({a, b}, 2, 2);
-  StackedPlateModel stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {}, free_edges};
+  StackedPlate stack{mesh, lam, StackSettings{{0}, as4_peek_interface(h)}, {}, free_edges};
   /// The same stack integrated with `rule`.
-  std::unique_ptr<StackedPlateModel> stack_with(CohesiveQuadrature rule) const {
-    return std::make_unique<StackedPlateModel>(mesh, lam, StackSettings{{0}, as4_peek_interface(h), rule},
-                                               Discretization{}, free_edges);
+  std::unique_ptr<StackedPlate> stack_with(CohesiveQuadrature rule) const {
+    return std::make_unique<StackedPlate>(mesh, lam, StackSettings{{0}, as4_peek_interface(h), rule},
+                                          Discretization{}, free_edges);
   }
   static BoundaryConditions free_edges(int /*sublaminate*/) {
     return BoundaryConditions::on_edges("free", "free", "free", "free");
@@ -235,8 +235,8 @@ TEST_F(TwoSubLaminates, ForceIsTheGradientOfTheStoredEnergy) {
 TEST_F(TwoSubLaminates, InterfaceEvaluationIsTheSameBitsOnOneTwoAndFourThreads) {
   const Mesh fine = structured_rectangle({a, b}, 8, 6);
   for (const CohesiveQuadrature rule : {CohesiveQuadrature::nodal, CohesiveQuadrature::gauss}) {
-    const StackedPlateModel ruled(fine, lam, StackSettings{{0}, as4_peek_interface(h), rule},
-                                  Discretization{}, free_edges);
+    const StackedPlate ruled(fine, lam, StackSettings{{0}, as4_peek_interface(h), rule}, Discretization{},
+                             free_edges);
     std::srand(11);
     const Eigen::VectorXd u = 1e-6 * Eigen::VectorXd::Random(ruled.size()); // well past the onset
     const StackedPlateState virgin = ruled.virgin_state();
@@ -283,7 +283,7 @@ TEST_F(TwoSubLaminates, TangentIsTheDerivativeOfTheForce) {
 }
 
 /// Consistent nodal forces of a uniform pressure q on `model`, placed from `offset` in a vector of `size`.
-Eigen::VectorXd pressure(const PlateModel& model, double q, int offset, int size) {
+Eigen::VectorXd pressure(const DiscretePlate& model, double q, int offset, int size) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(size);
   Eigen::VectorXd fm = Eigen::VectorXd::Zero(model.size());
   for (int e = 0; e < model.mesh().element_count(); ++e)
@@ -311,13 +311,13 @@ TEST(StackedPlate, WithInterfacesThatHoldItIsTheSingleLaminate) {
     if ((mesh.node(n) - Eigen::Vector2d(0.5 * a, 0.5 * a)).norm() < 1e-12) centre = n;
   ASSERT_GT(centre, 0);
 
-  const PlateModel single(mesh, PlateSections{{lam}, {}}, {}, clamped(0));
+  const DiscretePlate single(mesh, PlateSections{{lam}, {}}, {}, clamped(0));
   const Eigen::SimplicialLDLT<SparseMatrix> ldlt(single.stiffness());
   const double w_single =
       ldlt.solve(pressure(single, q, 0, single.size()))(single.dofs().equation(centre, 2));
 
   const auto stacked_deflections = [&](std::optional<double> shear_correction) {
-    const StackedPlateModel stack(
+    const StackedPlate stack(
         mesh, lam,
         StackSettings{interfaces_between_orientations(lam), as4_peek_interface(ply), {}, shear_correction},
         {}, clamped);

@@ -1,6 +1,6 @@
 #pragma once
 // Small laminates and plates for tests, written out in full so each test shows its inputs.
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 #include "plyimpact/laminate/layup.hpp"
 

@@ -73,7 +73,7 @@ int element_dof(int a, int l) {
 
 } // namespace
 
-CohesiveInterface::CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset,
+CohesiveInterface::CohesiveInterface(const DiscretePlate& upper, const DiscretePlate& lower, int upper_offset,
                                      int lower_offset, CohesiveLaw law, CohesiveQuadrature rule,
                                      double loading_band)
     : upper_(upper), lower_(lower), upper_offset_(upper_offset), lower_offset_(lower_offset),

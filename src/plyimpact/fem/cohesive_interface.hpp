@@ -19,7 +19,7 @@
 // Integration: the nodal (Lobatto 3 × 3, Newton–Cotes) rule by default — it uncouples the points of
 // a stiff penalty and avoids the traction oscillations of Gauss integration (Schellekens & de Borst
 // 1993) — or 3 × 3 Gauss.
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/laminate/cohesive_law.hpp"
 
 #include <Eigen/Core>
@@ -67,8 +67,8 @@ class CohesiveInterface {
 public:
   /// `upper` and `lower` on the same mesh; their free DOFs start at `upper_offset` and `lower_offset`
   /// of the stacked vector. `loading_band`: the tangent's choice at the law's kink (CohesiveLaw::update).
-  CohesiveInterface(const PlateModel& upper, const PlateModel& lower, int upper_offset, int lower_offset,
-                    CohesiveLaw law, CohesiveQuadrature rule = CohesiveQuadrature::nodal,
+  CohesiveInterface(const DiscretePlate& upper, const DiscretePlate& lower, int upper_offset,
+                    int lower_offset, CohesiveLaw law, CohesiveQuadrature rule = CohesiveQuadrature::nodal,
                     double loading_band = 0.0);
 
   [[nodiscard]] const CohesiveLaw& law() const { return law_; }
@@ -139,8 +139,8 @@ private:
   void add_node_block(int e, int a, int b, const Eigen::Matrix3d& C,
                       std::vector<Eigen::Triplet<double>>& tangent) const;
 
-  const PlateModel& upper_;
-  const PlateModel& lower_;
+  const DiscretePlate& upper_;
+  const DiscretePlate& lower_;
   int upper_offset_, lower_offset_;
   double half_upper_, half_lower_;
   CohesiveLaw law_;

@@ -27,7 +27,7 @@ Section8 as_matrix(const SectionStiffness& s) {
 } // namespace
 
 /// Throws unless the rows ε0 and κ of S are (2.74) of the gradients (dN_dx, dN_dy), entry for entry: what
-/// DamagedPlateModel::membrane_bending_strain computes from the gradients instead of S.
+/// DamagedPlate::membrane_bending_strain computes from the gradients instead of S.
 void check_membrane_bending_rows(const StrainOperator& S, const Eigen::Matrix<double, 9, 1>& dN_dx,
                                  const Eigen::Matrix<double, 9, 1>& dN_dy) {
   Eigen::Matrix<double, 6, q9_dofs> B = Eigen::Matrix<double, 6, q9_dofs>::Zero();
@@ -70,7 +70,7 @@ private:
 
 /// The strain operators S_p, shape-function gradients and weights w_p = w det J at the 3×3 Gauss points
 /// of one element shape.
-struct DamagedPlateModel::ElementOperators {
+struct DamagedPlate::ElementOperators {
   std::array<StrainOperator, 9> S;
   std::array<ShearRows, 9> S_shear; ///< S_p's rows γ, for γ = S_p uₑ
   std::array<Eigen::Matrix<double, 9, 1>, 9> dN_dx, dN_dy;
@@ -80,8 +80,7 @@ struct DamagedPlateModel::ElementOperators {
 namespace {
 
 /// The deflection's slopes (w,x, w,y) at point p.
-Eigen::Vector2d slopes(const DamagedPlateModel::ElementOperators& ops, std::size_t p,
-                       const ElementVector& ue) {
+Eigen::Vector2d slopes(const DamagedPlate::ElementOperators& ops, std::size_t p, const ElementVector& ue) {
   Eigen::Vector2d g = Eigen::Vector2d::Zero();
   for (Eigen::Index a = 0; a < 9; ++a) {
     g(0) += ops.dN_dx[p](a) * ue(plate_dof(a, 2));
@@ -91,7 +90,7 @@ Eigen::Vector2d slopes(const DamagedPlateModel::ElementOperators& ops, std::size
 }
 
 /// E_p = ∂e/∂uₑ at point p: S_p plus the von Kármán rows of the membrane strains (2.47).
-StrainOperator von_karman_operator(const DamagedPlateModel::ElementOperators& ops, std::size_t p,
+StrainOperator von_karman_operator(const DamagedPlate::ElementOperators& ops, std::size_t p,
                                    const Eigen::Vector2d& g) {
   StrainOperator E = ops.S[p];
   for (Eigen::Index a = 0; a < 9; ++a) {
@@ -121,7 +120,7 @@ std::vector<Material> class_materials(const Laminate& lam, double Lc, double alp
 
 } // namespace
 
-void DamagedPlateModel::build_element_operators() {
+void DamagedPlate::build_element_operators() {
   const Mesh& mesh = model_.mesh();
   for (int c = 0; c < mesh.shape_class_count(); ++c) {
     const ElementCoordinates xy = mesh.element_coordinates(mesh.representative(c));
@@ -146,7 +145,7 @@ void DamagedPlateModel::build_element_operators() {
   }
 }
 
-void DamagedPlateModel::build_length_classes() {
+void DamagedPlate::build_length_classes() {
   // Without strength reduction the laws do not depend on L_c: one class (length 0 = the deck's data).
   class_of_element_.assign(length_.size(), 0);
   if (!settings_.reduce_strengths_above_band_limit) {
@@ -162,8 +161,8 @@ void DamagedPlateModel::build_length_classes() {
   }
 }
 
-DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings,
-                                     Kinematics kinematics)
+DamagedPlate::DamagedPlate(const DiscretePlate& model, ProgressiveDamageSettings settings,
+                           Kinematics kinematics)
     : model_(model), settings_(settings) {
   if (model.formulation() != ElementFormulation::mitc9)
     throw std::invalid_argument("progressive damage needs the MITC9 element ([mesh] element = \"mitc9\" or "
@@ -188,19 +187,18 @@ DamagedPlateModel::DamagedPlateModel(const PlateModel& model, ProgressiveDamageS
   slot_ = element_slots(model, K0_);
   K0_by_rows_ = K0_;
   if (kinematics == Kinematics::von_karman)
-    von_karman_ = std::make_unique<NonlinearPlateModel>(model, StrainMeasure::von_karman);
+    von_karman_ = std::make_unique<NonlinearPlate>(model, StrainMeasure::von_karman);
 }
 
-Eigen::Matrix<double, 8, 1> DamagedPlateModel::point_strain(const ElementOperators& ops, std::size_t p,
-                                                            const ElementVector& ue) const {
+Eigen::Matrix<double, 8, 1> DamagedPlate::point_strain(const ElementOperators& ops, std::size_t p,
+                                                       const ElementVector& ue) const {
   Eigen::Matrix<double, 8, 1> e = membrane_bending_strain(ops, p, ue);
   ops.S_shear[p].rows(ue, e);
   return e;
 }
 
-Eigen::Matrix<double, 8, 1> DamagedPlateModel::membrane_bending_strain(const ElementOperators& ops,
-                                                                       std::size_t p,
-                                                                       const ElementVector& ue) const {
+Eigen::Matrix<double, 8, 1> DamagedPlate::membrane_bending_strain(const ElementOperators& ops, std::size_t p,
+                                                                  const ElementVector& ue) const {
   // (2.74), term by term in the column order of S_p (node by node, u before v, θx before θy): the same
   // sums as the rows ε0 and κ of S_p uₑ to the last bit, without its zero entries.
   Eigen::Matrix<double, 8, 1> e = Eigen::Matrix<double, 8, 1>::Zero();
@@ -226,18 +224,18 @@ Eigen::Matrix<double, 8, 1> DamagedPlateModel::membrane_bending_strain(const Ele
   return e;
 }
 
-DamagedPlateModel::~DamagedPlateModel() = default;
+DamagedPlate::~DamagedPlate() = default;
 
-const LayeredSection& DamagedPlateModel::layered_section(int e) const {
+const LayeredSection& DamagedPlate::layered_section(int e) const {
   const auto c = static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
   return sections_[c][static_cast<std::size_t>(model_.section_index(e))];
 }
 
-const DamagedPlateModel::ElementOperators& DamagedPlateModel::operators_of(int e) const {
+const DamagedPlate::ElementOperators& DamagedPlate::operators_of(int e) const {
   return operators_[static_cast<std::size_t>(model_.mesh().shape_class(e))];
 }
 
-std::optional<std::string> DamagedPlateModel::strength_reduction_warning() const {
+std::optional<std::string> DamagedPlate::strength_reduction_warning() const {
   struct Largest {
     double ratio = 1.0;
     std::string material, strength;
@@ -277,7 +275,7 @@ std::optional<std::string> DamagedPlateModel::strength_reduction_warning() const
       largest.material, largest.deck * 1e-6, largest.used * 1e-6);
 }
 
-DamageField DamagedPlateModel::virgin_field() const {
+DamageField DamagedPlate::virgin_field() const {
   DamageField f;
   f.slot_of_element_.assign(static_cast<std::size_t>(model_.mesh().element_count()), -1);
   f.ply_area_.assign(model_.laminate().ply_count(), 0.0);
@@ -290,9 +288,9 @@ DamageField DamagedPlateModel::virgin_field() const {
   return f;
 }
 
-DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const Eigen::VectorXd& u,
-                                                                    double dt, DamageField& field,
-                                                                    std::vector<double>& group_bound) const {
+DamagedPlate::PointStrains DamagedPlate::evaluate_element(int e, const Eigen::VectorXd& u, double dt,
+                                                          DamageField& field,
+                                                          std::vector<double>& group_bound) const {
   DamageField::ActiveElement& a = field.active_[static_cast<std::size_t>(field.slot_of_element_[e])];
   const LayeredSection& section = layered_section(e);
   const double Lc = characteristic_length(e);
@@ -329,8 +327,8 @@ DamagedPlateModel::PointStrains DamagedPlateModel::evaluate_element(int e, const
   return strains;
 }
 
-void DamagedPlateModel::section_force(DamageField& field, std::size_t slot, const PointStrains& strains,
-                                      const Eigen::VectorXd& u) const {
+void DamagedPlate::section_force(DamageField& field, std::size_t slot, const PointStrains& strains,
+                                 const Eigen::VectorXd& u) const {
   const DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
   const ElementOperators& ops = operators_of(e);
@@ -352,8 +350,8 @@ void DamagedPlateModel::section_force(DamageField& field, std::size_t slot, cons
 }
 
 template <class Sections>
-void DamagedPlateModel::assemble_force(const Eigen::VectorXd& u, DamageField& field, Eigen::VectorXd& f,
-                                       const Sections& sections) const {
+void DamagedPlate::assemble_force(const Eigen::VectorXd& u, DamageField& field, Eigen::VectorXd& f,
+                                  const Sections& sections) const {
   elastic_force(u, f, field);
   const std::size_t n = field.active_.size();
   field.element_forces_.resize(n);
@@ -372,22 +370,21 @@ void DamagedPlateModel::assemble_force(const Eigen::VectorXd& u, DamageField& fi
       scatter_add(f, model_.element_equations(field.active_[slot].element), field.element_forces_[slot]);
 }
 
-Eigen::VectorXd DamagedPlateModel::internal_force(const Eigen::VectorXd& u, double dt,
-                                                  DamageField& field) const {
+Eigen::VectorXd DamagedPlate::internal_force(const Eigen::VectorXd& u, double dt, DamageField& field) const {
   Eigen::VectorXd f(u.size());
   internal_force_into(u, dt, field, f);
   return f;
 }
 
-void DamagedPlateModel::internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field,
-                                            Eigen::VectorXd& f) const {
+void DamagedPlate::internal_force_into(const Eigen::VectorXd& u, double dt, DamageField& field,
+                                       Eigen::VectorXd& f) const {
   assemble_force(u, field, f, [&](std::size_t slot, std::vector<double>& group_bound) {
     return evaluate_element(field.active_[slot].element, u, dt, field, group_bound);
   });
 }
 
-DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& field, std::size_t slot,
-                                                                   const Eigen::VectorXd& u) const {
+DamagedPlate::PointStrains DamagedPlate::frozen_sections(DamageField& field, std::size_t slot,
+                                                         const Eigen::VectorXd& u) const {
   DamageField::ActiveElement& a = field.active_[slot];
   const int e = a.element;
   const LayeredSection& section = layered_section(e);
@@ -409,14 +406,14 @@ DamagedPlateModel::PointStrains DamagedPlateModel::frozen_sections(DamageField& 
   return strains;
 }
 
-Eigen::VectorXd DamagedPlateModel::frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const {
+Eigen::VectorXd DamagedPlate::frozen_internal_force(const Eigen::VectorXd& u, DamageField& field) const {
   Eigen::VectorXd f(u.size());
   frozen_internal_force_into(u, field, f);
   return f;
 }
 
-void DamagedPlateModel::frozen_internal_force_into(const Eigen::VectorXd& u, DamageField& field,
-                                                   Eigen::VectorXd& f) const {
+void DamagedPlate::frozen_internal_force_into(const Eigen::VectorXd& u, DamageField& field,
+                                              Eigen::VectorXd& f) const {
   assemble_force(u, field, f, [&](std::size_t slot, std::vector<double>& /*group_bound*/) {
     return frozen_sections(field, slot, u);
   });
@@ -424,21 +421,20 @@ void DamagedPlateModel::frozen_internal_force_into(const Eigen::VectorXd& u, Dam
     field.modes_changed_ = std::exchange(a.modes_changed, false) || field.modes_changed_;
 }
 
-SparseMatrix DamagedPlateModel::secant_stiffness(const DamageField& field) const {
+SparseMatrix DamagedPlate::secant_stiffness(const DamageField& field) const {
   SparseMatrix K = K0_;
   add_section_differences(K, field, nullptr);
   return K;
 }
 
-void DamagedPlateModel::elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
-                                      DamageField& field) const {
+void DamagedPlate::elastic_force(const Eigen::VectorXd& u, Eigen::VectorXd& f, DamageField& field) const {
   if (von_karman_)
     von_karman_->internal_force(u, f, field.elastic_forces_);
   else
     parallel_rows_product(K0_by_rows_, u, f);
 }
 
-SparseMatrix DamagedPlateModel::iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const {
+SparseMatrix DamagedPlate::iteration_matrix(const Eigen::VectorXd& u, const DamageField& field) const {
   if (!von_karman_) return secant_stiffness(field);
   SparseMatrix K = von_karman_->tangent_stiffness(u);
   if (K.nonZeros() != K0_.nonZeros())
@@ -447,8 +443,8 @@ SparseMatrix DamagedPlateModel::iteration_matrix(const Eigen::VectorXd& u, const
   return K;
 }
 
-void DamagedPlateModel::add_section_differences(SparseMatrix& K, const DamageField& field,
-                                                const Eigen::VectorXd* u) const {
+void DamagedPlate::add_section_differences(SparseMatrix& K, const DamageField& field,
+                                           const Eigen::VectorXd* u) const {
   double* values = K.valuePtr();
   for (const DamageField::ActiveElement& a : field.active_) {
     if (!a.has_sections) continue;
@@ -481,7 +477,7 @@ void DamagedPlateModel::add_section_differences(SparseMatrix& K, const DamageFie
   }
 }
 
-double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
+double DamagedPlate::element_bound(int e, const Eigen::VectorXd& u) const {
   const LayeredSection& section = layered_section(e);
   const ElementOperators& ops = operators_of(e);
   const ElementVector ue = model_.element_dofs(u, e);
@@ -491,7 +487,7 @@ double DamagedPlateModel::element_bound(int e, const Eigen::VectorXd& u) const {
   return bound;
 }
 
-void DamagedPlateModel::activate(int e, DamageField& field) const {
+void DamagedPlate::activate(int e, DamageField& field) const {
   DamageField::ActiveElement a;
   a.element = e;
   const std::size_t n =
@@ -507,14 +503,14 @@ void DamagedPlateModel::activate(int e, DamageField& field) const {
   field.active_.push_back(std::move(a));
 }
 
-void DamagedPlateModel::inactive_bounds(const Eigen::VectorXd& u, DamageField& field) const {
+void DamagedPlate::inactive_bounds(const Eigen::VectorXd& u, DamageField& field) const {
   for_each_element(model_.mesh().element_count(), [&](int e) {
     if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0)
       field.bound_[static_cast<std::size_t>(e)] = element_bound(e, u);
   });
 }
 
-int DamagedPlateModel::activate_bounded_above(double threshold, DamageField& field) const {
+int DamagedPlate::activate_bounded_above(double threshold, DamageField& field) const {
   int added = 0;
   for (int e = 0; e < model_.mesh().element_count(); ++e) // in element order: the slots' order
     if (field.slot_of_element_[static_cast<std::size_t>(e)] < 0 &&
@@ -525,12 +521,12 @@ int DamagedPlateModel::activate_bounded_above(double threshold, DamageField& fie
   return added;
 }
 
-int DamagedPlateModel::screen(const Eigen::VectorXd& u, DamageField& field) const {
+int DamagedPlate::screen(const Eigen::VectorXd& u, DamageField& field) const {
   inactive_bounds(u, field);
   return activate_bounded_above(settings_.screen_fraction, field);
 }
 
-bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
+bool DamagedPlate::activate_reached(const Eigen::VectorXd& u, DamageField& field) const {
   // One pass over the inactive elements per step: their bounds at the converged u serve commit() too.
   inactive_bounds(u, field);
   const bool reached = activate_bounded_above(1.0, field) > 0;
@@ -538,8 +534,7 @@ bool DamagedPlateModel::activate_reached(const Eigen::VectorXd& u, DamageField& 
   return reached;
 }
 
-void DamagedPlateModel::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int,
-                               DamageField& field) const {
+void DamagedPlate::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int, DamageField& field) const {
   for (const DamageField::ActiveElement& a : field.active_)
     if (!a.evaluated)
       throw std::logic_error("damaged plate: commit of an element whose trial state was not evaluated");

@@ -1,5 +1,5 @@
 #pragma once
-// The plate whose plies crack (issue 18): the MITC9 plate of PlateModel with a damage state per element,
+// The plate whose plies crack (issue 18): the MITC9 plate of DiscretePlate with a damage state per element,
 // 3×3 Gauss point, ply and through-thickness point. OOFEM's picture: the element asks its cross-section
 // for stresses at an integration point (fem/layered_section.hpp); the section asks every ply's law.
 //
@@ -11,7 +11,7 @@
 // membrane terms of the deflection's slopes, e = S_p uₑ + (½ w,x², ½ w,y², w,x w,y, 0, …), the section is
 // the same layered damaging one, and the force of the damaged sections' difference is taken with the
 // strain's derivative E_p = ∂e/∂uₑ: f = f_vK(u) + Σ_p w_p E_pᵀ (C(d) − C0) e_p, where f_vK is the elastic
-// von Kármán plate (NonlinearPlateModel). An undamaged plate is the von Kármán plate bit for bit.
+// von Kármán plate (NonlinearPlate). An undamaged plate is the von Kármán plate bit for bit.
 //
 // The characteristic length of an element's points (crack band) is √(element area) (Abaqus for shells):
 // a band of damaged points one element wide dissipates G per unit crack area.
@@ -20,9 +20,9 @@
 // elements), evaluate the law; the others are the elastic element. Each accepted step screens the
 // inactive elements with a bound of the Hashin indices over each ply group's thickness range
 // (docs/progressive_damage.md); an element found beyond the surface asks for the step to be solved again.
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/layered_section.hpp"
-#include "plyimpact/fem/nonlinear_plate_model.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/nonlinear_plate.hpp"
 #include "plyimpact/laminate/ply_damage.hpp"
 
 #include <Eigen/Core>
@@ -66,23 +66,23 @@ struct ElementPlyDamage {
 class DamageField;
 
 /// The shared, constant part: element operators, laws, undamaged matrices. Built once per case.
-class DamagedPlateModel {
+class DamagedPlate {
 public:
   /// Throws std::invalid_argument when the model is not MITC9, a laminate is not `exact`, or a material
   /// misses a strength or toughness the law needs (the message names them and the deck keys).
-  DamagedPlateModel(const PlateModel& model, ProgressiveDamageSettings settings,
-                    Kinematics kinematics = Kinematics::linear);
-  ~DamagedPlateModel();
-  DamagedPlateModel(const DamagedPlateModel&) = delete;
-  DamagedPlateModel& operator=(const DamagedPlateModel&) = delete;
+  DamagedPlate(const DiscretePlate& model, ProgressiveDamageSettings settings,
+               Kinematics kinematics = Kinematics::linear);
+  ~DamagedPlate();
+  DamagedPlate(const DamagedPlate&) = delete;
+  DamagedPlate& operator=(const DamagedPlate&) = delete;
 
-  [[nodiscard]] const PlateModel& model() const { return model_; }
+  [[nodiscard]] const DiscretePlate& model() const { return model_; }
   [[nodiscard]] const ProgressiveDamageSettings& settings() const { return settings_; }
   [[nodiscard]] Kinematics kinematics() const {
     return von_karman_ ? Kinematics::von_karman : Kinematics::linear;
   }
   [[nodiscard]] int size() const { return model_.size(); }
-  /// The undamaged stiffness K0 over the free DOFs (PlateModel::stiffness()).
+  /// The undamaged stiffness K0 over the free DOFs (DiscretePlate::stiffness()).
   [[nodiscard]] const SparseMatrix& undamaged_stiffness() const { return K0_; }
   /// The characteristic length of element e's points, √(area) [m].
   [[nodiscard]] double characteristic_length(int e) const { return length_[static_cast<std::size_t>(e)]; }
@@ -178,9 +178,9 @@ private:
   /// returns how many.
   int activate_bounded_above(double threshold, DamageField& field) const;
 
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   ProgressiveDamageSettings settings_;
-  std::unique_ptr<NonlinearPlateModel> von_karman_; ///< the elastic von Kármán plate; null: linear
+  std::unique_ptr<NonlinearPlate> von_karman_; ///< the elastic von Kármán plate; null: linear
   SparseMatrix K0_;
   /// K0 stored by rows for K0 u: each entry one sequential sum over its row, the bits of the column-wise
   /// product without its scatter
@@ -259,7 +259,7 @@ public:
   [[nodiscard]] const FirstDamageByMode& first_damage_by_mode() const override { return first_by_mode_; }
 
 private:
-  friend class DamagedPlateModel;
+  friend class DamagedPlate;
   struct ActiveElement {
     int element = 0;
     std::vector<PlyDamageState> committed; ///< [point][ply][g]

@@ -1,6 +1,6 @@
 #include "plyimpact/fem/equation_subset.hpp"
 
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +50,7 @@ Eigen::SparseMatrix<double> EquationSubset::restrict(const Eigen::SparseMatrix<d
 namespace {
 
 /// Largest |A(i, j)| with i in-plane (u, v) and j bending (w, θx, θy), relative to max |A|.
-double inplane_coupling(const PlateModel& model, const Eigen::SparseMatrix<double>& A) {
+double inplane_coupling(const DiscretePlate& model, const Eigen::SparseMatrix<double>& A) {
   std::vector<bool> inplane(static_cast<std::size_t>(model.size()));
   for (int n = 0; n < model.mesh().node_count(); ++n)
     for (int d = 0; d < 2; ++d)
@@ -67,7 +67,8 @@ double inplane_coupling(const PlateModel& model, const Eigen::SparseMatrix<doubl
 
 } // namespace
 
-EquationSubset bending_equations_if_decoupled(const PlateModel& model, const Eigen::SparseMatrix<double>& K,
+EquationSubset bending_equations_if_decoupled(const DiscretePlate& model,
+                                              const Eigen::SparseMatrix<double>& K,
                                               const Eigen::SparseMatrix<double>& M) {
   const bool decoupled = inplane_coupling(model, K) <= 1e-13 && inplane_coupling(model, M) <= 1e-13;
   if (!decoupled) return EquationSubset(model.size());

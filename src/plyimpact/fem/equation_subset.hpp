@@ -32,13 +32,13 @@ private:
   std::vector<int> new_index_; ///< model equation → subset equation (−1 if left out)
 };
 
-class PlateModel;
+class DiscretePlate;
 
 /// The bending equations (w, θx, θy) of `model` where its in-plane DOFs are exactly decoupled from them in
 /// K and in M (B = 0 and I1 = 0: no coupling entry above 1e-13 of the largest), else all equations. A
 /// transverse load then leaves the in-plane DOFs at zero, and the impact's time loop and its fundamental
 /// period leave them out (about 2/5 of the equations).
-[[nodiscard]] EquationSubset bending_equations_if_decoupled(const PlateModel& model,
+[[nodiscard]] EquationSubset bending_equations_if_decoupled(const DiscretePlate& model,
                                                             const Eigen::SparseMatrix<double>& K,
                                                             const Eigen::SparseMatrix<double>& M);
 

@@ -6,11 +6,11 @@
 
 namespace plyimpact {
 
-Eigen::VectorXd point_load(const PlateModel& model, double x, double y, double force) {
+Eigen::VectorXd point_load(const DiscretePlate& model, double x, double y, double force) {
   return force * model.sampler(x, y).as_vector(model.size());
 }
 
-Eigen::VectorXd pressure_load(const PlateModel& model, double q) {
+Eigen::VectorXd pressure_load(const DiscretePlate& model, double q) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
   for (int e = 0; e < model.mesh().element_count(); ++e)
     scatter_add(f, model.element_equations(e),
@@ -34,7 +34,7 @@ bool axis_aligned_rectangle(const ElementCoordinates& xy) {
 
 } // namespace
 
-Eigen::VectorXd patch_load(const PlateModel& model, const PatchLoad& patch) {
+Eigen::VectorXd patch_load(const DiscretePlate& model, const PatchLoad& patch) {
   const double q = patch.force / (patch.dx * patch.dy);
   const BoundingBox& box = model.mesh().bounds();
   const double x0 = std::max(box.x_min, patch.x - patch.dx / 2),
@@ -66,7 +66,7 @@ Eigen::VectorXd patch_load(const PlateModel& model, const PatchLoad& patch) {
   return f;
 }
 
-Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load) {
+Eigen::VectorXd static_load_vector(const DiscretePlate& model, const StaticLoad& load) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
   if (load.pressure != 0.0) f += pressure_load(model, load.pressure);
   if (load.point) f += point_load(model, load.point->x, load.point->y, load.point->force);

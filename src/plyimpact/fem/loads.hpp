@@ -2,7 +2,7 @@
 // Consistent nodal forces of the static loads on the plate (SPEC §8, §10 [load]): a point force, a
 // uniform pressure, and a uniform pressure on a rectangular patch. All act along +z (the impact
 // direction) on the w DOFs.
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 
 #include <optional>
 
@@ -21,12 +21,12 @@ struct StaticLoad {
 };
 
 /// F s with s the shape functions of the element holding (x, y). Throws outside the plate.
-[[nodiscard]] Eigen::VectorXd point_load(const PlateModel& model, double x, double y, double force);
-[[nodiscard]] Eigen::VectorXd pressure_load(const PlateModel& model, double q);
+[[nodiscard]] Eigen::VectorXd point_load(const DiscretePlate& model, double x, double y, double force);
+[[nodiscard]] Eigen::VectorXd pressure_load(const DiscretePlate& model, double q);
 /// Uniform pressure force/(dx dy) over the rectangle centred at (x, y), clipped to the plate; the
 /// elements it covers must be axis-aligned rectangles (std::invalid_argument otherwise).
-[[nodiscard]] Eigen::VectorXd patch_load(const PlateModel& model, const PatchLoad& patch);
+[[nodiscard]] Eigen::VectorXd patch_load(const DiscretePlate& model, const PatchLoad& patch);
 /// The sum of the loads of `load`.
-[[nodiscard]] Eigen::VectorXd static_load_vector(const PlateModel& model, const StaticLoad& load);
+[[nodiscard]] Eigen::VectorXd static_load_vector(const DiscretePlate& model, const StaticLoad& load);
 
 } // namespace plyimpact

@@ -1,7 +1,7 @@
 // The plate models behind the one interface the integrators drive (mechanical_model.hpp).
 #include "plyimpact/fem/mechanical_model.hpp"
 
-#include "plyimpact/fem/nonlinear_plate_model.hpp"
+#include "plyimpact/fem/nonlinear_plate.hpp"
 
 #include <stdexcept>
 #include <utility>
@@ -49,16 +49,16 @@ private:
   double stored_ = 0.0;
 };
 
-class ElasticPlate final : public MechanicalModel {
+class ElasticPlateModel final : public MechanicalModel {
 public:
-  explicit ElasticPlate(const PlateModel& plate) : plate_(plate), equations_(plate.size()) {
+  explicit ElasticPlateModel(const DiscretePlate& plate) : plate_(plate), equations_(plate.size()) {
     const SparseMatrix K = plate.stiffness(), M = plate.mass();
     equations_ = bending_equations_if_decoupled(plate, K, M);
     K_ = equations_.restrict(K);
     M_ = equations_.restrict(M);
   }
   [[nodiscard]] int size() const override { return equations_.size(); }
-  [[nodiscard]] const PlateModel& contact_plate() const override { return plate_; }
+  [[nodiscard]] const DiscretePlate& contact_plate() const override { return plate_; }
   [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
   [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
@@ -74,7 +74,7 @@ public:
   }
 
 private:
-  const PlateModel& plate_;
+  const DiscretePlate& plate_;
   EquationSubset equations_;
   SparseMatrix K_, M_;
 };
@@ -83,7 +83,7 @@ private:
 
 class VonKarmanState final : public ModelState {
 public:
-  explicit VonKarmanState(const NonlinearPlateModel& plate) : plate_(plate), work_(plate.size()) {}
+  explicit VonKarmanState(const NonlinearPlate& plate) : plate_(plate), work_(plate.size()) {}
   void internal_force(const Eigen::VectorXd& u, double /*dt*/, Eigen::VectorXd& f) override {
     plate_.internal_force(u, f, element_forces_);
   }
@@ -94,17 +94,17 @@ public:
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override { return work_.work(); }
 
 private:
-  const NonlinearPlateModel& plate_;
+  const NonlinearPlate& plate_;
   WorkOfInternalForces work_;
-  std::vector<ElementVector> element_forces_; ///< the element loop's places (NonlinearPlateModel)
+  std::vector<ElementVector> element_forces_; ///< the element loop's places (NonlinearPlate)
 };
 
-class VonKarmanPlate final : public MechanicalModel {
+class VonKarmanPlateModel final : public MechanicalModel {
 public:
-  VonKarmanPlate(const PlateModel& plate, StrainMeasure measure)
+  VonKarmanPlateModel(const DiscretePlate& plate, StrainMeasure measure)
       : nonlinear_(plate, measure), equations_(plate.size()), K_(plate.stiffness()), M_(plate.mass()) {}
   [[nodiscard]] int size() const override { return equations_.size(); }
-  [[nodiscard]] const PlateModel& contact_plate() const override { return nonlinear_.linear(); }
+  [[nodiscard]] const DiscretePlate& contact_plate() const override { return nonlinear_.linear(); }
   [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
@@ -114,7 +114,7 @@ public:
   }
 
 private:
-  NonlinearPlateModel nonlinear_;
+  NonlinearPlate nonlinear_;
   EquationSubset equations_;
   SparseMatrix K_, M_;
 };
@@ -123,7 +123,7 @@ private:
 
 class DamagingState final : public ModelState {
 public:
-  explicit DamagingState(const DamagedPlateModel& plate)
+  explicit DamagingState(const DamagedPlate& plate)
       : plate_(plate), field_(plate.virgin_field()), work_(plate.size()) {}
   void set_law_trials(LawTrials trials) override { held_ = trials != LawTrials::advance; }
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override {
@@ -169,7 +169,7 @@ private:
     if (plate_.kinematics() != Kinematics::linear) work_.add(u, f);
   }
 
-  const DamagedPlateModel& plate_;
+  const DamagedPlate& plate_;
   DamageField field_;
   WorkOfInternalForces work_;
   Eigen::VectorXd law_force_; ///< with held laws: the force of the law at the commit
@@ -177,12 +177,13 @@ private:
   bool held_ = false;         ///< the trials hold the committed damage (LawTrials)
 };
 
-class DamagingPlate final : public MechanicalModel {
+class DamagingPlateModel final : public MechanicalModel {
 public:
-  DamagingPlate(const PlateModel& plate, const ProgressiveDamageSettings& settings, Kinematics kinematics)
+  DamagingPlateModel(const DiscretePlate& plate, const ProgressiveDamageSettings& settings,
+                     Kinematics kinematics)
       : damaged_(plate, settings, kinematics), equations_(plate.size()), M_(plate.mass()) {}
   [[nodiscard]] int size() const override { return equations_.size(); }
-  [[nodiscard]] const PlateModel& contact_plate() const override { return damaged_.model(); }
+  [[nodiscard]] const DiscretePlate& contact_plate() const override { return damaged_.model(); }
   [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
@@ -198,25 +199,25 @@ public:
   }
 
 private:
-  DamagedPlateModel damaged_;
+  DamagedPlate damaged_;
   EquationSubset equations_;
   SparseMatrix M_;
 };
 
 } // namespace
 
-std::unique_ptr<MechanicalModel> elastic_plate_model(const PlateModel& plate) {
-  return std::make_unique<ElasticPlate>(plate);
+std::unique_ptr<MechanicalModel> elastic_plate_model(const DiscretePlate& plate) {
+  return std::make_unique<ElasticPlateModel>(plate);
 }
 
-std::unique_ptr<MechanicalModel> von_karman_plate_model(const PlateModel& plate, StrainMeasure measure) {
-  return std::make_unique<VonKarmanPlate>(plate, measure);
+std::unique_ptr<MechanicalModel> von_karman_plate_model(const DiscretePlate& plate, StrainMeasure measure) {
+  return std::make_unique<VonKarmanPlateModel>(plate, measure);
 }
 
-std::unique_ptr<MechanicalModel> damaging_plate_model(const PlateModel& plate,
+std::unique_ptr<MechanicalModel> damaging_plate_model(const DiscretePlate& plate,
                                                       const ProgressiveDamageSettings& settings,
                                                       Kinematics kinematics) {
-  return std::make_unique<DamagingPlate>(plate, settings, kinematics);
+  return std::make_unique<DamagingPlateModel>(plate, settings, kinematics);
 }
 
 } // namespace plyimpact

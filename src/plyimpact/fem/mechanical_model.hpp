@@ -12,12 +12,12 @@
 //                     commit, the stored and dissipated energies, and the results observers look at
 //                     (the plies' damage), asked for by type.
 //
-// Behind it: the elastic plate (f_int = K u), the von Kármán plate (NonlinearPlateModel) and the plate
-// whose plies crack (DamagedPlateModel with its DamageField).
+// Behind it: the elastic plate (f_int = K u), the von Kármán plate (NonlinearPlate) and the plate
+// whose plies crack (DamagedPlate with its DamageField).
 #include "plyimpact/fem/damaged_plate.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/stacked_plate.hpp"
 
 #include <memory>
@@ -162,7 +162,7 @@ public:
   [[nodiscard]] virtual int size() const = 0;
   /// The plate the impactor touches, whose mesh and numbering the contact samples (the top sub-laminate
   /// of a stack).
-  [[nodiscard]] virtual const PlateModel& contact_plate() const = 0;
+  [[nodiscard]] virtual const DiscretePlate& contact_plate() const = 0;
   /// The equations of contact_plate() that the integrator moves, the leading block of its size()
   /// (the in-plane DOFs are left out where they are exactly decoupled from bending).
   [[nodiscard]] virtual const EquationSubset& contact_equations() const = 0;
@@ -194,17 +194,17 @@ public:
 
 /// The linear elastic plate: f_int = K u, over its bending equations when the in-plane DOFs are exactly
 /// decoupled (bending_equations_if_decoupled), else over all.
-[[nodiscard]] std::unique_ptr<MechanicalModel> elastic_plate_model(const PlateModel& plate);
-/// The geometrically non-linear plate of SPEC §8 (NonlinearPlateModel), over all equations. Its stored
+[[nodiscard]] std::unique_ptr<MechanicalModel> elastic_plate_model(const DiscretePlate& plate);
+/// The geometrically non-linear plate of SPEC §8 (NonlinearPlate), over all equations. Its stored
 /// energy is the work of the internal forces, ∫ f_intᵀ du, trapezoidal from commit to commit.
-[[nodiscard]] std::unique_ptr<MechanicalModel> von_karman_plate_model(const PlateModel& plate,
+[[nodiscard]] std::unique_ptr<MechanicalModel> von_karman_plate_model(const DiscretePlate& plate,
                                                                       StrainMeasure measure);
-/// The plate whose plies crack (DamagedPlateModel, docs/progressive_damage.md), over all equations, with
+/// The plate whose plies crack (DamagedPlate, docs/progressive_damage.md), over all equations, with
 /// `kinematics` (linear, or von Kármán: a composition). Trials that advance the law evaluate it at u and
 /// admit u once no element the screen had left out has reached a Hashin surface there; held trials keep
 /// the committed damage, and the commit evaluates the law once, at u.
 [[nodiscard]] std::unique_ptr<MechanicalModel>
-damaging_plate_model(const PlateModel& plate, const ProgressiveDamageSettings& settings,
+damaging_plate_model(const DiscretePlate& plate, const ProgressiveDamageSettings& settings,
                      Kinematics kinematics = Kinematics::linear);
 
 } // namespace plyimpact

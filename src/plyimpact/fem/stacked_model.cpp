@@ -27,7 +27,7 @@
 // sections' secant difference, and the laws move once per step, at the commit.
 //
 // With large deflections (nonlinear = true) each sub-laminate is a von Kármán plate on its own mid-plane
-// (NonlinearPlateModel; with ply damage DamagedPlateModel with Kinematics::von_karman): K_plates u becomes
+// (NonlinearPlate; with ply damage DamagedPlate with Kinematics::von_karman): K_plates u becomes
 // Σ_k f_k(u_k), the iteration matrix gains each sub-laminate's K_T(u_k) − K_k, and the plates' stored
 // energy is the work of their internal forces, trapezoidal from commit to commit. Tied faces move as one
 // laminate's: with u_k = u₀ − z_k w' the membrane strain u_k' + ½ w'² − (z − z_k) w'' of sub-laminate k is
@@ -37,7 +37,7 @@
 
 #include "plyimpact/fem/element_loop.hpp"
 
-#include "plyimpact/fem/nonlinear_plate_model.hpp"
+#include "plyimpact/fem/nonlinear_plate.hpp"
 #include "plyimpact/fem/stacked_damage.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -53,7 +53,7 @@ namespace plyimpact {
 
 namespace {
 
-const Laminate& single_laminate(const PlateModel& model) {
+const Laminate& single_laminate(const DiscretePlate& model) {
   if (!model.single_section())
     throw std::invalid_argument("delamination: the stacked plate needs one laminate over the whole plate; "
                                 "[[regions]] with other laminates are not available with [delamination] "
@@ -86,8 +86,8 @@ std::optional<std::string> strength_ratio_warning(const CohesiveParameters& c) {
 }
 
 /// The model equation of each equation of the stack's top sub-laminate (−1: none).
-std::vector<int> top_equations_in_model(const PlateModel& model, const StackedPlateModel& stack) {
-  const PlateModel& top = stack.sublaminate(0);
+std::vector<int> top_equations_in_model(const DiscretePlate& model, const StackedPlate& stack) {
+  const DiscretePlate& top = stack.sublaminate(0);
   std::vector<int> of_top(static_cast<std::size_t>(top.size()), -1);
   for (int n = 0; n < model.mesh().node_count(); ++n)
     for (int dof = 0; dof < 5; ++dof)
@@ -98,7 +98,7 @@ std::vector<int> top_equations_in_model(const PlateModel& model, const StackedPl
 
 } // namespace
 
-StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettings& settings) {
+StackedPlate impact_stack(const DiscretePlate& model, const DelaminationSettings& settings) {
   const int bottom = static_cast<int>(settings.stack.cuts.size());
   return {model.mesh(), single_laminate(model), settings.stack,
           Discretization{model.mass_kind(), model.formulation()}, [&](int k) {
@@ -106,7 +106,7 @@ StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettin
           }};
 }
 
-StackedImpactPlate::StackedImpactPlate(const PlateModel& model, const DelaminationSettings& settings)
+StackedImpactPlate::StackedImpactPlate(const DiscretePlate& model, const DelaminationSettings& settings)
     : model_(model), settings_(settings), stack_(impact_stack(model, settings)),
       top_equations_(stack_.sublaminate(0).size()), M_(stack_.mass()),
       model_of_top_(top_equations_in_model(model, stack_)) {}
@@ -158,7 +158,7 @@ void InterfaceStates::accept() {
 }
 
 void InterfaceStates::areas(DelaminationAreas& out) const {
-  const StackedPlateModel& stack = plate_.stack_;
+  const StackedPlate& stack = plate_.stack_;
   const std::vector<std::vector<CohesiveState>>& states = committed_.interfaces;
   out.dissipated = dissipated_;
   out.delaminated_area.clear(); // keeps its capacity: no allocation after the first step
@@ -177,7 +177,7 @@ void InterfaceStates::areas(DelaminationAreas& out) const {
 }
 
 DelaminationResult InterfaceStates::result() const {
-  const StackedPlateModel& stack = plate_.stack_;
+  const StackedPlate& stack = plate_.stack_;
   DelaminationResult r;
   DelaminationAreas areas;
   this->areas(areas);
@@ -216,12 +216,12 @@ DelaminationResult InterfaceStates::result() const {
 namespace {
 
 /// K_plates + the interfaces' penalty: the stack's tangent with every interface point intact.
-SparseMatrix elastic_stiffness(const StackedPlateModel& stack) {
+SparseMatrix elastic_stiffness(const StackedPlate& stack) {
   return stack.evaluate(Eigen::VectorXd::Zero(stack.size()), stack.virgin_state()).tangent;
 }
 
 /// Sub-laminate k's first ply in the laminate's numbering.
-std::vector<int> first_plies(const StackedPlateModel& stack) {
+std::vector<int> first_plies(const StackedPlate& stack) {
   std::vector<int> first;
   int ply = 0;
   for (int k = 0; k < stack.sublaminate_count(); ++k) {
@@ -231,12 +231,12 @@ std::vector<int> first_plies(const StackedPlateModel& stack) {
   return first;
 }
 
-class StackedModel;
+class StackedPlateModel;
 
 /// One run's state: the interfaces' committed states, and with ply damage each sub-laminate's field.
 class StackedState final : public ModelState {
 public:
-  explicit StackedState(const StackedModel& model);
+  explicit StackedState(const StackedPlateModel& model);
   void set_law_trials(LawTrials trials) override { trials_ = trials; }
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override;
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override;
@@ -318,7 +318,7 @@ private:
   /// the sub-laminates of a stack with ply damage or large deflections change everywhere.
   [[nodiscard]] bool updates_factor() const;
 
-  const StackedModel& m_;
+  const StackedPlateModel& m_;
   InterfaceStates interfaces_;
   Eigen::VectorXd Ku_; ///< K_plates u (with ply damage or large deflections: Σ_k f_k) of the last trial
   double plate_energy_ = 0.0;       ///< ½ uᵀ K_plates u of the committed state (linear kinematics)
@@ -345,21 +345,21 @@ private:
   Eigen::Index update_rank_ = 0, pending_rank_ = 0;
 };
 
-class StackedModel final : public MechanicalModel {
+class StackedPlateModel final : public MechanicalModel {
 public:
-  StackedModel(const PlateModel& model, const DelaminationSettings& settings,
-               const std::optional<ProgressiveDamageSettings>& ply_damage,
-               std::optional<StrainMeasure> large_deflection)
+  StackedPlateModel(const DiscretePlate& model, const DelaminationSettings& settings,
+                    const std::optional<ProgressiveDamageSettings>& ply_damage,
+                    std::optional<StrainMeasure> large_deflection)
       : plate_(model, settings), initial_(elastic_stiffness(plate_.stack_)),
         interfaces_(SparseMatrix(initial_ - plate_.stack_.plate_stiffness()).pruned()),
         K_plates_by_rows_(plate_.stack_.plate_stiffness()), large_deflection_(large_deflection) {
     const Kinematics kinematics = large_deflection ? Kinematics::von_karman : Kinematics::linear;
     for (int k = 0; k < plate_.stack_.sublaminate_count(); ++k) {
-      const PlateModel& part = plate_.stack_.sublaminate(k);
+      const DiscretePlate& part = plate_.stack_.sublaminate(k);
       if (ply_damage)
-        damaged_.push_back(std::make_unique<DamagedPlateModel>(part, *ply_damage, kinematics));
+        damaged_.push_back(std::make_unique<DamagedPlate>(part, *ply_damage, kinematics));
       else if (large_deflection)
-        von_karman_.push_back(std::make_unique<NonlinearPlateModel>(part, *large_deflection));
+        von_karman_.push_back(std::make_unique<NonlinearPlate>(part, *large_deflection));
     }
   }
 
@@ -367,11 +367,11 @@ public:
   [[nodiscard]] bool large_deflection() const { return large_deflection_.has_value(); }
 
   [[nodiscard]] int size() const override { return plate_.stack_.size(); }
-  [[nodiscard]] const PlateModel& contact_plate() const override { return plate_.stack_.sublaminate(0); }
+  [[nodiscard]] const DiscretePlate& contact_plate() const override { return plate_.stack_.sublaminate(0); }
   [[nodiscard]] const EquationSubset& contact_equations() const override { return plate_.top_equations_; }
   /// Sub-laminate k holds the stacked equations offset(k) … offset(k + 1) − 1, in its own numbering.
   [[nodiscard]] EquationPlace place_of(int i) const override {
-    const StackedPlateModel& stack = plate_.stack_;
+    const StackedPlate& stack = plate_.stack_;
     int k = stack.sublaminate_count() - 1;
     while (k > 0 && i < stack.offset(k))
       --k;
@@ -379,7 +379,7 @@ public:
     return {k, node, dof};
   }
   [[nodiscard]] std::vector<EquationPlace> places() const override {
-    const StackedPlateModel& stack = plate_.stack_;
+    const StackedPlate& stack = plate_.stack_;
     std::vector<EquationPlace> out;
     out.reserve(static_cast<std::size_t>(size()));
     for (int k = 0; k < stack.sublaminate_count(); ++k)
@@ -422,15 +422,15 @@ public:
   Eigen::SparseMatrix<double, Eigen::RowMajor> K_plates_by_rows_;
   std::optional<StrainMeasure> large_deflection_;
   /// With ply damage: sub-laminate k as a damaged plate (empty without)
-  std::vector<std::unique_ptr<DamagedPlateModel>> damaged_;
+  std::vector<std::unique_ptr<DamagedPlate>> damaged_;
   /// Without ply damage but with large deflections: sub-laminate k as a von Kármán plate (empty without)
-  std::vector<std::unique_ptr<NonlinearPlateModel>> von_karman_;
+  std::vector<std::unique_ptr<NonlinearPlate>> von_karman_;
 };
 
-StackedState::StackedState(const StackedModel& model)
+StackedState::StackedState(const StackedPlateModel& model)
     : m_(model), interfaces_(model.plate_), Ku_(Eigen::VectorXd::Zero(model.size())),
       plate_work_(model.large_deflection() ? model.size() : 0) {
-  const StackedPlateModel& stack = m_.plate_.stack_;
+  const StackedPlate& stack = m_.plate_.stack_;
   for (const auto& part : m_.von_karman_) {
     u_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
     f_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
@@ -438,7 +438,7 @@ StackedState::StackedState(const StackedModel& model)
   }
   if (m_.damaged_.empty()) return;
   for (int k = 0; k < stack.sublaminate_count(); ++k) {
-    const DamagedPlateModel& part = *m_.damaged_[static_cast<std::size_t>(k)];
+    const DamagedPlate& part = *m_.damaged_[static_cast<std::size_t>(k)];
     fields_.push_back(part.virgin_field());
     u_parts_.emplace_back(Eigen::VectorXd::Zero(part.size()));
     f_parts_.emplace_back(Eigen::VectorXd::Zero(part.size()));
@@ -491,7 +491,7 @@ bool StackedState::admit(const Eigen::VectorXd& u) {
   if (!plies_advanced()) return true;
   bool joined = false;
   for (std::size_t k = 0; k < fields_.size(); ++k) {
-    const DamagedPlateModel& part = *m_.damaged_[k];
+    const DamagedPlate& part = *m_.damaged_[k];
     u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
     joined = part.activate_reached(u_parts_[k], fields_[k]) || joined; // every sub-laminate's elements
   }
@@ -531,7 +531,7 @@ SparseMatrix StackedState::iteration_matrix(const Eigen::VectorXd& u) const {
 }
 
 SparseMatrix StackedState::sublaminate_corrections(const Eigen::VectorXd& u) const {
-  const StackedPlateModel& stack = m_.plate_.stack_;
+  const StackedPlate& stack = m_.plate_.stack_;
   std::vector<Eigen::Triplet<double>> entries;
   const auto add_block = [&](int k, const SparseMatrix& dK) {
     const Eigen::Index first = stack.offset(k);
@@ -542,13 +542,13 @@ SparseMatrix StackedState::sublaminate_corrections(const Eigen::VectorXd& u) con
                                it.value());
   };
   for (std::size_t k = 0; k < fields_.size(); ++k) {
-    const DamagedPlateModel& part = *m_.damaged_[k];
+    const DamagedPlate& part = *m_.damaged_[k];
     const Eigen::Index first = stack.offset(static_cast<int>(k));
     add_block(static_cast<int>(k),
               part.iteration_matrix(u.segment(first, part.size()), fields_[k]) - part.undamaged_stiffness());
   }
   for (std::size_t k = 0; k < m_.von_karman_.size(); ++k) { // K_T(u_k) − K_k
-    const NonlinearPlateModel& part = *m_.von_karman_[k];
+    const NonlinearPlate& part = *m_.von_karman_[k];
     const Eigen::Index first = stack.offset(static_cast<int>(k));
     add_block(static_cast<int>(k),
               part.tangent_stiffness(u.segment(first, part.size())) - part.linear().stiffness());
@@ -569,7 +569,7 @@ void StackedState::matrix_factorized(const Eigen::VectorXd& u) {
   for (DamageField& field : fields_)
     field.mark_factorized();
   if (!updates_factor()) return;
-  const StackedPlateModel& stack = m_.plate_.stack_;
+  const StackedPlate& stack = m_.plate_.stack_;
   factored_tangents_.resize(static_cast<std::size_t>(stack.interface_count()));
   for (int i = 0; i < stack.interface_count(); ++i)
     stack.interface(i).point_tangents(u, interfaces_.committed().interfaces[static_cast<std::size_t>(i)],
@@ -585,7 +585,7 @@ void StackedState::matrix_factorized(const Eigen::VectorXd& u) {
 std::optional<LowRankChange> StackedState::matrix_change(const Eigen::VectorXd& u) {
   constexpr Eigen::Index max_update_rank = 1000, max_total_update_rank = 20000;
   if (!updates_factor() || factored_tangents_.empty()) return std::nullopt;
-  const StackedPlateModel& stack = m_.plate_.stack_;
+  const StackedPlate& stack = m_.plate_.stack_;
   pending_.clear();
   std::vector<Eigen::Triplet<double>> up, down; // the columns of C₊ and C₋
   std::vector<std::pair<int, double>> rows[3];
@@ -639,7 +639,7 @@ void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/
   if (held() && !fields_.empty()) {
     // The plies' laws once, at u_{n+1} (elements that reached a surface there join first).
     for (std::size_t k = 0; k < fields_.size(); ++k) {
-      const DamagedPlateModel& part = *m_.damaged_[k];
+      const DamagedPlate& part = *m_.damaged_[k];
       u_parts_[k] = u.segment(m_.plate_.stack_.offset(static_cast<int>(k)), part.size());
       (void)part.activate_reached(u_parts_[k], fields_[k]);
     }
@@ -667,10 +667,10 @@ double StackedState::stored_energy(const Eigen::VectorXd& u) const {
 } // namespace
 
 std::unique_ptr<MechanicalModel>
-stacked_plate_model(const PlateModel& model, const DelaminationSettings& settings,
+stacked_plate_model(const DiscretePlate& model, const DelaminationSettings& settings,
                     const std::optional<ProgressiveDamageSettings>& ply_damage,
                     std::optional<StrainMeasure> large_deflection) {
-  return std::make_unique<StackedModel>(model, settings, ply_damage, large_deflection);
+  return std::make_unique<StackedPlateModel>(model, settings, ply_damage, large_deflection);
 }
 
 SofteningMode fastest_softening(const Laminate& laminate, const StackSettings& stack) {

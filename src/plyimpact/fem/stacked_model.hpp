@@ -44,14 +44,14 @@ struct ProcessZone {
 /// The laminate of `model` (one laminate, no regions) cut as `settings` says, with the supports of
 /// `model` on the sub-laminates that `settings` names. Throws std::invalid_argument for a plate with
 /// regions of other laminates.
-[[nodiscard]] StackedPlateModel impact_stack(const PlateModel& model, const DelaminationSettings& settings);
+[[nodiscard]] StackedPlate impact_stack(const DiscretePlate& model, const DelaminationSettings& settings);
 
 /// The stacked plate of an impact case, as its policies and its explicit model share it: the stack cut
 /// from the case's plate, its mass, its warnings and process zone, and the top sub-laminate's place in
 /// the case's numbering.
 class StackedImpactPlate {
 public:
-  StackedImpactPlate(const PlateModel& model, const DelaminationSettings& settings);
+  StackedImpactPlate(const DiscretePlate& model, const DelaminationSettings& settings);
 
   /// A cohesive zone spanning fewer than three interface points, and strengths whose ratio does not keep
   /// the mixed-mode toughness.
@@ -64,9 +64,9 @@ public:
   /// The top sub-laminate's displacements (stack numbering) in the case model's numbering.
   void top_to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
 
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   DelaminationSettings settings_;
-  StackedPlateModel stack_;
+  StackedPlate stack_;
   EquationSubset top_equations_;  ///< every equation of the top sub-laminate
   SparseMatrix M_;                ///< the stack's mass, assembled once
   std::vector<int> model_of_top_; ///< model equation of each top sub-laminate equation (−1: none)
@@ -111,7 +111,7 @@ struct SofteningMode {
 /// sub-laminate's plies crack too; with `large_deflection` each sub-laminate is a geometrically non-linear
 /// plate with that strain measure (von Kármán's where the plies crack).
 [[nodiscard]] std::unique_ptr<MechanicalModel>
-stacked_plate_model(const PlateModel& model, const DelaminationSettings& settings,
+stacked_plate_model(const DiscretePlate& model, const DelaminationSettings& settings,
                     const std::optional<ProgressiveDamageSettings>& ply_damage,
                     std::optional<StrainMeasure> large_deflection = std::nullopt);
 

@@ -95,15 +95,15 @@ double turon_shear_strength(double normal_strength, double G_Ic, double G_IIc) {
   return normal_strength * std::sqrt(G_IIc / G_Ic);
 }
 
-StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
-                                     Discretization discretization,
-                                     const std::function<BoundaryConditions(int sublaminate)>& bc_of)
+StackedPlate::StackedPlate(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
+                           Discretization discretization,
+                           const std::function<BoundaryConditions(int sublaminate)>& bc_of)
     : seed_radius_(stack.seed_radius), seed_centre_(stack.seed_x, stack.seed_y) {
   const std::vector<Laminate> parts = split_laminate(laminate, stack.cuts, stack.shear_correction);
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const int kk = static_cast<int>(k);
     plates_.push_back(
-        std::make_unique<PlateModel>(mesh, PlateSections{{parts[k]}, {}}, discretization, bc_of(kk)));
+        std::make_unique<DiscretePlate>(mesh, PlateSections{{parts[k]}, {}}, discretization, bc_of(kk)));
     offset_.push_back(size_);
     size_ += plates_.back()->size();
   }
@@ -111,11 +111,10 @@ StackedPlateModel::StackedPlateModel(const Mesh& mesh, const Laminate& laminate,
   for (std::size_t i = 0; i + 1 < plates_.size(); ++i)
     interfaces_.push_back(std::make_unique<CohesiveInterface>(
         *plates_[i], *plates_[i + 1], offset_[i], offset_[i + 1], law, stack.rule, stack.loading_band));
-  K_plates_ = block_diagonal([](const PlateModel& plate) { return plate.stiffness(); });
+  K_plates_ = block_diagonal([](const DiscretePlate& plate) { return plate.stiffness(); });
 }
 
-SparseMatrix
-StackedPlateModel::block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const {
+SparseMatrix StackedPlate::block_diagonal(const std::function<SparseMatrix(const DiscretePlate&)>& of) const {
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     const SparseMatrix A = of(*plates_[k]);
@@ -129,18 +128,18 @@ StackedPlateModel::block_diagonal(const std::function<SparseMatrix(const PlateMo
   return out;
 }
 
-SparseMatrix StackedPlateModel::mass() const {
-  return block_diagonal([](const PlateModel& plate) { return plate.mass(); });
+SparseMatrix StackedPlate::mass() const {
+  return block_diagonal([](const DiscretePlate& plate) { return plate.mass(); });
 }
 
-StackedPlateState StackedPlateModel::virgin_state() const {
+StackedPlateState StackedPlate::virgin_state() const {
   StackedPlateState state;
   for (const auto& i : interfaces_)
     state.interfaces.emplace_back(static_cast<std::size_t>(i->point_count()));
   return state;
 }
 
-StackedPlateState StackedPlateModel::initial_state() const {
+StackedPlateState StackedPlate::initial_state() const {
   StackedPlateState state = virgin_state();
   if (seed_radius_ <= 0.0) return state;
   for (int i = 0; i < interface_count(); ++i)
@@ -148,18 +147,17 @@ StackedPlateState StackedPlateModel::initial_state() const {
   return state;
 }
 
-void StackedPlateModel::crack(StackedPlateState& state, int i,
-                              const std::function<bool(const Eigen::Vector2d&)>& cracked) const {
+void StackedPlate::crack(StackedPlateState& state, int i,
+                         const std::function<bool(const Eigen::Vector2d&)>& cracked) const {
   const CohesiveInterface& face = interface(i);
   auto& points = state.interfaces[static_cast<std::size_t>(i)];
   for (int p = 0; p < face.point_count(); ++p)
     if (cracked(face.point_position(p))) points[static_cast<std::size_t>(p)].damage = 1.0;
 }
 
-StackedPlateEvaluation StackedPlateModel::assemble(const Eigen::VectorXd& u,
-                                                   const StackedPlateState& committed,
-                                                   std::vector<Eigen::Triplet<double>>* tangent,
-                                                   CohesiveDamage damage) const {
+StackedPlateEvaluation StackedPlate::assemble(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                              std::vector<Eigen::Triplet<double>>* tangent,
+                                              CohesiveDamage damage) const {
   StackedPlateEvaluation out;
   out.force = K_plates_ * u;
   CohesiveWorkspace work;
@@ -167,10 +165,10 @@ StackedPlateEvaluation StackedPlateModel::assemble(const Eigen::VectorXd& u,
   return out;
 }
 
-double StackedPlateModel::add_interfaces(const Eigen::VectorXd& u, const StackedPlateState& committed,
-                                         Eigen::VectorXd& force, StackedPlateState& trial,
-                                         std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
-                                         CohesiveWorkspace& work) const {
+double StackedPlate::add_interfaces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                    Eigen::VectorXd& force, StackedPlateState& trial,
+                                    std::vector<Eigen::Triplet<double>>* tangent, CohesiveDamage damage,
+                                    CohesiveWorkspace& work) const {
   trial.interfaces.resize(interfaces_.size());
   double dissipated = 0.0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
@@ -180,9 +178,8 @@ double StackedPlateModel::add_interfaces(const Eigen::VectorXd& u, const Stacked
   return dissipated;
 }
 
-StackedPlateEvaluation StackedPlateModel::evaluate(const Eigen::VectorXd& u,
-                                                   const StackedPlateState& committed,
-                                                   CohesiveDamage damage) const {
+StackedPlateEvaluation StackedPlate::evaluate(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                              CohesiveDamage damage) const {
   std::vector<Eigen::Triplet<double>> triplets;
   StackedPlateEvaluation out = assemble(u, committed, &triplets, damage);
   SparseMatrix K_coh(size_, size_);
@@ -191,43 +188,43 @@ StackedPlateEvaluation StackedPlateModel::evaluate(const Eigen::VectorXd& u,
   return out;
 }
 
-StackedPlateEvaluation StackedPlateModel::internal_force(const Eigen::VectorXd& u,
-                                                         const StackedPlateState& committed,
-                                                         CohesiveDamage damage) const {
+StackedPlateEvaluation StackedPlate::internal_force(const Eigen::VectorXd& u,
+                                                    const StackedPlateState& committed,
+                                                    CohesiveDamage damage) const {
   return assemble(u, committed, nullptr, damage);
 }
 
-double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
+double StackedPlate::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
   Eigen::VectorXd scratch;
   return stored_energy(u, state, scratch);
 }
 
-double StackedPlateModel::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
-                                        Eigen::VectorXd& scratch) const {
+double StackedPlate::stored_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
+                                   Eigen::VectorXd& scratch) const {
   scratch.noalias() = K_plates_ * u;
   return 0.5 * u.dot(scratch) + interface_energy(u, state);
 }
 
-double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
+double StackedPlate::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state) const {
   CohesiveWorkspace work;
   return interface_energy(u, state, work);
 }
 
-double StackedPlateModel::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
-                                           CohesiveWorkspace& work) const {
+double StackedPlate::interface_energy(const Eigen::VectorXd& u, const StackedPlateState& state,
+                                      CohesiveWorkspace& work) const {
   double energy = 0.0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
     energy += interfaces_[i]->stored_energy(u, state.interfaces[i], work);
   return energy;
 }
 
-double StackedPlateModel::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
-                                               Eigen::VectorXd& force, StackedPlateState& trial,
-                                               CohesiveDamage damage, CohesiveWorkspace& work) const {
+double StackedPlate::add_interface_forces(const Eigen::VectorXd& u, const StackedPlateState& committed,
+                                          Eigen::VectorXd& force, StackedPlateState& trial,
+                                          CohesiveDamage damage, CohesiveWorkspace& work) const {
   return add_interfaces(u, committed, force, trial, nullptr, damage, work);
 }
 
-int StackedPlateModel::equation(int k, int node, int dof) const {
+int StackedPlate::equation(int k, int node, int dof) const {
   const int eq = sublaminate(k).dofs().equation(node, dof);
   return eq < 0 ? -1 : offset(k) + eq;
 }

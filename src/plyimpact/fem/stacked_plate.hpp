@@ -1,6 +1,6 @@
 #pragma once
 // The stacked plate (issue 19, docs/delamination.md "The stacked plate"): the laminate cut at the
-// interfaces that may delaminate into sub-laminates, each a Mindlin plate (PlateModel) on the same mesh
+// interfaces that may delaminate into sub-laminates, each a Mindlin plate (DiscretePlate) on the same mesh
 // and on its own mid-plane, neighbours tied by cohesive interfaces (cohesive_interface.hpp). The
 // unknowns are the sub-laminates' free DOFs one after the other (sub-laminate 0, the impacted one,
 // first). The internal force is
@@ -11,7 +11,7 @@
 // transverse shear of its own plies) and f_coh the interface tractions (DL2), whose damage d is the
 // only history of the model.
 #include "plyimpact/fem/cohesive_interface.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/laminate/cohesive_law.hpp"
 #include "plyimpact/laminate/laminate.hpp"
 
@@ -107,18 +107,20 @@ struct StackSettings {
   friend bool operator==(const StackSettings&, const StackSettings&) = default;
 };
 
-class StackedPlateModel {
+class StackedPlate {
 public:
   /// The sub-laminates of `laminate` cut at `stack.cuts`, on `mesh`, each with the boundary conditions
   /// `bc_of(k)` of sub-laminate k (0 the impacted one).
-  StackedPlateModel(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
-                    Discretization discretization,
-                    const std::function<BoundaryConditions(int sublaminate)>& bc_of);
+  StackedPlate(const Mesh& mesh, const Laminate& laminate, const StackSettings& stack,
+               Discretization discretization,
+               const std::function<BoundaryConditions(int sublaminate)>& bc_of);
 
   [[nodiscard]] int size() const { return size_; }
   [[nodiscard]] int sublaminate_count() const { return static_cast<int>(plates_.size()); }
   [[nodiscard]] int interface_count() const { return static_cast<int>(interfaces_.size()); }
-  [[nodiscard]] const PlateModel& sublaminate(int k) const { return *plates_[static_cast<std::size_t>(k)]; }
+  [[nodiscard]] const DiscretePlate& sublaminate(int k) const {
+    return *plates_[static_cast<std::size_t>(k)];
+  }
   /// First stacked equation of sub-laminate k.
   [[nodiscard]] int offset(int k) const { return offset_[static_cast<std::size_t>(k)]; }
   [[nodiscard]] const CohesiveInterface& interface(int i) const {
@@ -179,9 +181,10 @@ private:
                         StackedPlateState& trial, std::vector<Eigen::Triplet<double>>* tangent,
                         CohesiveDamage damage, CohesiveWorkspace& work) const;
   /// The matrices `of` the sub-laminates placed on the diagonal of the stacked numbering.
-  [[nodiscard]] SparseMatrix block_diagonal(const std::function<SparseMatrix(const PlateModel&)>& of) const;
+  [[nodiscard]] SparseMatrix
+  block_diagonal(const std::function<SparseMatrix(const DiscretePlate&)>& of) const;
 
-  std::vector<std::unique_ptr<PlateModel>> plates_;
+  std::vector<std::unique_ptr<DiscretePlate>> plates_;
   std::vector<int> offset_;
   int size_ = 0;
   std::vector<std::unique_ptr<CohesiveInterface>> interfaces_;

@@ -19,12 +19,12 @@ namespace {
 // Isotropic strip, ν = 0 so that it bends as a beam; a/h = 100, so shear adds (h/a)² ~ 1e-4.
 constexpr double E = 70e9, a = 0.2, b = 0.02, h = 0.002, q = 1.0e3;
 
-PlateModel strip(std::string_view prop) {
+DiscretePlate strip(std::string_view prop) {
   BoundaryConditions bc = BoundaryConditions::on_edges("clamped", prop, "free", "free");
   return {test::laminate_of(test::isotropic(E, 0.0, 2700.0), "[0]", h), {a, b}, {40, 2}, std::move(bc)};
 }
 
-StaticResult pressed(const PlateModel& model, double pressure) {
+StaticResult pressed(const DiscretePlate& model, double pressure) {
   StaticLoad load;
   load.pressure = pressure;
   return solve_static(model, load);
@@ -60,7 +60,7 @@ TEST(UnilateralSupport, PulledOffThePropItLetsGoAndTheStripIsACantilever) {
 }
 
 TEST(UnilateralSupport, TheOtherAnalysesRefuseItAndSayWhatToGiveInstead) {
-  const PlateModel model = strip("unilateral");
+  const DiscretePlate model = strip("unilateral");
   try {
     (void)solve_modal(model, 3);
     FAIL() << "a modal analysis with a support that may lift off must be refused";

@@ -196,7 +196,7 @@ TEST(Damage, ACriterionWithoutAGaugeEvaluatesEveryPoint) {
   EXPECT_EQ(tracker.evaluated_points(), tracker.observed_points());
 }
 /// Random bending fields (w, θx, θy on the free DOFs, in-plane DOFs zero), seeded.
-Eigen::VectorXd random_bending_field(const PlateModel& model, std::mt19937& rng) {
+Eigen::VectorXd random_bending_field(const DiscretePlate& model, std::mt19937& rng) {
   std::normal_distribution<double> n01;
   Eigen::VectorXd u = Eigen::VectorXd::Zero(model.dofs().free_count());
   for (int n = 0; n < model.mesh().node_count(); ++n)
@@ -216,7 +216,7 @@ TEST_P(SkippingOnRandomStates, NeverHidesAFailureOrAPeak) {
   // own bound must keep points evaluated (with Da ≥ 1 it never binds).
   const ImpactCase impact(impact_case_description(
       table42_deck(20.0, R"("choi-chang-matrix", "choi-chang-delamination")", 80e-6, GetParam())));
-  const PlateModel& model = impact.model();
+  const DiscretePlate& model = impact.model();
   std::mt19937 rng(20261126);
   const Eigen::VectorXd shape1 = random_bending_field(model, rng), shape2 = random_bending_field(model, rng);
   const auto peak_of = [&](const Eigen::VectorXd& u) {

@@ -81,8 +81,8 @@ TEST(StressRecovery, CentrePlyStressesConvergeToTheNavierSeries) {
       nv::static_field(nv::plate_from_plies(c.a, c.b, plies), nv::uniform_load(c.q), c.a / 2, c.b / 2);
   const Laminate lam = test::laminate_of(c.m, c.layup, c.t);
   for (const int n : {4, 8, 16}) {
-    const PlateModel model(lam, {c.a, c.b}, {n, n, MassMatrix::consistent, ElementFormulation::q9},
-                           test::all_edges("ss"));
+    const DiscretePlate model(lam, {c.a, c.b}, {n, n, MassMatrix::consistent, ElementFormulation::q9},
+                              test::all_edges("ss"));
     StaticLoad load;
     load.pressure = c.q;
     const StaticResult r = solve_static(model, load);
@@ -121,8 +121,8 @@ TEST(StressRecovery, EquilibriumShearIsTractionFreeCarriesQAndMatchesTheSeries) 
   const nv::StaticField exact =
       nv::static_field(nv::plate_from_plies(c.a, c.b, plies), nv::uniform_load(c.q), x, y, opt);
   const Laminate lam = test::laminate_of(c.m, c.layup, c.t);
-  const PlateModel model(lam, {c.a, c.b}, {16, 16, MassMatrix::consistent, ElementFormulation::q9},
-                         test::all_edges("ss"));
+  const DiscretePlate model(lam, {c.a, c.b}, {16, 16, MassMatrix::consistent, ElementFormulation::q9},
+                            test::all_edges("ss"));
   StaticLoad load;
   load.pressure = c.q;
   const StaticResult r = solve_static(model, load);

@@ -119,7 +119,7 @@ TEST(Capabilities, ThePlateStepsWithOneIntegrator) {
   EXPECT_EQ(deck.time.laws, Integrator::central_difference);
   // The same conflict built in code (Python, sweeps) is refused by the facade.
   ImpactCaseDescription d = impact_case_description(parse_deck(damage, "d.toml"));
-  d.time.integration = TimeIntegration::central_difference;
+  d.time.integration = TimeScheme::central_difference;
   EXPECT_NE(refusal_of([&] { const ImpactCase c(d); }).find("differ"), std::string::npos);
 }
 

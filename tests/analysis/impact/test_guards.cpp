@@ -24,7 +24,7 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 /// The thesis §3.6 plate (Table 3.1), 127 x 76.2 mm, simply supported, on an nx x ny mesh.
-PlateModel thesis_plate(int nx, int ny, const BoundaryConditions& bc = test::all_edges("ss")) {
+DiscretePlate thesis_plate(int nx, int ny, const BoundaryConditions& bc = test::all_edges("ss")) {
   return {test::laminate_of(test::thesis_3_6(), "[45/90/-45/0]3s", 0.19375e-3), PlateGeometry{0.127, 0.0762},
           MeshSpec{nx, ny}, bc};
 }
@@ -81,7 +81,7 @@ const std::vector<GuardCase>& guard_cases() {
       {"insufficient restraint: free plate in a static solve",
        [] {
          BoundaryConditions free;
-         const PlateModel m = thesis_plate(3, 3, free);
+         const DiscretePlate m = thesis_plate(3, 3, free);
          StaticLoad load;
          load.pressure = 1e3;
          return thrown_by([&] { (void)solve_static(m, load); });
@@ -302,7 +302,7 @@ TEST(Guards, HertzContactTimeMatchesTheRigidTargetIntegration) {
 
 TEST(Guards, FactorMemoryEstimateLiesBetweenTheMatrixAndTheDenseTriangle) {
   // L has at least the pattern of A's strict lower triangle and at most n(n-1)/2 entries.
-  const PlateModel m = thesis_plate(8, 6);
+  const DiscretePlate m = thesis_plate(8, 6);
   const SparseMatrix K = m.stiffness();
   const FactorMemoryEstimate e = estimate_factor_memory(K);
   const long n = K.rows();

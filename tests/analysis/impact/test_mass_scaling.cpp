@@ -45,7 +45,7 @@ TEST(MassScaling, GershgorinBoundsTheHighestFrequencyOfThePlateFromAbove) {
   // MS1 on the §3.6 plate's explicit model (elastic here, lumped mass): max_i g_i ≥ ω_max², the rotations'
   // and the translations' own rows each below the whole.
   const ImpactCaseDescription d = impact_case_description(parse_deck(thesis_3_6_explicit(""), "ms.toml"));
-  const PlateModel plate = impact_plate_model(d);
+  const DiscretePlate plate = impact_plate_model(d);
   PlatePhysics physics;
   physics.integrator = Integrator::central_difference;
   const std::unique_ptr<MechanicalModel> model = mechanical_model(plate, physics);
@@ -162,7 +162,7 @@ struct SelectiveStack {
 SelectiveStack selective_stack() {
   const ImpactCaseDescription d =
       impact_case_description(parse_deck(stacked_explicit("", false), "selective.toml"));
-  static const PlateModel plate = impact_plate_model(d);
+  static const DiscretePlate plate = impact_plate_model(d);
   PlatePhysics physics;
   physics.interfaces = d.delamination;
   physics.integrator = Integrator::central_difference;
@@ -303,7 +303,7 @@ TEST(MassScaling, SelectiveScalingOfAPlateWithoutInterfacesIsRefused) {
 
 TEST(MassScaling, ImplicitStepsRefuseIt) {
   ImpactCaseDescription d = impact_case_description(parse_deck(thesis_3_6_explicit(""), "ms.toml"));
-  d.time.integration = TimeIntegration::newmark;
+  d.time.integration = TimeScheme::newmark;
   d.time.mass_scaling.kind = MassScalingKind::rotary;
   EXPECT_THROW({ const ImpactCase c(d); }, std::invalid_argument);
 }

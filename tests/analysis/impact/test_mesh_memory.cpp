@@ -33,7 +33,7 @@ TEST(MemoryEstimate, ExceedsTheSymbolicAnalysisOfStructuredMeshes) {
     Deck deck = parse_deck(text, "deck.toml");
     deck.mesh->nx = nx;
     deck.mesh->ny = ny;
-    const PlateModel model = plate_model(deck);
+    const DiscretePlate model = plate_model(deck);
     const SparseMatrix Kbar = model.stiffness() + 1e6 * model.mass();
     const FactorMemoryEstimate exact = estimate_factor_memory(Kbar);
     const MeshMemoryEstimate e = estimate_mesh_memory(nx, ny);

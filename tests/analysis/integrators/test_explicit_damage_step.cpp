@@ -158,7 +158,7 @@ TEST(ExplicitDamageStep, AutomaticStepIsTheStableStep) {
   const ImpactCase impact(
       impact_case_description(parse_deck(hard_impact("explicit", "\"auto\""), "auto.toml")));
   std::printf("[ measured ] automatic explicit step %.6g s\n", impact.settings().dt);
-  const PlateModel& plate = impact.model(); // the undamaged plate's K and lumped M
+  const DiscretePlate& plate = impact.model(); // the undamaged plate's K and lumped M
   EXPECT_DOUBLE_EQ(impact.settings().dt,
                    stable_time_step(highest_angular_frequency(plate.stiffness(),
                                                               MassOperator(plate.mass(), 1e-14).diagonal())));

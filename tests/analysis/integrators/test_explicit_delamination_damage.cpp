@@ -152,7 +152,7 @@ TEST(DelaminationWithPlyDamage, EachModeFirstAppearsWhereAndWhenItStartsToDissip
 
 TEST(DelaminationWithPlyDamage, TheAutomaticStepIsHalfTheStacksStableStep) {
   const ImpactCaseDescription d = impact_case_description(parse_deck(example_to_100us(), "both.toml"));
-  const PlateModel model = impact_plate_model(d);
+  const DiscretePlate model = impact_plate_model(d);
   EXPECT_DOUBLE_EQ(resolved_settings(d, model).dt,
                    plies_with_interfaces_step_fraction *
                        stable_time_step(*explicit_highest_frequency(d, model)));

@@ -38,7 +38,7 @@ ImpactCaseDescription description(const std::string& text) {
 // weights): ω_max is at least that, and the plates' own stiffness adds to it.
 TEST(ExplicitDelamination, TheStepIsBelowTheShearPenaltysStableStepAndAutoTakesIt) {
   const ImpactCaseDescription d = description(example_5x5("explicit", "0.3e-3"));
-  const PlateModel model = impact_plate_model(d);
+  const DiscretePlate model = impact_plate_model(d);
   const double dt = stable_time_step(*explicit_highest_frequency(d, model));
   const double K = d.delamination->stack.interface.penalty_stiffness;
   const double m_outer = 1590.0 * 2 * 0.13e-3, m_middle = 1590.0 * 4 * 0.13e-3; // [0_2], [90_4]

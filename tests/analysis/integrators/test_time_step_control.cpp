@@ -216,7 +216,7 @@ TEST(AdaptiveImpact, EachLevelsFactorCountsAgainstTheMemoryLimit) {
   const Deck deck =
       parse_deck(plate_deck("dt = 50e-6\nadaptive = true\nlevels = 12\ntolerance = 1e-4\n"), "t.toml");
   ImpactCaseDescription d = impact_case_description(deck);
-  const PlateModel model = impact_plate_model(d);
+  const DiscretePlate model = impact_plate_model(d);
   const SparseMatrix K = model.stiffness(), M = model.mass();
   const EquationSubset equations = bending_equations_if_decoupled(model, K, M);
   const NewmarkCoefficients largest(50e-6, 0.25, 0.5);

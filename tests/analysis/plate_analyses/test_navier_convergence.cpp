@@ -29,13 +29,13 @@ struct CrossPlyCase {
   double t = 0.465e-3, a = 0.127, b = 0.0762;
   [[nodiscard]] Laminate laminate() const { return test::laminate_of(material, layup, t); }
   [[nodiscard]] nv::Plate navier() const { return navier_plate(material, parse_layup(layup), t, a, b); }
-  [[nodiscard]] PlateModel model(int n, ElementFormulation f,
-                                 MassMatrix mass = MassMatrix::consistent) const {
+  [[nodiscard]] DiscretePlate model(int n, ElementFormulation f,
+                                    MassMatrix mass = MassMatrix::consistent) const {
     return {laminate(), {a, b}, {n, n, mass, f}, test::all_edges("ss")};
   }
 };
 
-double centre_deflection(const PlateModel& model, double q) {
+double centre_deflection(const DiscretePlate& model, double q) {
   StaticLoad load;
   load.pressure = q;
   return solve_static(model, load).center_deflection;
@@ -94,7 +94,7 @@ TEST_P(NavierConvergence, NoShearLockingFromThickToVeryThin) {
     const nv::Plate plate = nv::isotropic_plate(a, a, h, E, nu, 2700.0);
     const double exact = nv::static_field(plate, nv::uniform_load(q), a / 2, a / 2).w;
     const Laminate lam = test::laminate_of(test::isotropic(E, nu, 2700.0), "[0]", h);
-    const PlateModel model(lam, {a, a}, {8, 8, MassMatrix::consistent, GetParam()}, test::all_edges("ss"));
+    const DiscretePlate model(lam, {a, a}, {8, 8, MassMatrix::consistent, GetParam()}, test::all_edges("ss"));
     const double w = centre_deflection(model, q);
     const double D = E * h * h * h / (12 * (1 - nu * nu));
     std::printf("  [%s] a/h = %6.0f: w/w_FSDT - 1 = %+.2e, w/w_Kirchhoff = %.5f\n",
@@ -110,7 +110,7 @@ TEST_P(NavierConvergence, NoShearLockingFromThickToVeryThin) {
 TEST_P(NavierConvergence, ThinIsotropicFundamentalFrequencyIsTheKirchhoffValue) {
   const double E = 70e9, nu = 0.3, a = 1.0, h = 0.001, rho = 2700.0;
   const Laminate lam = test::laminate_of(test::isotropic(E, nu, rho), "[0]", h);
-  const PlateModel model(lam, {a, a}, {16, 16, MassMatrix::consistent, GetParam()}, test::all_edges("ss"));
+  const DiscretePlate model(lam, {a, a}, {16, 16, MassMatrix::consistent, GetParam()}, test::all_edges("ss"));
   const double D = E * h * h * h / (12 * (1 - nu * nu));
   const double omega1 = 2 * std::numbers::pi * std::numbers::pi / (a * a) * std::sqrt(D / (rho * h));
   EXPECT_NEAR(solve_modal(model, 1).frequencies_hz[0] * 2 * std::numbers::pi / omega1, 1.0, 0.005);
@@ -120,7 +120,7 @@ TEST_P(NavierConvergence, UniaxialBucklingOfAnIsotropicSquarePlate) {
   // N_cr = 4π² D / b² (Timoshenko & Gere), square simply supported plate, a/h = 100.
   const double E = 70e9, nu = 0.3, a = 0.5, h = 0.005;
   const Laminate lam = test::laminate_of(test::isotropic(E, nu, 2700.0), "[0]", h);
-  const PlateModel model(lam, {a, a}, {12, 12, MassMatrix::consistent, GetParam()}, test::all_edges("ss"));
+  const DiscretePlate model(lam, {a, a}, {12, 12, MassMatrix::consistent, GetParam()}, test::all_edges("ss"));
   BucklingSettings s;
   s.Nx = -1.0;
   s.count = 3;
@@ -147,13 +147,13 @@ TEST_P(NavierConvergence, FundamentalPeriodIsTheLowestElasticModeWithOrWithoutRi
   // definite) computes one mode, a free one seven, skipping its rigid-body modes: both must give the
   // lowest elastic frequency of the full modal analysis and, supported, of the Navier series.
   const CrossPlyCase c;
-  const PlateModel supported = c.model(16, GetParam());
+  const DiscretePlate supported = c.model(16, GetParam());
   const double f_navier = nv::lowest_frequencies(c.navier(), 1)[0].omega / (2 * std::numbers::pi);
   const double f_modal = solve_modal(supported, 5).frequencies_hz[0];
   EXPECT_NEAR(1.0 / fundamental_period(supported) / f_modal, 1.0, 1e-10);
   EXPECT_NEAR(1.0 / fundamental_period(supported) / f_navier, 1.0, 0.005);
 
-  const PlateModel free{
+  const DiscretePlate free{
       c.laminate(), {c.a, c.b}, {8, 6, MassMatrix::lumped, GetParam()}, test::all_edges("free")};
   const ModalResult all = solve_modal(free, 10);
   ASSERT_GE(all.zero_energy_modes, 3); // w, θx, θy rigid motions at least (in-plane ones too)

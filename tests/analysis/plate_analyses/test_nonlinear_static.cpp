@@ -30,15 +30,15 @@ void expect_on_levy_curve(double P, double lambda_P, double w_over_h, double lev
 }
 
 /// Thin clamped square plate, 0.1 m, 1 mm, E = 70 GPa, ν = 0.3, n × n q9 elements.
-PlateModel thin_clamped_plate(int n) {
+DiscretePlate thin_clamped_plate(int n) {
   const Laminate lam = laminate_of(isotropic(70e9, 0.3, 2700.0), "[0]", 1e-3);
   return {lam, {0.1, 0.1}, {n, n, MassMatrix::lumped, ElementFormulation::q9}, test::all_edges("clamped")};
 }
 
 TEST(NonlinearStatic, SmallLoadsReproduceTheLinearSolution) {
   const Laminate lam = laminate_of(test::thesis_3_6(), "[45/90/-45/0]s", 0.5e-3);
-  const PlateModel model(lam, {0.127, 0.0762}, {8, 6, MassMatrix::lumped, ElementFormulation::q9},
-                         test::all_edges("ss"));
+  const DiscretePlate model(lam, {0.127, 0.0762}, {8, 6, MassMatrix::lumped, ElementFormulation::q9},
+                            test::all_edges("ss"));
   StaticLoad load;
   load.point = PointLoad{0.05, 0.03, 0.01}; // w ≈ 1e-5 h: the membrane terms are ~1e-10 of bending
   load.pressure = 1.0;
@@ -75,8 +75,8 @@ TEST(NonlinearStatic, LevySimplySupportedSquarePlateLargeDeflectionCurve) {
   // Levy's edges: w = 0, normal displacement 0, tangential displacement free (no edge shear), the
   // tangential rotation fixed (hard support): uvwθxθy = 10101 on x = 0, a and 01110 on y = 0, b.
   // Mesh 12×12 q9 (25×25 nodes): w0/h agrees with a 16×16 mesh to 4 digits.
-  const PlateModel model(lam, {a, a}, {12, 12, MassMatrix::lumped, ElementFormulation::q9},
-                         edges("10101", "01110"));
+  const DiscretePlate model(lam, {a, a}, {12, 12, MassMatrix::lumped, ElementFormulation::q9},
+                            edges("10101", "01110"));
   const double P_max = 250.0;
   StaticLoad load;
   load.pressure = P_max * E * std::pow(h, 4) / std::pow(a, 4);
@@ -104,8 +104,8 @@ TEST(NonlinearStatic, LevyClampedSquarePlateLargeDeflectionCurve) {
   const Laminate lam = laminate_of(isotropic(E, 0.316, 2700.0), "[0]", h);
   // Clamped, normal displacement held, tangential displacement free: uvwθxθy = 10111 on x = 0, a and
   // 01111 on y = 0, b.
-  const PlateModel model(lam, {a, a}, {12, 12, MassMatrix::lumped, ElementFormulation::q9},
-                         edges("10111", "01111"));
+  const DiscretePlate model(lam, {a, a}, {12, 12, MassMatrix::lumped, ElementFormulation::q9},
+                            edges("10111", "01111"));
   // One run through Levy's loads: λ_i = P_i / P_max, the curve read at each.
   const double P_max = P[std::size(P) - 1];
   StaticLoad load;
@@ -124,7 +124,7 @@ TEST(NonlinearStatic, LevyClampedSquarePlateLargeDeflectionCurve) {
 
 TEST(NonlinearStatic, LoadFactorsMustIncreaseToOne) {
   // An explicit load path is a list of increasing load factors ending at the full load.
-  const PlateModel model = thin_clamped_plate(2);
+  const DiscretePlate model = thin_clamped_plate(2);
   StaticLoad load;
   load.pressure = 1.0;
   for (const std::vector<double>& bad : {std::vector<double>{0.5, 0.4, 1.0}, {0.5}, {0.0, 1.0}, {0.5, 1.5}}) {
@@ -144,7 +144,7 @@ TEST(NonlinearStatic, LoadFactorsMustIncreaseToOne) {
 TEST(NonlinearStatic, NewtonFailureIsAClearMessageNotANaN) {
   // A clamped plate under a pressure giving w ≈ 20 h in linear theory, in one load step with one
   // Newton iteration allowed: it cannot converge, and two step cuts do not help.
-  const PlateModel model = thin_clamped_plate(4);
+  const DiscretePlate model = thin_clamped_plate(4);
   StaticLoad load;
   load.pressure = 1e7;
   NonlinearSettings s;

@@ -23,10 +23,10 @@ std::vector<double> frequency_ratios(const Laminate& lam, double ply, int count)
   const auto clamped = [](int) {
     return BoundaryConditions::on_edges("clamped", "clamped", "clamped", "clamped");
   };
-  const PlateModel single(mesh, PlateSections{{lam}, {}}, {}, clamped(0));
-  const StackedPlateModel stack(
-      mesh, lam, StackSettings{interfaces_between_orientations(lam), test::as4_peek_interface(ply)}, {},
-      clamped);
+  const DiscretePlate single(mesh, PlateSections{{lam}, {}}, {}, clamped(0));
+  const StackedPlate stack(mesh, lam,
+                           StackSettings{interfaces_between_orientations(lam), test::as4_peek_interface(ply)},
+                           {}, clamped);
   EXPECT_EQ(stack.sublaminate_count(), 3);
 
   const ModalResult one = solve_modal(single, count);

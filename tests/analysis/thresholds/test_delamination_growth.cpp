@@ -55,8 +55,8 @@ struct Growth {
 /// times the seeded plate's Kirchhoff deflection under P_c.
 Growth grow(double h, double G_IIc) {
   const ImpactCaseDescription d = impact_case_description(seeded_plate(h, G_IIc));
-  const PlateModel model = impact_plate_model(d);
-  const StackedPlateModel stack = impact_stack(model, *d.delamination);
+  const DiscretePlate model = impact_plate_model(d);
+  const StackedPlate stack = impact_stack(model, *d.delamination);
   int centre = 0;
   for (int n = 0; n < model.mesh().node_count(); ++n)
     if (model.mesh().node(n).norm() < model.mesh().node(centre).norm()) centre = n;

@@ -62,7 +62,7 @@ struct Specimen {
   double a0;
   Mesh mesh;
   Laminate laminate{{as4_peek()}, {{0.0, h, 0}, {0.0, h, 0}}};
-  StackedPlateModel stack;
+  StackedPlate stack;
 
   Specimen(double length, double crack, Refinement r, const std::function<BoundaryConditions(int)>& bc_of,
            Strengths strengths = {})

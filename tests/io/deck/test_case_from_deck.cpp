@@ -59,8 +59,8 @@ y = [0.0, 0.0762]
 )";
 
 TEST(CaseFromDeck, RegionsGiveEachElementItsLaminate) {
-  const PlateModel one = plate_model(parse_deck(plate_deck, "one.toml"));
-  const PlateModel two = plate_model(parse_deck(plate_deck + same_laminate_right_half, "two.toml"));
+  const DiscretePlate one = plate_model(parse_deck(plate_deck, "one.toml"));
+  const DiscretePlate two = plate_model(parse_deck(plate_deck + same_laminate_right_half, "two.toml"));
   EXPECT_TRUE(one.single_section());
   ASSERT_EQ(two.laminates().size(), 2U);
   int right = 0;

@@ -48,9 +48,9 @@ StaticResult centre_loaded(Mesh mesh, std::string_view window, const std::string
   BoundaryConditions bc;
   bc.set("clamps", "11100");
   bc.set(window_set, window);
-  const PlateModel model(std::move(mesh),
-                         PlateSections{{test::laminate_of(test::t300_976(), "[45/0/-45/90]2s", 0.25e-3)}, {}},
-                         Discretization{}, std::move(bc));
+  const DiscretePlate model(
+      std::move(mesh), PlateSections{{test::laminate_of(test::t300_976(), "[45/0/-45/90]2s", 0.25e-3)}, {}},
+      Discretization{}, std::move(bc));
   StaticLoad load;
   load.point = PointLoad{a / 2, b / 2, P};
   return solve_static(model, load);

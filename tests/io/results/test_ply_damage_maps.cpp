@@ -19,9 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The 200 × 150 mm [0/90]s plate on a 4 × 3 mesh: 50 × 50 mm elements, numbered along x first.
-PlateModel four_by_three(const Laminate& lam) {
-  return PlateModel(lam, {0.2, 0.15}, {4, 3, MassMatrix::lumped, ElementFormulation::q9},
-                    test::all_edges("ss"));
+DiscretePlate four_by_three(const Laminate& lam) {
+  return DiscretePlate(lam, {0.2, 0.15}, {4, 3, MassMatrix::lumped, ElementFormulation::q9},
+                       test::all_edges("ss"));
 }
 
 /// Element 3 (0-based 2) damaged in plies 2 and 4, element 6 (0-based 5) in ply 1.
@@ -31,7 +31,7 @@ std::vector<ElementPlyDamage> three_damaged() {
 
 std::vector<DamageElementRow> written_and_read(const std::string& name) {
   const Laminate lam = test::laminate_of(test::t300_976(), "[0/90]s", 0.25e-3);
-  const PlateModel model = four_by_three(lam);
+  const DiscretePlate model = four_by_three(lam);
   const fs::path dir = fs::temp_directory_path() / ("plyimpact-damage-maps-" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);

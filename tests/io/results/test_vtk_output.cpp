@@ -45,7 +45,7 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& file) {
 struct PressurePlate {
   double a = 0.2, b = 0.15, q = 2.0e4;
   Laminate lam;
-  PlateModel model;
+  DiscretePlate model;
   Eigen::VectorXd u;
   PressurePlate(const Material& m, const std::string& layup, double t)
       : lam(test::laminate_of(m, layup, t)),

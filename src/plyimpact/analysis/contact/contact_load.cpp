@@ -22,7 +22,7 @@ constexpr CircleQuadrature quadrature{16, 8};
 
 } // namespace
 
-ContactLoading::ContactLoading(const PlateModel& model, const EquationSubset& equations,
+ContactLoading::ContactLoading(const DiscretePlate& model, const EquationSubset& equations,
                                const Impactor& impactor, ContactLoad kind, int size)
     : model_(model), equations_(equations), impactor_(impactor), kind_(kind),
       size_(std::max(size, equations.size())),
@@ -173,7 +173,7 @@ double ContactLoading::load_dot(double alpha, const Eigen::VectorXd& u) const {
   return ((1.0 - b.weight) * load_entry(b.j).vector + b.weight * load_entry(b.j + 1).vector).dot(u);
 }
 
-Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a,
+Eigen::VectorXd hertz_pressure_weights(const DiscretePlate& model, double x, double y, double a,
                                        NoseShape nose) {
   const Mesh& mesh = model.mesh();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());

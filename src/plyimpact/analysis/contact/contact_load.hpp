@@ -16,8 +16,8 @@
 // c = swᵀK̄⁻¹ s_load. The contact force and the radius of the step are solved together (no lag).
 #include "plyimpact/analysis/contact/condensed_contact.hpp"
 #include "plyimpact/analysis/impact/parameters.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 
 #include <deque>
 #include <functional>
@@ -34,7 +34,7 @@ public:
   /// Vectors in the numbering of `equations` (a subset of the model's). With `size` larger than the
   /// subset, they are the leading block of vectors of `size` equations, zero beyond: the impacted
   /// sub-laminate of a stacked plate comes first (fem/stacked_plate.hpp).
-  ContactLoading(const PlateModel& model, const EquationSubset& equations, const Impactor& impactor,
+  ContactLoading(const DiscretePlate& model, const EquationSubset& equations, const Impactor& impactor,
                  ContactLoad kind, int size = 0);
 
   [[nodiscard]] const Eigen::VectorXd& sampler() const { return sw_; }
@@ -89,7 +89,7 @@ private:
   /// v (subset numbering) padded with zeros to `size_` equations.
   [[nodiscard]] Eigen::VectorXd padded(Eigen::VectorXd v) const;
 
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   const EquationSubset& equations_;
   Impactor impactor_;
   ContactLoad kind_;
@@ -105,7 +105,7 @@ private:
 /// Unit-force contact pressure over the contact circle of radius a centred at (x, y) — Hertz's for the
 /// hemisphere, the flat punch's or the cone's (fem/circle_load.hpp) —, as consistent nodal forces on w
 /// (model numbering), renormalised to a total of 1 where the circle leaves the plate.
-[[nodiscard]] Eigen::VectorXd hertz_pressure_weights(const PlateModel& model, double x, double y, double a,
+[[nodiscard]] Eigen::VectorXd hertz_pressure_weights(const DiscretePlate& model, double x, double y, double a,
                                                      NoseShape nose = NoseShape::hemisphere);
 
 } // namespace plyimpact

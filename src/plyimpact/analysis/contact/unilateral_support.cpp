@@ -34,7 +34,7 @@ constexpr int max_passes = 100;
 constexpr std::string_view held_set = "unilateral support, in contact";
 
 /// `model` with the nodes `touching` held in w (a node set of their own with code 00100).
-PlateModel holding(const PlateModel& model, const std::vector<int>& touching) {
+DiscretePlate holding(const DiscretePlate& model, const std::vector<int>& touching) {
   Mesh mesh = model.mesh();
   mesh.add_node_set(std::string(held_set), touching);
   std::vector<int> of_element;
@@ -48,7 +48,7 @@ PlateModel holding(const PlateModel& model, const std::vector<int>& touching) {
 }
 
 /// The free-DOF vector of `to` holding the nodal values of `u` (free DOFs of `from`, same mesh).
-Eigen::VectorXd transfer(const PlateModel& from, const Eigen::VectorXd& u, const PlateModel& to) {
+Eigen::VectorXd transfer(const DiscretePlate& from, const Eigen::VectorXd& u, const DiscretePlate& to) {
   const Eigen::VectorXd nodal = from.to_nodal(u);
   Eigen::VectorXd v = Eigen::VectorXd::Zero(to.size());
   for (int n = 0; n < to.mesh().node_count(); ++n)
@@ -57,9 +57,9 @@ Eigen::VectorXd transfer(const PlateModel& from, const Eigen::VectorXd& u, const
   return v;
 }
 
-Eigen::VectorXd solve_holding(const PlateModel& model, const std::vector<int>& touching,
+Eigen::VectorXd solve_holding(const DiscretePlate& model, const std::vector<int>& touching,
                               const StaticLoad& load) {
-  const PlateModel held = holding(model, touching);
+  const DiscretePlate held = holding(model, touching);
   try {
     const SpdSolver solver = factor_stiffness(held, held.stiffness());
     return transfer(held, solver.solve(static_load_vector(held, load)), model);
@@ -73,7 +73,7 @@ Eigen::VectorXd solve_holding(const PlateModel& model, const std::vector<int>& t
 
 } // namespace
 
-UnilateralSolution solve_unilateral_static(const PlateModel& model, const StaticLoad& load) {
+UnilateralSolution solve_unilateral_static(const DiscretePlate& model, const StaticLoad& load) {
   const std::vector<int> nodes = unilateral_nodes(model.mesh(), model.boundary());
   // The model leaves the support's w free: K u − f at those equations is the support's force.
   const SparseMatrix K = model.stiffness();

@@ -9,8 +9,8 @@
 // sink into it (w > 0); repeat until the set stops changing. The problem is a linear complementarity
 // problem with a positive-definite matrix, so the solution is unique; the iteration finds it in a few
 // passes on the plates we meet (a cap stops it otherwise, with a message).
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/loads.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 
 #include <Eigen/Core>
 #include <vector>
@@ -39,6 +39,6 @@ struct UnilateralSolution {
 
 /// The static solution of `model` under `load` with its unilateral sets (BoundaryConditions) in contact
 /// where they push. Throws InsufficientRestraint when the plate lifts off everything that held it.
-[[nodiscard]] UnilateralSolution solve_unilateral_static(const PlateModel& model, const StaticLoad& load);
+[[nodiscard]] UnilateralSolution solve_unilateral_static(const DiscretePlate& model, const StaticLoad& load);
 
 } // namespace plyimpact

@@ -101,7 +101,8 @@ Eigen::Matrix<double, 5, 1> DamageTracker::layer_bound(const SectionOperators& s
   return bound;
 }
 
-DamageTracker::DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options)
+DamageTracker::DamageTracker(const DiscretePlate& model, std::vector<Criterion> criteria,
+                             DamageOptions options)
     : model_(model), criteria_(std::move(criteria)), options_(options) {
   if (options_.every < 1) throw std::invalid_argument("damage: evaluation interval must be at least 1 step");
   track_cracks_for_delamination_ =

@@ -6,7 +6,7 @@
 // face in every region.
 #include "plyimpact/analysis/fields/stress_recovery.hpp"
 #include "plyimpact/analysis/impact/impact_observer.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/laminate/criterion_gauge.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
@@ -46,7 +46,7 @@ struct DamageOptions {
 
 class DamageTracker final : public ImpactObserver {
 public:
-  DamageTracker(const PlateModel& model, std::vector<Criterion> criteria, DamageOptions options = {});
+  DamageTracker(const DiscretePlate& model, std::vector<Criterion> criteria, DamageOptions options = {});
 
   /// Evaluates the criteria for the plate state u (free DOFs) at time t.
   void observe(long step, double t, double force, const Eigen::VectorXd& u);
@@ -115,7 +115,7 @@ private:
   [[nodiscard]] bool proven_again(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
   void refresh_proof(std::size_t g, std::size_t e, const Eigen::Matrix<double, 5, 1>& strains);
 
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   std::vector<Criterion> criteria_;
   DamageOptions options_;
   bool track_cracks_for_delamination_ = false; ///< matrix cracking gates delamination (2.43)

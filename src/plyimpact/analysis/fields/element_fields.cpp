@@ -33,7 +33,7 @@ double interface_index(Criterion c, const PlyStress& upper, const Material& mu, 
 
 } // namespace
 
-ElementCentreFields element_centre_fields(const PlateModel& model, const Eigen::VectorXd& u,
+ElementCentreFields element_centre_fields(const DiscretePlate& model, const Eigen::VectorXd& u,
                                           const std::vector<Criterion>& criteria,
                                           const CriterionOptions& options) {
   const Mesh& mesh = model.mesh();

@@ -8,7 +8,7 @@
 // come from the Gauss-point damage tracker (SPEC §7): the fraction of an element's 9 Gauss points
 // that have failed in a ply (or interface) under any tracked criterion by time t.
 #include "plyimpact/analysis/fields/damage_tracker.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
 #include <Eigen/Core>
@@ -37,7 +37,7 @@ struct ElementCentreFields {
 
 /// Samples every element of `model` for the plate state u (free DOFs). Criteria whose strengths
 /// are missing for a ply give index 0 there.
-[[nodiscard]] ElementCentreFields element_centre_fields(const PlateModel& model, const Eigen::VectorXd& u,
+[[nodiscard]] ElementCentreFields element_centre_fields(const DiscretePlate& model, const Eigen::VectorXd& u,
                                                         const std::vector<Criterion>& criteria,
                                                         const CriterionOptions& options = {});
 

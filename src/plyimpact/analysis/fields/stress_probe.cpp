@@ -4,7 +4,7 @@
 
 namespace plyimpact {
 
-StressProbes::StressProbes(const PlateModel& model, std::vector<StressProbeSpec> specs)
+StressProbes::StressProbes(const DiscretePlate& model, std::vector<StressProbeSpec> specs)
     : model_(model), specs_(std::move(specs)) {
   for (const auto& s : specs_) {
     const auto loc = model.mesh().locate(s.x, s.y);

@@ -4,7 +4,7 @@
 #include "plyimpact/analysis/fields/stress_recovery.hpp"
 #include "plyimpact/analysis/impact/impact_observer.hpp"
 #include "plyimpact/analysis/impact/parameters.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 
 #include <string>
 #include <vector>
@@ -15,7 +15,7 @@ class StressProbes final : public ImpactObserver {
 public:
   /// Throws std::invalid_argument for a probe outside the plate or naming a ply or interface that the
   /// laminate at its point does not have.
-  StressProbes(const PlateModel& model, std::vector<StressProbeSpec> specs);
+  StressProbes(const DiscretePlate& model, std::vector<StressProbeSpec> specs);
   void observe(long step, double t, double force, const Eigen::VectorXd& u);
   void on_step(const StepView& v) override { observe(v.step, v.t, v.force, v.plate_displacement()); }
   /// Column names (unit in each): t_s, then per probe <name>_s11_Pa, ... (interfaces: _upper_/_lower_).
@@ -24,7 +24,7 @@ public:
   [[nodiscard]] bool empty() const { return specs_.empty(); }
 
 private:
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   std::vector<StressProbeSpec> specs_;
   std::vector<PointLocation> where_;
   std::vector<std::vector<double>> rows_;

@@ -76,7 +76,7 @@ std::size_t column(Integrator i) {
   return static_cast<std::size_t>(i);
 }
 
-ElementFormulation resolved(ElementFormulation e) { // fem/plate_model.cpp: automatic is MITC9
+ElementFormulation resolved(ElementFormulation e) { // fem/discrete_plate.cpp: automatic is MITC9
   return e == ElementFormulation::automatic ? ElementFormulation::mitc9 : e;
 }
 
@@ -217,7 +217,7 @@ std::string integrators_that_run(const ModelKind& m) {
   return list.empty() ? "none" : list;
 }
 
-Integrator resolve_integrator(const ModelKind& m, TimeIntegration time, std::optional<Integrator> damage,
+Integrator resolve_integrator(const ModelKind& m, TimeScheme time, std::optional<Integrator> damage,
                               std::optional<Integrator> interfaces) {
   const auto differ = [&](std::string_view first, Integrator a, std::string_view second, Integrator b) {
     return std::invalid_argument(
@@ -228,7 +228,7 @@ Integrator resolve_integrator(const ModelKind& m, TimeIntegration time, std::opt
   if (damage && interfaces && *damage != *interfaces)
     throw differ("[damage] integration", *damage, "[delamination] integration", *interfaces);
   const std::optional<Integrator> laws = damage ? damage : interfaces;
-  if (time == TimeIntegration::central_difference) {
+  if (time == TimeScheme::central_difference) {
     if (laws && *laws != Integrator::central_difference)
       throw differ("[time] integration", Integrator::central_difference,
                    damage ? "[damage] integration" : "[delamination] integration", *laws);
@@ -244,7 +244,7 @@ ModelKind model_kind(const ImpactCaseDescription& d) {
 
 Integrator case_integrator(const ImpactCaseDescription& d) {
   std::optional<Integrator> laws = d.time.laws;
-  if (!laws && d.delamination && d.time.integration != TimeIntegration::central_difference)
+  if (!laws && d.delamination && d.time.integration != TimeScheme::central_difference)
     laws = Integrator::lagged; // the stack's default
   const bool plies = d.progressive_damage.has_value();
   return resolve_integrator(model_kind(d), d.time.integration, plies ? laws : std::nullopt,

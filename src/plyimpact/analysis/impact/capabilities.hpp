@@ -50,7 +50,7 @@ struct Capability {
 /// The one integrator of a plate model `m` from what the deck asks: `time` ([time] integration), the
 /// laws' own choices (`damage`, `interfaces`; empty where the model has no such law). Throws
 /// std::invalid_argument, naming the keys and what runs, where they ask for different integrators.
-[[nodiscard]] Integrator resolve_integrator(const ModelKind& m, TimeIntegration time,
+[[nodiscard]] Integrator resolve_integrator(const ModelKind& m, TimeScheme time,
                                             std::optional<Integrator> damage,
                                             std::optional<Integrator> interfaces);
 

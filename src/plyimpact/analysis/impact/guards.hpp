@@ -7,8 +7,8 @@
 // thicknesses warns, a time.end that comes before the impactor has left the plate leaves it incomplete.
 #include "plyimpact/analysis/contact/contact_rules.hpp"
 #include "plyimpact/analysis/impact/parameters.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/mesh.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 
 #include <Eigen/Core>

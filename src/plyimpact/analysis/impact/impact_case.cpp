@@ -74,7 +74,7 @@ PlatePhysics plate_physics(const ImpactCaseDescription& d) {
 /// The model that central differences move in `d` (the same for ω_max and the policy); null where the
 /// case's steps are implicit.
 std::unique_ptr<const MechanicalModel> explicit_model(const ImpactCaseDescription& d,
-                                                      const PlateModel& model) {
+                                                      const DiscretePlate& model) {
   const PlatePhysics physics = plate_physics(d);
   if (d.plate.rigid || physics.integrator != Integrator::central_difference) return nullptr;
   return mechanical_model(model, physics);
@@ -109,7 +109,7 @@ ImpactCaseDescription supported(ImpactCaseDescription d) {
   return d;
 }
 
-MeshUsed mesh_used(const PlateModel& model, bool graded) {
+MeshUsed mesh_used(const DiscretePlate& model, bool graded) {
   MeshUsed m;
   const Mesh& mesh = model.mesh();
   m.elements = mesh.element_count();
@@ -161,7 +161,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   return s;
 }
 
-std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const PlateModel& model) {
+std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d, const DiscretePlate& model) {
   const std::unique_ptr<const MechanicalModel> plate = explicit_model(d, model);
   const std::shared_ptr<const ScaledMass> mass = explicit_case_mass(d, plate.get());
   const std::optional<StableStepSource> mode = highest_mode(d, plate.get(), mass.get());
@@ -178,7 +178,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d, std::optional<d
   return s;
 }
 
-ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model) {
+ImpactSettings resolved_settings(const ImpactCaseDescription& d, const DiscretePlate& model) {
   return resolved_settings(d, explicit_highest_frequency(d, model));
 }
 
@@ -241,7 +241,7 @@ Mesh impact_mesh(const ImpactCaseDescription& d) {
                               graded_lines(d.plate.b, d.impactor.y, h0, g.growth, g.impact_offset[1], h_max));
 }
 
-PlateModel impact_plate_model(const ImpactCaseDescription& d) {
+DiscretePlate impact_plate_model(const ImpactCaseDescription& d) {
   if (d.laminates.empty()) throw std::invalid_argument("impact: the case has no laminate");
   if (d.plate.rigid) return {d.laminates.front(), d.plate, MeshSpec{1, 1}, d.boundary};
   Mesh mesh = impact_mesh(d);
@@ -252,7 +252,7 @@ PlateModel impact_plate_model(const ImpactCaseDescription& d) {
 
 ImpactCase::ImpactCase(ImpactCaseDescription description)
     : description_(within_memory(supported(std::move(description)))),
-      model_(std::make_unique<PlateModel>(impact_plate_model(description_))) {
+      model_(std::make_unique<DiscretePlate>(impact_plate_model(description_))) {
   std::unique_ptr<const MechanicalModel> explicit_plate = explicit_model(description_, *model_);
   std::shared_ptr<const ScaledMass> explicit_mass = naming_singular_causes(
       description_, [&] { return explicit_case_mass(description_, explicit_plate.get()); });

@@ -4,7 +4,7 @@
 // plain data, builds an ImpactCase and calls run(); none of them owns a time loop, a factorization or
 // the wiring of an observer.
 //
-//   ImpactCaseDescription ──► ImpactCase: mesh → sections → PlateModel → step policy (factorization)
+//   ImpactCaseDescription ──► ImpactCase: mesh → sections → DiscretePlate → step policy (factorization)
 //                                 └─ run(RunRequest: impactor, observers) → ImpactResult
 //
 // The model (linear or geometrically non-linear), the contact law, the contact load and the time step
@@ -17,7 +17,7 @@
 #include "plyimpact/analysis/impact/parameters.hpp"
 #include "plyimpact/analysis/integrators/step_policy.hpp"
 #include "plyimpact/fem/boundary.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/regions.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 
@@ -102,13 +102,13 @@ struct ImpactSettings {
 /// ω_max of what an explicit step policy of `d` moves on `model` ([damage] or [delamination] integration =
 /// "explicit": the undamaged plate, or the elastic stack; step_policy.hpp) [rad/s]; empty otherwise.
 [[nodiscard]] std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d,
-                                                               const PlateModel& model);
+                                                               const DiscretePlate& model);
 /// The same with the rules that need the plate: with an explicit step, dt = "auto" is at most the stable
 /// step 0.9 · 2/ω_max of `explicit_omega_max` (explicit_highest_frequency). What ImpactCase runs with.
 [[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d,
                                                std::optional<double> explicit_omega_max);
 /// resolved_settings with explicit_highest_frequency(d, model).
-[[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d, const PlateModel& model);
+[[nodiscard]] ImpactSettings resolved_settings(const ImpactCaseDescription& d, const DiscretePlate& model);
 /// The largest contact radius expected: the rigid-target Hertz estimate √(R α_m) (contact_rules.hpp) [m].
 [[nodiscard]] double expected_contact_radius(const ImpactCaseDescription& d);
 /// The element size at the impact point of a graded mesh [m] (0 for a uniform one): the deck's
@@ -118,7 +118,7 @@ struct ImpactSettings {
 [[nodiscard]] Mesh impact_mesh(const ImpactCaseDescription& d);
 /// The plate of a case: the mesh with its regions' laminates, or a single element when the target is
 /// rigid (it only carries the impact point).
-[[nodiscard]] PlateModel impact_plate_model(const ImpactCaseDescription& d);
+[[nodiscard]] DiscretePlate impact_plate_model(const ImpactCaseDescription& d);
 
 /// What one run asks for besides the case.
 struct RunRequest {
@@ -159,7 +159,7 @@ public:
   [[nodiscard]] const ImpactSettings& settings() const { return settings_; }
   /// T1 of the plate for the end-of-event rule [s]; 0 where time.end is given or the target is rigid.
   [[nodiscard]] double fundamental_period() const { return fundamental_period_; }
-  [[nodiscard]] const PlateModel& model() const { return *model_; }
+  [[nodiscard]] const DiscretePlate& model() const { return *model_; }
   [[nodiscard]] bool nonlinear() const { return settings_.nonlinear.has_value(); }
   /// explicit_highest_frequency of the case, computed once: its policy and its runs' settings share it.
   [[nodiscard]] std::optional<double> explicit_omega_max() const { return explicit_omega_max_; }
@@ -171,7 +171,7 @@ public:
 private:
   ImpactCaseDescription description_;
   ImpactSettings settings_;
-  std::unique_ptr<PlateModel> model_;
+  std::unique_ptr<DiscretePlate> model_;
   std::optional<double> explicit_omega_max_;
   std::unique_ptr<StepPolicy> policy_;
   double fundamental_period_ = 0.0;

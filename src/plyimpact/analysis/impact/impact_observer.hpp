@@ -48,7 +48,7 @@ public:
 
   const PlateStateAccess* plate = nullptr; ///< null for a rigid target
 
-  /// Plate displacements over the free DOFs of the PlateModel (expanded once per step, on demand).
+  /// Plate displacements over the free DOFs of the DiscretePlate (expanded once per step, on demand).
   [[nodiscard]] const Eigen::VectorXd& plate_displacement() const { return plate->displacement(); }
   /// ½ vᵀMv and the plate's elastic energy [J] (0 for a rigid target).
   [[nodiscard]] double plate_kinetic_energy() const { return plate ? plate->kinetic_energy() : 0.0; }

@@ -57,7 +57,7 @@ struct ContactEpisode {
   double start = 0.0, end = 0.0, peak_force = 0.0;
 };
 
-/// The plate state (free DOFs of the PlateModel) at a requested time.
+/// The plate state (free DOFs of the DiscretePlate) at a requested time.
 struct FieldSnapshot {
   double t = 0.0;
   Eigen::VectorXd u;

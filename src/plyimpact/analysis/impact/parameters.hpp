@@ -77,7 +77,7 @@ struct AdaptiveTimeStep {
 
 /// How the plate moves from step to step (`[time] integration`, docs/deck.md;
 /// analysis/impact/capabilities.hpp).
-enum class TimeIntegration {
+enum class TimeScheme {
   /// Newmark's implicit average acceleration (2.11)–(2.16): one factor of K̄ for the linear plate,
   /// Newton iterations for the others ([damage] and [delamination] choose implicit or lagged).
   newmark,
@@ -129,7 +129,7 @@ struct TimeStepping {
   /// Stop the run where its energy balance error passes this fraction of the impact energy (checked every
   /// energy_check_every steps, impact_loop.hpp); empty: run on and report the error at the end.
   std::optional<double> stop_at_energy_error;
-  TimeIntegration integration = TimeIntegration::newmark;
+  TimeScheme integration = TimeScheme::newmark;
   /// engaged: error-controlled steps (impact_loop.hpp): dt is the largest step, halved where the
   /// estimated local error of the indentation exceeds the tolerance
   std::optional<AdaptiveTimeStep> adaptive;

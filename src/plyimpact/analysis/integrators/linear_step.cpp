@@ -59,7 +59,7 @@ struct TimeStepLevel {
 
 class LinearStepPolicy final : public StepPolicy {
 public:
-  LinearStepPolicy(const PlateModel& model, const StepPolicyOptions& options, const SparseMatrix& K,
+  LinearStepPolicy(const DiscretePlate& model, const StepPolicyOptions& options, const SparseMatrix& K,
                    const SparseMatrix& M)
       : model_(model), options_(options), equations_(bending_equations_if_decoupled(model, K, M)),
         K_(equations_.restrict(K)), M_(equations_.restrict(M), 0.0) {
@@ -98,7 +98,7 @@ public:
 
   static constexpr int max_levels = 24;
 
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   StepPolicyOptions options_;
   EquationSubset equations_;
   SparseMatrix K_;
@@ -264,7 +264,7 @@ std::unique_ptr<PlateStepper> LinearStepPolicy::start_at_contact_point(const Imp
 
 } // namespace
 
-std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model, const StepPolicyOptions& options) {
+std::unique_ptr<StepPolicy> linear_step_policy(const DiscretePlate& model, const StepPolicyOptions& options) {
   return std::make_unique<LinearStepPolicy>(model, options, model.stiffness(), model.mass());
 }
 

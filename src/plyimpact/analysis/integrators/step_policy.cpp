@@ -21,7 +21,7 @@ namespace {
 
 /// The implicit step's Δt against (DL5), for the stacks without ply damage (the stack with cracking plies
 /// takes half its stable step, plies_with_interfaces_step_fraction).
-void check_delamination_time_step(const PlateModel& model, const StepPolicyOptions& options,
+void check_delamination_time_step(const DiscretePlate& model, const StepPolicyOptions& options,
                                   const DelaminationSettings& settings) {
   const double dt = options.newmark.dt;
   const double limit = largest_delamination_time_step(model.laminate(), settings.stack, options.newmark.beta);
@@ -46,7 +46,7 @@ std::string explicit_key(const PlatePhysics& p) {
   return "[time] integration = \"explicit\"";
 }
 
-std::unique_ptr<MechanicalModel> mechanical_model(const PlateModel& plate, const PlatePhysics& p) {
+std::unique_ptr<MechanicalModel> mechanical_model(const DiscretePlate& plate, const PlatePhysics& p) {
   const ModelKind kind = model_kind_of(p);
   if (auto why = refusal(kind, p.integrator)) throw std::invalid_argument(*why); // capabilities.hpp
   std::optional<StrainMeasure> measure;
@@ -63,7 +63,7 @@ std::unique_ptr<MechanicalModel> mechanical_model(const PlateModel& plate, const
   return elastic_plate_model(plate);
 }
 
-std::unique_ptr<StepPolicy> step_policy(const PlateModel& plate, const StepPolicyOptions& options,
+std::unique_ptr<StepPolicy> step_policy(const DiscretePlate& plate, const StepPolicyOptions& options,
                                         const PlatePhysics& p, std::unique_ptr<const MechanicalModel> model) {
   const bool linear = !p.large_deflection && !p.ply_damage && !p.interfaces;
   if (linear && p.integrator == Integrator::implicit) return linear_step_policy(plate, options);

@@ -22,10 +22,10 @@
 #include "plyimpact/analysis/integrators/newmark.hpp"
 #include "plyimpact/analysis/integrators/newton_settings.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/equation_subset.hpp"
 #include "plyimpact/fem/mass_operator.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/fem/stacked_model.hpp"
 
@@ -138,7 +138,7 @@ struct StepPolicyOptions {
 };
 
 /// K̄ = K + c0 M factored once; in-plane DOFs left out when exactly decoupled.
-[[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const PlateModel& model,
+[[nodiscard]] std::unique_ptr<StepPolicy> linear_step_policy(const DiscretePlate& model,
                                                              const StepPolicyOptions& options);
 /// Newton–Newmark on any model with an iteration matrix (newton_newmark_step.cpp): the one implicit
 /// integrator of the models whose force is not linear in u. `hold_laws`: the lagged step, whose trials
@@ -204,7 +204,7 @@ struct PlatePhysics {
 /// that crack (either kinematics), or the laminate cut into sub-laminates tied by cohesive interfaces (one
 /// laminate, no regions), which may be any of those. Throws std::invalid_argument with the table's reason
 /// where the cell does not run, and for a large-deflection measure other than von Kármán's with ply damage.
-[[nodiscard]] std::unique_ptr<MechanicalModel> mechanical_model(const PlateModel& plate,
+[[nodiscard]] std::unique_ptr<MechanicalModel> mechanical_model(const DiscretePlate& plate,
                                                                 const PlatePhysics& physics);
 /// The deck key that chose central differences for `physics`, for the messages of the explicit step.
 [[nodiscard]] std::string explicit_key(const PlatePhysics& physics);
@@ -213,7 +213,7 @@ struct PlatePhysics {
 /// it) under Newton–Newmark (implicit, lagged) or central differences, with the iterations and messages
 /// of its laws. Throws std::invalid_argument where the cell does not run, where Δt is above the explicit
 /// stable step, or for a stack without ply damage above (DL5).
-[[nodiscard]] std::unique_ptr<StepPolicy> step_policy(const PlateModel& plate,
+[[nodiscard]] std::unique_ptr<StepPolicy> step_policy(const DiscretePlate& plate,
                                                       const StepPolicyOptions& options,
                                                       const PlatePhysics& physics,
                                                       std::unique_ptr<const MechanicalModel> model = nullptr);

@@ -11,7 +11,7 @@
 
 namespace plyimpact {
 
-BucklingResult solve_buckling(const PlateModel& model, const BucklingSettings& settings) {
+BucklingResult solve_buckling(const DiscretePlate& model, const BucklingSettings& settings) {
   require_bilateral(model.boundary(), "the buckling analysis");
   const SparseMatrix K = model.stiffness();
   (void)factor_stiffness(model, K); // clear message when the plate is not restrained enough

@@ -1,7 +1,7 @@
 #pragma once
 // Linear buckling under uniform in-plane loads: (K + λ K_σ(N)) φ = 0 (SPEC §8, (2.100)–(2.102)).
 #include "plyimpact/analysis/impact/parameters.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 
 #include <vector>
 
@@ -13,6 +13,6 @@ struct BucklingResult {
 };
 
 /// Lowest positive load factors. Throws InsufficientRestraint when K is singular.
-[[nodiscard]] BucklingResult solve_buckling(const PlateModel& model, const BucklingSettings& settings);
+[[nodiscard]] BucklingResult solve_buckling(const DiscretePlate& model, const BucklingSettings& settings);
 
 } // namespace plyimpact

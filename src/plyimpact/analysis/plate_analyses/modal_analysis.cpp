@@ -96,11 +96,11 @@ ModalResult lowest_modes(const SparseMatrix& K, const SparseMatrix& M, int count
 
 } // namespace
 
-ModalResult solve_modal(const PlateModel& model, int count) {
+ModalResult solve_modal(const DiscretePlate& model, int count) {
   return solve_modal(model, count, model.mass_kind());
 }
 
-double fundamental_period(const PlateModel& model) {
+double fundamental_period(const DiscretePlate& model) {
   require_bilateral(model.boundary(), "the modal analysis");
   // The time loop's equations: the in-plane DOFs, exactly decoupled from bending for most laminates,
   // carry modes far above the bending ones and no share of a transverse impact.
@@ -124,7 +124,7 @@ double fundamental_period(const SparseMatrix& K, const SparseMatrix& M) {
   }
 }
 
-ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass) {
+ModalResult solve_modal(const DiscretePlate& model, int count, MassMatrix mass) {
   require_bilateral(model.boundary(), "the modal analysis");
   return solve_modal(model.stiffness(), model.mass(mass), count);
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Free vibration K φ = ω² M φ (SPEC §8): lowest frequencies by shift-invert Lanczos (Spectra).
 #include "plyimpact/fem/block_mass.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 
 #include <vector>
 
@@ -14,8 +14,8 @@ struct ModalResult {
 };
 
 /// The `count` lowest modes with the deck's mass matrix (or `mass` when given).
-[[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count);
-[[nodiscard]] ModalResult solve_modal(const PlateModel& model, int count, MassMatrix mass);
+[[nodiscard]] ModalResult solve_modal(const DiscretePlate& model, int count);
+[[nodiscard]] ModalResult solve_modal(const DiscretePlate& model, int count, MassMatrix mass);
 
 /// The `count` lowest modes of K φ = ω² M φ for any symmetric K ≥ 0 and M > 0 (e.g. the stacked plate
 /// with its interfaces' elastic stiffness).
@@ -23,7 +23,7 @@ struct ModalResult {
 
 /// Period of the lowest elastic (non-zero) mode [s], for the impact's end-of-event rule: of the bending
 /// DOFs alone where the in-plane ones are exactly decoupled (bending_equations_if_decoupled).
-[[nodiscard]] double fundamental_period(const PlateModel& model);
+[[nodiscard]] double fundamental_period(const DiscretePlate& model);
 /// The same of K φ = ω² M φ as the time loop holds them (its equations only): a step policy that has
 /// assembled them spares the assembly (StepPolicy::fundamental_period).
 [[nodiscard]] double fundamental_period(const SparseMatrix& K, const SparseMatrix& M);

@@ -91,7 +91,7 @@ std::vector<double> load_milestones(const NonlinearSettings& s) {
 
 } // namespace
 
-NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const StaticLoad& load,
+NonlinearStaticResult solve_static_nonlinear(const DiscretePlate& model, const StaticLoad& load,
                                              const NonlinearSettings& s) {
   require_bilateral(model.boundary(), "the non-linear static analysis");
   const std::vector<double> milestones = load_milestones(s);

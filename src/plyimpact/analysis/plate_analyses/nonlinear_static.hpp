@@ -38,7 +38,7 @@ struct NonlinearStaticResult {
 };
 
 /// Throws InsufficientRestraint (as solve_static) and NewtonFailure.
-[[nodiscard]] NonlinearStaticResult solve_static_nonlinear(const PlateModel& model, const StaticLoad& load,
+[[nodiscard]] NonlinearStaticResult solve_static_nonlinear(const DiscretePlate& model, const StaticLoad& load,
                                                            const NonlinearSettings& settings = {});
 
 } // namespace plyimpact

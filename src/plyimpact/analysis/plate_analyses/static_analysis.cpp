@@ -9,7 +9,7 @@ namespace plyimpact {
 
 namespace {
 
-std::string restraint_advice(const PlateModel& model) {
+std::string restraint_advice(const DiscretePlate& model) {
   const auto free = unrestrained_rigid_motions(model);
   std::string s;
   if (!free.empty()) {
@@ -32,7 +32,7 @@ std::string restraint_advice(const PlateModel& model) {
 
 } // namespace
 
-SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K, SparseSolverKind kind) {
+SpdSolver factor_stiffness(const DiscretePlate& model, const SparseMatrix& K, SparseSolverKind kind) {
   if (const auto free = unrestrained_rigid_motions(model); !free.empty())
     throw InsufficientRestraint("insufficient restraint for a static solve: " + restraint_advice(model));
   SpdSolver solver(kind);
@@ -45,7 +45,7 @@ SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K, Spars
   return solver;
 }
 
-StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eigen::VectorXd u) {
+StaticResult static_result(const DiscretePlate& model, const StaticLoad& load, Eigen::VectorXd u) {
   StaticResult r;
   r.u = std::move(u);
   const Eigen::Vector2d centre = model.mesh().bounds().centre();
@@ -65,7 +65,7 @@ StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eige
   return r;
 }
 
-StaticResult solve_static(const PlateModel& model, const StaticLoad& load) {
+StaticResult solve_static(const DiscretePlate& model, const StaticLoad& load) {
   if (model.boundary().has_unilateral()) {
     UnilateralSolution s = solve_unilateral_static(model, load);
     StaticResult r = static_result(model, load, std::move(s.u));

@@ -1,8 +1,8 @@
 #pragma once
 // Linear static analysis: K u = f for point, patch and pressure loads (SPEC §8).
 #include "plyimpact/analysis/contact/unilateral_support.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/loads.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 #include "plyimpact/fem/spd_solver.hpp"
 
 #include <stdexcept>
@@ -27,14 +27,15 @@ struct StaticResult {
 };
 
 /// Factors K and checks it; throws InsufficientRestraint with advice when it is singular.
-[[nodiscard]] SpdSolver factor_stiffness(const PlateModel& model, const SparseMatrix& K,
+[[nodiscard]] SpdSolver factor_stiffness(const DiscretePlate& model, const SparseMatrix& K,
                                          SparseSolverKind kind = SparseSolverKind::simplicial_ldlt);
 
 /// K u = f, or the contact problem of solve_unilateral_static when the model has unilateral supports.
-[[nodiscard]] StaticResult solve_static(const PlateModel& model, const StaticLoad& load);
+[[nodiscard]] StaticResult solve_static(const DiscretePlate& model, const StaticLoad& load);
 
 /// The result quantities of a plate state u (free DOFs) under `load`: centre, load-point and largest
 /// deflections (shared by the linear and the non-linear static analyses).
-[[nodiscard]] StaticResult static_result(const PlateModel& model, const StaticLoad& load, Eigen::VectorXd u);
+[[nodiscard]] StaticResult static_result(const DiscretePlate& model, const StaticLoad& load,
+                                         Eigen::VectorXd u);
 
 } // namespace plyimpact

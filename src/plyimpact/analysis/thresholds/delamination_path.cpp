@@ -103,7 +103,7 @@ struct Residual {
   Eigen::VectorXd free;
 };
 
-Residual residual_at(const StackedPlateModel& model, const Parametrization& loading,
+Residual residual_at(const StackedPlate& model, const Parametrization& loading,
                      const StackedPlateState& committed, const Eigen::VectorXd& y, double delta) {
   Eigen::VectorXd u = loading.displacement(y, delta);
   StackedPlateEvaluation e = model.evaluate(u, committed);
@@ -118,7 +118,7 @@ Residual residual_at(const StackedPlateModel& model, const Parametrization& load
 /// shortest is taken.
 class PathStep final : public NewtonProblem {
 public:
-  PathStep(const StackedPlateModel& model, const Parametrization& loading, const StackedPlateState& committed,
+  PathStep(const StackedPlate& model, const Parametrization& loading, const StackedPlateState& committed,
            Eigen::VectorXd y, double delta, double tolerance)
       : model_(model), loading_(loading), committed_(committed), y_(std::move(y)), delta_(delta),
         tolerance_(tolerance), r_(residual_at(model, loading, committed, y_, delta)) {
@@ -155,7 +155,7 @@ public:
   }
 
 private:
-  const StackedPlateModel& model_;
+  const StackedPlate& model_;
   const Parametrization& loading_;
   const StackedPlateState& committed_;
   Eigen::VectorXd y_;
@@ -167,7 +167,7 @@ private:
 
 /// The step to `delta` from the guess `y`; empty where the attempt has not converged after
 /// settings.max_iterations corrections (the caller halves the step). `iterations` counts the corrections.
-std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Parametrization& loading,
+std::optional<StepSolution> solve_step(const StackedPlate& model, const Parametrization& loading,
                                        const StackedPlateState& committed, Eigen::VectorXd y, double delta,
                                        const DisplacementPathSettings& settings, int& iterations) {
   PathStep step(model, loading, committed, std::move(y), delta, settings.tolerance);
@@ -179,9 +179,8 @@ std::optional<StepSolution> solve_step(const StackedPlateModel& model, const Par
 
 } // namespace
 
-DisplacementPath follow_displacement_path(const StackedPlateModel& model,
-                                          const ControlledDisplacement& control, StackedPlateState state,
-                                          const DisplacementPathSettings& settings,
+DisplacementPath follow_displacement_path(const StackedPlate& model, const ControlledDisplacement& control,
+                                          StackedPlateState state, const DisplacementPathSettings& settings,
                                           const PathObserver& observe) {
   const Parametrization loading(model.size(), control);
   DisplacementPath path;

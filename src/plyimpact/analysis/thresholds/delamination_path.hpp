@@ -69,7 +69,7 @@ using PathObserver = std::function<void(const PathPoint&, const Eigen::VectorXd&
 
 /// Follows the path from Δ = 0 in `state`. Throws std::runtime_error when a step does not converge
 /// after max_cuts halvings (the message gives Δ and the residual).
-[[nodiscard]] DisplacementPath follow_displacement_path(const StackedPlateModel& model,
+[[nodiscard]] DisplacementPath follow_displacement_path(const StackedPlate& model,
                                                         const ControlledDisplacement& control,
                                                         StackedPlateState state,
                                                         const DisplacementPathSettings& settings,

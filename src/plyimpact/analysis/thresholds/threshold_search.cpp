@@ -79,7 +79,7 @@ struct Bracketing {
 /// Tracks one criterion and ends the run at its first failure.
 class FirstFailure final : public ImpactObserver {
 public:
-  FirstFailure(const PlateModel& model, Criterion criterion, const DamageOptions& options)
+  FirstFailure(const DiscretePlate& model, Criterion criterion, const DamageOptions& options)
       : tracker(model, {criterion}, options) {}
   void on_step(const StepView& v) override { tracker.on_step(v); }
   [[nodiscard]] bool wants_stop() const override { return tracker.any_failure(); }

@@ -8,7 +8,7 @@
 
 namespace plyimpact {
 
-PlateModel plate_model(const Deck& deck) {
+DiscretePlate plate_model(const Deck& deck) {
   const MeshSpec spec = deck.mesh.value_or(MeshSpec{}); // static, modal, buckling: nx × ny (15 × 11)
   Mesh mesh = deck.file_mesh ? *deck.file_mesh : structured_rectangle(*deck.plate, spec.nx, spec.ny);
   std::vector<int> of_element = element_laminates(mesh, deck.regions);

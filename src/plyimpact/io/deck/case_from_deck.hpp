@@ -9,7 +9,7 @@ namespace plyimpact {
 
 /// The deck's plate: the structured mesh of [plate] and [mesh], each element with the laminate of its
 /// [[region]] (or [laminate]), the [boundary] restraints.
-[[nodiscard]] PlateModel plate_model(const Deck& deck);
+[[nodiscard]] DiscretePlate plate_model(const Deck& deck);
 
 /// The impact case of the deck; `nonlinear` forces the geometrically non-linear plate (--nonlinear).
 /// Throws InsufficientMemory (analysis/impact/guards.hpp) for a uniform mesh beyond the memory available

@@ -168,8 +168,8 @@ DamageSettings read_damage(const TableReader& t, Deck& d) {
         t.optional_choice<bool>("oversize", {{"error", false}, {"reduce-strength", true}}).value_or(false);
     // [time] integration = "explicit" makes the plies' step explicit too (the plate steps with one).
     const Integrator plies = optional_law_integrator(t).value_or(
-        d.time.integration == TimeIntegration::central_difference ? Integrator::central_difference
-                                                                  : Integrator::implicit);
+        d.time.integration == TimeScheme::central_difference ? Integrator::central_difference
+                                                             : Integrator::implicit);
     try {
       (void)resolve_integrator(ModelKind{false, d.nonlinear, true, false}, d.time.integration, plies,
                                std::nullopt);

@@ -137,8 +137,8 @@ DelaminationSettings read_delamination(const TableReader& t, Deck& d, bool plies
   const std::optional<Integrator> plies =
       d.damage.progressive && plies_given ? d.time.laws : std::optional<Integrator>();
   const Integrator interfaces = optional_law_integrator(t).value_or(
-      d.time.integration == TimeIntegration::central_difference ? Integrator::central_difference
-                                                                : plies.value_or(Integrator::lagged));
+      d.time.integration == TimeScheme::central_difference ? Integrator::central_difference
+                                                           : plies.value_or(Integrator::lagged));
   // The one table of what runs (analysis/impact/capabilities.hpp).
   const ModelKind kind{false, d.nonlinear, d.damage.progressive.has_value(), true};
   try {

@@ -194,8 +194,8 @@ TimeStepping read_time(const TableReader& t) {
           "integration", "mass_scaling", "target_dt", "stop_at_energy_error"});
   TimeStepping ts;
   ts.integration =
-      t.optional_choice<TimeIntegration>("integration", {{"implicit", TimeIntegration::newmark},
-                                                         {"explicit", TimeIntegration::central_difference}})
+      t.optional_choice<TimeScheme>(
+           "integration", {{"implicit", TimeScheme::newmark}, {"explicit", TimeScheme::central_difference}})
           .value_or(ts.integration);
   ts.dt = t.positive_or_auto("dt", "s");
   ts.end = t.positive_or_auto("end", "s");

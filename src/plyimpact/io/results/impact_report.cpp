@@ -420,7 +420,7 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
   return t;
 }
 
-void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& r,
+void write_impact_results(const ResultsFolder& folder, const DiscretePlate* model, const ImpactResult& r,
                           const nlohmann::json& summary) {
   if (model != nullptr)
     for (const auto& f : r.fields)

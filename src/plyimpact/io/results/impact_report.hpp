@@ -15,7 +15,7 @@ namespace plyimpact {
 [[nodiscard]] std::string impact_summary_text(const ImpactSettings& settings, const ImpactResult& result);
 /// field_<t>.csv for every snapshot and, last, summary.json (`summary`, from impact_summary_json);
 /// history.csv is streamed during the run (io/results/history_csv.hpp).
-void write_impact_results(const ResultsFolder& folder, const PlateModel* model, const ImpactResult& result,
+void write_impact_results(const ResultsFolder& folder, const DiscretePlate* model, const ImpactResult& result,
                           const nlohmann::json& summary);
 
 } // namespace plyimpact

@@ -15,7 +15,7 @@ std::string heading(const std::string& title) {
   return fmt::format("\n{}\n{}\n", title, std::string(title.size(), '-'));
 }
 
-std::string mesh_section(const PlateModel& model) {
+std::string mesh_section(const DiscretePlate& model) {
   const Mesh& mesh = model.mesh();
   const DofMap& dofs = model.dofs();
   int restrained_nodes = 0;
@@ -84,7 +84,7 @@ std::string impactor_section(const ImpactSettings& s) {
   return t;
 }
 
-std::string displacement_section(const PlateModel& model, const NodalSnapshot& snap) {
+std::string displacement_section(const DiscretePlate& model, const NodalSnapshot& snap) {
   std::string s = heading(fmt::format("DISPLACEMENTS AT t = {:.4f} us", snap.t * 1e6));
   s += fmt::format("  {:>6} {:>10} {:>10} {:>13} {:>13} {:>13} {:>13} {:>13}\n", "node", "x[mm]", "y[mm]",
                    "u[m]", "v[m]", "w[m]", "thetax[rad]", "thetay[rad]");
@@ -101,7 +101,7 @@ std::string displacement_section(const PlateModel& model, const NodalSnapshot& s
 
 } // namespace
 
-std::string impact_report_text(const Deck& deck, const PlateModel& model, const ImpactSettings& settings,
+std::string impact_report_text(const Deck& deck, const DiscretePlate& model, const ImpactSettings& settings,
                                const ImpactResult& result, const std::vector<DamageOnset>& first_failures,
                                const std::optional<NodalSnapshot>& displacements) {
   std::string s =

@@ -17,10 +17,10 @@ namespace plyimpact {
 /// The plate state at one time, for the displacement table.
 struct NodalSnapshot {
   double t = 0.0;    ///< [s]
-  Eigen::VectorXd u; ///< free DOFs of the PlateModel
+  Eigen::VectorXd u; ///< free DOFs of the DiscretePlate
 };
 
-[[nodiscard]] std::string impact_report_text(const Deck& deck, const PlateModel& model,
+[[nodiscard]] std::string impact_report_text(const Deck& deck, const DiscretePlate& model,
                                              const ImpactSettings& settings, const ImpactResult& result,
                                              const std::vector<DamageOnset>& first_failures,
                                              const std::optional<NodalSnapshot>& displacements);

@@ -274,7 +274,7 @@ double DamageElementRow::largest() const {
   return *std::max_element(damage.values.begin(), damage.values.end());
 }
 
-std::string damage_elements_csv(const PlateModel& model, const PlyDamageTable& table) {
+std::string damage_elements_csv(const DiscretePlate& model, const PlyDamageTable& table) {
   const Mesh& mesh = model.mesh();
   std::string csv = std::string(header) + "\n";
   for (int e = 0; e < mesh.element_count(); ++e) {

@@ -27,7 +27,7 @@
 //   plots/delamination_cscan   each point in the colour of the shallowest interface delaminated there (a
 //                         C-scan from the impacted face: shallowest_delaminated, io/results/svg_plot.hpp).
 #include "plyimpact/analysis/impact/impact_result.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/io/mesh/test_rigs.hpp"
 #include "plyimpact/io/results/plots.hpp"
 #include "plyimpact/io/results/ply_damage_table.hpp"
@@ -63,7 +63,7 @@ struct DamageElementRow {
 };
 
 /// damage_elements.csv of `table` on `model` (numbers as the shortest text that reads back the same).
-[[nodiscard]] std::string damage_elements_csv(const PlateModel& model, const PlyDamageTable& table);
+[[nodiscard]] std::string damage_elements_csv(const DiscretePlate& model, const PlyDamageTable& table);
 
 /// delamination_elements.csv of a stacked plate's interfaces on `mesh`.
 [[nodiscard]] std::string delamination_elements_csv(const Mesh& mesh, const DelaminationResult& result);

@@ -7,7 +7,7 @@
 
 namespace plyimpact {
 
-int most_plies(const PlateModel& model) {
+int most_plies(const DiscretePlate& model) {
   std::size_t plies = 0;
   for (const Laminate& lam : model.laminates())
     plies = std::max(plies, lam.ply_count());
@@ -28,7 +28,7 @@ PlyDamageTable::PlyDamageTable(int elements, int plies, const std::vector<Elemen
   }
 }
 
-PlyDamageTable::PlyDamageTable(const PlateModel& model, const std::vector<ElementPlyDamage>& list)
+PlyDamageTable::PlyDamageTable(const DiscretePlate& model, const std::vector<ElementPlyDamage>& list)
     : PlyDamageTable(model.mesh().element_count(), most_plies(model), list) {}
 
 const PerDamageMode& PlyDamageTable::of(int ply, int e) const {

@@ -15,7 +15,7 @@ public:
   /// `list` outside [0, elements) × [0, plies).
   PlyDamageTable(int elements, int plies, const std::vector<ElementPlyDamage>& list);
   /// The table of a model: its element count and the most plies of its laminates.
-  PlyDamageTable(const PlateModel& model, const std::vector<ElementPlyDamage>& list);
+  PlyDamageTable(const DiscretePlate& model, const std::vector<ElementPlyDamage>& list);
 
   [[nodiscard]] int elements() const { return elements_; }
   [[nodiscard]] int plies() const { return plies_; }
@@ -32,6 +32,6 @@ private:
 };
 
 /// The most plies of any laminate of the model.
-[[nodiscard]] int most_plies(const PlateModel& model);
+[[nodiscard]] int most_plies(const DiscretePlate& model);
 
 } // namespace plyimpact

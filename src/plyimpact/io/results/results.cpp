@@ -1,6 +1,6 @@
 #include "plyimpact/io/results/results.hpp"
 
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/io/deck/json_text.hpp"
 #include "plyimpact/io/system/atomic_file.hpp"
 
@@ -33,7 +33,7 @@ void ResultsFolder::write_text(const std::string& name, const std::string& text)
   write_file_atomically(dir_ / name, text);
 }
 
-void ResultsFolder::write_nodal_field(const std::string& name, const PlateModel& model,
+void ResultsFolder::write_nodal_field(const std::string& name, const DiscretePlate& model,
                                       const Eigen::VectorXd& u) const {
   const Eigen::VectorXd full = model.to_nodal(u);
   std::string csv = "node,x_m,y_m,u_m,v_m,w_m,thetax_rad,thetay_rad\n";
@@ -47,7 +47,7 @@ void ResultsFolder::write_nodal_field(const std::string& name, const PlateModel&
   write_text(name, csv);
 }
 
-void ResultsFolder::write_mode_shapes(const std::string& name, const PlateModel& model,
+void ResultsFolder::write_mode_shapes(const std::string& name, const DiscretePlate& model,
                                       const Eigen::MatrixXd& modes, const std::string& label) const {
   std::string csv = "node,x_m,y_m";
   for (Eigen::Index k = 0; k < modes.cols(); ++k)

@@ -12,7 +12,7 @@
 
 namespace plyimpact {
 
-class PlateModel;
+class DiscretePlate;
 
 class ResultsFolder {
 public:
@@ -23,9 +23,9 @@ public:
   void write_json(const std::string& name, const nlohmann::json& j) const;
   void write_text(const std::string& name, const std::string& text) const;
   /// Nodal field CSV: node, x_m, y_m, u_m, v_m, w_m, thetax_rad, thetay_rad.
-  void write_nodal_field(const std::string& name, const PlateModel& model, const Eigen::VectorXd& u) const;
+  void write_nodal_field(const std::string& name, const DiscretePlate& model, const Eigen::VectorXd& u) const;
   /// Mode shapes CSV (w of each mode at every node): node, x_m, y_m, w_<label>_1, ...
-  void write_mode_shapes(const std::string& name, const PlateModel& model, const Eigen::MatrixXd& modes,
+  void write_mode_shapes(const std::string& name, const DiscretePlate& model, const Eigen::MatrixXd& modes,
                          const std::string& label) const;
 
 private:

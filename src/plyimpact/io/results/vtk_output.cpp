@@ -86,7 +86,7 @@ std::vector<int> selected(const std::vector<int>& asked, int count) {
 }
 
 /// Nodal DOFs (u, v, w, θx, θy) of every node, restrained ones zero.
-Eigen::Matrix<double, 5, Eigen::Dynamic> nodal_dofs(const PlateModel& model, const Eigen::VectorXd& u) {
+Eigen::Matrix<double, 5, Eigen::Dynamic> nodal_dofs(const DiscretePlate& model, const Eigen::VectorXd& u) {
   const Eigen::VectorXd full = model.to_nodal(u);
   return Eigen::Map<const Eigen::Matrix<double, 5, Eigen::Dynamic>>(full.data(), 5, full.size() / 5);
 }
@@ -139,7 +139,7 @@ double cohesive_damage_below(const DelaminationResult& interfaces, int k, int e)
 
 } // namespace
 
-void write_plate_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+void write_plate_vtu(const fs::path& file, const DiscretePlate& model, const Eigen::VectorXd& u,
                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
                      const PlyDamageTable* progressive, const DelaminationResult* interfaces) {
   const Mesh& mesh = model.mesh();
@@ -216,7 +216,7 @@ constexpr std::array<std::array<int, 4>, 4> q9_sub_quads{
 
 } // namespace
 
-void write_layers_vtu(const fs::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+void write_layers_vtu(const fs::path& file, const DiscretePlate& model, const Eigen::VectorXd& u,
                       const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
                       const PlyDamageTable* progressive, const DelaminationResult* interfaces) {
   const Mesh& mesh = model.mesh();
@@ -355,7 +355,7 @@ void write_pvd(const fs::path& file, const std::vector<PvdEntry>& entries) {
   write_file_atomically(file, xml.str());
 }
 
-VtkSeries::VtkSeries(fs::path dir, const PlateModel& model, VtkOptions options)
+VtkSeries::VtkSeries(fs::path dir, const DiscretePlate& model, VtkOptions options)
     : dir_(std::move(dir)), model_(model), options_(std::move(options)) {}
 
 void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::vector<DamageOnset>& onsets,
@@ -374,12 +374,12 @@ void VtkSeries::write(long step, double t, const Eigen::VectorXd& u, const std::
   write_pvd(dir_ / "layers.pvd", layers_);
 }
 
-void write_static_vtk(const fs::path& dir, const PlateModel& model, const Eigen::VectorXd& u,
+void write_static_vtk(const fs::path& dir, const DiscretePlate& model, const Eigen::VectorXd& u,
                       const VtkOptions& options) {
   VtkSeries(dir, model, options).write(0, 0.0, u, {});
 }
 
-void write_modes_vtk(const fs::path& dir, const PlateModel& model, const Eigen::MatrixXd& modes,
+void write_modes_vtk(const fs::path& dir, const DiscretePlate& model, const Eigen::MatrixXd& modes,
                      const VtkOptions& options) {
   VtkSeries series(dir, model, options);
   for (Eigen::Index k = 0; k < modes.cols(); ++k) {

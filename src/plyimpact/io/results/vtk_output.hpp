@@ -22,7 +22,7 @@
 // interrupted run leaves valid `.pvd` files listing every frame already written.
 #include "plyimpact/analysis/fields/damage_tracker.hpp"
 #include "plyimpact/analysis/impact/impact_result.hpp"
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/io/results/ply_damage_table.hpp"
 #include "plyimpact/laminate/failure_criteria.hpp"
 
@@ -44,12 +44,12 @@ struct VtkOptions {
 /// One frame of plate.pvd: the mid-plane grid with its point and cell data. `progressive`: the plies'
 /// damage of a progressive-damage run, `interfaces`: those of a stacked plate (their arrays are written
 /// only when given).
-void write_plate_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+void write_plate_vtu(const std::filesystem::path& file, const DiscretePlate& model, const Eigen::VectorXd& u,
                      const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
                      const PlyDamageTable* progressive = nullptr,
                      const DelaminationResult* interfaces = nullptr);
 /// One frame of layers.pvd: the laminate as hexahedra, one layer per ply.
-void write_layers_vtu(const std::filesystem::path& file, const PlateModel& model, const Eigen::VectorXd& u,
+void write_layers_vtu(const std::filesystem::path& file, const DiscretePlate& model, const Eigen::VectorXd& u,
                       const std::vector<DamageOnset>& onsets, double t, const VtkOptions& options,
                       const PlyDamageTable* progressive = nullptr,
                       const DelaminationResult* interfaces = nullptr);
@@ -64,7 +64,7 @@ void write_pvd(const std::filesystem::path& file, const std::vector<PvdEntry>& e
 /// Writes frames into DIR/paraview/ and keeps DIR/plate.pvd and DIR/layers.pvd up to date.
 class VtkSeries {
 public:
-  VtkSeries(std::filesystem::path dir, const PlateModel& model, VtkOptions options);
+  VtkSeries(std::filesystem::path dir, const DiscretePlate& model, VtkOptions options);
   /// Writes the frame of `step` at time t (seconds) for the plate state u (free DOFs); `progressive`:
   /// the plies' damage of a progressive-damage run (DamageField::element_ply_damage()), null otherwise;
   /// `interfaces`: the stacked plate's (PlateStateAccess::delamination()), null otherwise.
@@ -75,19 +75,19 @@ public:
 
 private:
   std::filesystem::path dir_;
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   VtkOptions options_;
   std::vector<PvdEntry> plate_, layers_;
 };
 
 /// A static solution u as ParaView files: plate.pvd and layers.pvd holding one frame (t = 0).
-void write_static_vtk(const std::filesystem::path& dir, const PlateModel& model, const Eigen::VectorXd& u,
+void write_static_vtk(const std::filesystem::path& dir, const DiscretePlate& model, const Eigen::VectorXd& u,
                       const VtkOptions& options);
 
 /// Mode shapes (columns of `modes`, free DOFs) as ParaView files: plate.pvd and layers.pvd with one frame
 /// per mode, whose "time" is the mode number (ParaView's time control steps through the modes). Each
 /// shape is scaled so that its largest deflection |w| is 1 mm (modes have no amplitude of their own).
-void write_modes_vtk(const std::filesystem::path& dir, const PlateModel& model, const Eigen::MatrixXd& modes,
-                     const VtkOptions& options);
+void write_modes_vtk(const std::filesystem::path& dir, const DiscretePlate& model,
+                     const Eigen::MatrixXd& modes, const VtkOptions& options);
 
 } // namespace plyimpact

@@ -30,7 +30,7 @@ namespace {
 /// plies' damage in every frame of a progressive-damage run (zero before the first step).
 class VtkFrames final : public ImpactObserver {
 public:
-  VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const PlateModel& model,
+  VtkFrames(const VtkOutputSettings& s, std::filesystem::path dir, const DiscretePlate& model,
             VtkOptions options, const DamageTracker* damage)
       : every_(s.every), at_(s.at), series_(std::move(dir), model, std::move(options)), damage_(damage) {
     std::sort(at_.begin(), at_.end());
@@ -123,7 +123,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   if (out.settings.dt != impact.settings().dt)
     throw std::invalid_argument(
         "impact: a case may reuse another's factorization only with the same time step");
-  const PlateModel& model = impact.model();
+  const DiscretePlate& model = impact.model();
   const bool plate = !impact.settings().rigid_target;
   const std::vector<Criterion> criteria = parse_criteria(deck.damage.criteria);
 

@@ -62,7 +62,7 @@ void report_support_contacts(std::string& text, nlohmann::json& j, const StaticR
 }
 
 /// support_contacts.csv: one row per node of the unilateral supports.
-std::string support_contacts_csv(const PlateModel& model, const std::vector<SupportContact>& contacts) {
+std::string support_contacts_csv(const DiscretePlate& model, const std::vector<SupportContact>& contacts) {
   std::string csv = "node,x_m,y_m,touching,reaction_N,w_m\n";
   for (const SupportContact& c : contacts) {
     const Eigen::Vector2d p = model.mesh().node(c.node);
@@ -74,7 +74,7 @@ std::string support_contacts_csv(const PlateModel& model, const std::vector<Supp
 
 /// Large-deflection static analysis (SPEC §8): load stepping with Newton–Raphson.
 AnalysisOutcome run_static_nonlinear(const Deck& deck, const std::optional<ResultsFolder>& folder) {
-  const PlateModel model = plate_model(deck);
+  const DiscretePlate model = plate_model(deck);
   const NonlinearStaticResult r = solve_static_nonlinear(model, *deck.load, deck.nonlinear_settings);
   AnalysisOutcome out;
   out.text = fmt::format(
@@ -105,7 +105,7 @@ AnalysisOutcome run_static_nonlinear(const Deck& deck, const std::optional<Resul
 AnalysisOutcome run_static_analysis(const Deck& deck, bool nonlinear,
                                     const std::optional<ResultsFolder>& folder) {
   if (nonlinear || deck.nonlinear) return run_static_nonlinear(deck, folder);
-  const PlateModel model = plate_model(deck);
+  const DiscretePlate model = plate_model(deck);
   const StaticResult r = solve_static(model, *deck.load);
   AnalysisOutcome out;
   out.text = fmt::format("static: {} elements, {} free DOFs\n", model.mesh().element_count(), model.size());
@@ -126,7 +126,7 @@ AnalysisOutcome run_static_analysis(const Deck& deck, bool nonlinear,
 }
 
 AnalysisOutcome run_modal_analysis(const Deck& deck, const std::optional<ResultsFolder>& folder) {
-  const PlateModel model = plate_model(deck);
+  const DiscretePlate model = plate_model(deck);
   const ModalResult r = solve_modal(model, deck.modal.count);
   AnalysisOutcome out;
   out.text = fmt::format("modal: {} elements, {} free DOFs, {} zero-energy modes (rigid-body or spurious)\n",
@@ -145,7 +145,7 @@ AnalysisOutcome run_modal_analysis(const Deck& deck, const std::optional<Results
 }
 
 AnalysisOutcome run_buckling_analysis(const Deck& deck, const std::optional<ResultsFolder>& folder) {
-  const PlateModel model = plate_model(deck);
+  const DiscretePlate model = plate_model(deck);
   const BucklingResult r = solve_buckling(model, *deck.buckling);
   const BucklingSettings& b = *deck.buckling;
   AnalysisOutcome out;

@@ -1,4 +1,4 @@
-#include "plyimpact/fem/plate_model.hpp"
+#include "plyimpact/fem/discrete_plate.hpp"
 
 #include "plyimpact/fem/structured_mesh.hpp"
 
@@ -41,8 +41,8 @@ PlateSections checked(PlateSections s, const Mesh& mesh) {
 
 } // namespace
 
-PlateModel::PlateModel(Mesh mesh, PlateSections sections, Discretization discretization,
-                       BoundaryConditions bc)
+DiscretePlate::DiscretePlate(Mesh mesh, PlateSections sections, Discretization discretization,
+                             BoundaryConditions bc)
     : mesh_(std::move(mesh)), sections_(checked(std::move(sections), mesh_)), discretization_(discretization),
       bc_(std::move(bc)), dofs_(mesh_, bc_),
       element_(make_plate_element(resolve_formulation(discretization.element, mesh_, bc_))) {
@@ -54,9 +54,9 @@ PlateModel::PlateModel(Mesh mesh, PlateSections sections, Discretization discret
   build_pattern();
 }
 
-PlateModel::PlateModel(Laminate laminate, PlateGeometry plate, MeshSpec spec, BoundaryConditions bc)
-    : PlateModel(structured_rectangle(plate, spec.nx, spec.ny), PlateSections{{std::move(laminate)}, {}},
-                 Discretization{spec.mass, spec.element}, std::move(bc)) {}
+DiscretePlate::DiscretePlate(Laminate laminate, PlateGeometry plate, MeshSpec spec, BoundaryConditions bc)
+    : DiscretePlate(structured_rectangle(plate, spec.nx, spec.ny), PlateSections{{std::move(laminate)}, {}},
+                    Discretization{spec.mass, spec.element}, std::move(bc)) {}
 
 ElementFormulation resolve_formulation(ElementFormulation requested, const Mesh& /*mesh*/,
                                        const BoundaryConditions& /*bc*/) {
@@ -66,7 +66,7 @@ ElementFormulation resolve_formulation(ElementFormulation requested, const Mesh&
   return requested == ElementFormulation::automatic ? ElementFormulation::mitc9 : requested;
 }
 
-void PlateModel::build_pattern() {
+void DiscretePlate::build_pattern() {
   // Node adjacency (nodes sharing an element), then the CSC structure column by column. Equations
   // are numbered node by node, so the free DOFs of one node are consecutive rows.
   const int nn = mesh_.node_count();
@@ -103,7 +103,7 @@ void PlateModel::build_pattern() {
   std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
 }
 
-void PlateModel::add_element(SparseMatrix& K, int e, const ElementMatrix& Ke) const {
+void DiscretePlate::add_element(SparseMatrix& K, int e, const ElementMatrix& Ke) const {
   const int* outer = K.outerIndexPtr();
   const int* inner = K.innerIndexPtr();
   double* values = K.valuePtr();
@@ -126,7 +126,7 @@ void PlateModel::add_element(SparseMatrix& K, int e, const ElementMatrix& Ke) co
   }
 }
 
-SparseMatrix PlateModel::assemble(const ElementKernel& kernel) const {
+SparseMatrix DiscretePlate::assemble(const ElementKernel& kernel) const {
   // Elements with equal shape and section have equal matrices: each is computed once, on the shape's
   // representative element, and kept while there are few kinds (the cache changes no number: a matrix
   // recomputed later is the same). Assembly runs in element order whatever the kinds.
@@ -151,36 +151,36 @@ SparseMatrix PlateModel::assemble(const ElementKernel& kernel) const {
   return K;
 }
 
-SparseMatrix PlateModel::stiffness() const {
+SparseMatrix DiscretePlate::stiffness() const {
   return assemble([this](int e, int s) {
     return element_->stiffness(mesh_.element_coordinates(e), ElementSection(section(s).stiffness));
   });
 }
 
-SparseMatrix PlateModel::stiffness(const std::function<ElementSection(int)>& section_of_element) const {
+SparseMatrix DiscretePlate::stiffness(const std::function<ElementSection(int)>& section_of_element) const {
   SparseMatrix K = pattern_;
   for (int e = 0; e < mesh_.element_count(); ++e)
     add_element(K, e, element_->stiffness(mesh_.element_coordinates(e), section_of_element(e)));
   return K;
 }
 
-SparseMatrix PlateModel::mass() const {
+SparseMatrix DiscretePlate::mass() const {
   return mass(discretization_.mass);
 }
 
-SparseMatrix PlateModel::mass(MassMatrix kind) const {
+SparseMatrix DiscretePlate::mass(MassMatrix kind) const {
   return assemble([this, kind](int e, int s) {
     return PlateElement::mass(mesh_.element_coordinates(e), section(s).inertia, kind);
   });
 }
 
-SparseMatrix PlateModel::geometric_stiffness(const Eigen::Matrix2d& N) const {
+SparseMatrix DiscretePlate::geometric_stiffness(const Eigen::Matrix2d& N) const {
   return assemble([this, &N](int e, int /*section*/) {
     return PlateElement::geometric_stiffness(mesh_.element_coordinates(e), N);
   });
 }
 
-PointSampler PlateModel::sampler(double x, double y) const {
+PointSampler DiscretePlate::sampler(double x, double y) const {
   const auto loc = mesh_.locate(x, y);
   if (!loc)
     throw std::invalid_argument("point (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -195,14 +195,14 @@ PointSampler PlateModel::sampler(double x, double y) const {
   return s;
 }
 
-Eigen::VectorXd PlateModel::to_nodal(const Eigen::VectorXd& u) const {
+Eigen::VectorXd DiscretePlate::to_nodal(const Eigen::VectorXd& u) const {
   Eigen::VectorXd full = Eigen::VectorXd::Zero(dofs_.total_count());
   for (int i = 0; i < dofs_.total_count(); ++i)
     if (const int eq = dofs_.equation(i / dofs_per_node, i % dofs_per_node); eq >= 0) full(i) = u(eq);
   return full;
 }
 
-std::vector<std::string> unrestrained_rigid_motions(const PlateModel& model) {
+std::vector<std::string> unrestrained_rigid_motions(const DiscretePlate& model) {
   // The six rigid motions of a Mindlin plate, as nodal fields (u, v, w, θx, θy), and the rank of their
   // values on the restrained DOFs: a combination that vanishes on every restrained DOF is free.
   static const char* names[6] = {"translation along x (u)",  "translation along y (v)",
@@ -238,7 +238,7 @@ std::vector<std::string> unrestrained_rigid_motions(const PlateModel& model) {
   return free;
 }
 
-std::vector<ElementSlots> element_slots(const PlateModel& model, const SparseMatrix& pattern) {
+std::vector<ElementSlots> element_slots(const DiscretePlate& model, const SparseMatrix& pattern) {
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
   std::vector<ElementSlots> slots;

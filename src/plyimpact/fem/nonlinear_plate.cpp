@@ -1,4 +1,4 @@
-#include "plyimpact/fem/nonlinear_plate_model.hpp"
+#include "plyimpact/fem/nonlinear_plate.hpp"
 
 #include "plyimpact/fem/element_loop.hpp"
 
@@ -7,7 +7,7 @@
 
 namespace plyimpact {
 
-NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure measure)
+NonlinearPlate::NonlinearPlate(const DiscretePlate& model, StrainMeasure measure)
     : model_(model), element_(model.element(), measure), pattern_(model.pattern()),
       gather_(model.size(), model.mesh().element_count(),
               [&model](int e) -> const ElementEquations& { return model.element_equations(e); }) {
@@ -24,19 +24,19 @@ NonlinearPlateModel::NonlinearPlateModel(const PlateModel& model, StrainMeasure 
   slot_ = element_slots(model, pattern_);
 }
 
-Eigen::VectorXd NonlinearPlateModel::internal_force(const Eigen::VectorXd& u) const {
+Eigen::VectorXd NonlinearPlate::internal_force(const Eigen::VectorXd& u) const {
   Eigen::VectorXd f(model_.size());
   internal_force(u, f);
   return f;
 }
 
-void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
+void NonlinearPlate::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
   std::vector<ElementVector> element_forces;
   internal_force(u, f, element_forces);
 }
 
-void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
-                                         std::vector<ElementVector>& element_forces) const {
+void NonlinearPlate::internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
+                                    std::vector<ElementVector>& element_forces) const {
   const int elements = model_.mesh().element_count();
   element_forces.resize(static_cast<std::size_t>(elements));
   for_each_element(elements, [&](int e) {
@@ -46,7 +46,7 @@ void NonlinearPlateModel::internal_force(const Eigen::VectorXd& u, Eigen::Vector
   gather_.assemble(element_forces, f); // each equation's terms in element order, as one thread adds them
 }
 
-SparseMatrix NonlinearPlateModel::tangent_stiffness(const Eigen::VectorXd& u) const {
+SparseMatrix NonlinearPlate::tangent_stiffness(const Eigen::VectorXd& u) const {
   SparseMatrix K = pattern_;
   double* values = K.valuePtr();
   for (int e = 0; e < model_.mesh().element_count(); ++e) {

@@ -38,12 +38,12 @@ struct Discretization {
   ElementFormulation element = ElementFormulation::automatic;
 };
 
-class PlateModel {
+class DiscretePlate {
 public:
   /// Throws std::invalid_argument for inconsistent sections or boundary conditions.
-  PlateModel(Mesh mesh, PlateSections sections, Discretization discretization, BoundaryConditions bc);
+  DiscretePlate(Mesh mesh, PlateSections sections, Discretization discretization, BoundaryConditions bc);
   /// One laminate on the structured nx × ny mesh of an a × b rectangle.
-  PlateModel(Laminate laminate, PlateGeometry plate, MeshSpec spec, BoundaryConditions bc);
+  DiscretePlate(Laminate laminate, PlateGeometry plate, MeshSpec spec, BoundaryConditions bc);
 
   [[nodiscard]] const Mesh& mesh() const { return mesh_; }
   /// The mesh, to move nodes after the model is built (tests of distorted elements).
@@ -115,7 +115,8 @@ private:
 /// pattern (index j·45 + i; −1 where a DOF is restrained): matrices that change every step (tangent,
 /// secant) are assembled by index into a copy of the pattern, without searching it.
 using ElementSlots = std::array<int, q9_dofs * q9_dofs>;
-[[nodiscard]] std::vector<ElementSlots> element_slots(const PlateModel& model, const SparseMatrix& pattern);
+[[nodiscard]] std::vector<ElementSlots> element_slots(const DiscretePlate& model,
+                                                      const SparseMatrix& pattern);
 /// values[slot] += Ke(i, j) for every unrestrained entry.
 void add_element_values(double* values, const ElementSlots& slots, const ElementMatrix& Ke);
 
@@ -125,6 +126,6 @@ void add_element_values(double* values, const ElementSlots& slots, const Element
 
 /// Rigid-body motions of the plate that the restraints leave free (empty when properly supported),
 /// each described in words, e.g. "translation along z (w)".
-[[nodiscard]] std::vector<std::string> unrestrained_rigid_motions(const PlateModel& model);
+[[nodiscard]] std::vector<std::string> unrestrained_rigid_motions(const DiscretePlate& model);
 
 } // namespace plyimpact

@@ -1,20 +1,20 @@
 #pragma once
 // The plate's non-linear internal force vector and tangent stiffness over the free DOFs (SPEC §8),
-// assembled from NonlinearMindlinQ9 into the sparsity pattern of the linear PlateModel.
+// assembled from NonlinearMindlinQ9 into the sparsity pattern of the linear DiscretePlate.
+#include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/fem/equation_gather.hpp"
 #include "plyimpact/fem/nonlinear_plate_element.hpp"
-#include "plyimpact/fem/plate_model.hpp"
 
 #include <vector>
 
 namespace plyimpact {
 
-class NonlinearPlateModel {
+class NonlinearPlate {
 public:
   /// Throws std::invalid_argument when the strain measure is not available with the model's element.
-  NonlinearPlateModel(const PlateModel& model, StrainMeasure measure);
+  NonlinearPlate(const DiscretePlate& model, StrainMeasure measure);
 
-  [[nodiscard]] const PlateModel& linear() const { return model_; }
+  [[nodiscard]] const DiscretePlate& linear() const { return model_; }
   [[nodiscard]] const NonlinearMindlinQ9& element() const { return element_; }
   [[nodiscard]] int size() const { return model_.size(); }
 
@@ -27,7 +27,7 @@ public:
   /// same bits for any number of threads (element_loop.hpp).
   void internal_force(const Eigen::VectorXd& u, Eigen::VectorXd& f,
                       std::vector<ElementVector>& element_forces) const;
-  /// K_T(u) = ∂f_int/∂u, same pattern as PlateModel::stiffness().
+  /// K_T(u) = ∂f_int/∂u, same pattern as DiscretePlate::stiffness().
   [[nodiscard]] SparseMatrix tangent_stiffness(const Eigen::VectorXd& u) const;
 
 private:
@@ -38,7 +38,7 @@ private:
     return model_.section(model_.section_index(e)).stiffness;
   }
 
-  const PlateModel& model_;
+  const DiscretePlate& model_;
   NonlinearMindlinQ9 element_;
   std::vector<ElementGeometry> geometry_; ///< one per (element shape, section)
   std::vector<int> geometry_index_;       ///< per element
