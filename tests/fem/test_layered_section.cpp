@@ -5,6 +5,7 @@
 #include "plyimpact/fem/layered_section.hpp"
 #include "plyimpact/laminate/ply_stiffness.hpp"
 #include "support/decks.hpp"
+#include "support/hashin_index.hpp"
 
 #include <gtest/gtest.h>
 
@@ -40,10 +41,8 @@ Eigen::Vector3d material_strain(const Eigen::Vector3d& plate, double angle_deg) 
 double active_index(const Laminate& lam, std::size_t k, double z, const GeneralizedStrain& e) {
   const Material& m = lam.materials()[lam.plies()[k].material];
   const Eigen::Vector3d plate = e.head<3>() + z * e.segment<3>(3);
-  const Eigen::Vector3d s = reduced_stiffness(m) * material_strain(plate, lam.plies()[k].angle_deg);
-  const auto index = [&](DamageMode mode) { return hashin_plane_stress_index(mode, s, m.strength, 0.0); };
-  return std::max(index(s(0) >= 0.0 ? DamageMode::fibre_tension : DamageMode::fibre_compression),
-                  index(s(1) >= 0.0 ? DamageMode::matrix_tension : DamageMode::matrix_compression));
+  return test::active_hashin_index(reduced_stiffness(m) * material_strain(plate, lam.plies()[k].angle_deg),
+                                   m.strength);
 }
 
 TEST(LayeredSection, UndamagedSectionIsTheLaminatesStiffness) {

@@ -6,6 +6,7 @@
 #include "plyimpact/laminate/ply_damage.hpp"
 #include "plyimpact/laminate/ply_law.hpp"
 #include "support/decks.hpp"
+#include "support/hashin_index.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,13 +15,6 @@
 
 namespace plyimpact::ply_law_tests {
 namespace {
-
-/// Hashin's active index at stress s: the fibre pair by the sign of σ11, the matrix pair by σ22's.
-double active_index(const Eigen::Vector3d& s, const Strengths& strengths) {
-  const auto index = [&](DamageMode mode) { return hashin_plane_stress_index(mode, s, strengths, 0.0); };
-  return std::max(index(s(0) >= 0.0 ? DamageMode::fibre_tension : DamageMode::fibre_compression),
-                  index(s(1) >= 0.0 ? DamageMode::matrix_tension : DamageMode::matrix_compression));
-}
 
 TEST(PlyLaw, MakePlyLawGivesTheDamageLawOfTheMaterial) {
   const Material m = test::t300_976_with_damage_data();
@@ -48,7 +42,7 @@ TEST(PlyLaw, HashinOnsetBoundIsTheLargestActiveIndexAlongTheSegment) {
     double largest = 0.0;
     for (int i = 0; i <= samples; ++i) {
       const double f = static_cast<double>(i) / samples;
-      largest = std::max(largest, active_index(s0 + f * (s1 - s0), m.strength));
+      largest = std::max(largest, test::active_hashin_index(s0 + f * (s1 - s0), m.strength));
     }
     const double bound = law->onset_bound(s0, s1);
     EXPECT_GE(bound, largest * (1.0 - 1e-12)) << s0.transpose() << " → " << s1.transpose();
