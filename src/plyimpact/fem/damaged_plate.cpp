@@ -107,14 +107,19 @@ StrainOperator von_karman_operator(const DamagedPlate::ElementOperators& ops, st
 namespace {
 
 /// The laminate's materials as the law of an element of characteristic length Lc sees them: the data of
-/// the deck, or (Lc > 0) with the strengths lowered to the band limit of Lc (band_limited_strengths).
-std::vector<Material> class_materials(const Laminate& lam, double Lc, double alpha) {
+/// the deck, or (Lc > 0) with the strengths lowered to the law's band limit of Lc.
+std::vector<Material> class_materials(const Laminate& lam, double Lc, const PlyDamageOptions& options) {
   std::vector<Material> materials = lam.materials();
   if (Lc > 0.0)
-    for (Material& m : materials)
-      if (m.toughness.G_ft && m.toughness.G_fc && m.toughness.G_mt && m.toughness.G_mc && m.strength.Xt &&
-          m.strength.Xc && m.strength.Yt && m.strength.Yc && m.strength.S12)
-        m.strength = band_limited_strengths(m, Lc, alpha);
+    for (Material& m : materials) {
+      std::unique_ptr<PlyLaw> law;
+      try {
+        law = make_ply_law(m, options);
+      } catch (const std::invalid_argument&) {
+        continue; // a material no ply uses may lack the law's data (LayeredSection checks those that are)
+      }
+      m.strength = law->band_limited_strengths(Lc);
+    }
   return materials;
 }
 
@@ -177,7 +182,7 @@ DamagedPlate::DamagedPlate(const DiscretePlate& model, ProgressiveDamageSettings
   for (const double Lc : class_length_) {
     std::vector<LayeredSection> sections;
     for (const Laminate& lam : model.laminates())
-      sections.emplace_back(lam, class_materials(lam, Lc, settings_.law.alpha), settings_.law);
+      sections.emplace_back(lam, class_materials(lam, Lc, settings_.law), settings_.law);
     sections_.push_back(std::move(sections));
   }
   K0_ = model.stiffness();

@@ -76,6 +76,9 @@ public:
   /// (S12, G12); matrix compression (Yc, E2) and shear under vanishing compression (S12, G12).
   /// Other stress states are checked at initiation (BandLimitError).
   [[nodiscard]] double max_characteristic_length(DamageMode mode) const;
+  [[nodiscard]] double band_limit(DamageMode mode) const override { return max_characteristic_length(mode); }
+  /// band_limited_strengths(material(), L_c, α) with the margin 0.95.
+  [[nodiscard]] Strengths band_limited_strengths(double characteristic_length) const override;
   /// The smallest of the four: the largest L_c a mesh may have before any point is loaded.
   [[nodiscard]] double max_characteristic_length() const;
 

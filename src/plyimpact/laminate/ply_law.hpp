@@ -172,6 +172,13 @@ public:
   /// An upper bound of the undamaged ply's onset index on the segment of in-plane stresses (11, 22, 12)
   /// from s0 to s1 [Pa]: where it is below 1, advance() answers every point of the segment elastically.
   [[nodiscard]] virtual double onset_bound(const Eigen::Vector3d& s0, const Eigen::Vector3d& s1) const = 0;
+  /// The largest characteristic length [m] for which mode `mode` softens without snap-back in the uniaxial
+  /// and pure-shear states that initiate it (2GK/σ_0²); other states are checked at onset (BandLimitError).
+  [[nodiscard]] virtual double band_limit(DamageMode mode) const = 0;
+  /// The strengths lowered so that a point of characteristic length L_c [m] softens without snap-back at
+  /// every onset of the undamaged ply (Maimí et al. 2007, elements beyond the band limit), with a margin
+  /// of 0.95 on the energy's square root; strengths below their limit are kept.
+  [[nodiscard]] virtual Strengths band_limited_strengths(double characteristic_length) const = 0;
 
 protected:
   PlyLaw() = default;

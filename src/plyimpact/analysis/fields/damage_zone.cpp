@@ -1,7 +1,7 @@
 #include "plyimpact/analysis/fields/damage_zone.hpp"
 
 #include "plyimpact/laminate/cohesive_law.hpp"
-#include "plyimpact/laminate/ply_damage.hpp"
+#include "plyimpact/laminate/ply_law.hpp"
 
 #include <fmt/format.h>
 
@@ -12,14 +12,14 @@
 namespace plyimpact {
 namespace {
 
-/// DZ1: the smallest band limit over the laminate's materials and the four modes.
+/// DZ1: the smallest band limit of the run's ply law over the laminate's materials and the four modes.
 DamageElementSize ply_band_limit(const Laminate& laminate, const ProgressiveDamageSettings& plies) {
   DamageElementSize best{INFINITY, ""};
   for (const Material& m : laminate.materials()) {
-    const PlyDamageLaw law(m, plies.law);
+    const std::unique_ptr<PlyLaw> law = make_ply_law(m, plies.law);
     for (const DamageMode mode : {DamageMode::fibre_tension, DamageMode::fibre_compression,
                                   DamageMode::matrix_tension, DamageMode::matrix_compression}) {
-      const double limit = law.max_characteristic_length(mode);
+      const double limit = law->band_limit(mode);
       if (limit < best.size)
         best = {limit,
                 fmt::format("the band limit of {} of {} ({:.3g} mm)", to_string(mode), m.name, limit * 1e3)};

@@ -122,7 +122,7 @@ void require_progressive_damage_data(const TableReader& t, const Deck& d, const 
       const Material& m = lam.material_of(k);
       if (!checked.insert(m.name).second) continue; // each material once
       try {
-        (void)PlyDamageLaw(m, law);
+        (void)make_ply_law(m, law);
       } catch (const std::invalid_argument& e) {
         t.fail_at("model",
                   fmt::format("damage.model = \"progressive\": {}: add it to [materials.{}] (strengths "
