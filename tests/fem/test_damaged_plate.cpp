@@ -329,6 +329,55 @@ TEST(DamagedPlateLimitation, EndDrivenElementLocalisesIntoTwoOfItsThreeGaussColu
 INSTANTIATE_TEST_SUITE_P(DamagedPlate, SingleElement, ::testing::ValuesIn(element_cases()),
                          [](const ::testing::TestParamInfo<ElementCase>& p) { return p.param.name; });
 
+// The fracture-plane law (laminate/fracture_plane_law.hpp) through the same element, section and solver —
+// nothing in fem/ names it: one [90]4 element in transverse tension dissipates G_mt per unit crack area, one
+// [0]4 element in shear G_ms, and one [90]4 element in transverse compression to three times Yc keeps its
+// modulus (crack closure: no compressive softening). T700/M21 of Tan et al. (2015); the static problem uses
+// no mass, so the card's missing density is set to 1 kg/m³.
+TEST(DamagedPlateFracturePlaneLaw, ElementsDissipateTheCrackToughnessAndNeverSoftenInCompression) {
+  Material card = test::t700_m21_tan2015();
+  card.rho = 1.0;
+  ProgressiveDamageSettings settings;
+  settings.law.law = PlyLawKind::fracture_plane;
+  settings.screen_fraction = 0.0;
+  struct Case {
+    const char* layup;
+    Drive drive;
+    double sign, strength, modulus, toughness;
+  };
+  const Case cases[] = {{"[90]4", Drive::axial, +1.0, 60e6, card.E2, 500.0},
+                        {"[0]4", Drive::shear, +1.0, 110e6, card.G12, 1600.0}};
+  const double h = 1.0e-3;
+  for (const Case& c : cases) {
+    const Laminate lam = test::laminate_of(card, c.layup, 0.26e-3);
+    const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, c.drive, true);
+    const DamagedPlate damaged(membrane.model, settings);
+    DisplacementControl control(damaged, membrane);
+    const double eps0 = c.strength / c.modulus, epsf = 2.0 * c.toughness / (c.strength * h);
+    double peak = 0.0;
+    for (const double eps : ramp(0.0, 1.05 * epsf, 800))
+      peak = std::max(peak, control.step(c.sign * eps * h));
+    const double area = h * lam.thickness();
+    EXPECT_NEAR(peak / (c.strength * area), 1.0, 2e-3) << c.layup;
+    EXPECT_NEAR(control.field().dissipated().sum() / area, c.toughness, 0.01 * c.toughness) << c.layup;
+    EXPECT_GT(epsf, eps0);
+  }
+  const Laminate lam = test::laminate_of(card, "[90]4", 0.26e-3);
+  const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial, true);
+  const DamagedPlate damaged(membrane.model, settings);
+  DisplacementControl control(damaged, membrane);
+  const double area = h * lam.thickness();
+  for (const double eps : ramp(0.0, 3.0 * 290e6 / card.E2, 60)) {
+    const double F = control.step(-eps * h);
+    ASSERT_NEAR(F, -card.E2 * eps * area, 1e-6 * card.E2 * std::max(eps, 1e-6) * area) << eps;
+  }
+  // Beyond Yc the plane has cracked (closed), on the round-off shear of the element: nothing is released
+  // across the fibres, and the energy the closed crack dissipates is that of the round-off shear.
+  const double eps = 3.0 * 290e6 / card.E2;
+  const double stored = 0.5 * card.E2 * eps * eps * area * h;
+  EXPECT_LT(control.field().dissipated().sum(), 1e-12 * stored);
+}
+
 // --- 2. and 4. a strip with a weakened band ------------------------------------------------------
 
 /// A [90]4 strip, L = 10 mm × b = 1 mm, pulled along x (across the fibres), meshed by 10k × k square

@@ -54,6 +54,32 @@ inline Material t300_976_with_damage_data() {
   return m;
 }
 
+/// T700/M21 as Tan, Falzon, Chiu & Price (Composites Part A 71 (2015) 212–226, Table 1) give it for the
+/// Rivallant et al. (2013) coupons (issue 79): E3 = E2, ν13 = ν12 (a plate does not use E3, ν13, ν23). The
+/// ply's B-K exponent is not in the paper: the interface's 1.45 (the same M21 resin) is taken. The density
+/// is not in the paper either; the point-law tests that use this card do not need one (ρ = 0).
+inline Material t700_m21_tan2015() {
+  Material m;
+  m.name = "T700_M21";
+  m.E1 = 130.0e9;
+  m.E2 = 7.7e9;
+  m.G12 = m.G13 = 4.8e9;
+  m.G23 = 3.8e9;
+  m.nu12 = 0.3;
+  m.strength.Xt = 2080e6;
+  m.strength.Xc = 1250e6;
+  m.strength.Yt = 60e6;
+  m.strength.Yc = 290e6;
+  m.strength.S12 = 110e6;
+  m.toughness.G_ft = 133e3;
+  m.toughness.G_fc = 10e3;
+  m.toughness.G_mt = 500.0;
+  m.toughness.G_mc = 1600.0;
+  m.toughness.G_ms = 1600.0;
+  m.toughness.bk_exponent = 1.45;
+  return m;
+}
+
 /// §3.6 material of the thesis (Table 3.1): E1 = 129, E2 = 7.5, G12 = 3.5 GPa, ν12 = 0.33, ρ = 1540.
 inline Material thesis_3_6() {
   Material m;

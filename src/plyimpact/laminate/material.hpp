@@ -16,6 +16,9 @@ struct Strengths {
   std::optional<double> S23; ///< transverse shear strength S_T (S_i of Choi–Chang) [Pa]
   std::optional<double> Zt;  ///< through-thickness tension [Pa]
   std::optional<double> Da;  ///< Choi–Chang delamination constant (2.43) [-]
+  /// α0, the angle of the fracture plane in pure transverse compression (fracture-plane law,
+  /// laminate/fracture_plane.hpp); absent = 53° (Puck & Schürmann 1998; Dávila et al. 2005) [rad]
+  std::optional<double> fracture_angle;
   friend bool operator==(const Strengths&, const Strengths&) = default;
 };
 
@@ -28,6 +31,11 @@ struct FractureToughness {
   std::optional<double> G_fc; ///< fibre compression (kink band) [J/m²]
   std::optional<double> G_mt; ///< matrix tension (intralaminar, transverse tension / in-plane shear) [J/m²]
   std::optional<double> G_mc; ///< matrix compression (intralaminar, transverse compression) [J/m²]
+  /// Intralaminar mode II (in-plane shear) toughness of a matrix crack, the shear end of the fracture-plane
+  /// law's mixed-mode toughness (laminate/fracture_plane_law.hpp) [J/m²]
+  std::optional<double> G_ms;
+  /// η of the Benzeggagh–Kenane mixed-mode toughness of a matrix crack (fracture-plane law) [-]
+  std::optional<double> bk_exponent;
   friend bool operator==(const FractureToughness&, const FractureToughness&) = default;
 };
 

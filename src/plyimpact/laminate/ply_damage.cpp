@@ -138,10 +138,7 @@ std::vector<std::string> missing_data(const Material& m) {
     const std::optional<double> g = toughness_of(m.toughness, mode);
     if (!g || !(*g > 0.0)) missing.emplace_back(toughness_name(mode));
   }
-  const std::pair<const char*, double> moduli[] = {
-      {"E1", m.E1}, {"E2", m.E2}, {"G12", m.G12}, {"G13", m.G13}, {"G23", m.G23}};
-  for (const auto& [name, value] : moduli)
-    if (!(value > 0.0)) missing.emplace_back(name);
+  append_missing_moduli(m, missing);
   return missing;
 }
 
@@ -188,12 +185,7 @@ PlyDamageLaw::PlyDamageLaw(Material material, PlyDamageOptions options)
   if (!missing.empty())
     throw std::invalid_argument(fmt::format("progressive damage of material '{}' needs positive {}",
                                             material_.name, fmt::join(missing, ", ")));
-  if (!(options_.alpha >= 0.0 && options_.alpha <= 1.0))
-    throw std::invalid_argument(
-        fmt::format("progressive damage: alpha must lie in [0, 1], got {}", options_.alpha));
-  if (!(options_.viscosity >= 0.0))
-    throw std::invalid_argument(
-        fmt::format("progressive damage: the viscosity must be >= 0 s, got {}", options_.viscosity));
+  check_options(options_);
   for (const DamageMode mode : all_damage_modes)
     toughness_[mode] = *toughness_of(material_.toughness, mode);
   undamaged_stiffness_ = degraded_reduced_stiffness(material_, {});
@@ -241,12 +233,7 @@ PlyDamageUpdate PlyDamageLaw::elastic_response(const PlyDamageState& previous,
 }
 
 PlySecant PlyDamageLaw::secant_at(const PerDamageMode& damage, const PlyStrain& strain) const {
-  const ActiveModes active = active_modes(material_, damage, strain.in_plane);
-  const StiffnessDamage sd = stiffness_damage(damage, active);
-  return {degraded_reduced_stiffness(material_, sd),
-          degraded_transverse_shear(material_, sd.transverse_shear),
-          (active.fibre == DamageMode::fibre_compression ? 1U : 0U) |
-              (active.matrix == DamageMode::matrix_compression ? 2U : 0U)};
+  return secant_of(material_, damage, active_modes(material_, damage, strain.in_plane));
 }
 
 double PlyDamageLaw::max_characteristic_length(DamageMode mode) const {
@@ -321,11 +308,7 @@ Eigen::Matrix<double, 5, 5> PlyDamageLaw::algorithmic_tangent(const PlyDamageSta
 
 PlyDamageUpdate PlyDamageLaw::advance(const PlyDamageState& previous, const PlyStrain& strain,
                                       double characteristic_length, double dt) const {
-  if (!(characteristic_length > 0.0))
-    throw std::invalid_argument(fmt::format(
-        "progressive damage: the characteristic length must be > 0 m, got {}", characteristic_length));
-  if (!(dt >= 0.0))
-    throw std::invalid_argument(fmt::format("progressive damage: the time step must be >= 0 s, got {}", dt));
+  check_increment(characteristic_length, dt);
 
   const Material& m = material_;
   const double alpha = options_.alpha;
@@ -366,13 +349,9 @@ PlyDamageUpdate PlyDamageLaw::advance(const PlyDamageState& previous, const PlyS
     r.state.damage[mode] = std::max(previous.damage[mode], softening_damage(kappa, onset, final_strain));
   }
 
-  // Viscous regularisation, backward Euler (PD12): d_v = (η d_v,n + Δt d)/(η + Δt).
-  const double eta = options_.viscosity;
-  for (const DamageMode mode : all_damage_modes) {
-    const double d = r.state.damage[mode];
-    r.state.regularised_damage[mode] =
-        eta > 0.0 ? (eta * previous.regularised_damage[mode] + dt * d) / (eta + dt) : d;
-  }
+  // Viscous regularisation, backward Euler (PD12).
+  r.state.regularised_damage =
+      regularised(r.state.damage, previous.regularised_damage, options_.viscosity, dt);
 
   // Degraded stiffness and stresses (PD3)–(PD5).
   const PerDamageMode& dv = r.state.regularised_damage;

@@ -3,7 +3,11 @@
 #include "plyimpact/laminate/ply_damage_algebra.hpp"
 #include "plyimpact/laminate/macaulay.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace plyimpact::ply_damage_algebra {
 
@@ -207,5 +211,45 @@ PerDamageMode midpoint(const PerDamageMode& a, const PerDamageMode& b) {
   for (std::size_t i = 0; i < mid.values.size(); ++i)
     mid.values[i] = 0.5 * (a.values[i] + b.values[i]);
   return mid;
+}
+void append_missing_moduli(const Material& m, std::vector<std::string>& missing) {
+  const std::pair<const char*, double> moduli[] = {
+      {"E1", m.E1}, {"E2", m.E2}, {"G12", m.G12}, {"G13", m.G13}, {"G23", m.G23}};
+  for (const auto& [name, value] : moduli)
+    if (!(value > 0.0)) missing.emplace_back(name);
+}
+
+void check_options(const PlyDamageOptions& options) {
+  if (!(options.alpha >= 0.0 && options.alpha <= 1.0))
+    throw std::invalid_argument(
+        fmt::format("progressive damage: alpha must lie in [0, 1], got {}", options.alpha));
+  if (!(options.viscosity >= 0.0))
+    throw std::invalid_argument(
+        fmt::format("progressive damage: the viscosity must be >= 0 s, got {}", options.viscosity));
+}
+
+void check_increment(double characteristic_length, double dt) {
+  if (!(characteristic_length > 0.0))
+    throw std::invalid_argument(fmt::format(
+        "progressive damage: the characteristic length must be > 0 m, got {}", characteristic_length));
+  if (!(dt >= 0.0))
+    throw std::invalid_argument(fmt::format("progressive damage: the time step must be >= 0 s, got {}", dt));
+}
+
+PerDamageMode regularised(const PerDamageMode& damage, const PerDamageMode& previous_regularised,
+                          double viscosity, double dt) {
+  PerDamageMode dv;
+  for (const DamageMode mode : all_damage_modes) {
+    const double d = damage[mode];
+    dv[mode] = viscosity > 0.0 ? (viscosity * previous_regularised[mode] + dt * d) / (viscosity + dt) : d;
+  }
+  return dv;
+}
+
+PlySecant secant_of(const Material& m, const PerDamageMode& d, ActiveModes active) {
+  const StiffnessDamage sd = stiffness_damage(d, active);
+  return {degraded_reduced_stiffness(m, sd), degraded_transverse_shear(m, sd.transverse_shear),
+          (active.fibre == DamageMode::fibre_compression ? 1U : 0U) |
+              (active.matrix == DamageMode::matrix_compression ? 2U : 0U)};
 }
 } // namespace plyimpact::ply_damage_algebra

@@ -10,6 +10,9 @@
 
 #include <Eigen/Core>
 
+#include <string>
+#include <vector>
+
 namespace plyimpact::ply_damage_algebra {
 
 /// Which fibre and which matrix mode is loaded: the other two keep their damage but do not act on
@@ -71,6 +74,19 @@ struct StiffnessDamage {
 [[nodiscard]] Eigen::Matrix<double, 5, 1> stress_sensitivity(const Material& m, const PerDamageMode& d,
                                                              ActiveModes active, const PlyStrain& strain,
                                                              DamageMode mode);
+/// Appends to `missing` the names of the moduli E1, E2, G12, G13, G23 of `m` that are not positive.
+void append_missing_moduli(const Material& m, std::vector<std::string>& missing);
+/// Throws std::invalid_argument unless 0 ≤ α ≤ 1 and η ≥ 0.
+void check_options(const PlyDamageOptions& options);
+/// Throws std::invalid_argument unless L_c > 0 and dt ≥ 0: the arguments of an increment.
+void check_increment(double characteristic_length, double dt);
+/// The viscous regularisation, backward Euler (PD12): d_v = (η d_v,n + Δt d)/(η + Δt), d_v = d when η = 0.
+[[nodiscard]] PerDamageMode regularised(const PerDamageMode& damage,
+                                        const PerDamageMode& previous_regularised, double viscosity,
+                                        double dt);
+/// The secants of the damage `d` with the loaded modes `active` (PD3–PD5), and those modes as PlySecant's
+/// bits.
+[[nodiscard]] PlySecant secant_of(const Material& m, const PerDamageMode& d, ActiveModes active);
 [[nodiscard]] PlyStrain midpoint(const PlyStrain& a, const PlyStrain& b);
 [[nodiscard]] PerDamageMode midpoint(const PerDamageMode& a, const PerDamageMode& b);
 

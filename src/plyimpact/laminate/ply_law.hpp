@@ -78,6 +78,9 @@ struct PlyDamageState {
   PerDamageMode onset_equivalent_strain; ///< δ⁰_eq,I/L_c where mode I initiated; 0 before initiation
   PerDamageMode onset_equivalent_stress; ///< σ⁰_eq,I where mode I initiated [Pa]
   PlyStrain strain;                      ///< the strain of this state (start point of the next increment)
+  /// The toughness a mixed-mode mode softens with, fixed at its onset by the mode mix there (the
+  /// fracture-plane law's matrix crack); 0 where the law's toughnesses do not depend on the mix [J/m²]
+  double crack_toughness = 0.0;
 
   [[nodiscard]] bool initiated(DamageMode mode) const { return onset_equivalent_strain[mode] > 0.0; }
   /// No mode has initiated and no stiffness variable has moved: the law answers such a ply below every
@@ -89,8 +92,16 @@ struct PlyDamageState {
   }
 };
 
+/// Which ply law a run uses (make_ply_law).
+enum class PlyLawKind {
+  hashin,         ///< PlyDamageLaw: Hashin onset, four modes (laminate/ply_damage.hpp)
+  fracture_plane, ///< FracturePlaneLaw: matrix cracks on Puck's fracture plane (fracture_plane_law.hpp)
+};
+
 /// Settings of the damage law.
 struct PlyDamageOptions {
+  /// The law (deck: [damage] ply_law).
+  PlyLawKind law = PlyLawKind::hashin;
   /// α, weight of the in-plane shear in Hashin's fibre-tension mode, F_ft = (σ̂11/Xt)² + α(τ̂12/S12)²
   /// and δ_eq,ft = L_c √(⟨ε11⟩² + α γ12²). 1 is Hashin (1980); 0 (default, Hashin–Rotem 1973 for this mode)
   /// keeps in-plane shear from breaking fibres, which with α = 1 it does at τ12 = S12
@@ -184,7 +195,7 @@ protected:
   PlyLaw() = default;
 };
 
-/// The ply law of a material with `options` (today the one law, PlyDamageLaw). Throws
+/// The ply law options.law of a material with `options` (PlyDamageLaw or FracturePlaneLaw). Throws
 /// std::invalid_argument where the material misses a strength or toughness the law needs.
 [[nodiscard]] std::unique_ptr<PlyLaw> make_ply_law(const Material& material, const PlyDamageOptions& options);
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -349,6 +350,37 @@ TEST(Deck, DamageIntegrationChoosesTheIteratedOrTheLaggedSecant) {
   const std::string onset = damage_deck_error("integration = \"lagged\"\n");
   EXPECT_NE(onset.find("damage.integration belongs to the progressive damage model"), std::string::npos)
       << onset;
+}
+
+TEST(Deck, PlyLawChoosesHashinOrTheFracturePlaneAndItsDataAreChecked) {
+  // [damage] ply_law: "hashin" (default) or "fracture-plane"; the latter needs G_ms and bk_exponent, and
+  // reads fracture_angle in degrees.
+  EXPECT_EQ(damage_deck("model = \"progressive\"\n").damage.progressive->law.law, PlyLawKind::hashin);
+  const std::string missing = damage_deck_error("model = \"progressive\"\nply_law = \"fracture-plane\"\n");
+  EXPECT_NE(missing.find("G_ms"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("bk_exponent"), std::string::npos) << missing;
+  std::string deck = base_deck;
+  deck.replace(deck.find("rho = 1389.2\n"), 13,
+               "rho = 1389.2\nXt = 1.5e9\nXc = 1.2e9\nYt = 55.2e6\nYc = 294.0e6\nS12 = 101.1e6\n"
+               "G_ft = 91.6e3\nG_fc = 79.9e3\nG_mt = 277.0\nG_ms = 788.0\nbk_exponent = 1.45\n"
+               "fracture_angle = 53.0\n");
+  const Deck d =
+      parse_deck(deck + "[damage]\nmodel = \"progressive\"\nply_law = \"fracture-plane\"\n", "deck.toml");
+  EXPECT_EQ(d.damage.progressive->law.law, PlyLawKind::fracture_plane);
+  const Material& m = d.laminate->material_of(0);
+  EXPECT_EQ(*m.toughness.G_ms, 788.0);
+  EXPECT_EQ(*m.toughness.bk_exponent, 1.45);
+  EXPECT_NEAR(*m.strength.fracture_angle, 53.0 * std::numbers::pi / 180.0, 1e-15);
+  std::string flat = deck;
+  flat.replace(flat.find("fracture_angle = 53.0"), 21, "fracture_angle = 0.92");
+  try {
+    (void)parse_deck(flat, "deck.toml");
+    FAIL() << "a fracture angle in radians was read";
+  } catch (const DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("between 45 and 90 deg"), std::string::npos) << e.what();
+  }
+  const std::string misspelt = damage_deck_error("model = \"progressive\"\nply_law = \"puck\"\n");
+  EXPECT_NE(misspelt.find("fracture-plane"), std::string::npos) << misspelt;
 }
 
 TEST(Deck, OversizeElementsChooseBetweenTheErrorAndLoweredStrengths) {

@@ -124,11 +124,13 @@ void require_progressive_damage_data(const TableReader& t, const Deck& d, const 
       try {
         (void)make_ply_law(m, law);
       } catch (const std::invalid_argument& e) {
-        t.fail_at("model",
-                  fmt::format("damage.model = \"progressive\": {}: add it to [materials.{}] (strengths "
-                              "in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc in J/m^2; "
-                              "docs/progressive_damage.md lists published values)",
-                              e.what(), m.name));
+        t.fail_at(
+            "model",
+            fmt::format("damage.model = \"progressive\": {}: add it to [materials.{}] (strengths "
+                        "in Pa, fracture toughnesses G_ft, G_fc, G_mt, G_mc (ply_law = \"hashin\") or "
+                        "G_ft, G_fc, G_mt, G_ms and bk_exponent (ply_law = \"fracture-plane\") in J/m^2; "
+                        "docs/progressive_damage.md lists published values)",
+                        e.what(), m.name));
       }
     }
   }
@@ -145,11 +147,14 @@ std::optional<Integrator> optional_law_integrator(const TableReader& t) {
 DamageSettings read_damage(const TableReader& t, Deck& d) {
   DamageSettings damage;
   t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
-          "area_threshold", "oversize", "integration"});
+          "area_threshold", "oversize", "integration", "ply_law"});
   const bool progressive =
       t.optional_choice<bool>("model", {{"onset", false}, {"progressive", true}}).value_or(false);
   if (progressive) {
     ProgressiveDamageSettings p;
+    p.law.law = t.optional_choice<PlyLawKind>("ply_law", {{"hashin", PlyLawKind::hashin},
+                                                          {"fracture-plane", PlyLawKind::fracture_plane}})
+                    .value_or(PlyLawKind::hashin);
     p.law.viscosity = t.optional_number("viscosity", "s").value_or(0.0);
     if (p.law.viscosity < 0.0)
       t.fail_at("viscosity", fmt::format("damage.viscosity is a time constant and must be >= 0 s, got {}",
@@ -181,7 +186,7 @@ DamageSettings read_damage(const TableReader& t, Deck& d) {
     damage.progressive = p;
   } else {
     for (const char* key :
-         {"viscosity", "alpha", "refactor_tolerance", "area_threshold", "oversize", "integration"})
+         {"viscosity", "alpha", "refactor_tolerance", "area_threshold", "oversize", "integration", "ply_law"})
       if (t.node(key) != nullptr)
         t.fail_at(key, fmt::format("damage.{} belongs to the progressive damage model: add "
                                    "model = \"progressive\" to [damage]",

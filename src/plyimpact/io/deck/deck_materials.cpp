@@ -2,11 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <numbers>
+#include <optional>
+
 namespace plyimpact::deck_tables {
 
 Material read_material(const TableReader& t, const std::string& name) {
-  t.only({"E1", "E2", "G12", "G13", "G23", "nu12", "rho", "Xt", "Xc", "Yt", "Yc", "S12", "S23", "Zt", "Da",
-          "G_ft", "G_fc", "G_mt", "G_mc"});
+  t.only({"E1",   "E2",   "G12",         "G13",           "G23", "nu12", "rho",  "Xt",   "Xc",
+          "Yt",   "Yc",   "S12",         "S23",           "Zt",  "Da",   "G_ft", "G_fc", "G_mt",
+          "G_mc", "G_ms", "bk_exponent", "fracture_angle"});
   Material m;
   m.name = name;
   m.E1 = t.positive("E1", "Pa");
@@ -30,11 +34,21 @@ Material read_material(const TableReader& t, const std::string& name) {
   s.S23 = t.optional_positive("S23", "Pa");
   s.Zt = t.optional_positive("Zt", "Pa");
   s.Da = t.optional_positive("Da", "-");
+  if (const std::optional<double> angle = t.optional_positive("fracture_angle", "deg")) {
+    if (!(*angle > 45.0 && *angle < 90.0))
+      t.fail_at("fracture_angle",
+                fmt::format("material '{}': fracture_angle is the angle of the fracture plane in transverse "
+                            "compression, between 45 and 90 deg (about 53 for carbon/epoxy), got {}",
+                            name, *angle));
+    s.fracture_angle = *angle * std::numbers::pi / 180.0;
+  }
   FractureToughness& g = m.toughness; // progressive damage (docs/progressive_damage.md)
   g.G_ft = t.optional_positive("G_ft", "J/m^2");
   g.G_fc = t.optional_positive("G_fc", "J/m^2");
   g.G_mt = t.optional_positive("G_mt", "J/m^2");
   g.G_mc = t.optional_positive("G_mc", "J/m^2");
+  g.G_ms = t.optional_positive("G_ms", "J/m^2");
+  g.bk_exponent = t.optional_positive("bk_exponent", "-");
   return m;
 }
 

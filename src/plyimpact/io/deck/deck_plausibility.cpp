@@ -85,8 +85,10 @@ void check_materials(const Deck& d, Checks& c) {
     const FractureToughness& g = m.toughness;
     for (const auto& [name, v] : {std::pair{"G_ft", g.G_ft}, {"G_fc", g.G_fc}})
       if (v) c.add({k + name, *v, "J/m^2", 1e3, 1e6, "a fibre-mode (translaminar) fracture toughness"});
-    for (const auto& [name, v] : {std::pair{"G_mt", g.G_mt}, {"G_mc", g.G_mc}})
+    for (const auto& [name, v] : {std::pair{"G_mt", g.G_mt}, {"G_mc", g.G_mc}, {"G_ms", g.G_ms}})
       if (v) c.add({k + name, *v, "J/m^2", 10.0, 2e4, "a matrix-mode (intralaminar) fracture toughness"});
+    if (g.bk_exponent)
+      c.add({k + "bk_exponent", *g.bk_exponent, "-", 0.3, 10.0, "a Benzeggagh-Kenane exponent"});
   }
 }
 

@@ -16,8 +16,9 @@ struct UnitRow {
 };
 
 // 1 N/mm^1.5 = 1 N / (1e-3 m)^1.5 = 1e3·√1e3 N/m^1.5 (not a power of ten: the only inexact factor).
-const std::array<UnitRow, 15> unit_rows{{
+const std::array<UnitRow, 16> unit_rows{{
     {"-", {1.0, 1.0, "-"}},
+    {"deg", {1.0, 1.0, "deg"}},
     {"m", {1.0, 1e3, "mm"}},
     {"m^2", {1.0, 1e6, "mm^2"}},
     {"Pa", {1e6, 1.0, "MPa"}},
