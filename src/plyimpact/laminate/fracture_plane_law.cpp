@@ -94,7 +94,7 @@ double FracturePlaneLaw::matrix_bound(const Eigen::Vector3d& s) const {
 void FracturePlaneLaw::initiate_crack(PlyDamageState& state, const Eigen::Vector3d& e,
                                       const Eigen::Vector3d& s_hat) const {
   const double eq = algebra::equivalent_strain(DamageMode::matrix_tension, e, 0.0);
-  if (!(eq > 0.0) || matrix_index(s_hat) < 1.0) return; // no surface reached, or nothing to soften on
+  if (!(eq > 0.0)) return; // nothing to soften on (pure transverse compression)
   // The onset point: the ray R·ε that meets the surface, F(R σ̂) = 1 (FL2). F grows with R on every plane
   // (the compressive branch's denominators grow more slowly than its numerators), so bisect.
   double lo = 0.0, hi = 1.0;
@@ -128,16 +128,14 @@ PlyDamageUpdate FracturePlaneLaw::advance(const PlyDamageState& previous, const 
   const DamageMode fibre = active.fibre;
   const double fibre_index = hashin_plane_stress_index(fibre, s_hat, m.strength, alpha);
 
+  const bool cracked = crack_slot(previous).has_value();
+  const double crack_index = cracked ? 0.0 : matrix_index(s_hat); // once: the elastic test and the onset
+  if (previous.virgin() && fibre_index < 1.0 && crack_index < 1.0)
+    return algebra::elastic_update(previous, strain, undamaged_stiffness_, undamaged_transverse_shear_);
+
   PlyDamageUpdate r;
   r.state = previous;
   r.state.strain = strain;
-  if (previous.virgin() && fibre_index < 1.0 && matrix_index(s_hat) < 1.0) {
-    r.secant = undamaged_stiffness_;
-    r.transverse_shear_secant = undamaged_transverse_shear_;
-    r.stress = r.secant * e;
-    r.transverse_shear_stress = r.transverse_shear_secant * strain.transverse_shear;
-    return r;
-  }
 
   // The fibre mode that is loaded: Hashin–Rotem onset on the ray (the index is quadratic in σ̂).
   const double fibre_eq = algebra::equivalent_strain(fibre, e, alpha);
@@ -146,26 +144,17 @@ PlyDamageUpdate FracturePlaneLaw::advance(const PlyDamageState& previous, const 
     r.state.onset_equivalent_strain[fibre] = R * fibre_eq;
     r.state.onset_equivalent_stress[fibre] = R * algebra::equivalent_stress(fibre, e, s_hat, alpha);
   }
-  if (!crack_slot(previous)) initiate_crack(r.state, e, s_hat);
+  if (!cracked && crack_index >= 1.0) initiate_crack(r.state, e, s_hat);
 
   // Softening of each initiated, loaded mode (PD9, PD10): the fibre mode with its toughness, the crack
   // with the one its onset fixed.
-  const auto soften = [&](DamageMode mode, double eq, double toughness) {
-    const double onset = r.state.onset_equivalent_strain[mode];
-    const double onset_stress = r.state.onset_equivalent_stress[mode];
-    const double final_strain =
-        algebra::final_equivalent_strain(toughness, onset_stress, characteristic_length);
-    if (!(final_strain > onset))
-      throw BandLimitError(m.name, mode, characteristic_length, 2.0 * toughness / (onset_stress * onset));
-    const double kappa = std::max(previous.max_equivalent_strain[mode], eq);
-    r.state.max_equivalent_strain[mode] = kappa;
-    r.state.damage[mode] =
-        std::max(previous.damage[mode], algebra::softening_damage(kappa, onset, final_strain));
-  };
   if (r.state.initiated(fibre))
-    soften(fibre, fibre_eq, *(fibre == DamageMode::fibre_tension ? m.toughness.G_ft : m.toughness.G_fc));
+    algebra::soften(fibre, fibre_eq,
+                    *(fibre == DamageMode::fibre_tension ? m.toughness.G_ft : m.toughness.G_fc),
+                    characteristic_length, previous, r.state, m.name);
   if (const std::optional<DamageMode> slot = crack_slot(r.state))
-    soften(*slot, algebra::equivalent_strain(DamageMode::matrix_tension, e, 0.0), r.state.crack_toughness);
+    algebra::soften(*slot, algebra::equivalent_strain(DamageMode::matrix_tension, e, 0.0),
+                    r.state.crack_toughness, characteristic_length, previous, r.state, m.name);
 
   // Viscous regularisation, backward Euler (PD12).
   r.state.regularised_damage =

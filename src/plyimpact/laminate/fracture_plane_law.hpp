@@ -61,7 +61,8 @@ private:
   [[nodiscard]] double matrix_index(const Eigen::Vector3d& effective_stress) const;
   /// B(σ) = (⟨σ22⟩/Yt)² + (σ22/(2ST))² + (τ12/SL)² ≥ F on every plane (FL4).
   [[nodiscard]] double matrix_bound(const Eigen::Vector3d& stress) const;
-  /// Initiates the crack in `state` if the effective stress has reached the fracture-plane surface.
+  /// Initiates the crack in `state`, whose effective stress has reached the fracture-plane surface, where
+  /// it has an opening or a shear to soften on.
   void initiate_crack(PlyDamageState& state, const Eigen::Vector3d& e, const Eigen::Vector3d& s_hat) const;
 
   Material material_;

@@ -220,18 +220,6 @@ double PlyDamageLaw::onset_bound(const Eigen::Vector3d& s0, const Eigen::Vector3
   return b;
 }
 
-PlyDamageUpdate PlyDamageLaw::elastic_response(const PlyDamageState& previous,
-                                               const PlyStrain& strain) const {
-  PlyDamageUpdate r;
-  r.state = previous;
-  r.state.strain = strain;
-  r.secant = undamaged_stiffness_;
-  r.transverse_shear_secant = undamaged_transverse_shear_;
-  r.stress = r.secant * strain.in_plane;
-  r.transverse_shear_stress = r.transverse_shear_secant * strain.transverse_shear;
-  return r;
-}
-
 PlySecant PlyDamageLaw::secant_at(const PerDamageMode& damage, const PlyStrain& strain) const {
   return secant_of(material_, damage, active_modes(material_, damage, strain.in_plane));
 }
@@ -323,7 +311,7 @@ PlyDamageUpdate PlyDamageLaw::advance(const PlyDamageState& previous, const PlyS
     return hashin_plane_stress_index(mode, s_hat, m.strength, alpha) < 1.0;
   };
   if (previous.virgin() && below_surface(active.fibre) && below_surface(active.matrix))
-    return elastic_response(previous, strain);
+    return elastic_update(previous, strain, undamaged_stiffness_, undamaged_transverse_shear_);
 
   PlyDamageUpdate r;
   r.state = previous;
@@ -337,16 +325,7 @@ PlyDamageUpdate PlyDamageLaw::advance(const PlyDamageState& previous, const PlyS
       r.state.onset_equivalent_strain[mode] = onset->strain;
       r.state.onset_equivalent_stress[mode] = onset->stress;
     }
-    const double onset = r.state.onset_equivalent_strain[mode];
-    const double onset_stress = r.state.onset_equivalent_stress[mode];
-    const double final_strain =
-        final_equivalent_strain(toughness_[mode], onset_stress, characteristic_length);
-    if (!(final_strain > onset)) // band limit (PD10)
-      throw BandLimitError(m.name, mode, characteristic_length,
-                           2.0 * toughness_[mode] / (onset_stress * onset));
-    const double kappa = std::max(previous.max_equivalent_strain[mode], eq);
-    r.state.max_equivalent_strain[mode] = kappa;
-    r.state.damage[mode] = std::max(previous.damage[mode], softening_damage(kappa, onset, final_strain));
+    soften(mode, eq, toughness_[mode], characteristic_length, previous, r.state, m.name);
   }
 
   // Viscous regularisation, backward Euler (PD12).

@@ -91,9 +91,6 @@ public:
   }
 
 private:
-  /// The response of a point that has never initiated and does not now: linear elastic.
-  [[nodiscard]] PlyDamageUpdate elastic_response(const PlyDamageState& previous,
-                                                 const PlyStrain& strain) const;
   /// C + Σ_I ∂σ/∂d_v,I ⊗ ∂d_v,I/∂ε of the increment `previous` → `next` at `strain`.
   [[nodiscard]] Eigen::Matrix<double, 5, 5>
   algorithmic_tangent(const PlyDamageState& previous, const PlyDamageUpdate& next, const PlyStrain& strain,

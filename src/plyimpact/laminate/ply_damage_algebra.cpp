@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -212,6 +213,30 @@ PerDamageMode midpoint(const PerDamageMode& a, const PerDamageMode& b) {
     mid.values[i] = 0.5 * (a.values[i] + b.values[i]);
   return mid;
 }
+void soften(DamageMode mode, double equivalent, double toughness, double characteristic_length,
+            const PlyDamageState& previous, PlyDamageState& next, std::string_view material) {
+  const double onset = next.onset_equivalent_strain[mode];
+  const double onset_stress = next.onset_equivalent_stress[mode];
+  const double final_strain = final_equivalent_strain(toughness, onset_stress, characteristic_length);
+  if (!(final_strain > onset)) // band limit (PD10)
+    throw BandLimitError(material, mode, characteristic_length, 2.0 * toughness / (onset_stress * onset));
+  const double kappa = std::max(previous.max_equivalent_strain[mode], equivalent);
+  next.max_equivalent_strain[mode] = kappa;
+  next.damage[mode] = std::max(previous.damage[mode], softening_damage(kappa, onset, final_strain));
+}
+
+PlyDamageUpdate elastic_update(const PlyDamageState& previous, const PlyStrain& strain,
+                               const Eigen::Matrix3d& stiffness, const Eigen::Matrix2d& transverse_shear) {
+  PlyDamageUpdate r;
+  r.state = previous;
+  r.state.strain = strain;
+  r.secant = stiffness;
+  r.transverse_shear_secant = transverse_shear;
+  r.stress = r.secant * strain.in_plane;
+  r.transverse_shear_stress = r.transverse_shear_secant * strain.transverse_shear;
+  return r;
+}
+
 void append_missing_moduli(const Material& m, std::vector<std::string>& missing) {
   const std::pair<const char*, double> moduli[] = {
       {"E1", m.E1}, {"E2", m.E2}, {"G12", m.G12}, {"G13", m.G13}, {"G23", m.G23}};

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace plyimpact::ply_damage_algebra {
@@ -67,6 +68,15 @@ struct StiffnessDamage {
 /// ε_f = 2G/(σ⁰_eq L_c) (PD10).
 [[nodiscard]] double final_equivalent_strain(double toughness, double onset_stress,
                                              double characteristic_length);
+/// One initiated, loaded mode's softening in an increment (PD9, PD10): κ = max(κ_n, ε_eq), d = max(d_n,
+/// linear softening from the state's onset to ε_f of `toughness` over L_c), into `next`. Throws
+/// BandLimitError (naming `material`) where ε_f ≤ ε_0.
+void soften(DamageMode mode, double equivalent, double toughness, double characteristic_length,
+            const PlyDamageState& previous, PlyDamageState& next, std::string_view material);
+/// The response of a point below every onset surface: `previous` at `strain`, the undamaged secants.
+[[nodiscard]] PlyDamageUpdate elastic_update(const PlyDamageState& previous, const PlyStrain& strain,
+                                             const Eigen::Matrix3d& stiffness,
+                                             const Eigen::Matrix2d& transverse_shear);
 /// Y_I = −∂ψ/∂d_I of each mode (PD11).
 [[nodiscard]] PerDamageMode thermodynamic_forces(const Material& m, const PerDamageMode& d,
                                                  ActiveModes active, const PlyStrain& strain);
