@@ -1,8 +1,8 @@
 // The drop-weight rig presets ([rig], io/mesh/test_rigs.hpp): the ASTM D7136 coupon the preset builds is
 // the coupon of examples/meshes/astm-d7136-coupon.geo (same nodes, same static answer), the impactor's
 // radius and energy follow the standard (16 mm nose, 6.7 J/mm × h), and the circular rig is the clamped
-// disk of its opening (Kirchhoff's centre deflection P a²/(16 π D)). A deck that gives what the preset
-// builds is refused with the key named.
+// disk of its opening (Kirchhoff's centre deflection P a²/(16 π D)); the AITM 1-0010 rig is the ASTM coupon
+// without the energy rule. A deck that gives what the preset builds is refused with the key named.
 #include "plyimpact/io/deck/deck.hpp"
 #include "plyimpact/io/mesh/test_rigs.hpp"
 #include "plyimpact/io/run/plate_analyses.hpp"
@@ -169,6 +169,46 @@ TEST(TestRigs, WhatThePresetBuildsCannotAlsoBeGiven) {
   EXPECT_NE(rig_error("preset = \"circular\"", central_load).find("rig.diameter"), std::string::npos);
   EXPECT_NE(rig_error(astm + "\ndiameter = 0.1", central_load).find("125 x 75 mm"), std::string::npos);
   EXPECT_NE(rig_error("diameter = 0.1", central_load).find("[rig] needs preset"), std::string::npos);
+}
+
+TEST(TestRigs, TheAitmPresetIsTheAstmCouponOnTheSameStandWithoutAnEnergyRule) {
+  // One commercial stand serves D7136M and AITM 1-0010 (docs/mesh.md): the same nodes, sets, supports
+  // and nose; the AITM rig has no C_E rule, so its deck states the energy.
+  for (const bool static_analysis : {true, false}) {
+    const Rig astm = build_rig(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})}, static_analysis);
+    const Rig aitm = build_rig(RigSpec{RigKind::aitm_1_0010, 0.0, rig_meshing({})}, static_analysis);
+    ASSERT_EQ(aitm.mesh.node_count(), astm.mesh.node_count());
+    ASSERT_EQ(aitm.mesh.element_count(), astm.mesh.element_count());
+    double largest_gap = 0.0;
+    for (int n = 0; n < aitm.mesh.node_count(); ++n)
+      largest_gap = std::max(largest_gap, (aitm.mesh.node(n) - astm.mesh.node(n)).norm());
+    EXPECT_EQ(largest_gap, 0.0);
+    for (const char* set : {"window", "clamps"}) {
+      EXPECT_EQ(aitm.mesh.node_set(set), astm.mesh.node_set(set)) << set;
+      EXPECT_EQ(aitm.boundary.find(set)->type, astm.boundary.find(set)->type) << set;
+    }
+    EXPECT_DOUBLE_EQ(aitm.impactor_radius, 0.008);
+    EXPECT_FALSE(aitm.energy_per_thickness.has_value());
+    EXPECT_EQ(aitm.description.rfind("AITM 1-0010 rig: 150 x 100 mm plate", 0), 0U) << aitm.description;
+  }
+  const RigSpec aitm_spec{RigKind::aitm_1_0010, 0.0, rig_meshing({})};
+  EXPECT_EQ(rig_outline(aitm_spec).clamp_tips.size(), 4U);
+  EXPECT_NEAR((rig_outline(aitm_spec).window[2] - rig_outline(aitm_spec).window[0]).x(), 0.125, 1e-12);
+
+  const std::string aitm = "preset = \"aitm-1-0010\"";
+  const std::string impactor = "[impactor]\nmass = 2.0\nE = 210e9\n";
+  try {
+    (void)rig_deck("impact", aitm, impactor);
+    ADD_FAILURE() << "an AITM deck without an energy ran";
+  } catch (const DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("[impactor] needs velocity"), std::string::npos) << e.what();
+  }
+  const Deck d = rig_deck("impact", aitm, impactor + "energy = 6.5\n");
+  EXPECT_DOUBLE_EQ(d.impactor->radius, 0.008);
+  EXPECT_NEAR(0.5 * 2.0 * d.impactor->velocity * d.impactor->velocity, 6.5, 1e-12);
+  EXPECT_EQ(d.rig_description.find("J/mm"), std::string::npos) << d.rig_description;
+  EXPECT_NE(rig_error(aitm + "\ndiameter = 0.1", central_load).find("the aitm-1-0010 rig's window"),
+            std::string::npos);
 }
 
 TEST(TestRigs, EveryImpactPointOnTheCouponMeshes) {

@@ -160,14 +160,17 @@ void read_rig(const TableReader& top, const TableReader& t, const std::optional<
               const std::optional<Eigen::Vector2d>& refine_at, Deck& d) {
   t.only({"preset", "diameter"});
   RigSpec spec;
-  const auto kind = t.optional_choice<RigKind>(
-      "preset", {{"astm-d7136", RigKind::astm_d7136}, {"circular", RigKind::circular}});
-  if (!kind) t.fail_here("[rig] needs preset = \"astm-d7136\" or \"circular\"");
+  const auto kind = t.optional_choice<RigKind>("preset", {{"astm-d7136", RigKind::astm_d7136},
+                                                          {"aitm-1-0010", RigKind::aitm_1_0010},
+                                                          {"circular", RigKind::circular}});
+  if (!kind) t.fail_here("[rig] needs preset = \"astm-d7136\", \"aitm-1-0010\" or \"circular\"");
   spec.kind = *kind;
   if (spec.kind == RigKind::circular) {
     spec.diameter = t.positive("diameter", "m");
   } else if (t.has("diameter")) {
-    t.fail_at("diameter", "rig.diameter sizes the circular rig; the astm-d7136 rig's window is 125 x 75 mm");
+    t.fail_at("diameter",
+              fmt::format("rig.diameter sizes the circular rig; the {} rig's window is 125 x 75 mm",
+                          to_string(spec.kind)));
   }
   if (d.plate) top.fail_at("plate", "[rig] gives the plate: leave out [plate]");
   if (top.has("boundary"))

@@ -15,7 +15,7 @@ namespace plyimpact {
 
 namespace {
 
-// ASTM D7136 coupon (the same geometry as examples/meshes/astm-d7136-coupon.geo) [m].
+// The coupon of ASTM D7136M and AITM 1-0010 (the same geometry as examples/meshes/astm-d7136-coupon.geo) [m].
 constexpr double coupon_a = 0.150, coupon_b = 0.100, window_a = 0.125, window_b = 0.075;
 constexpr double clamp_dx = 0.050, clamp_dy = 0.04375; // clamp tips from the centre (R. Kok's model)
 
@@ -80,7 +80,7 @@ void add_disk(double d) {
 } // namespace
 
 RigOutline rig_outline(const std::optional<RigSpec>& spec) {
-  if (!spec || spec->kind != RigKind::astm_d7136) return {};
+  if (!spec || spec->kind == RigKind::circular) return {};
   const double x0 = (coupon_a - window_a) / 2, y0 = (coupon_b - window_b) / 2;
   const double cx = coupon_a / 2, cy = coupon_b / 2;
   return {{{x0, y0}, {x0 + window_a, y0}, {x0 + window_a, y0 + window_b}, {x0, y0 + window_b}},
@@ -91,13 +91,21 @@ RigOutline rig_outline(const std::optional<RigSpec>& spec) {
 }
 
 std::string_view to_string(RigKind kind) {
-  return kind == RigKind::astm_d7136 ? "astm-d7136" : "circular";
+  switch (kind) {
+  case RigKind::astm_d7136:
+    return "astm-d7136";
+  case RigKind::aitm_1_0010:
+    return "aitm-1-0010";
+  case RigKind::circular:
+    return "circular";
+  }
+  return "circular";
 }
 
 GeometryMeshing rig_meshing(const RigSpec& spec) {
   GeometryMeshing how;
   how.size_at_point = 2e-3;
-  how.max_size = spec.kind == RigKind::astm_d7136 ? 5e-3 : std::max(2e-3, spec.diameter / 20.0);
+  how.max_size = spec.kind == RigKind::circular ? std::max(2e-3, spec.diameter / 20.0) : 5e-3;
   return how;
 }
 
@@ -115,18 +123,24 @@ Rig build_rig(const RigSpec& spec, bool static_analysis) {
     if (!note.empty()) description += "; " + note;
     return {std::move(mesh), std::move(bc), 0.0, std::nullopt, std::move(description)};
   }
+  // ASTM D7136M and AITM 1-0010: one coupon on one stand (docs/mesh.md); AITM gives no energy rule.
+  const bool astm = spec.kind == RigKind::astm_d7136;
   std::string note;
-  Mesh mesh = mesh_gmsh_model("astm-d7136 rig", add_astm_coupon, spec.meshing, &note);
+  Mesh mesh =
+      mesh_gmsh_model(fmt::format("{} rig", to_string(spec.kind)), add_astm_coupon, spec.meshing, &note);
   BoundaryConditions bc;
   bc.set("window", static_analysis ? unilateral_support : "ss-soft");
   bc.set("clamps", "11100");
   std::string description = fmt::format(
-      "ASTM D7136 rig: 150 x 100 mm plate on a 125 x 75 mm window ({}), four clamp tips at (75 +/- 50, "
+      "{} rig: 150 x 100 mm plate on a 125 x 75 mm window ({}), four clamp tips at (75 +/- 50, "
       "50 +/- 43.75) mm holding u, v, w; 16 mm hemispherical impactor; {} elements",
+      astm ? "ASTM D7136" : "AITM 1-0010",
       static_analysis ? "unilateral: the plate may lift off" : "held in w both ways: lift-off not modelled",
       mesh.element_count());
   if (!note.empty()) description += "; " + note;
-  return {std::move(mesh), std::move(bc), 0.008, astm_d7136_energy_per_thickness, std::move(description)};
+  const std::optional<double> energy_rule =
+      astm ? std::optional<double>(astm_d7136_energy_per_thickness) : std::nullopt;
+  return {std::move(mesh), std::move(bc), 0.008, energy_rule, std::move(description)};
 }
 
 BoundingBox rig_bounds(const RigSpec& spec) {

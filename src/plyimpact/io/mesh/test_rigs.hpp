@@ -5,6 +5,9 @@
 //   astm-d7136  the 150 × 100 mm coupon on a 125 × 75 mm window (ASTM D7136/D7136M, Airbus AITM 1-0010),
 //               held by four clamp tips at (75 ± 50, 50 ± 43.75) mm; a 16 mm hemispherical impactor;
 //               the impact energy C_E · h with C_E = 6.7 J/mm unless the deck gives one.
+//   aitm-1-0010 the same coupon, window, clamp tips and nose on the same commercial stand (Airbus AITM
+//   1-0010,
+//               the standard of the Rivallant tests); no energy rule: the deck gives the impact energy.
 //   circular    a plate clamped between rings with a circular opening of the given diameter: the disk
 //               of the opening, clamped at its rim.
 // Sources and what could not be checked are in docs/mesh.md.
@@ -19,7 +22,7 @@
 
 namespace plyimpact {
 
-enum class RigKind { astm_d7136, circular };
+enum class RigKind { astm_d7136, aitm_1_0010, circular };
 
 struct RigSpec {
   RigKind kind = RigKind::astm_d7136;
@@ -63,7 +66,7 @@ inline constexpr double astm_d7136_energy_per_thickness = 6.7e3;
 /// support as above. Throws MeshFileError when gmsh fails.
 [[nodiscard]] Rig build_rig(const RigSpec& spec, bool static_analysis);
 
-/// The plate's extent on the rig [m]: the ASTM coupon, or the circular rig's disk.
+/// The plate's extent on the rig [m]: the coupon (ASTM, AITM), or the circular rig's disk.
 [[nodiscard]] BoundingBox rig_bounds(const RigSpec& spec);
 
 /// Refuses, before gmsh meshes anything (build_rig calls it first), a rig whose size field would make a mesh
