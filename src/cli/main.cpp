@@ -13,6 +13,7 @@
 #include "plyimpact/analysis/thresholds/threshold_search.hpp"
 #include "plyimpact/io/deck/case_from_deck.hpp"
 #include "plyimpact/io/deck/deck.hpp"
+#include "plyimpact/io/deck/material_library.hpp"
 #include "plyimpact/io/results/damage_report.hpp"
 #include "plyimpact/io/results/history_check.hpp"
 #include "plyimpact/io/results/impact_report.hpp"
@@ -31,6 +32,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <atomic>
@@ -248,6 +250,35 @@ int print_capabilities() {
   return 0;
 }
 
+/// `plyimpact materials [CARD] [--toml]`: the material library's cards with their sources (docs/deck.md,
+/// "Material library"); one card with its values; or the library as TOML.
+int print_materials(const std::string& card, bool as_toml) {
+  if (as_toml) {
+    fmt::print("{}", material_library_toml());
+    return 0;
+  }
+  const toml::table library = material_library();
+  if (!card.empty() && !library.contains(card)) {
+    fmt::print(stderr, "plyimpact: error: no card '{}' in the material library (cards: {})\n", card,
+               fmt::join(material_library_names(), ", "));
+    return 2;
+  }
+  if (card.empty())
+    fmt::print("Material library: a deck takes a card with [materials.NAME] library = \"CARD\"; its own keys "
+               "replace the card's (docs/deck.md).\n\n");
+  for (auto&& [name, node] : library) {
+    if (!card.empty() && name.str() != card) continue;
+    const toml::table& t = *node.as_table();
+    fmt::print("{}\n  source: {}\n", name.str(), t[library_source_key].value_or(std::string_view{}));
+    if (const auto note = t[library_note_key].value<std::string_view>()) fmt::print("  note: {}\n", *note);
+    if (card.empty()) continue;
+    for (auto&& [key, value] : t)
+      if (const std::string_view unit = material_key_unit(key.str()); !unit.empty())
+        fmt::print("  {:<15} {:>12.6g} {}\n", key.str(), value.value_or(0.0), unit);
+  }
+  return 0;
+}
+
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->add_option("deck", o.deck_path, "TOML input deck")->required();
@@ -260,8 +291,8 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 }
 
 const std::vector<std::string>& command_names() {
-  static const std::vector<std::string> names{"laminate",  "static", "modal", "buckling",    "impact",
-                                              "threshold", "plot",   "sweep", "capabilities"};
+  static const std::vector<std::string> names{"laminate",  "static", "modal", "buckling",     "impact",
+                                              "threshold", "plot",   "sweep", "capabilities", "materials"};
   return names;
 }
 
@@ -346,6 +377,12 @@ int run(int argc, char** argv) {
   plot->add_option("-o,--output", o.output_dir, "folder for the pictures (default: RESULTS/plots)");
   CLI::App* capabilities = app.add_subcommand(
       "capabilities", "What runs: plate models × time integrators, and the options they restrict");
+  std::string material_card;
+  bool materials_toml = false;
+  CLI::App* materials =
+      app.add_subcommand("materials", "The material library: ply cards with their sources, usable by name");
+  materials->add_option("card", material_card, "one card to show with its values");
+  materials->add_flag("--toml", materials_toml, "print the whole library as TOML (SI units)");
   SweepCommandOptions sweep_options;
   sweep_options.command = o.command;
   CLI::App* sweep = add_sweep_command(app, sweep_options);
@@ -367,6 +404,7 @@ int run(int argc, char** argv) {
   try {
     if (const auto note = check_openmp_threads()) fmt::print(stderr, "plyimpact: note: {}\n", *note);
     if (*capabilities) return print_capabilities();
+    if (*materials) return print_materials(material_card, materials_toml);
     if (*laminate) return run_laminate(o);
     if (*impact) return run_impact(o);
     if (*threshold) return run_threshold(o);

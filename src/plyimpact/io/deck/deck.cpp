@@ -72,8 +72,10 @@ void read_materials(const TableReader& top, Deck& d) {
       fail(top.file(), node.source(),
            fmt::format("materials.{} must be a table of material constants ([materials.{}])", name.str(),
                        name.str()));
-    d.materials.push_back(
-        read_material(top.nested(*t, "materials." + std::string(name.str())), std::string(name.str())));
+    const TableReader material = top.nested(*t, "materials." + std::string(name.str()));
+    d.materials.push_back(read_material(material, std::string(name.str())));
+    if (const auto card = material.optional_string("library"))
+      d.material_cards.emplace_back(std::string(name.str()), *card);
   }
 }
 

@@ -82,6 +82,9 @@ struct Deck {
   std::string title;
   AnalysisKind analysis = AnalysisKind::impact;
   std::vector<Material> materials;
+  /// The materials that take a card of the material library ([materials.NAME] library): (NAME, card), in
+  /// the deck's order; provenance.json records each card with its source and values.
+  std::vector<std::pair<std::string, std::string>> material_cards;
   std::optional<LaminateSpec> laminate_spec;
   std::optional<Laminate> laminate;     ///< [laminate]: the plate's own
   std::vector<NamedLaminate> laminates; ///< [laminates.NAME]

@@ -1,54 +1,93 @@
 #include "plyimpact/io/deck/deck_tables.hpp"
+#include "plyimpact/io/deck/material_library.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <numbers>
 #include <optional>
 
 namespace plyimpact::deck_tables {
 
+namespace {
+
+/// The library card `library` names, as a reader in SI units whose messages name the card; an error at
+/// the deck's key when no card has that name.
+TableReader library_card(const TableReader& t, const toml::table& library, const std::string& card) {
+  const toml::table* found = library[card].as_table();
+  if (found == nullptr) {
+    const std::vector<std::string> names = material_library_names();
+    std::string msg = fmt::format("{}.library: no card '{}' in the material library", t.path(), card);
+    if (const auto best = closest_name(card, names))
+      msg += fmt::format(" (did you mean '{}'?)", *best);
+    else
+      msg += fmt::format(" (cards: {}; `plyimpact materials` lists them with their sources)",
+                         fmt::join(names, ", "));
+    t.fail_at("library", msg);
+  }
+  return {*found, "material library card " + card, "material library (plyimpact materials)", UnitSystem::si};
+}
+
+} // namespace
+
 Material read_material(const TableReader& t, const std::string& name) {
-  t.only({"E1",   "E2",   "G12",         "G13",           "G23", "nu12", "rho",  "Xt",   "Xc",
-          "Yt",   "Yc",   "S12",         "S23",           "Zt",  "Da",   "G_ft", "G_fc", "G_mt",
-          "G_mc", "G_ms", "bk_exponent", "fracture_angle"});
+  t.only({"library", "E1",   "E2",   "G12",         "G13",           "G23", "nu12", "rho",  "Xt",
+          "Xc",      "Yt",   "Yc",   "S12",         "S23",           "Zt",  "Da",   "G_ft", "G_fc",
+          "G_mt",    "G_mc", "G_ms", "bk_exponent", "fracture_angle"});
+  // A library card gives what the deck's table leaves out; a key of the deck's table replaces the card's.
+  const toml::table library = material_library();
+  const std::optional<std::string> card = t.optional_string("library");
+  const std::optional<TableReader> base =
+      card ? std::optional<TableReader>(library_card(t, library, *card)) : std::nullopt;
+  const auto from = [&](std::string_view key) -> const TableReader& {
+    return base && !t.has(key) && base->has(key) ? *base : t;
+  };
+  if (base && !t.has("rho") && !base->has("rho"))
+    t.fail_here(
+        fmt::format("[{}] takes the library card '{}', which gives no density (its source has none; "
+                    "`plyimpact materials {}` shows the card): give rho ({}) in [{}], with its source",
+                    t.path(), *card, *card, t.deck_unit("kg/m^3"), t.path()));
   Material m;
   m.name = name;
-  m.E1 = t.positive("E1", "Pa");
-  m.E2 = t.positive("E2", "Pa");
-  m.G12 = t.positive("G12", "Pa");
-  m.G13 = t.optional_positive("G13", "Pa").value_or(m.G12);
-  m.G23 = t.optional_positive("G23", "Pa").value_or(m.G12);
-  m.nu12 = t.number("nu12", "-");
-  m.rho = t.positive("rho", "kg/m^3");
+  m.E1 = from("E1").positive("E1", "Pa");
+  m.E2 = from("E2").positive("E2", "Pa");
+  m.G12 = from("G12").positive("G12", "Pa");
+  m.G13 = from("G13").optional_positive("G13", "Pa").value_or(m.G12);
+  m.G23 = from("G23").optional_positive("G23", "Pa").value_or(m.G12);
+  m.nu12 = from("nu12").number("nu12", "-");
+  m.rho = from("rho").positive("rho", "kg/m^3");
   if (!(1.0 - m.nu12 * m.nu21() > 0.0))
-    t.fail_at("nu12", fmt::format("material '{}' is not physical: 1 - nu12*nu21 = {:.4g} must be positive "
-                                  "(nu12 = {}, nu21 = nu12*E2/E1 = {:.4g})",
-                                  name, 1.0 - m.nu12 * m.nu21(), m.nu12, m.nu21()));
-  if (m.nu12 <= -1.0) t.fail_at("nu12", fmt::format("material '{}': nu12 must be greater than -1", name));
+    from("nu12").fail_at("nu12", fmt::format("material '{}' is not physical: 1 - nu12*nu21 = {:.4g} must be "
+                                             "positive (nu12 = {}, nu21 = nu12*E2/E1 = {:.4g})",
+                                             name, 1.0 - m.nu12 * m.nu21(), m.nu12, m.nu21()));
+  if (m.nu12 <= -1.0)
+    from("nu12").fail_at("nu12", fmt::format("material '{}': nu12 must be greater than -1", name));
   Strengths& s = m.strength;
-  s.Xt = t.optional_positive("Xt", "Pa");
-  s.Xc = t.optional_positive("Xc", "Pa");
-  s.Yt = t.optional_positive("Yt", "Pa");
-  s.Yc = t.optional_positive("Yc", "Pa");
-  s.S12 = t.optional_positive("S12", "Pa");
-  s.S23 = t.optional_positive("S23", "Pa");
-  s.Zt = t.optional_positive("Zt", "Pa");
-  s.Da = t.optional_positive("Da", "-");
-  if (const std::optional<double> angle = t.optional_positive("fracture_angle", "deg")) {
+  s.Xt = from("Xt").optional_positive("Xt", "Pa");
+  s.Xc = from("Xc").optional_positive("Xc", "Pa");
+  s.Yt = from("Yt").optional_positive("Yt", "Pa");
+  s.Yc = from("Yc").optional_positive("Yc", "Pa");
+  s.S12 = from("S12").optional_positive("S12", "Pa");
+  s.S23 = from("S23").optional_positive("S23", "Pa");
+  s.Zt = from("Zt").optional_positive("Zt", "Pa");
+  s.Da = from("Da").optional_positive("Da", "-");
+  if (const std::optional<double> angle = from("fracture_angle").optional_positive("fracture_angle", "deg")) {
     if (!(*angle > 45.0 && *angle < 90.0))
-      t.fail_at("fracture_angle",
-                fmt::format("material '{}': fracture_angle is the angle of the fracture plane in transverse "
-                            "compression, between 45 and 90 deg (about 53 for carbon/epoxy), got {}",
-                            name, *angle));
+      from("fracture_angle")
+          .fail_at(
+              "fracture_angle",
+              fmt::format("material '{}': fracture_angle is the angle of the fracture plane in transverse "
+                          "compression, between 45 and 90 deg (about 53 for carbon/epoxy), got {}",
+                          name, *angle));
     s.fracture_angle = *angle * std::numbers::pi / 180.0;
   }
   FractureToughness& g = m.toughness; // progressive damage (docs/progressive_damage.md)
-  g.G_ft = t.optional_positive("G_ft", "J/m^2");
-  g.G_fc = t.optional_positive("G_fc", "J/m^2");
-  g.G_mt = t.optional_positive("G_mt", "J/m^2");
-  g.G_mc = t.optional_positive("G_mc", "J/m^2");
-  g.G_ms = t.optional_positive("G_ms", "J/m^2");
-  g.bk_exponent = t.optional_positive("bk_exponent", "-");
+  g.G_ft = from("G_ft").optional_positive("G_ft", "J/m^2");
+  g.G_fc = from("G_fc").optional_positive("G_fc", "J/m^2");
+  g.G_mt = from("G_mt").optional_positive("G_mt", "J/m^2");
+  g.G_mc = from("G_mc").optional_positive("G_mc", "J/m^2");
+  g.G_ms = from("G_ms").optional_positive("G_ms", "J/m^2");
+  g.bk_exponent = from("bk_exponent").optional_positive("bk_exponent", "-");
   return m;
 }
 

@@ -2,11 +2,34 @@
 
 #include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/io/deck/json_text.hpp"
+#include "plyimpact/io/deck/material_library.hpp"
 #include "plyimpact/io/system/atomic_file.hpp"
 
 #include <fmt/format.h>
 
 namespace plyimpact {
+
+namespace {
+
+/// The library cards a deck's materials take, each with its source and values (SI), as the run used them.
+nlohmann::json material_cards_json(const Deck& deck) {
+  const toml::table library = material_library();
+  nlohmann::json cards = nlohmann::json::array();
+  for (const auto& [material, card] : deck.material_cards) {
+    nlohmann::json entry = {{"material", material}, {"card", card}};
+    nlohmann::json values = nlohmann::json::object();
+    if (const toml::table* t = library[card].as_table()) {
+      entry["source"] = t->get(library_source_key) ? t->get(library_source_key)->value_or(std::string()) : "";
+      for (auto&& [key, value] : *t)
+        if (!material_key_unit(key.str()).empty()) values[std::string(key.str())] = value.value_or(0.0);
+    }
+    entry["values_SI"] = std::move(values);
+    cards.push_back(std::move(entry));
+  }
+  return cards;
+}
+
+} // namespace
 
 nlohmann::json summary_header(const Deck& deck, const std::string& analysis) {
   nlohmann::json j = {{"analysis", analysis},
@@ -21,8 +44,10 @@ nlohmann::json summary_header(const Deck& deck, const std::string& analysis) {
 ResultsFolder::ResultsFolder(std::filesystem::path dir, const Deck& deck) : dir_(std::move(dir)) {
   std::filesystem::create_directories(dir_);
   write_text("deck.toml", deck.text);
-  write_json("provenance.json",
-             {{"program", "plyimpact"}, {"version", PLYIMPACT_VERSION}, {"deck", deck.source}});
+  nlohmann::json provenance = {
+      {"program", "plyimpact"}, {"version", PLYIMPACT_VERSION}, {"deck", deck.source}};
+  if (!deck.material_cards.empty()) provenance["material_library"] = material_cards_json(deck);
+  write_json("provenance.json", provenance);
 }
 
 void ResultsFolder::write_json(const std::string& name, const nlohmann::json& j) const {
