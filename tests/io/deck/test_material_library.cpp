@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <numbers>
 #include <string>
 
 namespace plyimpact::material_library_tests {
@@ -83,6 +84,23 @@ TEST(MaterialLibrary, TheT700M21CardIsTable1OfTanEtAl) {
   EXPECT_EQ(*gc.toughness.G_ms, 2100.0);
   EXPECT_EQ(gc.E1, m.E1);
   EXPECT_EQ(gc.strength.S12, m.strength.S12);
+}
+
+TEST(MaterialLibrary, TheIm78552CardIsCompDamsFileInSi) {
+  // tests/IM7-8552.props of NASA CompDam_DGD in MPa and N/mm: E1 171420, E2 9080, G12 5290, v12 0.32,
+  // v23 0.52, XT 2326.2, XC 1200.1, YT 62.3, YC 199.8, SL 92.3, GXT 133.3, GXC 47.5, GYT 0.277, GSL 0.788,
+  // eta_BK 1.634, alpha0 0.925 rad.
+  const Material m = deck_with("library = \"IM7-8552\"\nrho = 1570.0\n").materials[0];
+  EXPECT_DOUBLE_EQ(m.E1, 171420.0e6);
+  EXPECT_DOUBLE_EQ(m.E2, 9080.0e6);
+  EXPECT_DOUBLE_EQ(m.G12, 5290.0e6);
+  EXPECT_NEAR(m.G23, 9080.0e6 / (2.0 * 1.52), 1e-4 * m.G23); // transverse isotropy
+  EXPECT_DOUBLE_EQ(*m.strength.Xt, 2326.2e6);
+  EXPECT_DOUBLE_EQ(*m.strength.S12, 92.3e6);
+  EXPECT_DOUBLE_EQ(*m.toughness.G_ft, 133.3 * 1e3); // N/mm = kJ/m^2
+  EXPECT_DOUBLE_EQ(*m.toughness.G_mt, 0.277 * 1e3);
+  EXPECT_DOUBLE_EQ(*m.toughness.G_ms, 0.788 * 1e3);
+  EXPECT_NEAR(m.strength.fracture_angle.value_or(0.0), 0.925, 0.5 * std::numbers::pi / 180.0 / 10.0);
 }
 
 TEST(MaterialLibrary, TheDecksKeysReplaceTheCardsInTheDecksUnits) {

@@ -45,6 +45,28 @@ G23 = 3.4828e9
 nu12 = 0.25
 rho = 1590.0
 
+[IM7-8552]
+source = "NASA CompDam_DGD, tests/IM7-8552.props (github.com/nasa/CompDam_DGD, commit 346cc80), IM7/8552 190 gsm: E1, E2, G12, nu12, Xt, Yt, Yc, S12 from Camanho, Maimi & Davila 2007 (Compos. Sci. Technol. 67:2715); Xc, G_fc, G_mt, G_ms, bk_exponent, nu23 = 0.52 from Camanho, Bessa, Catalanotti, Vogler & Rolfes 2013 (Mech. Mater. 59:36); G_ft from Catalanotti et al. 2010 (Compos. Sci. Technol. 70:1986); fracture_angle alpha0 = 0.925 rad (52.998 deg)"
+note = "Yt and S12 are in-situ values. G23 = E2 / (2 (1 + nu23)) and G13 = G12 (transverse isotropy); G_mc is the mode II value GSL, as docs/progressive_damage.md takes it for transverse compression. No density in the file: a deck gives rho with its source"
+E1 = 171.42e9
+E2 = 9.08e9
+G12 = 5.29e9
+G13 = 5.29e9
+G23 = 2.9868e9
+nu12 = 0.32
+Xt = 2326.2e6
+Xc = 1200.1e6
+Yt = 62.3e6
+Yc = 199.8e6
+S12 = 92.3e6
+G_ft = 133.3e3
+G_fc = 47.5e3
+G_mt = 277.0
+G_mc = 788.0
+G_ms = 788.0
+bk_exponent = 1.634
+fracture_angle = 52.998
+
 [T700-M21]
 source = "Tan, Falzon, Chiu & Price, Composites Part A 71 (2015) 212-226, Table 1 (the Rivallant et al. 2013 coupon, 6.5, 17 and 29.5 J)"
 note = "no density in the paper: a deck gives rho with its source. bk_exponent is the paper's interface B-K exponent (1.45; Table 1 gives none for the ply's matrix crack). Not carried: the non-linear shear curve (c1 37 833, c2 16 512, c3 2 334.3 MPa), nu23 0.35 and the interface (G_Ic 500, G_IIc 1600 J/m^2, N 20, S 36 MPa), which belong to [delamination]"
