@@ -42,6 +42,11 @@ Material read_material(const TableReader& t, const std::string& name) {
   const auto from = [&](std::string_view key) -> const TableReader& {
     return base && !t.has(key) && base->has(key) ? *base : t;
   };
+  // Each key in its unit of the one table the library and the command use (material_key_unit).
+  const auto required = [&](std::string_view key) { return from(key).positive(key, material_key_unit(key)); };
+  const auto optional = [&](std::string_view key) {
+    return from(key).optional_positive(key, material_key_unit(key));
+  };
   if (base && !t.has("rho") && !base->has("rho"))
     t.fail_here(
         fmt::format("[{}] takes the library card '{}', which gives no density (its source has none; "
@@ -49,13 +54,13 @@ Material read_material(const TableReader& t, const std::string& name) {
                     t.path(), *card, *card, t.deck_unit("kg/m^3"), t.path()));
   Material m;
   m.name = name;
-  m.E1 = from("E1").positive("E1", "Pa");
-  m.E2 = from("E2").positive("E2", "Pa");
-  m.G12 = from("G12").positive("G12", "Pa");
-  m.G13 = from("G13").optional_positive("G13", "Pa").value_or(m.G12);
-  m.G23 = from("G23").optional_positive("G23", "Pa").value_or(m.G12);
+  m.E1 = required("E1");
+  m.E2 = required("E2");
+  m.G12 = required("G12");
+  m.G13 = optional("G13").value_or(m.G12);
+  m.G23 = optional("G23").value_or(m.G12);
   m.nu12 = from("nu12").number("nu12", "-");
-  m.rho = from("rho").positive("rho", "kg/m^3");
+  m.rho = required("rho");
   if (!(1.0 - m.nu12 * m.nu21() > 0.0))
     from("nu12").fail_at("nu12", fmt::format("material '{}' is not physical: 1 - nu12*nu21 = {:.4g} must be "
                                              "positive (nu12 = {}, nu21 = nu12*E2/E1 = {:.4g})",
@@ -63,15 +68,15 @@ Material read_material(const TableReader& t, const std::string& name) {
   if (m.nu12 <= -1.0)
     from("nu12").fail_at("nu12", fmt::format("material '{}': nu12 must be greater than -1", name));
   Strengths& s = m.strength;
-  s.Xt = from("Xt").optional_positive("Xt", "Pa");
-  s.Xc = from("Xc").optional_positive("Xc", "Pa");
-  s.Yt = from("Yt").optional_positive("Yt", "Pa");
-  s.Yc = from("Yc").optional_positive("Yc", "Pa");
-  s.S12 = from("S12").optional_positive("S12", "Pa");
-  s.S23 = from("S23").optional_positive("S23", "Pa");
-  s.Zt = from("Zt").optional_positive("Zt", "Pa");
-  s.Da = from("Da").optional_positive("Da", "-");
-  if (const std::optional<double> angle = from("fracture_angle").optional_positive("fracture_angle", "deg")) {
+  s.Xt = optional("Xt");
+  s.Xc = optional("Xc");
+  s.Yt = optional("Yt");
+  s.Yc = optional("Yc");
+  s.S12 = optional("S12");
+  s.S23 = optional("S23");
+  s.Zt = optional("Zt");
+  s.Da = optional("Da");
+  if (const std::optional<double> angle = optional("fracture_angle")) {
     if (!(*angle > 45.0 && *angle < 90.0))
       from("fracture_angle")
           .fail_at(
@@ -82,12 +87,12 @@ Material read_material(const TableReader& t, const std::string& name) {
     s.fracture_angle = *angle * std::numbers::pi / 180.0;
   }
   FractureToughness& g = m.toughness; // progressive damage (docs/progressive_damage.md)
-  g.G_ft = from("G_ft").optional_positive("G_ft", "J/m^2");
-  g.G_fc = from("G_fc").optional_positive("G_fc", "J/m^2");
-  g.G_mt = from("G_mt").optional_positive("G_mt", "J/m^2");
-  g.G_mc = from("G_mc").optional_positive("G_mc", "J/m^2");
-  g.G_ms = from("G_ms").optional_positive("G_ms", "J/m^2");
-  g.bk_exponent = from("bk_exponent").optional_positive("bk_exponent", "-");
+  g.G_ft = optional("G_ft");
+  g.G_fc = optional("G_fc");
+  g.G_mt = optional("G_mt");
+  g.G_mc = optional("G_mc");
+  g.G_ms = optional("G_ms");
+  g.bk_exponent = optional("bk_exponent");
   return m;
 }
 
