@@ -14,6 +14,7 @@
 #include "plyimpact/io/deck/case_from_deck.hpp"
 #include "plyimpact/io/deck/deck.hpp"
 #include "plyimpact/io/deck/material_library.hpp"
+#include "plyimpact/io/deck/starting_deck.hpp"
 #include "plyimpact/io/results/damage_report.hpp"
 #include "plyimpact/io/results/history_check.hpp"
 #include "plyimpact/io/results/impact_report.hpp"
@@ -26,6 +27,7 @@
 #include "plyimpact/io/run/plate_analyses.hpp"
 #include "plyimpact/io/run/progress.hpp"
 #include "plyimpact/io/sweeps/threshold_run.hpp"
+#include "plyimpact/io/system/atomic_file.hpp"
 #include "plyimpact/io/system/environment.hpp"
 #include "plyimpact/io/system/memory_estimate.hpp"
 #include "sweep_command.hpp"
@@ -279,6 +281,30 @@ int print_materials(const std::string& card, bool as_toml) {
   return 0;
 }
 
+/// `plyimpact init [FILE] [--rig R] [--material CARD]`: a commented starting deck (docs/deck.md).
+int write_starting_deck(const std::string& path, const StartingDeckChoice& choice, bool overwrite) {
+  std::string text;
+  try {
+    text = starting_deck(choice);
+  } catch (const std::invalid_argument& e) { // a slip on the command line: a usage error
+    fmt::print(stderr, "plyimpact: error: {}\n", e.what());
+    return 2;
+  }
+  if (path.empty()) {
+    fmt::print("{}", text);
+    return 0;
+  }
+  if (std::filesystem::exists(path) && !overwrite) {
+    fmt::print(stderr, "plyimpact: error: {} exists: give another name, or --overwrite to replace it\n",
+               path);
+    return 2;
+  }
+  write_file_atomically(path, text);
+  fmt::print("{}: a starting deck ({} rig, {}); run it with: plyimpact impact {}\n", path, choice.rig,
+             choice.material, path);
+  return 0;
+}
+
 CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string& what, Options& o) {
   CLI::App* sub = app.add_subcommand(name, what);
   sub->add_option("deck", o.deck_path, "TOML input deck")->required();
@@ -291,8 +317,9 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 }
 
 const std::vector<std::string>& command_names() {
-  static const std::vector<std::string> names{"laminate",  "static", "modal", "buckling",     "impact",
-                                              "threshold", "plot",   "sweep", "capabilities", "materials"};
+  static const std::vector<std::string> names{"laminate",     "static",    "modal", "buckling",
+                                              "impact",       "threshold", "plot",  "sweep",
+                                              "capabilities", "materials", "init"};
   return names;
 }
 
@@ -383,6 +410,14 @@ int run(int argc, char** argv) {
       app.add_subcommand("materials", "The material library: ply cards with their sources, usable by name");
   materials->add_option("card", material_card, "one card to show with its values");
   materials->add_flag("--toml", materials_toml, "print the whole library as TOML (SI units)");
+  std::string init_path;
+  StartingDeckChoice init_choice;
+  CLI::App* init =
+      app.add_subcommand("init", "Write a commented starting deck: a coupon rig and a library material");
+  init->add_option("file", init_path, "the deck to write (default: print it)");
+  init->add_option("--rig", init_choice.rig, "astm-d7136 or aitm-1-0010 (default)");
+  init->add_option("--material", init_choice.material, "a card of `plyimpact materials` (default T300-976)");
+  init->add_flag("--overwrite", o.overwrite, "replace the file if it exists");
   SweepCommandOptions sweep_options;
   sweep_options.command = o.command;
   CLI::App* sweep = add_sweep_command(app, sweep_options);
@@ -405,6 +440,7 @@ int run(int argc, char** argv) {
     if (const auto note = check_openmp_threads()) fmt::print(stderr, "plyimpact: note: {}\n", *note);
     if (*capabilities) return print_capabilities();
     if (*materials) return print_materials(material_card, materials_toml);
+    if (*init) return write_starting_deck(init_path, init_choice, o.overwrite);
     if (*laminate) return run_laminate(o);
     if (*impact) return run_impact(o);
     if (*threshold) return run_threshold(o);
