@@ -35,10 +35,12 @@ Material read_material(const TableReader& t, const std::string& name) {
           "Xc",      "Yt",   "Yc",   "S12",         "S23",           "Zt",  "Da",   "G_ft", "G_fc",
           "G_mt",    "G_mc", "G_ms", "bk_exponent", "fracture_angle"});
   // A library card gives what the deck's table leaves out; a key of the deck's table replaces the card's.
-  const toml::table library = material_library();
+  // The library is parsed only for a table that names a card (it outlives `base`, which reads it).
   const std::optional<std::string> card = t.optional_string("library");
+  const std::optional<toml::table> library =
+      card ? std::optional<toml::table>(material_library()) : std::nullopt;
   const std::optional<TableReader> base =
-      card ? std::optional<TableReader>(library_card(t, library, *card)) : std::nullopt;
+      card ? std::optional<TableReader>(library_card(t, *library, *card)) : std::nullopt;
   const auto from = [&](std::string_view key) -> const TableReader& {
     return base && !t.has(key) && base->has(key) ? *base : t;
   };
