@@ -640,5 +640,47 @@ TEST(DamagedPlateBandLimit, LoweredStrengthsAreReportedWithTheElementsTheyConcer
   EXPECT_NE(w->find(expected), std::string::npos) << *w;
 }
 
+// What summary.json reports of the lowered strengths (issue 79): the largest reduction of any element, the
+// element that first uses it and its centre, and the largest among the elements whose plies have damaged —
+// none before a ply has cracked, the pulled element's once it has. One 0.5 mm [90]4 element: its L_c is above
+// the matrix-compression limit (0.176 mm), so some strength is lowered; the largest reduction is that of
+// band_limited_strengths() at L_c = 0.5 mm, and the element's centre is (0.25, 0.25) mm.
+TEST(DamagedPlateBandLimit, TheLargestReductionIsReportedWithItsElementAndWhereThePliesDamaged) {
+  const double h = 0.5e-3;
+  const Laminate lam = test::laminate_of(t300(), "[90]4", ply_thickness);
+  const Membrane membrane({h, h}, 1, 1, PlateSections{{lam}, {}}, Drive::axial);
+  ProgressiveDamageSettings settings;
+  settings.screen_fraction = 0.0;
+  settings.reduce_strengths_above_band_limit = true;
+  const DamagedPlate damaged(membrane.model, settings);
+  DisplacementControl control(damaged, membrane);
+
+  const StrengthReduction before = control.field().strength_reduction();
+  const Strengths lowered = band_limited_strengths(t300(), h, 0.0);
+  const Strengths& deck = t300().strength;
+  double expected = 0.0;
+  for (const auto& [d, l] :
+       {std::pair{deck.Xt, lowered.Xt}, std::pair{deck.Xc, lowered.Xc}, std::pair{deck.Yt, lowered.Yt},
+        std::pair{deck.Yc, lowered.Yc}, std::pair{deck.S12, lowered.S12}})
+    expected = std::max(expected, 1.0 - *l / *d);
+  ASSERT_GT(expected, 0.25);
+  EXPECT_EQ(before.elements, 1);
+  ASSERT_TRUE(before.largest.has_value());
+  EXPECT_NEAR(before.largest->reduction(), expected, 1e-14);
+  EXPECT_EQ(before.largest->element, 0);
+  EXPECT_NEAR(before.largest->centre.x(), 0.5 * h, 1e-15);
+  EXPECT_NEAR(before.largest->centre.y(), 0.5 * h, 1e-15);
+  EXPECT_FALSE(before.largest_where_damaged.has_value());
+
+  const double u0 = *lowered.Yt / t300().E2 * h;
+  for (const double u : ramp(0.0, 1.5 * u0, 30))
+    static_cast<void>(control.step(u));
+  ASSERT_GT(control.field().dissipated().sum(), 0.0);
+  const StrengthReduction after = control.field().strength_reduction();
+  ASSERT_TRUE(after.largest_where_damaged.has_value());
+  EXPECT_EQ(after.largest_where_damaged->element, 0);
+  EXPECT_EQ(after.largest_where_damaged->reduction(), before.largest->reduction());
+}
+
 } // namespace
 } // namespace plyimpact::damaged_plate_tests

@@ -185,6 +185,7 @@ DamagedPlate::DamagedPlate(const DiscretePlate& model, ProgressiveDamageSettings
       sections.emplace_back(lam, class_materials(lam, Lc, settings_.law), settings_.law);
     sections_.push_back(std::move(sections));
   }
+  build_lowered_strengths();
   K0_ = model.stiffness();
   const SparseMatrix& pattern = model.pattern();
   if (K0_.nonZeros() != pattern.nonZeros())
@@ -240,48 +241,89 @@ const DamagedPlate::ElementOperators& DamagedPlate::operators_of(int e) const {
   return operators_[static_cast<std::size_t>(model_.mesh().shape_class(e))];
 }
 
-std::optional<std::string> DamagedPlate::strength_reduction_warning() const {
-  struct Largest {
-    double ratio = 1.0;
-    std::string material, strength;
-    double deck = 0.0, used = 0.0;
-  } largest;
-  std::vector<bool> class_reduced(class_length_.size(), false);
-  for (std::size_t c = 0; c < class_length_.size(); ++c)
-    for (std::size_t s = 0; s < sections_[c].size(); ++s)
+void DamagedPlate::build_lowered_strengths() {
+  lowered_.assign(sections_.size(), {});
+  for (std::size_t c = 0; c < sections_.size(); ++c)
+    for (std::size_t s = 0; s < sections_[c].size(); ++s) {
+      std::optional<LoweredStrength> largest;
       for (std::size_t i = 0; i < model_.laminates()[s].materials().size(); ++i) {
         const PlyLaw* law = sections_[c][s].law(i);
         if (!law) continue;
-        const Material& m = law->material();
-        const Material& deck = model_.laminates()[s].materials()[i];
+        const Strengths& used = law->material().strength;
+        const Strengths& deck = model_.laminates()[s].materials()[i].strength;
         const std::tuple<const char*, std::optional<double>, std::optional<double>> pairs[] = {
-            {"Xt", deck.strength.Xt, m.strength.Xt},
-            {"Xc", deck.strength.Xc, m.strength.Xc},
-            {"Yt", deck.strength.Yt, m.strength.Yt},
-            {"Yc", deck.strength.Yc, m.strength.Yc},
-            {"S12", deck.strength.S12, m.strength.S12}};
+            {"Xt", deck.Xt, used.Xt},
+            {"Xc", deck.Xc, used.Xc},
+            {"Yt", deck.Yt, used.Yt},
+            {"Yc", deck.Yc, used.Yc},
+            {"S12", deck.S12, used.S12}};
         for (const auto& [name, before, after] : pairs) {
-          const double ratio = *after / *before;
-          if (ratio >= 1.0) continue;
-          class_reduced[c] = true;
-          if (ratio < largest.ratio) largest = {ratio, m.name, name, *before, *after};
+          if (!(*after < *before)) continue;
+          const LoweredStrength l{law->material().name, name, *before, *after};
+          if (!largest || l.reduction() > largest->reduction()) largest = l;
         }
       }
-  int elements = 0;
-  for (const int c : class_of_element_)
-    elements += class_reduced[static_cast<std::size_t>(c)] ? 1 : 0;
-  if (elements == 0) return std::nullopt;
+      lowered_[c].push_back(largest);
+    }
+}
+
+std::optional<LoweredStrength> DamagedPlate::lowered_strength(int e) const {
+  const auto c = static_cast<std::size_t>(class_of_element_[static_cast<std::size_t>(e)]);
+  std::optional<LoweredStrength> l = lowered_[c][static_cast<std::size_t>(model_.section_index(e))];
+  if (l) {
+    l->element = e;
+    l->centre = model_.mesh().map(e, 0.0, 0.0);
+  }
+  return l;
+}
+
+namespace {
+
+void keep_larger(std::optional<LoweredStrength>& into, const LoweredStrength& l) {
+  if (!into || l.reduction() > into->reduction()) into = l;
+}
+
+} // namespace
+
+StrengthReduction DamagedPlate::lowered_elements() const {
+  StrengthReduction r;
+  for (int e = 0; e < model_.mesh().element_count(); ++e)
+    if (const std::optional<LoweredStrength> l = lowered_strength(e)) {
+      ++r.elements;
+      keep_larger(r.largest, *l);
+    }
+  return r;
+}
+
+StrengthReduction DamagedPlate::strength_reduction(const DamageField& field) const {
+  StrengthReduction r = lowered_elements();
+  if (!r.largest) return r;
+  std::vector<int> damaged;
+  for (const ElementPlyDamage& d : field.element_ply_damage())
+    if (d.damage.sum() > 0.0) damaged.push_back(d.element);
+  std::sort(damaged.begin(), damaged.end()); // element order: the first element of the largest
+  for (const int e : damaged)
+    if (const std::optional<LoweredStrength> l = lowered_strength(e))
+      keep_larger(r.largest_where_damaged, *l);
+  return r;
+}
+
+std::optional<std::string> DamagedPlate::strength_reduction_warning() const {
+  const StrengthReduction r = lowered_elements();
+  if (!r.largest) return std::nullopt;
+  const LoweredStrength& l = *r.largest;
   return fmt::format(
       "progressive damage: {} of {} elements are larger than a band limit; their strengths are lowered so "
       "that each mode still dissipates G (Maimi et al. 2007, [damage] oversize = \"reduce-strength\"), by "
       "up to {:.0f} % ({} of '{}': {:.4g} -> {:.4g} MPa): damage starts earlier there than the strengths "
       "say; refine the mesh toward the impact point for onset results",
-      elements, model_.mesh().element_count(), 100.0 * (1.0 - largest.ratio), largest.strength,
-      largest.material, largest.deck * 1e-6, largest.used * 1e-6);
+      r.elements, model_.mesh().element_count(), 100.0 * l.reduction(), l.strength, l.material, l.deck * 1e-6,
+      l.used * 1e-6);
 }
 
 DamageField DamagedPlate::virgin_field() const {
   DamageField f;
+  f.plate_ = this;
   f.slot_of_element_.assign(static_cast<std::size_t>(model_.mesh().element_count()), -1);
   f.ply_area_.assign(model_.laminate().ply_count(), 0.0);
   f.bound_.assign(static_cast<std::size_t>(model_.mesh().element_count()), 0.0);
@@ -597,6 +639,10 @@ void DamagedPlate::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f_int
   else
     screen(u, field);
   field.bounds_current_ = false;
+}
+
+StrengthReduction DamageField::strength_reduction() const {
+  return plate_->strength_reduction(*this);
 }
 
 std::vector<ElementPlyDamage> DamageField::element_ply_damage() const {

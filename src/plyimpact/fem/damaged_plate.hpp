@@ -61,6 +61,28 @@ struct ElementPlyDamage {
   PerDamageMode damage;
 };
 
+/// A strength a ply law uses below the deck's value, where an element is larger than a band limit and the
+/// deck lowers strengths ([damage] oversize = "reduce-strength"; band_limited_strengths in ply_law.hpp).
+struct LoweredStrength {
+  std::string material;                             ///< the material's name
+  std::string strength;                             ///< "Xt", "Xc", "Yt", "Yc" or "S12"
+  double deck = 0.0;                                ///< the deck's value [Pa]
+  double used = 0.0;                                ///< the value the law uses there [Pa]
+  int element = -1;                                 ///< the first element (in element order) that uses it
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero(); ///< that element's centre [m]
+  /// 1 − used/deck.
+  [[nodiscard]] double reduction() const { return 1.0 - used / deck; }
+};
+
+/// How far a run's laws lowered the deck's strengths (issue 79: the largest reduction, and where).
+struct StrengthReduction {
+  int elements = 0;                       ///< elements with some strength lowered
+  std::optional<LoweredStrength> largest; ///< the largest reduction of any element
+  /// The largest reduction of an element whose plies damaged (some damage variable above 0 at some point):
+  /// where a lowered strength moved the answer, as opposed to elements that stayed elastic.
+  std::optional<LoweredStrength> largest_where_damaged;
+};
+
 /// What the law returned at every point of the active elements, for one displacement (the trial state of
 /// a step): kept until the step is accepted.
 class DamageField;
@@ -92,6 +114,8 @@ public:
   /// With reduce_strengths_above_band_limit: how many elements have lowered strengths and the largest
   /// reduction (material, strength, deck value → used value), for the run's warnings; nullopt when none.
   [[nodiscard]] std::optional<std::string> strength_reduction_warning() const;
+  /// The lowered strengths of the elements, and among them of those that `field` has damaged.
+  [[nodiscard]] StrengthReduction strength_reduction(const DamageField& field) const;
 
   /// A virgin damage field for one run.
   [[nodiscard]] DamageField virgin_field() const;
@@ -136,6 +160,12 @@ private:
   [[nodiscard]] const ElementOperators& operators_of(int e) const;
   /// The layered section of element e (its laminate, in its length class).
   [[nodiscard]] const LayeredSection& layered_section(int e) const;
+  /// The largest strength reduction of each [class][section]'s laws against the deck (nullopt: none).
+  void build_lowered_strengths();
+  /// The largest lowered strength of element e's section, with the element and its centre; nullopt: none.
+  [[nodiscard]] std::optional<LoweredStrength> lowered_strength(int e) const;
+  /// The elements with lowered strengths and the largest reduction (largest_where_damaged left empty).
+  [[nodiscard]] StrengthReduction lowered_elements() const;
   /// Generalized strains (ε0, κ, γ) at the 3×3 Gauss points of an element.
   using PointStrains = std::array<GeneralizedStrain, 9>;
   /// The generalized strains at point p of an element with DOFs uₑ (with the kinematics' terms).
@@ -189,8 +219,9 @@ private:
   std::vector<int> class_of_element_;                 ///< length class of each element
   std::vector<double> class_length_;                  ///< L_c of each class (0: the deck's strengths)
   std::vector<std::vector<LayeredSection>> sections_; ///< [class][section]
-  std::vector<ElementOperators> operators_;           ///< per shape class
-  std::vector<ElementSlots> slot_;                    ///< (i, j) of Kₑ → index in K0_ values
+  std::vector<std::vector<std::optional<LoweredStrength>>> lowered_; ///< [class][section] (element unset)
+  std::vector<ElementOperators> operators_;                          ///< per shape class
+  std::vector<ElementSlots> slot_; ///< (i, j) of Kₑ → index in K0_ values
 };
 
 /// What a run reports of its plies' damage at the last commit: the energies, the areas and the maps. One
@@ -219,6 +250,9 @@ public:
   [[nodiscard]] virtual std::vector<ElementPlyDamage> element_ply_damage() const = 0;
   [[nodiscard]] virtual const std::optional<FirstDamage>& first_damage() const = 0;
   [[nodiscard]] virtual const FirstDamageByMode& first_damage_by_mode() const = 0;
+  /// The strengths the laws lowered below the deck's, and where (none unless [damage] oversize =
+  /// "reduce-strength").
+  [[nodiscard]] virtual StrengthReduction strength_reduction() const = 0;
 
 protected:
   PlyDamageView() = default;
@@ -257,9 +291,11 @@ public:
   [[nodiscard]] std::vector<ElementPlyDamage> element_ply_damage() const override;
   [[nodiscard]] const std::optional<FirstDamage>& first_damage() const override { return first_; }
   [[nodiscard]] const FirstDamageByMode& first_damage_by_mode() const override { return first_by_mode_; }
+  [[nodiscard]] StrengthReduction strength_reduction() const override;
 
 private:
   friend class DamagedPlate;
+  const DamagedPlate* plate_ = nullptr; ///< the plate whose virgin_field() this was
   struct ActiveElement {
     int element = 0;
     std::vector<PlyDamageState> committed; ///< [point][ply][g]

@@ -30,6 +30,9 @@ public:
   [[nodiscard]] const std::optional<FirstDamage>& first_damage() const override { return first_; }
   /// Per mode, the same: the first sub-laminate's, in the step the mode first appeared anywhere.
   [[nodiscard]] const FirstDamageByMode& first_damage_by_mode() const override { return first_by_mode_; }
+  /// The largest reductions over the sub-laminates; `elements` is the most elements lowered in one of them
+  /// (the sub-laminates share the mesh and their band limits differ only through their materials).
+  [[nodiscard]] StrengthReduction strength_reduction() const override;
 
 private:
   std::vector<int> first_ply_;

@@ -420,6 +420,7 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     pd.projected_damage_area = d->projected_damage_area();
     pd.element_ply_damage = d->element_ply_damage();
     pd.active_elements = d->active_elements();
+    pd.strength_reduction = d->strength_reduction();
     r.progressive = std::move(pd);
   }
   if (view.plate) r.final_plate_energy = view.plate_kinetic_energy() + view.plate_strain_energy();

@@ -87,6 +87,7 @@ struct ProgressiveDamageResult {
   std::optional<DamageMode> first_mode;                         ///< mode of the first damage (d > 0)
   ByDamageMode<std::optional<FirstDamageOfMode>> first_by_mode; ///< each mode's first damage
   int active_elements = 0;                                      ///< elements that evaluated the law
+  StrengthReduction strength_reduction; ///< strengths lowered to band limits, and where (reduce-strength)
 
   /// Ply, time and force of the first damage: those of the first damage of its mode, which appeared
   /// in the same step (at the same ply: the fields find both in one pass, fem/damaged_plate.hpp).

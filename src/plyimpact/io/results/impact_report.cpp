@@ -188,6 +188,27 @@ double added_energy_fraction(const ImpactSettings& s, const ImpactResult& r) {
 
 /// summary.json `absorbed_energy_by_mechanism` (docs/output.md, analysis/fields/energy_split.hpp): null until
 /// the impactor has left.
+/// One lowered strength: what, of which material, by how much, and the first element that uses it.
+nlohmann::json lowered_strength_json(const std::optional<LoweredStrength>& l) {
+  if (!l) return nullptr;
+  return {{"strength", l->strength}, {"material", l->material}, {"reduction_percent", 100.0 * l->reduction()},
+          {"deck_Pa", l->deck},      {"used_Pa", l->used},      {"element", l->element},
+          {"x_m", l->centre.x()},    {"y_m", l->centre.y()}};
+}
+
+/// The strengths lowered to band limits (issue 79): how many elements, the largest reduction, and the
+/// largest where the plies damaged.
+nlohmann::json strength_reduction_json(const StrengthReduction& r) {
+  const auto percent = [](const std::optional<LoweredStrength>& l) {
+    return l ? 100.0 * l->reduction() : 0.0;
+  };
+  return {{"elements_lowered", r.elements},
+          {"largest_percent", percent(r.largest)},
+          {"largest_where_damaged_percent", percent(r.largest_where_damaged)},
+          {"largest", lowered_strength_json(r.largest)},
+          {"largest_where_damaged", lowered_strength_json(r.largest_where_damaged)}};
+}
+
 nlohmann::json absorbed_by_mechanism_json(const ImpactResult& r) {
   const std::optional<AbsorbedEnergySplit> split = absorbed_energy_split(r);
   if (!split) return nullptr;
@@ -295,6 +316,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
                 : nlohmann::json(nullptr);
     }
     d["active_elements"] = pd.active_elements;
+    d["strength_reduction"] = strength_reduction_json(pd.strength_reduction);
     d["iterations"] = r.newton->iterations;
     d["max_iterations_per_step"] = r.newton->max_iterations_per_step;
     d["factorizations"] = r.newton->factorizations;
@@ -391,6 +413,13 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                              to_string(*pd.first_mode), first->ply, first->time * 1e6, first->force)
                : std::string("  first ply damage                none\n");
     t += first_damage_by_mode_text(pd);
+    if (const auto& l = pd.strength_reduction.largest)
+      t += fmt::format("  strengths lowered       {:12d} elements, by up to {:.1f} % ({} of '{}'); where the "
+                       "plies damaged by up to {:.1f} %\n",
+                       pd.strength_reduction.elements, 100.0 * l->reduction(), l->strength, l->material,
+                       pd.strength_reduction.largest_where_damaged
+                           ? 100.0 * pd.strength_reduction.largest_where_damaged->reduction()
+                           : 0.0);
     if (s.integration == Integrator::central_difference)
       t += fmt::format("  damage step                 explicit: no solve, dt = {:.4g} us\n", s.dt * 1e6);
     else if (r.newton)
