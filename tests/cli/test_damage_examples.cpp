@@ -3,12 +3,14 @@
 // header that it stops earlier on purpose. Read from the reference summaries of tests/reference/examples/,
 // which Examples/ExampleUnchanged keeps equal to what the program gives for each deck: an example whose
 // physics moves must update its reference, and then meet these bounds again.
+#include "plyimpact/io/deck/deck.hpp"
 #include "support/cli.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -86,6 +88,36 @@ TEST(ShippedDamageExamples, EachEndsItsEventWithinOnePercentOrSaysWhyItStops) {
     EXPECT_NE(read_text(examples_dir / (name + ".toml")).find("incomplete on purpose"), std::string::npos)
         << name << " stops before the end of its event (" << s.at("incomplete_reason").get<std::string>()
         << ") and its header does not say why (\"... reported incomplete on purpose\")";
+  }
+}
+
+// Issue 79's four Rivallant tests (examples/rivallant-*.toml), shipped with a 1 us end (their whole events
+// take hours today, issue 80): each takes its ply card by name — T700/M21, and T700GC/M21 for the 25 J panel
+// (nu12 0.33, G_mt 0.6 N/mm) — cuts the six interfaces between the ply groups of [0_2/45_2/90_2/-45_2]s, and
+// on the rig's default damage mesh lowers no strength: the rig sizes the elements from the smallest band
+// limit of the fracture-plane law, in-plane shear 2 G12 G_ms / S12^2 (1.27 mm, 1.67 mm on the T700GC card),
+// which the rig line of each reference states.
+TEST(RivallantExamples, EachTakesItsCardCutsTheSixInterfacesAndLowersNoStrength) {
+  for (const std::string energy : {"6.5", "17", "25", "29.5"}) {
+    const std::string name = "rivallant-" + energy + "J";
+    const plyimpact::Deck deck =
+        plyimpact::parse_deck(read_text(examples_dir / (name + ".toml")), name + ".toml");
+    ASSERT_EQ(deck.materials.size(), 1U) << name;
+    const plyimpact::Material& m = deck.materials.front();
+    const bool gc = energy == "25";
+    EXPECT_EQ(deck.material_cards.front().second, gc ? "T700GC-M21" : "T700-M21") << name;
+    EXPECT_EQ(m.nu12, gc ? 0.33 : 0.3) << name;
+    EXPECT_EQ(*m.toughness.G_mt, gc ? 600.0 : 500.0) << name;
+    const double band_limit = 2.0 * m.G12 * *m.toughness.G_ms / (*m.strength.S12 * *m.strength.S12);
+    EXPECT_NEAR(band_limit, gc ? 1.667e-3 : 1.269e-3, 1e-6) << name;
+
+    const nlohmann::json s = read_json(reference_dir / (name + ".summary.json"));
+    EXPECT_EQ(s.at("delamination").at("interfaces_after_ply"), nlohmann::json({2, 4, 6, 10, 12, 14})) << name;
+    EXPECT_EQ(s.at("damage").at("strength_reduction").at("elements_lowered").get<int>(), 0) << name;
+    const std::string rig = s.at("rig").get<std::string>();
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "(%.2f mm), less 10 %%", band_limit * 1e3);
+    EXPECT_NE(rig.find(limit), std::string::npos) << name << ": " << rig;
   }
 }
 
