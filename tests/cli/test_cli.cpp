@@ -48,6 +48,23 @@ TEST(Cli, ImpactWritesHistoryAndSummaryWithTheSpecKeys) {
   EXPECT_TRUE(fs::exists(dir / "out" / "provenance.json"));
 }
 
+// provenance.json and report.html name the commit the program was built from, as --version prints it
+// (issue 82): a result can be traced to its sources.
+TEST(Cli, TheResultsNameTheCommitThatVersionPrints) {
+  const CommandResult version = run("--version");
+  ASSERT_EQ(version.status, 0) << version.out;
+  const std::size_t open = version.out.find("(commit "), close = version.out.find(')', open);
+  ASSERT_NE(open, std::string::npos) << version.out;
+  const std::string commit = version.out.substr(open + 8, close - open - 8);
+  ASSERT_FALSE(commit.empty());
+  const fs::path dir = scratch("commit");
+  const fs::path deck = write(dir, small_deck("impact", steel_ball_impactor("dt = 1e-6\n")));
+  const CommandResult r = run("impact " + deck.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(read_json(dir / "out" / "provenance.json").at("commit").get<std::string>(), commit);
+  EXPECT_NE(read_text(dir / "out" / "report.html").find("(commit " + commit + ")"), std::string::npos);
+}
+
 TEST(Cli, ADeckAloneRunsItsOwnAnalysis) {
   const fs::path dir = scratch("default");
   const fs::path deck = write(dir, small_deck("modal", "[modal]\ncount = 3\n"));

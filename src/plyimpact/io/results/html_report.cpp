@@ -2,6 +2,7 @@
 
 #include "plyimpact/io/results/html_page.hpp"
 #include "plyimpact/io/results/svg_plot.hpp"
+#include "plyimpact/io/system/build_info.hpp"
 
 #include <fmt/format.h>
 
@@ -211,8 +212,9 @@ void delamination_section(std::string& h, const ImpactReportInput& in) {
 
 std::string impact_report_html(const ImpactReportInput& in) {
   const std::string title = in.deck.title.empty() ? in.deck.source : in.deck.title;
-  std::string h = html_page_start(title, fmt::format("impact analysis of {}, plyimpact {}",
-                                                     xml_escaped(in.deck.source), PLYIMPACT_VERSION));
+  std::string h = html_page_start(title, fmt::format("impact analysis of {}, plyimpact {} (commit {})",
+                                                     xml_escaped(in.deck.source), PLYIMPACT_VERSION,
+                                                     xml_escaped(source_commit())));
   case_section(h, in);
   warnings_section(h, in);
   results_section(h, in.summary);

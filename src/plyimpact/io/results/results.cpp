@@ -4,6 +4,7 @@
 #include "plyimpact/io/deck/json_text.hpp"
 #include "plyimpact/io/deck/material_library.hpp"
 #include "plyimpact/io/system/atomic_file.hpp"
+#include "plyimpact/io/system/build_info.hpp"
 
 #include <fmt/format.h>
 
@@ -44,8 +45,10 @@ nlohmann::json summary_header(const Deck& deck, const std::string& analysis) {
 ResultsFolder::ResultsFolder(std::filesystem::path dir, const Deck& deck) : dir_(std::move(dir)) {
   std::filesystem::create_directories(dir_);
   write_text("deck.toml", deck.text);
-  nlohmann::json provenance = {
-      {"program", "plyimpact"}, {"version", PLYIMPACT_VERSION}, {"deck", deck.source}};
+  nlohmann::json provenance = {{"program", "plyimpact"},
+                               {"version", PLYIMPACT_VERSION},
+                               {"commit", source_commit()},
+                               {"deck", deck.source}};
   if (!deck.material_cards.empty()) provenance["material_library"] = material_cards_json(deck);
   write_json("provenance.json", provenance);
 }
