@@ -277,20 +277,12 @@ std::optional<LoweredStrength> DamagedPlate::lowered_strength(int e) const {
   return l;
 }
 
-namespace {
-
-void keep_larger(std::optional<LoweredStrength>& into, const LoweredStrength& l) {
-  if (!into || l.reduction() > into->reduction()) into = l;
-}
-
-} // namespace
-
 StrengthReduction DamagedPlate::lowered_elements() const {
   StrengthReduction r;
   for (int e = 0; e < model_.mesh().element_count(); ++e)
     if (const std::optional<LoweredStrength> l = lowered_strength(e)) {
       ++r.elements;
-      keep_larger(r.largest, *l);
+      keep_larger_reduction(r.largest, l);
     }
   return r;
 }
@@ -303,8 +295,7 @@ StrengthReduction DamagedPlate::strength_reduction(const DamageField& field) con
     if (d.damage.sum() > 0.0) damaged.push_back(d.element);
   std::sort(damaged.begin(), damaged.end()); // element order: the first element of the largest
   for (const int e : damaged)
-    if (const std::optional<LoweredStrength> l = lowered_strength(e))
-      keep_larger(r.largest_where_damaged, *l);
+    keep_larger_reduction(r.largest_where_damaged, lowered_strength(e));
   return r;
 }
 

@@ -74,6 +74,13 @@ struct LoweredStrength {
   [[nodiscard]] double reduction() const { return 1.0 - used / deck; }
 };
 
+/// `into` becomes `candidate` where the candidate lowers its strength more (of equal ones, `into` stays):
+/// how a largest reduction is kept over elements and over sub-laminates.
+inline void keep_larger_reduction(std::optional<LoweredStrength>& into,
+                                  const std::optional<LoweredStrength>& candidate) {
+  if (candidate && (!into || candidate->reduction() > into->reduction())) into = candidate;
+}
+
 /// How far a run's laws lowered the deck's strengths (issue 79: the largest reduction, and where).
 struct StrengthReduction {
   int elements = 0;                       ///< elements with some strength lowered

@@ -68,14 +68,11 @@ std::vector<ElementPlyDamage> StackedDamageField::element_ply_damage() const {
 StrengthReduction StackedDamageField::strength_reduction() const {
   StrengthReduction r;
   if (parts_ == nullptr) return r;
-  const auto keep_larger = [](std::optional<LoweredStrength>& into, const std::optional<LoweredStrength>& l) {
-    if (l && (!into || l->reduction() > into->reduction())) into = l;
-  };
   for (const DamageField& part : *parts_) {
     const StrengthReduction p = part.strength_reduction();
     r.elements = std::max(r.elements, p.elements);
-    keep_larger(r.largest, p.largest);
-    keep_larger(r.largest_where_damaged, p.largest_where_damaged);
+    keep_larger_reduction(r.largest, p.largest);
+    keep_larger_reduction(r.largest_where_damaged, p.largest_where_damaged);
   }
   return r;
 }

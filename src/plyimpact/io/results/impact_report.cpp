@@ -196,15 +196,17 @@ nlohmann::json lowered_strength_json(const std::optional<LoweredStrength>& l) {
           {"x_m", l->centre.x()},    {"y_m", l->centre.y()}};
 }
 
+/// A lowered strength's reduction in percent, 0 where none was lowered.
+double reduction_percent(const std::optional<LoweredStrength>& l) {
+  return l ? 100.0 * l->reduction() : 0.0;
+}
+
 /// The strengths lowered to band limits (issue 79): how many elements, the largest reduction, and the
 /// largest where the plies damaged.
 nlohmann::json strength_reduction_json(const StrengthReduction& r) {
-  const auto percent = [](const std::optional<LoweredStrength>& l) {
-    return l ? 100.0 * l->reduction() : 0.0;
-  };
   return {{"elements_lowered", r.elements},
-          {"largest_percent", percent(r.largest)},
-          {"largest_where_damaged_percent", percent(r.largest_where_damaged)},
+          {"largest_percent", reduction_percent(r.largest)},
+          {"largest_where_damaged_percent", reduction_percent(r.largest_where_damaged)},
           {"largest", lowered_strength_json(r.largest)},
           {"largest_where_damaged", lowered_strength_json(r.largest_where_damaged)}};
 }
@@ -416,10 +418,8 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
     if (const auto& l = pd.strength_reduction.largest)
       t += fmt::format("  strengths lowered       {:12d} elements, by up to {:.1f} % ({} of '{}'); where the "
                        "plies damaged by up to {:.1f} %\n",
-                       pd.strength_reduction.elements, 100.0 * l->reduction(), l->strength, l->material,
-                       pd.strength_reduction.largest_where_damaged
-                           ? 100.0 * pd.strength_reduction.largest_where_damaged->reduction()
-                           : 0.0);
+                       pd.strength_reduction.elements, reduction_percent(l), l->strength, l->material,
+                       reduction_percent(pd.strength_reduction.largest_where_damaged));
     if (s.integration == Integrator::central_difference)
       t += fmt::format("  damage step                 explicit: no solve, dt = {:.4g} us\n", s.dt * 1e6);
     else if (r.newton)
