@@ -80,8 +80,15 @@ TEST(Deck, ReadsTheSpecVocabulary) {
   EXPECT_EQ(*d.contact.k, 0.6e9);
   EXPECT_EQ(*d.time.dt, 1.0e-6);
   EXPECT_FALSE(d.time.end.has_value());
+  EXPECT_EQ(d.time.end_rule, EventEnd::re_hit); // "auto": SPEC §4's rule
   EXPECT_EQ(d.time.newmark_beta, 0.25);
   EXPECT_NO_THROW(require_sections(d, AnalysisKind::impact));
+}
+
+TEST(Deck, EndSeparationChoosesTheSeparationRuleAndNoEndTime) {
+  const Deck d = parse_deck(replace_line(base_deck, "end = \"auto\"", "end = \"separation\""), "deck.toml");
+  EXPECT_FALSE(d.time.end.has_value());
+  EXPECT_EQ(d.time.end_rule, EventEnd::separation);
 }
 
 TEST(Deck, ImpactorMassFromDensityIsTheSphereMass) {
@@ -216,7 +223,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "time.mass_scaling"},
         BadDeck{"NegativeTimeStep", "dt = 1.0e-6", "dt = -1e-6", "time.dt must be positive"},
         BadDeck{"AutoMisspelt", "end = \"auto\"", "end = \"atuo\"",
-                "time.end must be a positive number in s or \"auto\""},
+                "time.end must be a positive number in s, \"auto\" or \"separation\", got \"atuo\" (did you "
+                "mean \"auto\"?)"},
+        BadDeck{"SeparationMisspelt", "end = \"auto\"", "end = \"seperation\"",
+                "(did you mean \"separation\"?)"},
         BadDeck{"AbsurdStepCount", "end = \"auto\"", "end = 1e6", "more than the limit of 100000000 steps"},
         // Absurd sizes are refused up front (docs/robustness.md): 4e6 elements, 1e12 steps, 1e10 plies.
         BadDeck{"AbsurdElementCount", "nx = 15\nny = 11", "nx = 2000\nny = 2000",

@@ -10,6 +10,7 @@
 #include "plyimpact/analysis/impact/guards.hpp"
 #include "plyimpact/analysis/impact/recorders.hpp"
 #include "plyimpact/analysis/plate_analyses/modal_analysis.hpp"
+#include "plyimpact/analysis/plate_analyses/static_analysis.hpp"
 #include "plyimpact/fem/element_loop.hpp"
 #include "plyimpact/fem/structured_mesh.hpp"
 
@@ -150,6 +151,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
     s.dt = std::min(s.dt, 0.8 * largest_delamination_time_step(d.laminates.front(), d.delamination->stack,
                                                                d.time.newmark_beta));
   s.end = d.time.end;
+  s.end_rule = d.time.end_rule;
   s.newmark_beta = d.time.newmark_beta;
   s.newmark_gamma = d.time.newmark_gamma;
   s.max_steps = d.time.max_steps;
@@ -293,6 +295,25 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
 
 ImpactCase::~ImpactCase() = default;
 
+namespace {
+
+/// c of the separation rule (SE1): the undamaged plate's deflection at the impact point under a unit
+/// force there, toward the impactor (against +z: with unilateral supports the plate may lift off them) [m/N].
+double impact_point_compliance(const DiscretePlate& model, const Impactor& imp) {
+  StaticLoad unit;
+  unit.point = PointLoad{imp.x, imp.y, -1.0};
+  try {
+    return -solve_static(model, unit).load_point_deflection;
+  } catch (const InsufficientRestraint& e) {
+    throw std::invalid_argument(fmt::format(
+        "time.end = \"separation\" bounds the plate's rise by its static compliance at the impact point, and "
+        "this plate has none: {}. Use time.end = \"auto\" (the re-hit rule) or a time",
+        e.what()));
+  }
+}
+
+} // namespace
+
 ImpactResult ImpactCase::run(const RunRequest& request) const {
   const ElementThreads threads(request.threads);
   const Impactor imp = request.impactor.value_or(settings_.impactor);
@@ -307,6 +328,8 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
   loop.stop_at_energy_error = settings_.stop_at_energy_error;
   loop.adaptive = settings_.adaptive;
   loop.fundamental_period = fundamental_period_;
+  if (!settings_.end && settings_.end_rule == EventEnd::separation)
+    loop.separation_compliance = settings_.rigid_target ? 0.0 : impact_point_compliance(*model_, imp);
   loop.cancel = request.cancel;
   loop.keep_failed_run = request.keep_failed_run;
   loop.contact_point_response = request.contact_point_response && request.observers.empty() &&

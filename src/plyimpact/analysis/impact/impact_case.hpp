@@ -84,7 +84,8 @@ struct ImpactSettings {
   double k = 0.0; ///< contact stiffness [N/m^1.5]
   ContactLawParameters contact;
   double dt = 1e-6;          ///< [s]
-  std::optional<double> end; ///< [s]; empty: SPEC §4 end-of-event rule
+  std::optional<double> end; ///< [s]; empty: end_rule
+  EventEnd end_rule = EventEnd::re_hit;
   double newmark_beta = 0.25, newmark_gamma = 0.5;
   long max_steps = 2'000'000;
   std::optional<double> stop_at_energy_error;    ///< [time] stop_at_energy_error (fraction of ½ m v0²)

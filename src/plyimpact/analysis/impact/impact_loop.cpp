@@ -2,6 +2,7 @@
 
 #include "plyimpact/analysis/contact/contact_rules.hpp"
 #include "plyimpact/analysis/impact/guards.hpp"
+#include "plyimpact/analysis/impact/separation_end.hpp"
 #include "plyimpact/analysis/integrators/time_step_control.hpp"
 #include "plyimpact/analysis/plate_analyses/nonlinear_static.hpp"
 #include "plyimpact/fem/element_loop.hpp"
@@ -23,11 +24,15 @@ namespace {
 /// The whole plate state is checked for NaN/Inf every this many steps (the contact scalars every step).
 constexpr long full_state_check_every = 100;
 
-/// The bookkeeping of the event: step limit and interrupt, contact episodes and peaks, the SPEC §4
-/// end-of-event rule and the summary values of ImpactResult.
+/// The bookkeeping of the event: step limit and interrupt, contact episodes and peaks, the end-of-event
+/// rules (SPEC §4's, or separation_end.hpp's) and the summary values of ImpactResult.
 class ImpactEvent {
 public:
-  ImpactEvent(ImpactResult& result, const LoopSettings& settings) : r_(result), s_(settings) {}
+  ImpactEvent(ImpactResult& result, const LoopSettings& settings)
+      : r_(result), s_(settings),
+        separation_check_every_(std::max(1L, std::lround(separation_check_interval / settings.dt))) {
+    if (s_.separation_compliance) separation_.emplace(*s_.separation_compliance);
+  }
 
   /// Before step+1: true (with ImpactResult::stop_reason set) at the step limit, on an interrupt or
   /// when an observer asked to stop.
@@ -69,11 +74,17 @@ public:
     r_.max_indentation = std::max(r_.max_indentation, alpha);
   }
 
-  /// End of the event at t: time.end reached, or (SPEC §4) out of contact for the longer of the first
-  /// contact and two fundamental periods.
-  bool over(double t) {
+  /// End of the event after `step` at t: time.end reached; with the separation rule, the impactor out of
+  /// the plate's reach (`state()` gives what it looks at, asked once per separation_check_interval);
+  /// else (SPEC §4) out of contact for the longer of the first contact and two fundamental periods.
+  template <class StateOf>
+  bool over(long step, double t, const StateOf& state) {
     if (s_.end) return t >= *s_.end - 1e-9 * s_.dt;
     if (in_contact_ || last_separation_ < 0.0) return false;
+    if (separation_ && !separation_->bound_failure() && step % separation_check_every_ == 0) {
+      if (separation_->cannot_hit_again(state())) return true;
+      if (const auto& why = separation_->bound_failure()) r_.warnings.push_back(*why);
+    }
     return t - last_separation_ >= std::max(r_.contact_duration, 2.0 * s_.fundamental_period);
   }
 
@@ -87,6 +98,10 @@ public:
     r_.permanent_indentation = law.permanent_indentation();
     r_.contact_dissipation = contact_work;
     if (!s_.end && s_.fundamental_period > 0.0) r_.fundamental_period = s_.fundamental_period;
+    r_.end_rule = s_.end                              ? EventEndRule::time
+                  : separation_ && separation_->end() ? EventEndRule::separation
+                                                      : EventEndRule::re_hit;
+    if (separation_) r_.separation_end = separation_->end();
     // The end-of-event rule ends a run only after the impactor has left; time.end may come before.
     const bool by_rule = ended && !s_.end;
     const bool left = by_rule || (!in_contact_ && !r_.episodes.empty() && impactor.velocity() < 0.0);
@@ -123,6 +138,8 @@ private:
   bool in_contact_ = false;
   double last_separation_ = -1.0;
   double last_force_ = 0.0;
+  std::optional<SeparationRule> separation_; ///< engaged with LoopSettings::separation_compliance
+  long separation_check_every_;
 };
 
 /// The plies' damage of the stepper's model after the last accepted step; null without.
@@ -395,7 +412,12 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
       r.stop_reason = energy_stop_reason(view, *s.stop_at_energy_error);
       break;
     }
-    if (event.over(t)) {
+    const auto separation_state = [&] {
+      return SeparationState{
+          t,  impactor.displacement(),     impactor.velocity(),
+          ws, law.permanent_indentation(), view.plate_kinetic_energy() + view.plate_strain_energy()};
+    };
+    if (event.over(step, t, separation_state)) {
       ended = true;
       break;
     }

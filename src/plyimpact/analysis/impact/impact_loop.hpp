@@ -32,7 +32,10 @@ struct LoopSettings {
   std::optional<double> stop_at_energy_error;
   /// engaged: error-controlled steps of at most dt (time_step_control.hpp); the policy must allow them
   std::optional<AdaptiveTimeStep> adaptive;
-  double fundamental_period = 0.0;           ///< of the plate, for the end-of-event rule [s]
+  double fundamental_period = 0.0; ///< of the plate, for the end-of-event rule [s]
+  /// engaged: end the event by separation (separation_end.hpp), c of the undamaged plate at the impact
+  /// point [m/N]; the SPEC §4 rule stays the fallback. Ignored where `end` is given.
+  std::optional<double> separation_compliance;
   const std::atomic<bool>* cancel = nullptr; ///< stop after the current step when set
   /// a step that fails (NewtonFailure, BandLimitError) ends the run (ImpactResult::failure), not a throw
   bool keep_failed_run = false;
@@ -48,6 +51,11 @@ struct LoopSettings {
 /// The running energy balance is checked every this many steps (StepView::energy_balance_error, and
 /// LoopSettings::stop_at_energy_error): the plate's strain energy may cost an element loop.
 inline constexpr long energy_check_every = 100;
+
+/// The separation rule (separation_end.hpp) is checked once per this much simulated time after the
+/// impactor has left (every step where the step is longer): the plate's strain energy may cost an element
+/// loop [s].
+inline constexpr double separation_check_interval = 1e-6;
 
 /// Runs one impact event. The result's summary values are filled in; histories are the observers' job.
 [[nodiscard]] ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& impactor, double k,

@@ -1,5 +1,6 @@
 #pragma once
 // What an impact run returns (SPEC §4 "Results of a run", §10 impact keys). SI units.
+#include "plyimpact/analysis/impact/separation_end.hpp"
 #include "plyimpact/fem/damaged_plate.hpp"
 #include "plyimpact/fem/stacked_plate.hpp" // DelaminationAreas, DelaminationResult
 
@@ -109,6 +110,9 @@ struct AdaptiveStepResult {
   int factorizations = 0;           ///< of K̄, one per level used
 };
 
+/// What ended a run that reached its end: time.end, SPEC §4's re-hit rule, or the separation rule.
+enum class EventEndRule { time, re_hit, separation };
+
 struct ImpactResult {
   std::vector<ImpactSample> history; ///< every k-th step (RunRequest::history_every), first and last always
   std::vector<ContactEpisode> episodes;
@@ -128,6 +132,10 @@ struct ImpactResult {
   /// (time.end given, or a rigid target).
   std::optional<double> fundamental_period;
   double end_time = 0.0; ///< time of the last step [s]
+  /// The rule that decides the end (time.end, or with time.end = "auto" / "separation" the rule that
+  /// ended it or would have: re_hit while the separation rule has not)
+  EventEndRule end_rule = EventEndRule::re_hit;
+  std::optional<SeparationEnd> separation_end; ///< where the separation rule ended the run
   long steps = 0;
   int newton_iterations_max = 0; ///< most iterations of the scalar contact solve in one step
   /// The event is over: the end-of-event rule ended the run, or time.end came after the impactor had

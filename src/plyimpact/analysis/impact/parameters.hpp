@@ -119,10 +119,17 @@ enum class Integrator {
 /// The deck spelling: "implicit", "lagged", "explicit".
 [[nodiscard]] std::string_view to_string(Integrator i);
 
+/// How a run without a given end time knows the event is over.
+enum class EventEnd {
+  re_hit,     ///< "auto": out of contact for the longer of the first contact and two periods T1 (SPEC §4)
+  separation, ///< "separation": the impactor moves away above the plate's reach (separation_end.hpp)
+};
+
 /// Newmark time stepping (2.11)–(2.16).
 struct TimeStepping {
-  std::optional<double> dt;  ///< [s]; empty = "auto"
-  std::optional<double> end; ///< [s]; empty = "auto" (SPEC §4 end-of-event rule)
+  std::optional<double> dt;             ///< [s]; empty = "auto"
+  std::optional<double> end;            ///< [s]; empty = "auto" or "separation" (end_rule)
+  EventEnd end_rule = EventEnd::re_hit; ///< where `end` is empty
   double newmark_beta = 0.25;
   double newmark_gamma = 0.5;
   long max_steps = 2'000'000;

@@ -187,6 +187,27 @@ MassScaling read_mass_scaling(const TableReader& t) {
   return m;
 }
 
+/// `[time] end`: a time, "auto" (SPEC §4's re-hit rule) or "separation" (separation_end.hpp).
+void read_end(const TableReader& t, TimeStepping& ts) {
+  const toml::node* n = t.table().get("end");
+  if (const auto* s = n ? n->as_string() : nullptr) {
+    const std::string v = s->get();
+    if (v == "separation") {
+      ts.end_rule = EventEnd::separation;
+      return;
+    }
+    if (v != "auto") {
+      const auto best = closest_name(v, std::vector<std::string_view>{"auto", "separation"});
+      t.fail_at("end", fmt::format("time.end must be a positive number in {}, \"auto\" or \"separation\", "
+                                   "got \"{}\"{}",
+                                   t.deck_unit("s"), v,
+                                   best ? fmt::format(" (did you mean \"{}\"?)", *best) : std::string()));
+    }
+    return;
+  }
+  ts.end = t.positive_or_auto("end", "s");
+}
+
 } // namespace
 
 TimeStepping read_time(const TableReader& t) {
@@ -198,7 +219,7 @@ TimeStepping read_time(const TableReader& t) {
            "integration", {{"implicit", TimeScheme::newmark}, {"explicit", TimeScheme::central_difference}})
           .value_or(ts.integration);
   ts.dt = t.positive_or_auto("dt", "s");
-  ts.end = t.positive_or_auto("end", "s");
+  read_end(t, ts);
   ts.newmark_beta = t.optional_positive("newmark_beta", "-").value_or(0.25);
   ts.newmark_gamma = t.optional_number("newmark_gamma", "-").value_or(0.5);
   if (!(ts.newmark_gamma >= 0.5))

@@ -16,6 +16,21 @@ namespace plyimpact {
 
 namespace {
 
+/// summary.json `end_of_event`: the rule that decides the end, and where the separation rule ended it.
+nlohmann::json end_of_event_json(const ImpactResult& r) {
+  const char* rule = r.end_rule == EventEndRule::time         ? "time.end"
+                     : r.end_rule == EventEndRule::separation ? "separation"
+                                                              : "re-hit";
+  nlohmann::json j = {{"rule", rule}, {"separation", nullptr}};
+  if (const auto& e = r.separation_end)
+    j["separation"] = {{"time_s", e->time},
+                       {"impactor_gap_m", e->impactor_gap},
+                       {"plate_amplitude_bound_m", e->amplitude_bound},
+                       {"plate_energy_J", e->plate_energy},
+                       {"compliance_m_per_N", e->compliance}};
+  return j;
+}
+
 /// A value that may not apply: JSON null when empty, never a 0 that reads like a result.
 nlohmann::json or_null(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
@@ -271,6 +286,7 @@ nlohmann::json impact_summary_json(const Deck& deck, const ImpactSettings& s, co
   }
   if (s.mass_scaling) j["mass_scaling"] = mass_scaling_json(*s.mass_scaling, s, r);
   j["end_time"] = r.end_time;
+  j["end_of_event"] = end_of_event_json(r);
   j["complete"] = r.complete;
   j["incomplete_reason"] = or_null(r.incomplete_reason);
   if (!r.stop_reason.empty()) j["stop_reason"] = r.stop_reason;
@@ -437,6 +453,11 @@ std::string impact_summary_text(const ImpactSettings& s, const ImpactResult& r) 
                    r.suspect ? "  SUSPECT" : "");
   t += fmt::format("  steps                   {:12d} to t = {:.1f} us, wall time {:.3f} s{}\n", r.steps,
                    r.end_time * 1e6, r.wall_time, r.complete ? "" : "  INCOMPLETE");
+  if (const auto& e = r.separation_end)
+    t += fmt::format(
+        "  ended at separation     impactor {:.3g} um above the plate's reach of {:.3g} um (plate "
+        "energy {:.3g} J, compliance {:.3g} m/N)\n",
+        e->impactor_gap * 1e6, e->amplitude_bound * 1e6, e->plate_energy, e->compliance);
   if (r.time_steps)
     t += fmt::format(
         "  adaptive steps          {:12.3g} to {:.3g} us (allowed {:.3g} to {:.3g}), {} redone, {} "

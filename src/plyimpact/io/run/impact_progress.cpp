@@ -15,8 +15,12 @@ namespace plyimpact {
 double expected_run_time(const ImpactSettings& settings, const StepView& view, double separation,
                          double fundamental_period) {
   if (settings.end) return *settings.end;
-  // SPEC §4: the run ends max(t_c, 2 T1) after the impactor leaves at t_c.
-  const auto event = [&](double t_c) { return t_c + std::max(t_c, 2.0 * fundamental_period); };
+  // SPEC §4: the run ends max(t_c, 2 T1) after the impactor leaves at t_c; by separation, soon after it
+  // leaves (a guess: a tenth of the contact).
+  const bool by_separation = settings.end_rule == EventEnd::separation;
+  const auto event = [&](double t_c) {
+    return t_c + (by_separation ? 0.1 * t_c : std::max(t_c, 2.0 * fundamental_period));
+  };
   if (separation > 0.0) return event(separation);
   const Impactor& i = settings.impactor;
   const double rigid = hertz_contact_time(i.mass, i.velocity, settings.k, contact_exponent(i.nose));
