@@ -52,6 +52,11 @@ CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) 
   require_positive("G_Ic", p_.G_Ic, "J/m²");
   require_positive("G_IIc", p_.G_IIc, "J/m²");
   require_positive("the B-K exponent eta", p_.bk_exponent, "-");
+  if (!(p_.cracked_closing_fraction > 0.0 && p_.cracked_closing_fraction <= 1.0))
+    throw std::invalid_argument(
+        fmt::format("cohesive law: cracked_closing_fraction = {:g} must lie in (0, 1]: "
+                    "the closing penalty of a cracked point as a fraction of K",
+                    p_.cracked_closing_fraction));
   const double K = p_.penalty_stiffness;
   normal_onset_ = p_.normal_strength / K;
   shear_onset_ = p_.shear_strength / K;
@@ -163,11 +168,13 @@ CohesiveResponse CohesiveLaw::at_fixed_damage(const CohesiveState& state,
   r.state = {d, separation};
   r.traction = (1.0 - d) * K * Eigen::Vector3d(separation(0), separation(1), macaulay(normal));
   r.tangent.diagonal() << (1.0 - d) * K, (1.0 - d) * K, (1.0 - d) * K;
-  // Contact penalty: closing is never softened. At δ_n = 0 exactly the tangent is the opening one, so that
-  // an initial crack at rest (d = 1, δ = 0) starts open rather than glued (the traction is 0 either way).
+  // Contact penalty K_n(d) (DL10): K, never softened, unless a fraction for cracked faces is asked. At
+  // δ_n = 0 exactly the tangent is the opening one, so that an initial crack at rest (d = 1, δ = 0) starts
+  // open rather than glued (the traction is 0 either way).
   if (normal < 0.0) {
-    r.traction(2) = K * normal;
-    r.tangent(2, 2) = K;
+    const double closing = closing_stiffness(d);
+    r.traction(2) = closing * normal;
+    r.tangent(2, 2) = closing;
   }
   return r;
 }
@@ -223,6 +230,9 @@ CohesiveResponse CohesiveLaw::update(const CohesiveState& previous, const Eigen:
     dd += (dd_donset * donset_dB + dd_dfailure * dfailure_dB) * dB;
   }
   r.tangent -= K * degradable * dd.transpose();
+  // Closed, on a penalty that follows the damage (DL10): ∂(K_n δ_n)/∂δ gains −K (1 − ρ) δ_n ∂d/∂δ.
+  if (normal < 0.0 && p_.cracked_closing_fraction < 1.0)
+    r.tangent.row(2) -= K * (1.0 - p_.cracked_closing_fraction) * normal * dd.transpose();
   return r;
 }
 
@@ -235,15 +245,16 @@ CohesiveResponse CohesiveLaw::step_mean(const CohesiveState& state, const Eigen:
   // (DL6) in shear: the mean of the two ends (ψ is quadratic there).
   r.traction = 0.5 * opening * (from + separation);
   r.tangent.diagonal().setConstant(0.5 * opening);
-  // Normal: ψ_n(g) = ½ k(g) g², k = (1 − d) K opening, K closing.
+  // Normal: ψ_n(g) = ½ k(g) g², k = (1 − d) K opening, K_n(d) closing (DL10).
+  const double closing = closing_stiffness(state.damage);
   const double g0 = from(2), g1 = separation(2);
   if ((g0 >= 0.0 && g1 >= 0.0) || (g0 <= 0.0 && g1 <= 0.0)) { // on one side of the kink
-    const double k = g0 + g1 > 0.0 ? opening : K;
+    const double k = g0 + g1 > 0.0 ? opening : closing;
     r.traction(2) = 0.5 * k * (g0 + g1);
     r.tangent(2, 2) = 0.5 * k;
     return r;
   }
-  const auto stiffness = [&](double g) { return g > 0.0 ? opening : K; };
+  const auto stiffness = [&](double g) { return g > 0.0 ? opening : closing; };
   const double psi0 = 0.5 * stiffness(g0) * g0 * g0, psi1 = 0.5 * stiffness(g1) * g1 * g1;
   r.traction(2) = (psi1 - psi0) / (g1 - g0); // across the kink g1 − g0 ≠ 0
   r.tangent(2, 2) = (stiffness(g1) * g1 - r.traction(2)) / (g1 - g0);
@@ -266,6 +277,10 @@ double CohesiveLaw::dissipation(const CohesiveState& previous, const Eigen::Vect
     dissipated += critical_energy_release_rate(B) *
                   (envelope_separation(reached, B) - envelope_separation(damage, B)) /
                   (final_separation(B) - onset_separation(B));
+    // −∂ψ/∂d of the closing part, ½ (1 − ρ) K ⟨−δ_n⟩² (DL10): zero unless closed with ρ < 1.
+    const double closed = macaulay(-at(2));
+    dissipated += 0.5 * (1.0 - p_.cracked_closing_fraction) * p_.penalty_stiffness * closed * closed *
+                  (reached - damage);
     damage = reached;
   }
   return dissipated;
@@ -275,7 +290,8 @@ double CohesiveLaw::stored_energy(const CohesiveState& state, const Eigen::Vecto
   const double K = p_.penalty_stiffness;
   const double lambda = equivalent_separation(separation);
   const double closing = macaulay(-separation(2));
-  return 0.5 * (1.0 - state.damage) * K * lambda * lambda + 0.5 * K * closing * closing;
+  return 0.5 * (1.0 - state.damage) * K * lambda * lambda +
+         0.5 * closing_stiffness(state.damage) * closing * closing;
 }
 
 } // namespace plyimpact

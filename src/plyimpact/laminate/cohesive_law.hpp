@@ -34,6 +34,10 @@ struct CohesiveParameters {
   double G_IIc = 0.0;             ///< mode II (shear) fracture toughness [J/m²]
   double bk_exponent = 0.0;       ///< η of Benzeggagh & Kenane 1996 [-]
   CohesiveOnset onset = CohesiveOnset::turon_bk;
+  /// ρ: the closing penalty of a cracked point (d = 1) as a fraction of K, K_n(d) = K (1 − (1 − ρ) d)
+  /// (DL10). 1 (the default): closing is never softened. Central differences take a quarter
+  /// (cracked_faces_closing_fraction, docs/delamination.md, "Cracked faces that close").
+  double cracked_closing_fraction = 1.0;
   friend bool operator==(const CohesiveParameters&, const CohesiveParameters&) = default;
 };
 
@@ -130,7 +134,7 @@ public:
   /// `separation` (δ₁) with the damage of `state` held fixed, the discrete gradient of ψ(·; d): the
   /// traction τ̄ with τ̄ · (δ₁ − δ₀) = ψ(δ₁) − ψ(δ₀) exactly,
   ///   τ̄_s = ½ (1 − d) K (δ₀ + δ₁)_s in shear, τ̄_n = ½ k (δ₀ + δ₁)_n with k = (1 − d) K when both ends
-  ///   open and K when both close, τ̄_n = (ψ_n(δ₁) − ψ_n(δ₀)) / (δ₁ − δ₀)_n across the kink,     (DL6)
+  ///   open and K_n(d) when both close, τ̄_n = (ψ_n(δ₁) − ψ_n(δ₀)) / (δ₁ − δ₀)_n across the kink,     (DL6)
   /// and its tangent ∂τ̄/∂δ₁ (diagonal, continuous across the kink). The lagged step puts it in the
   /// trapezoidal rule's place of the mean of the two ends' tractions, so that the step keeps the energy
   /// also where faces open or close inside it (Armero & Petőcz 1998 for penalty contact, cited from
@@ -139,7 +143,12 @@ public:
   [[nodiscard]] CohesiveResponse step_mean(const CohesiveState& state,
                                            const Eigen::Vector3d& separation) const;
 
-  /// Free energy ψ = ½(1 − d) K (δ_sh² + ⟨δ_n⟩²) + ½ K ⟨−δ_n⟩² stored per unit area [J/m²].
+  /// The closing penalty at damage d, K_n(d) = K (1 − (1 − ρ) d) (DL10): K on an intact point, ρ K on a
+  /// cracked one [Pa/m].
+  [[nodiscard]] double closing_stiffness(double damage) const {
+    return p_.penalty_stiffness * (1.0 - (1.0 - p_.cracked_closing_fraction) * damage);
+  }
+  /// Free energy ψ = ½(1 − d) K (δ_sh² + ⟨δ_n⟩²) + ½ K_n(d) ⟨−δ_n⟩² stored per unit area [J/m²].
   [[nodiscard]] double stored_energy(const CohesiveState& state, const Eigen::Vector3d& separation) const;
 
   /// Pieces of an increment's path in the dissipation integral.
@@ -147,7 +156,8 @@ public:
 
 private:
   /// ∫ ½ K λ² dd from `previous` to the damage `d` (≥ previous.damage) along the straight path to
-  /// `separation` (see update).
+  /// `separation` (see update), and ½ (K_n(d₀) − K_n(d)) ⟨−δ_n⟩² where a closed point's damage grows under
+  /// a closing penalty that follows it (ρ < 1, DL10).
   [[nodiscard]] double dissipation(const CohesiveState& previous, const Eigen::Vector3d& separation,
                                    double d) const;
   /// Derivative of Δ⁰ with respect to B.

@@ -159,7 +159,7 @@ ImpactSettings resolved_settings(const ImpactCaseDescription& d) {
   s.rigid_target = d.plate.rigid;
   s.nonlinear = d.nonlinear;
   s.progressive_damage = d.progressive_damage;
-  s.delamination = d.delamination;
+  if (d.delamination) s.delamination = interfaces_for(*d.delamination, s.integration);
   return s;
 }
 
@@ -174,9 +174,7 @@ std::optional<double> explicit_highest_frequency(const ImpactCaseDescription& d,
 ImpactSettings resolved_settings(const ImpactCaseDescription& d, std::optional<double> explicit_omega_max) {
   ImpactSettings s = resolved_settings(d);
   if (explicit_omega_max && !d.time.dt) // dt = "auto" below the stable step (CD5)
-    s.dt = std::min(s.dt,
-                    stable_time_step(*explicit_omega_max) *
-                        (d.delamination && d.progressive_damage ? plies_with_interfaces_step_fraction : 1.0));
+    s.dt = std::min(s.dt, stable_time_step(*explicit_omega_max));
   return s;
 }
 

@@ -19,8 +19,7 @@ namespace plyimpact {
 
 namespace {
 
-/// The implicit step's Δt against (DL5), for the stacks without ply damage (the stack with cracking plies
-/// takes half its stable step, plies_with_interfaces_step_fraction).
+/// The implicit step's Δt against (DL5), for the stacks without ply damage.
 void check_delamination_time_step(const DiscretePlate& model, const StepPolicyOptions& options,
                                   const DelaminationSettings& settings) {
   const double dt = options.newmark.dt;
@@ -46,6 +45,12 @@ std::string explicit_key(const PlatePhysics& p) {
   return "[time] integration = \"explicit\"";
 }
 
+DelaminationSettings interfaces_for(DelaminationSettings interfaces, Integrator integrator) {
+  if (integrator == Integrator::central_difference)
+    interfaces.stack.interface.cracked_closing_fraction = cracked_faces_closing_fraction; // (DL10)
+  return interfaces;
+}
+
 std::unique_ptr<MechanicalModel> mechanical_model(const DiscretePlate& plate, const PlatePhysics& p) {
   const ModelKind kind = model_kind_of(p);
   if (auto why = refusal(kind, p.integrator)) throw std::invalid_argument(*why); // capabilities.hpp
@@ -56,7 +61,8 @@ std::unique_ptr<MechanicalModel> mechanical_model(const DiscretePlate& plate, co
   options.strain_measure = measure.value_or(StrainMeasure::von_karman);
   if (const Restriction* r = broken_restriction(kind, p.integrator, options))
     throw std::invalid_argument(std::string(r->message));
-  if (p.interfaces) return stacked_plate_model(plate, *p.interfaces, p.ply_damage, measure);
+  if (p.interfaces)
+    return stacked_plate_model(plate, interfaces_for(*p.interfaces, p.integrator), p.ply_damage, measure);
   if (p.ply_damage)
     return damaging_plate_model(plate, *p.ply_damage, measure ? Kinematics::von_karman : Kinematics::linear);
   if (measure) return von_karman_plate_model(plate, *measure);

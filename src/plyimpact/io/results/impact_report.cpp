@@ -111,6 +111,7 @@ nlohmann::json delamination_json(const DelaminationSettings& s, Integrator integ
   j["cohesive_zone_length_m"] = d.cohesive_zone_length;
   j["interface_point_spacing_m"] = d.interface_point_spacing;
   j["penalty_stiffness_Pa_per_m"] = law.penalty_stiffness;
+  j["cracked_closing_fraction"] = law.cracked_closing_fraction; // (DL10)
   j["normal_strength_Pa"] = law.normal_strength;
   j["shear_strength_Pa"] = law.shear_strength;
   j["G_Ic_J_per_m2"] = law.G_Ic;
@@ -176,8 +177,12 @@ std::string delamination_text(const DelaminationSettings& s, const DelaminationR
   for (const int p : d.interface_after_ply)
     plies += fmt::format("{}{}", plies.empty() ? "" : ", ", p);
   std::string t;
-  t += fmt::format("  delamination            {:12d} interface(s), after plies {}; K = {:.3g} Pa/m\n",
-                   d.interface_after_ply.size(), plies, s.stack.interface.penalty_stiffness);
+  const CohesiveParameters& law = s.stack.interface;
+  t += fmt::format("  delamination            {:12d} interface(s), after plies {}; K = {:.3g} Pa/m{}\n",
+                   d.interface_after_ply.size(), plies, law.penalty_stiffness,
+                   law.cracked_closing_fraction < 1.0
+                       ? fmt::format(", cracked faces close on {:g} K", law.cracked_closing_fraction)
+                       : std::string());
   t += law_defaults_text(s);
   t += fmt::format("  delaminated area        {:12.2f} mm^2 projected; per interface {} mm^2 (softening {} "
                    "mm^2)\n",
