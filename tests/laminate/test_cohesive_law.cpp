@@ -496,6 +496,9 @@ TEST(CohesiveLawParameters, CohesiveZoneLengthMatchesTuronMeshRule) {
               elements_in_zone * element, 1e-12);
 }
 
+} // namespace
+} // namespace plyimpact::cohesive_law_tests
+
 namespace plyimpact::cohesive_law_tests {
 namespace {
 
@@ -674,9 +677,6 @@ TEST(CohesiveLawStepMean, ClappingFacesKeepTheirEnergyAcrossStepsLongerThanTheCo
   EXPECT_LT(kept, 1e-9);
   EXPECT_GT(end_tractions, 1e-2);
 }
-
-} // namespace
-} // namespace plyimpact::cohesive_law_tests
 
 // ------------------------------------------------------------------------------------------------
 // Cracked faces that close (DL10)
