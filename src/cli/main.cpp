@@ -181,7 +181,7 @@ int run_impact(const Options& o) {
     fmt::print(stderr, "plyimpact: warning: {}\n", n);
   if (run.damage_tracked)
     fmt::print("first failures (per criterion, mode and ply/interface):\n{}",
-               first_failures_text(run.first_failures));
+               first_failures_text(run.first_failures, run.clamp_tip_elements, run.laminate_first_failure));
   if (cli::interrupted().load()) return cli::exit_interrupted;
   return r.stop_reason.empty() ? 0 : 3; // 3: stopped early; a run cut short by time.end only warns
 }

@@ -3,6 +3,7 @@
 // radius and energy follow the standard (16 mm nose, 6.7 J/mm × h), and the circular rig is the clamped
 // disk of its opening (Kirchhoff's centre deflection P a²/(16 π D)); the AITM 1-0010 rig is the ASTM coupon
 // without the energy rule. A deck that gives what the preset builds is refused with the key named.
+#include "plyimpact/fem/structured_mesh.hpp"
 #include "plyimpact/io/deck/deck.hpp"
 #include "plyimpact/io/mesh/test_rigs.hpp"
 #include "plyimpact/io/run/plate_analyses.hpp"
@@ -13,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -88,6 +90,47 @@ TEST(TestRigs, TheMapsOutlineTheSupportsTheMeshHolds) {
   EXPECT_NEAR((outline.window[0] + outline.window[2]).y() / 2, 0.050, 1e-12);
   EXPECT_TRUE(rig_outline(RigSpec{RigKind::circular, 0.1, rig_meshing({})}).clamp_tips.empty());
   EXPECT_TRUE(rig_outline(std::nullopt).window.empty());
+}
+
+TEST(TestRigs, TheClampTipElementsAreThoseWithTheNodeNearestATip) {
+  // 4 x 4 nine-node elements on 0.1 x 0.1 m (25 mm, nodes every 12.5 mm): a tip at an inner corner
+  // (50, 50) mm is held by the four elements around it, numbered from 1 as onsets number them; a tip
+  // slightly off the corner (0, 0) by the one element there; one near a mid-side node by the two that
+  // share that side.
+  const Mesh mesh = structured_rectangle(PlateGeometry{0.1, 0.1}, 4, 4);
+  const auto centred_within = [&](const Eigen::Vector2d& p, double reach) {
+    std::vector<int> near;
+    for (int e = 0; e < mesh.element_count(); ++e) {
+      Eigen::Vector2d c = Eigen::Vector2d::Zero();
+      for (const int n : mesh.element_nodes(e))
+        c += mesh.node(n) / 9.0;
+      if ((c - p).norm() < reach) near.push_back(e + 1);
+    }
+    return near;
+  };
+  const std::vector<int> inner = clamp_tip_elements(mesh, {Eigen::Vector2d(0.05, 0.05)});
+  EXPECT_EQ(inner.size(), 4U);
+  EXPECT_EQ(inner, centred_within({0.05, 0.05}, 0.018)); // the centres at 12.5 √2 = 17.7 mm
+  EXPECT_EQ(clamp_tip_elements(mesh, {Eigen::Vector2d(0.001, 0.0005)}), centred_within({0.0, 0.0}, 0.018));
+  EXPECT_EQ(clamp_tip_elements(mesh, {Eigen::Vector2d(0.0374, 0.051)}).size(), 2U) << "node (37.5, 50) mm";
+  // Two tips: the union, sorted, each element once.
+  const std::vector<int> both =
+      clamp_tip_elements(mesh, {Eigen::Vector2d(0.05, 0.05), Eigen::Vector2d(0.05, 0.0749)});
+  EXPECT_EQ(both.size(), 6U) << "four around (50, 50) mm, two more around (50, 75) mm, two shared";
+  EXPECT_TRUE(std::ranges::is_sorted(both));
+  EXPECT_TRUE(clamp_tip_elements(mesh, {}).empty());
+  // On the ASTM rig's mesh every element found holds the tip's own node (the clamps set).
+  const Rig rig = build_rig(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})}, false);
+  const RigOutline outline = rig_outline(RigSpec{RigKind::astm_d7136, 0.0, rig_meshing({})});
+  const std::vector<int> held = clamp_tip_elements(rig.mesh, outline.clamp_tips);
+  EXPECT_GE(held.size(), 4U);
+  for (const int e : held) {
+    double gap = INFINITY;
+    for (const int n : rig.mesh.element_nodes(e - 1))
+      for (const Eigen::Vector2d& tip : outline.clamp_tips)
+        gap = std::min(gap, (rig.mesh.node(n) - tip).norm());
+    EXPECT_LT(gap, 1e-12) << "element " << e;
+  }
 }
 
 TEST(TestRigs, TheAstmImpactorHasTheStandardsNoseAndEnergyUnlessTheDeckGivesThem) {

@@ -90,6 +90,22 @@ RigOutline rig_outline(const std::optional<RigSpec>& spec) {
            {cx - clamp_dx, cy + clamp_dy}}};
 }
 
+std::vector<int> clamp_tip_elements(const Mesh& mesh, const std::vector<Eigen::Vector2d>& tips) {
+  std::vector<int> held;
+  if (mesh.node_count() == 0) return held;
+  for (const Eigen::Vector2d& tip : tips) {
+    int nearest = 0;
+    for (int n = 1; n < mesh.node_count(); ++n)
+      if ((mesh.node(n) - tip).squaredNorm() < (mesh.node(nearest) - tip).squaredNorm()) nearest = n;
+    for (int e = 0; e < mesh.element_count(); ++e)
+      if (std::ranges::find(mesh.element_nodes(e), nearest) != mesh.element_nodes(e).end())
+        held.push_back(e + 1);
+  }
+  std::ranges::sort(held);
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  return held;
+}
+
 std::string_view to_string(RigKind kind) {
   switch (kind) {
   case RigKind::astm_d7136:

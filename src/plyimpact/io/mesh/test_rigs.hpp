@@ -54,6 +54,10 @@ inline constexpr const char* clamp_tip_note = "clamp tips (point supports: their
 /// The outline of `spec`'s rig; empty for none (no rig, or the circular rig, whose support is the mesh's
 /// edge).
 [[nodiscard]] RigOutline rig_outline(const std::optional<RigSpec>& spec);
+/// The elements, numbered from 1 as DamageOnset::element, that hold one of `tips` at a node: each tip holds
+/// the node of `mesh` nearest it, a point support whose stresses are singular, so that a criterion reaching 1
+/// in these elements says nothing of the laminate. Sorted; empty without tips.
+[[nodiscard]] std::vector<int> clamp_tip_elements(const Mesh& mesh, const std::vector<Eigen::Vector2d>& tips);
 
 /// C_E of ASTM D7136 (6.7 J/mm, docs/mesh.md for the source) [J/m].
 inline constexpr double astm_d7136_energy_per_thickness = 6.7e3;

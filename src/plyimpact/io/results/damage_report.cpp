@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace plyimpact {
 
 nlohmann::json onset_json(const DamageOnset& o) {
@@ -57,16 +59,52 @@ std::string probes_csv(const StressProbes& probes) {
   return csv;
 }
 
-std::string first_failures_text(const std::vector<DamageOnset>& first) {
+bool at_clamp_tip(const DamageOnset& o, const std::vector<int>& clamp_tip_elements) {
+  return std::ranges::binary_search(clamp_tip_elements, o.element);
+}
+
+std::optional<DamageOnset> laminate_first_failure(const std::vector<DamageOnset>& onsets,
+                                                  const std::vector<int>& clamp_tip_elements) {
+  std::optional<DamageOnset> first;
+  for (const DamageOnset& o : onsets)
+    if (!at_clamp_tip(o, clamp_tip_elements) && (!first || o.time < first->time)) first = o;
+  return first;
+}
+
+namespace {
+
+/// "hashin matrix-tension in ply 3 at (x, y) mm, t = … us, Fc = … N".
+std::string onset_words(const DamageOnset& o) {
+  return fmt::format("{} {} in {} {}, element {} at ({:.1f}, {:.1f}) mm, t = {:.2f} us, Fc = {:.1f} N",
+                     to_string(o.criterion), to_string(o.mode), o.ply > 0 ? "ply" : "interface",
+                     o.ply > 0 ? o.ply : o.interface, o.element, o.x * 1e3, o.y * 1e3, o.time * 1e6, o.force);
+}
+
+} // namespace
+
+std::string first_failures_text(const std::vector<DamageOnset>& first,
+                                const std::vector<int>& clamp_tip_elements,
+                                const std::optional<DamageOnset>& laminate_first) {
   if (first.empty()) return "  no failure\n";
-  std::string t =
-      fmt::format("  {:<24}{:<20}{:>5}{:>6}{:>6}{:>5}{:>5}{:>10}{:>10}{:>12}{:>12}\n", "criterion", "mode",
-                  "ply", "intf", "elem", "IPGS", "JPGS", "t[us]", "Fc[N]", "s22[MPa]", "t23[MPa]");
-  for (const auto& o : first)
-    t += fmt::format("  {:<24}{:<20}{:>5}{:>6}{:>6}{:>5}{:>5}{:>10.2f}{:>10.1f}{:>12.3f}{:>12.3f}\n",
+  const bool rig = !clamp_tip_elements.empty();
+  std::string t = fmt::format("  {:<24}{:<20}{:>5}{:>6}{:>6}{:>5}{:>5}{:>10}{:>10}{:>12}{:>12}{}\n",
+                              "criterion", "mode", "ply", "intf", "elem", "IPGS", "JPGS", "t[us]", "Fc[N]",
+                              "s22[MPa]", "t23[MPa]", rig ? "  where" : "");
+  int at_tips = 0;
+  for (const auto& o : first) {
+    const bool tip = rig && at_clamp_tip(o, clamp_tip_elements);
+    at_tips += tip ? 1 : 0;
+    t += fmt::format("  {:<24}{:<20}{:>5}{:>6}{:>6}{:>5}{:>5}{:>10.2f}{:>10.1f}{:>12.3f}{:>12.3f}{}\n",
                      to_string(o.criterion), to_string(o.mode), o.ply > 0 ? std::to_string(o.ply) : "-",
                      o.interface > 0 ? std::to_string(o.interface) : "-", o.element, o.ipgs, o.jpgs,
-                     o.time * 1e6, o.force, o.sigma22 / 1e6, o.tau23 / 1e6);
+                     o.time * 1e6, o.force, o.sigma22 / 1e6, o.tau23 / 1e6, tip ? "  clamp tip" : "");
+  }
+  if (!rig) return t;
+  t += fmt::format("  {} of {} rows at clamp tips (point supports: their stresses are singular, not the "
+                   "laminate's failure)\n",
+                   at_tips, first.size());
+  t += "  laminate's first failure away from the clamp tips: " +
+       (laminate_first ? onset_words(*laminate_first) : std::string("none")) + "\n";
   return t;
 }
 

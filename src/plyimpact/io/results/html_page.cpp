@@ -22,6 +22,7 @@ dt { font-weight: bold; } dd { margin: 0; }
 table { border-collapse: collapse; margin: 8px 0; } td, th { border: 1px solid #ccc; padding: 3px 10px; }
 th { background: #f2f2f2; text-align: left; } td.number { text-align: right; font-variant-numeric: tabular-nums; }
 tr.failed td { color: #8a4b00; }
+table.onsets td { white-space: nowrap; } table.onsets { font-size: 0.9em; }
 div.wide { overflow-x: auto; } table.cases { font-size: 0.82em; } table.cases td, table.cases th { padding: 2px 6px; }
 ul.warnings li { color: #8a4b00; margin-bottom: 4px; }
 svg { display: block; margin: 8px 0; font-size: 12px; } figure { margin: 0; }

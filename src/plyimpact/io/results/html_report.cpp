@@ -1,11 +1,14 @@
 #include "plyimpact/io/results/html_report.hpp"
 
+#include "plyimpact/io/results/damage_report.hpp"
 #include "plyimpact/io/results/html_page.hpp"
 #include "plyimpact/io/results/svg_plot.hpp"
 #include "plyimpact/io/system/build_info.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -23,12 +26,47 @@ std::string value(const nlohmann::json& j, const char* key, std::string_view uni
   return html_number(j[key].get<double>(), unit, scale);
 }
 
+/// "u, v, w held" for a restraint code "uvwθxθy" of 0/1 (fem/boundary.hpp); "nothing held" for 00000.
+std::string held_dofs(std::string_view code) {
+  constexpr std::array<std::string_view, 5> names = {"u", "v", "w", "θx", "θy"};
+  std::string held;
+  for (std::size_t i = 0; i < names.size() && i < code.size(); ++i)
+    if (code[i] == '1') held += fmt::format("{}{}", held.empty() ? "" : ", ", names[i]);
+  return held.empty() ? "nothing held" : held + " held";
+}
+
+/// A support type of [boundary] in words, as a reader of the report who has not read docs/deck.md needs it
+/// (issue 82: "window: ss-soft, clamps: 11100" was printed unexplained).
+std::string restraint_words(std::string_view type) {
+  if (type == "free") return "free";
+  if (type == "clamped") return "clamped (u, v, w, θx, θy held)";
+  if (type == "ss")
+    return "simply supported, hard (w, the slope along the edge and the displacement along it held)";
+  if (type == "ss-soft") return "simply supported, soft (w held both ways)";
+  if (type == unilateral_support) return "unilateral (w held against pressing only: it may lift off)";
+  return fmt::format("{} ({})", type, held_dofs(type));
+}
+
+/// The supports, the sets of one type together in the order of their first: "x0, xa, y0, yb: simply
+/// supported, hard (…)".
 std::string supports(const Deck& deck) {
   if (!deck.boundary || deck.boundary->sets.empty()) return "none (free plate)";
+  std::vector<std::pair<std::string, std::string>> by_type; // type, its sets
+  for (const SetRestraint& r : deck.boundary->sets) {
+    auto same = std::ranges::find_if(by_type, [&](const auto& t) { return t.first == r.type; });
+    if (same == by_type.end())
+      by_type.emplace_back(r.type, r.set);
+    else
+      same->second += ", " + r.set;
+  }
   std::string s;
-  for (const SetRestraint& r : deck.boundary->sets)
-    s += fmt::format("{}{}: {}", s.empty() ? "" : ", ", xml_escaped(r.set), xml_escaped(r.type));
-  if (deck.boundary->corners) s += fmt::format(", corners: {}", deck.boundary->corners->code());
+  for (const auto& [type, sets] : by_type)
+    s +=
+        fmt::format("{}{}: {}", s.empty() ? "" : "; ", xml_escaped(sets), xml_escaped(restraint_words(type)));
+  if (deck.boundary->corners) {
+    const std::string code = deck.boundary->corners->code();
+    s += fmt::format("; corners: {} ({})", code, held_dofs(code));
+  }
   return s;
 }
 
@@ -73,7 +111,7 @@ void case_section(std::string& h, const ImpactReportInput& in) {
   html_item(
       h, "time",
       fmt::format("Δt = {:.4g} µs, end {}", s.dt * 1e6,
-                  s.end ? fmt::format("{:.4g} µs", *s.end * 1e6) : std::string("at the end of the event")));
+                  s.end ? fmt::format("{:.4g} ms", *s.end * 1e3) : std::string("at the end of the event")));
   html_item(h, "plate model",
             fmt::format("{}{}", s.nonlinear ? "large deflections (non-linear)" : "linear",
                         s.progressive_damage ? ", progressive ply damage" : ""));
@@ -95,11 +133,33 @@ void warnings_section(std::string& h, const ImpactReportInput& in) {
   h += "</ul></section>\n";
 }
 
+/// The first load drop F_d of summary.json's `load_drop`, as report.txt prints it.
+void load_drop_row(std::string& h, const nlohmann::json& j) {
+  if (!j.contains("load_drop") || j["load_drop"].is_null()) return;
+  const nlohmann::json& d = j["load_drop"];
+  html_row(h, "first load drop F<sub>d</sub>",
+           d["force_N"].is_null()
+               ? std::string("none (the smoothed force never fell by 5 % while loading)")
+               : fmt::format("{} at {}", value(d, "force_N", "N"), value(d, "time_s", "ms", 1e3)));
+}
+
+/// summary.json's `absorbed_energy_by_mechanism`, a row each (none before the impactor has left).
+void absorbed_by_mechanism_rows(std::string& h, const nlohmann::json& j) {
+  if (!j.contains("absorbed_energy_by_mechanism") || j["absorbed_energy_by_mechanism"].is_null()) return;
+  const nlohmann::json& a = j["absorbed_energy_by_mechanism"];
+  html_row(h, "&#8195;absorbed by contact (indentation)", value(a, "contact_J", "J"));
+  html_row(h, "&#8195;absorbed by ply damage", value(a, "ply_damage_J", "J"));
+  html_row(h, "&#8195;absorbed by delamination", value(a, "delamination_J", "J"));
+  html_row(h, "&#8195;left in plate vibration", value(a, "plate_vibration_J", "J"));
+  html_row(h, "&#8195;unaccounted", value(a, "unaccounted_J", "J"));
+}
+
 void results_section(std::string& h, const nlohmann::json& j) {
   h += "<section id=\"results\"><h2>Results</h2><table class=\"summary\">\n";
   html_row(h, "peak contact force", value(j, "peak_force", "N"));
-  html_row(h, "time of peak force", value(j, "time_of_peak_force", "µs", 1e6));
-  html_row(h, "contact duration (first contact)", value(j, "contact_duration", "µs", 1e6));
+  load_drop_row(h, j);
+  html_row(h, "time of peak force", value(j, "time_of_peak_force", "ms", 1e3));
+  html_row(h, "contact duration (first contact)", value(j, "contact_duration", "ms", 1e3));
   html_row(h, "contacts", value(j, "contacts", ""));
   html_row(h, "peak plate deflection at the contact point", value(j, "peak_contact_deflection", "mm", 1e3));
   html_row(h, "largest indentation", value(j, "max_indentation", "mm", 1e3));
@@ -107,10 +167,11 @@ void results_section(std::string& h, const nlohmann::json& j) {
   html_row(h, "impact energy", value(j, "initial_energy", "J"));
   html_row(h, "rebound velocity", value(j, "rebound_velocity", "m/s"));
   html_row(h, "absorbed energy", value(j, "absorbed_energy", "J"));
+  absorbed_by_mechanism_rows(h, j);
   html_row(h, "contact dissipation", value(j, "contact_dissipation", "J"));
   html_row(h, "energy balance error", value(j, "energy_balance_error", "% of the impact energy", 100.0));
   html_row(h, "steps", value(j, "steps", ""));
-  html_row(h, "end time", value(j, "end_time", "µs", 1e6));
+  html_row(h, "end time", value(j, "end_time", "ms", 1e3));
   html_row(h, "complete", value(j, "complete", ""));
   html_row(h, "suspect", value(j, "suspect", ""));
   h += "</table></section>\n";
@@ -140,8 +201,28 @@ PlotSeries contact_loop(const std::vector<ImpactSample>& history) {
   return s;
 }
 
-void curves_section(std::string& h, const std::vector<ImpactSample>& history, bool damage) {
+/// The samples the time plots show: up to a fifth past the last contact's end, where the impactor left
+/// (issue 82: the force–time axis ran to 10 ms after a 4.2 ms contact, the curve flat at zero for the
+/// second half); all of them where it had not. history.csv keeps every step.
+std::vector<ImpactSample> to_shortly_after_contact(const std::vector<ImpactSample>& history) {
+  const auto last_touch =
+      std::find_if(history.rbegin(), history.rend(), [](const ImpactSample& s) { return s.force > 0.0; });
+  if (last_touch == history.rend() || last_touch == history.rbegin()) return history;
+  const double until = 1.2 * last_touch->t;
+  std::vector<ImpactSample> shown;
+  for (const ImpactSample& s : history)
+    if (s.t <= until) shown.push_back(s);
+  return shown;
+}
+
+void curves_section(std::string& h, const std::vector<ImpactSample>& all, bool damage) {
+  const std::vector<ImpactSample> history = to_shortly_after_contact(all);
   h += "<section id=\"curves\"><h2>Curves</h2>\n";
+  if (history.size() < all.size())
+    fmt::format_to(std::back_inserter(h),
+                   "<p>The time plots end at {:.4g} ms, a fifth past the end of the last contact; the run "
+                   "went on to {:.4g} ms (history.csv has every step).</p>\n",
+                   history.back().t * 1e3, all.back().t * 1e3);
   h += svg_line_plot(
       {"Contact force",
        "time [ms]",
@@ -167,22 +248,46 @@ void curves_section(std::string& h, const std::vector<ImpactSample>& history, bo
   h += "</section>\n";
 }
 
+std::string layer(const DamageOnset& o) {
+  return o.ply > 0 ? fmt::format("ply {}", o.ply) : fmt::format("interface {}", o.interface);
+}
+
+/// The laminate's first failure (away from a rig's clamp tips) in words, and how many rows of the table lie
+/// at the tips.
+void laminate_first_failure_paragraph(std::string& h, const ImpactReportInput& in) {
+  const auto& f = in.laminate_first_failure;
+  h += "<p>The laminate's first failure: " +
+       (f ? fmt::format("{} {} in {}, element {} at ({:.1f}, {:.1f}) mm, at {:.4g} µs under {:.5g} N",
+                        to_string(f->criterion), to_string(f->mode), layer(*f), f->element, f->x * 1e3,
+                        f->y * 1e3, f->time * 1e6, f->force)
+          : std::string("none away from the clamp tips"));
+  if (!in.clamp_tip_elements.empty()) {
+    const auto tips = std::ranges::count_if(
+        *in.first_failures, [&](const DamageOnset& o) { return at_clamp_tip(o, in.clamp_tip_elements); });
+    h += fmt::format(". {} of the {} first failures below lie at the rig's clamp tips, point supports whose "
+                     "stresses are singular: they say nothing of the laminate and are not its first failure",
+                     tips, in.first_failures->size());
+  }
+  h += ".</p>\n";
+}
+
 void damage_section(std::string& h, const ImpactReportInput& in) {
   if (in.first_failures == nullptr) return;
   h += "<section id=\"damage\"><h2>Damage onsets</h2>\n";
   if (in.first_failures->empty()) {
     h += "<p>No criterion reached 1.</p>\n";
   } else {
+    laminate_first_failure_paragraph(h, in);
     h += "<table class=\"onsets\"><tr><th>criterion</th><th>mode</th><th>ply / interface</th><th>element</th>"
-         "<th>time [µs]</th><th>force [N]</th><th>index</th></tr>\n";
+         "<th>x, y [mm]</th><th>time [µs]</th><th>force [N]</th><th>index</th><th>where</th></tr>\n";
     for (const DamageOnset& o : *in.first_failures)
       fmt::format_to(
           std::back_inserter(h),
-          "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"number\">{}</td><td class=\"number\">{:.4g}"
-          "</td><td class=\"number\">{:.5g}</td><td class=\"number\">{:.4g}</td></tr>\n",
-          to_string(o.criterion), to_string(o.mode),
-          o.ply > 0 ? fmt::format("ply {}", o.ply) : fmt::format("interface {}", o.interface), o.element,
-          o.time * 1e6, o.force, o.index);
+          "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"number\">{}</td><td class=\"number\">{:.1f}, "
+          "{:.1f}</td><td class=\"number\">{:.4g}</td><td class=\"number\">{:.5g}</td><td class=\"number\">"
+          "{:.4g}</td><td>{}</td></tr>\n",
+          to_string(o.criterion), to_string(o.mode), layer(o), o.element, o.x * 1e3, o.y * 1e3, o.time * 1e6,
+          o.force, o.index, at_clamp_tip(o, in.clamp_tip_elements) ? "clamp tip" : "");
     h += "</table>\n";
   }
   if (in.mesh != nullptr && in.onsets != nullptr)

@@ -103,6 +103,8 @@ std::string displacement_section(const DiscretePlate& model, const NodalSnapshot
 
 std::string impact_report_text(const Deck& deck, const DiscretePlate& model, const ImpactSettings& settings,
                                const ImpactResult& result, const std::vector<DamageOnset>& first_failures,
+                               const std::vector<int>& clamp_tip_elements,
+                               const std::optional<DamageOnset>& laminate_first_failure,
                                const std::optional<NodalSnapshot>& displacements) {
   std::string s =
       fmt::format("***** plyimpact {}: IMPACT ANALYSIS OF A LAMINATED PLATE *****\n", PLYIMPACT_VERSION);
@@ -114,8 +116,9 @@ std::string impact_report_text(const Deck& deck, const DiscretePlate& model, con
   s += heading("RESULTS") + impact_summary_text(settings, result);
   s += heading("FIRST FAILURES");
   s += deck.damage.criteria.empty() ? std::string("  no failure criteria requested ([damage] criteria)\n")
-       : first_failures.empty()     ? std::string("  none: no criterion reached 1\n")
-                                    : first_failures_text(first_failures);
+       : first_failures.empty()
+           ? std::string("  none: no criterion reached 1\n")
+           : first_failures_text(first_failures, clamp_tip_elements, laminate_first_failure);
   if (displacements) s += displacement_section(model, *displacements);
   return s;
 }

@@ -23,6 +23,8 @@ struct NodalSnapshot {
 [[nodiscard]] std::string impact_report_text(const Deck& deck, const DiscretePlate& model,
                                              const ImpactSettings& settings, const ImpactResult& result,
                                              const std::vector<DamageOnset>& first_failures,
+                                             const std::vector<int>& clamp_tip_elements,
+                                             const std::optional<DamageOnset>& laminate_first_failure,
                                              const std::optional<NodalSnapshot>& displacements);
 
 } // namespace plyimpact

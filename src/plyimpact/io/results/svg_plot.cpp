@@ -95,12 +95,52 @@ void polyline(std::string& s, const Frame& f, const PlotSeries& series) {
                        f.px(series.x[i]), f.py(series.y[i]), series.color);
 }
 
+/// How many points of `series` (and midpoints of their segments) fall in the box [x, x + w] × [y, y + h] px.
+std::size_t points_in_box(const Frame& f, const std::vector<PlotSeries>& series, double x, double y, double w,
+                          double h) {
+  const auto inside = [&](double px, double py) { return px >= x && px <= x + w && py >= y && py <= y + h; };
+  std::size_t covered = 0;
+  for (const PlotSeries& c : series) {
+    const std::size_t n = std::min(c.x.size(), c.y.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(c.x[i]) || !std::isfinite(c.y[i])) continue;
+      covered += inside(f.px(c.x[i]), f.py(c.y[i])) ? 1 : 0;
+      if (i + 1 < n && std::isfinite(c.x[i + 1]) && std::isfinite(c.y[i + 1]))
+        covered +=
+            inside(0.5 * (f.px(c.x[i]) + f.px(c.x[i + 1])), 0.5 * (f.py(c.y[i]) + f.py(c.y[i + 1]))) ? 1 : 0;
+    }
+  }
+  return covered;
+}
+
+/// The legend where its box covers the fewest points of the curves, of nine places in the plot area: the
+/// corners (top right first, then top left, bottom right, bottom left), then the middles of the right and
+/// left sides, of the top and bottom, and the centre. So it sits on no curve where one of them is free
+/// (issue 82: the energy plot's legend sat on the impactor's kinetic energy, which ends high at the right).
 void legend(std::string& s, const Frame& f, const std::vector<PlotSeries>& series) {
   if (series.size() < 2) return;
   auto out = std::back_inserter(s);
-  const double x = f.width - f.right - 190.0;
+  const double w = 196.0, h = 16.0 * static_cast<double>(series.size()) + 8.0;
+  const double left = f.left + 6.0, right = f.width - f.right - w - 6.0, centre = 0.5 * (left + right);
+  const double top = f.top + 4.0, bottom = f.height - f.bottom - h - 4.0, middle = 0.5 * (top + bottom);
+  const std::array<std::array<double, 2>, 9> corners = {{{right, top},
+                                                         {left, top},
+                                                         {right, bottom},
+                                                         {left, bottom},
+                                                         {right, middle},
+                                                         {left, middle},
+                                                         {centre, top},
+                                                         {centre, bottom},
+                                                         {centre, middle}}};
+  std::array<double, 2> at = corners[0];
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  for (const auto& c : corners)
+    if (const std::size_t n = points_in_box(f, series, c[0], c[1], w, h); n < fewest) {
+      fewest = n;
+      at = c;
+    }
   for (std::size_t k = 0; k < series.size(); ++k) {
-    const double y = f.top + 14.0 + 16.0 * static_cast<double>(k);
+    const double x = at[0] + 4.0, y = at[1] + 10.0 + 16.0 * static_cast<double>(k);
     fmt::format_to(out,
                    "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" "
                    "stroke-width=\"2\"{4}/><text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",

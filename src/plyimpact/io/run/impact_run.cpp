@@ -169,13 +169,22 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   if (curves)
     out.result.force_history = {first_load_drop(curves->samples()), first_delamination(curves->samples())};
   out.damage_tracked = damage.has_value();
-  if (damage) out.first_failures = damage->first_onsets();
+  if (damage) {
+    out.first_failures = damage->first_onsets();
+    if (plate) out.clamp_tip_elements = clamp_tip_elements(model.mesh(), rig_outline(deck.rig).clamp_tips);
+    out.laminate_first_failure = laminate_first_failure(damage->onsets(), out.clamp_tip_elements);
+  }
   out.summary = impact_summary_json(deck, out.settings, out.result);
   if (vtk) out.summary["vtk_frames"] = vtk->frames();
   if (damage) {
     out.summary["first_failures"] = nlohmann::json::array();
-    for (const auto& f : out.first_failures)
-      out.summary["first_failures"].push_back(onset_json(f));
+    for (const auto& f : out.first_failures) {
+      nlohmann::json j = onset_json(f);
+      j["at_clamp_tip"] = at_clamp_tip(f, out.clamp_tip_elements);
+      out.summary["first_failures"].push_back(std::move(j));
+    }
+    out.summary["laminate_first_failure"] =
+        out.laminate_first_failure ? onset_json(*out.laminate_first_failure) : nlohmann::json(nullptr);
   }
   if (!folder) {
     report_failure(out.result, std::nullopt);
@@ -206,6 +215,7 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
   if (probes) folder->write_text("probes.csv", probes_csv(*probes));
   folder->write_text("report.txt",
                      impact_report_text(deck, model, out.settings, out.result, out.first_failures,
+                                        out.clamp_tip_elements, out.laminate_first_failure,
                                         snapshot ? snapshot->snapshot : std::nullopt));
   const ImpactReportInput report{deck,
                                  out.settings,
@@ -214,6 +224,8 @@ ImpactRunOutcome run_impact(const Deck& deck, const ImpactCase& impact, const Im
                                  plate ? &model.mesh() : nullptr,
                                  damage ? &damage->onsets() : nullptr,
                                  damage ? &out.first_failures : nullptr,
+                                 out.clamp_tip_elements,
+                                 out.laminate_first_failure,
                                  out.notes,
                                  out.result.delamination ? &*out.result.delamination : nullptr};
   folder->write_text("report.html", impact_report_html(report));

@@ -42,7 +42,12 @@ struct ImpactRunOutcome {
   HistoryLayout history_layout; ///< the columns of its history rows (history.csv, the Python arrays)
   bool damage_tracked = false;
   std::vector<DamageOnset> first_failures; ///< per criterion, mode and ply or interface, in order of onset
-  std::vector<std::string> notes;          ///< things the run could not do (e.g. no gnuplot for maps)
+  /// The elements at a rig's clamp tips (io/mesh/test_rigs.hpp, clamp_tip_elements), numbered from 1; empty
+  /// without a rig or damage criteria
+  std::vector<int> clamp_tip_elements;
+  /// The earliest onset away from the clamp tips (io/results/damage_report.hpp)
+  std::optional<DamageOnset> laminate_first_failure;
+  std::vector<std::string> notes; ///< things the run could not do (e.g. no gnuplot for maps)
   /// What summary.json holds, also when no folder is written (the Python module returns it).
   nlohmann::json summary;
 };

@@ -416,10 +416,7 @@ void put_impact_results(nlohmann::json& results, const ImpactRunOutcome& o) {
     results["delamination_area"] = r.delamination->projected_area;
     results["delamination_dissipation"] = r.delamination->dissipated;
   }
-  if (o.damage_tracked)
-    put_first_failure(results, o.first_failures.empty()
-                                   ? std::nullopt
-                                   : std::optional<DamageOnset>(o.first_failures.front()));
+  if (o.damage_tracked) put_first_failure(results, o.laminate_first_failure); // away from a rig's clamp tips
 }
 
 } // namespace
