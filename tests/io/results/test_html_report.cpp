@@ -204,6 +204,7 @@ TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
   EXPECT_EQ(count(html, "class=\"map\""), 1U);
   EXPECT_EQ(count(html, "<table class=\"summary\">"), 1U);
   EXPECT_EQ(count(html, "<table class=\"onsets\">"), 1U);
+  EXPECT_EQ(count(html, "<th>where</th>"), 0U) << "no rig, no clamp tips: no column for them";
   // No script and nothing fetched: the only URL is the SVG namespace.
   EXPECT_EQ(count(html, "<script"), 0U);
   EXPECT_EQ(count(html, "http"), count(html, "xmlns=\"http://www.w3.org/2000/svg\""));

@@ -278,16 +278,23 @@ void damage_section(std::string& h, const ImpactReportInput& in) {
     h += "<p>No criterion reached 1.</p>\n";
   } else {
     laminate_first_failure_paragraph(h, in);
-    h += "<table class=\"onsets\"><tr><th>criterion</th><th>mode</th><th>ply / interface</th><th>element</th>"
-         "<th>x, y [mm]</th><th>time [µs]</th><th>force [N]</th><th>index</th><th>where</th></tr>\n";
+    const bool rig = !in.clamp_tip_elements.empty(); // a column "where" for the clamp tips
+    fmt::format_to(
+        std::back_inserter(h),
+        "<table class=\"onsets\"><tr><th>criterion</th><th>mode</th><th>ply / interface</th>"
+        "<th>element</th><th>x, y [mm]</th><th>time [µs]</th><th>force [N]</th><th>index</th>{}</tr>\n",
+        rig ? "<th>where</th>" : "");
     for (const DamageOnset& o : *in.first_failures)
       fmt::format_to(
           std::back_inserter(h),
           "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"number\">{}</td><td class=\"number\">{:.1f}, "
           "{:.1f}</td><td class=\"number\">{:.4g}</td><td class=\"number\">{:.5g}</td><td class=\"number\">"
-          "{:.4g}</td><td>{}</td></tr>\n",
+          "{:.4g}</td>{}</tr>\n",
           to_string(o.criterion), to_string(o.mode), layer(o), o.element, o.x * 1e3, o.y * 1e3, o.time * 1e6,
-          o.force, o.index, at_clamp_tip(o, in.clamp_tip_elements) ? "clamp tip" : "");
+          o.force, o.index,
+          !rig                                     ? ""
+          : at_clamp_tip(o, in.clamp_tip_elements) ? "<td>clamp tip</td>"
+                                                   : "<td></td>");
     h += "</table>\n";
   }
   if (in.mesh != nullptr && in.onsets != nullptr)
