@@ -22,6 +22,7 @@
 #include "plyimpact/io/results/output_folder.hpp"
 #include "plyimpact/io/results/plots.hpp"
 #include "plyimpact/io/results/results.hpp"
+#include "plyimpact/io/run/deck_preview.hpp"
 #include "plyimpact/io/run/impact_progress.hpp"
 #include "plyimpact/io/run/impact_run.hpp"
 #include "plyimpact/io/run/plate_analyses.hpp"
@@ -88,10 +89,11 @@ struct Options {
   int threads = 0;        ///< --threads: the run's element loops (0: all cores)
 };
 
-/// The deck, checked for the analysis' sections and for the memory its mesh needs (before assembly);
-/// prints its plausibility warnings (docs/deck.md) and refuses it under --strict.
-Deck read_deck_for(const Options& o, AnalysisKind kind) {
+/// The deck, checked for the sections of `analysis` (none: the deck's own) and for the memory its mesh needs
+/// (before assembly); prints its plausibility warnings (docs/deck.md) and refuses it under --strict.
+Deck read_deck_for(const Options& o, std::optional<AnalysisKind> analysis) {
   Deck deck = load_deck(o.deck_path);
+  const AnalysisKind kind = analysis.value_or(deck.analysis);
   require_sections(deck, kind);
   for (const std::string& w : deck.warnings)
     fmt::print(stderr, "{}: {}: {}\n", deck.source, o.strict ? "error" : "warning", w);
@@ -184,6 +186,24 @@ int run_impact(const Options& o) {
                first_failures_text(run.first_failures, run.clamp_tip_elements, run.laminate_first_failure));
   if (cli::interrupted().load()) return cli::exit_interrupted;
   return r.stop_reason.empty() ? 0 : 3; // 3: stopped early; a run cut short by time.end only warns
+}
+
+/// `plyimpact preview DECK [-o DIR]`: the model before its run — the plan of the mesh with supports, rig and
+/// impact point, the ply stack, and the settings the run would use (io/run/deck_preview.hpp).
+int run_preview(const Options& o) {
+  const Deck deck = read_deck_for(o, std::nullopt);
+  const ModelPreview preview = deck_preview(deck, o.nonlinear);
+  const std::filesystem::path dir =
+      o.output_dir.empty()
+          ? std::filesystem::path(default_output_dir(deck.output_dir, o.deck_path).string() + "-preview")
+          : std::filesystem::path(o.output_dir);
+  const ModelPreviewFiles files = write_model_preview(dir, preview);
+  fmt::print("{}\n", preview.settings);
+  if (!files.warning.empty()) fmt::print(stderr, "plyimpact: warning: {}\n", files.warning);
+  fmt::print("preview: {}\n", (dir / "preview.html").string());
+  for (const auto& f : files.written)
+    if (f.extension() == ".png") fmt::print("picture: {}\n", f.string());
+  return 0;
 }
 
 /// `plyimpact plot DIR... [-o OUT]`: PNG and SVG pictures of one run, or overlays of several.
@@ -317,7 +337,7 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 const std::vector<std::string>& command_names() {
   static const std::vector<std::string> names{"laminate",     "static",    "modal", "buckling",
                                               "impact",       "threshold", "plot",  "sweep",
-                                              "capabilities", "materials", "init"};
+                                              "capabilities", "materials", "init",  "preview"};
   return names;
 }
 
@@ -395,6 +415,15 @@ int run(int argc, char** argv) {
     add_progress_options(*sub, o.progress);
   CLI::App* modal = add_analysis(app, "modal", "Natural frequencies and mode shapes", o);
   CLI::App* buckling = add_analysis(app, "buckling", "Linear buckling under in-plane loads", o);
+  CLI::App* preview = app.add_subcommand(
+      "preview",
+      "The model before its run: mesh, supports, rig, impact point, ply stack and the settings the "
+      "run would use (preview.html, preview.png); nothing is solved");
+  preview->add_option("deck", o.deck_path, "TOML input deck")->required();
+  preview->add_option("-o,--output", o.output_dir,
+                      "folder for the preview (default: <[output] dir>/<deck name>-preview)");
+  preview->add_flag("--nonlinear", o.nonlinear, "preview the large-deflection (non-linear) plate");
+  preview->add_flag("--strict", o.strict, "treat the deck's plausibility warnings (unit slips) as errors");
   std::vector<std::string> plot_dirs;
   CLI::App* plot =
       app.add_subcommand("plot", "PNG and SVG plots of impact results (several folders: overlaid curves)");
@@ -446,6 +475,7 @@ int run(int argc, char** argv) {
     if (*modal) return run_modal(o);
     if (*buckling) return run_buckling(o);
     if (*plot) return run_plot(plot_dirs, o.output_dir);
+    if (*preview) return run_preview(o);
     if (*sweep) return run_sweep_command(sweep_options, cli::interrupted());
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());

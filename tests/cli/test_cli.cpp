@@ -287,12 +287,12 @@ TEST(Cli, AnUnknownCommandIsNamedWithTheValidOnesAndExits2) {
   // for other usage errors; before: CLI11's exit 109 "The following argument was not expected").
   const CommandResult slip = run("impactt examples/annex2.toml");
   EXPECT_EQ(slip.status, 2) << slip.out;
-  EXPECT_EQ(
-      slip.out,
-      "plyimpact: error: unknown command 'impactt' (did you mean 'impact'?); the commands are "
-      "laminate, static, modal, buckling, impact, threshold, plot, sweep, capabilities, materials, init "
-      "(plyimpact --help), "
-      "or give a deck file: plyimpact DECK.toml\n");
+  EXPECT_EQ(slip.out,
+            "plyimpact: error: unknown command 'impactt' (did you mean 'impact'?); the commands are "
+            "laminate, static, modal, buckling, impact, threshold, plot, sweep, capabilities, materials, "
+            "init, preview "
+            "(plyimpact --help), "
+            "or give a deck file: plyimpact DECK.toml\n");
   const CommandResult other = run("frobnicate");
   EXPECT_EQ(other.status, 2) << other.out;
   EXPECT_NE(other.out.find("plyimpact: error: unknown command 'frobnicate'; the commands are laminate,"),

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -198,9 +199,10 @@ TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
   const fs::path dir = thesis_4_3_results("content");
   const std::string html = read(dir / "report.html");
   ASSERT_FALSE(html.empty());
-  EXPECT_EQ(count(html, "<svg"), 5U) << "three curves, the ply stack and the onset map";
+  EXPECT_EQ(count(html, "<svg"), 6U) << "three curves, the ply stack, the plan and the onset map";
   EXPECT_EQ(count(html, "class=\"plot\""), 3U);
   EXPECT_EQ(count(html, "class=\"plies\""), 1U);
+  EXPECT_EQ(count(html, "class=\"plan\""), 1U);
   EXPECT_EQ(count(html, "class=\"map\""), 1U);
   EXPECT_EQ(count(html, "<table class=\"summary\">"), 1U);
   EXPECT_EQ(count(html, "<table class=\"onsets\">"), 1U);
@@ -211,6 +213,15 @@ TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
   EXPECT_EQ(count(html, "src="), 0U);
   // The numbers are summary.json's: the peak force to 5 digits.
   const nlohmann::json summary = nlohmann::json::parse(read(dir / "summary.json"));
+  // The plan's contact circle is the run's largest, √(R α_max) with the deck's R = 6.35 mm, and the 127 mm
+  // plate spans the plan's 640 − 2 · 20 px.
+  const double radius = std::sqrt(6.35e-3 * summary["max_indentation"].get<double>());
+  EXPECT_NE(html.find(fmt::format("largest contact circle of the run, radius {:.3g} mm", radius * 1e3)),
+            std::string::npos);
+  const std::size_t circle = html.find("class=\"contact\"");
+  ASSERT_NE(circle, std::string::npos);
+  const std::size_t r_at = html.find("r=\"", circle) + 3;
+  EXPECT_NEAR(std::strtod(html.c_str() + r_at, nullptr), radius * 600.0 / 0.127, 0.01);
   EXPECT_NE(html.find(fmt::format("{:.5g} N", summary["peak_force"].get<double>())), std::string::npos);
   EXPECT_NE(html.find("[0_2/90_4/0_2]"), std::string::npos);
   // What report.txt prints beside them (issue 82): the first load drop F_d; the absorbed energy by
@@ -360,7 +371,7 @@ TEST(HtmlReport, OpensInHeadlessChromiumWithoutConsoleErrors) {
       << "chromium is missing: scripts/install-deps installs it";
   const fs::path dir = thesis_4_3_results("chromium");
   const fs::path png = dir / "report.png";
-  const BrowserView view = open_in_headless_chromium(dir / "report.html", png, 1100, 3700);
+  const BrowserView view = open_in_headless_chromium(dir / "report.html", png, 1100, 4200);
   ASSERT_EQ(view.screenshot.status, 0) << view.screenshot.out;
   expect_no_console_errors(view.screenshot);
   ASSERT_TRUE(fs::exists(png)) << view.screenshot.out;

@@ -110,6 +110,8 @@ ImpactCaseDescription supported(ImpactCaseDescription d) {
   return d;
 }
 
+} // namespace
+
 MeshUsed mesh_used(const DiscretePlate& model, bool graded) {
   MeshUsed m;
   const Mesh& mesh = model.mesh();
@@ -126,8 +128,6 @@ MeshUsed mesh_used(const DiscretePlate& model, bool graded) {
   }
   return m;
 }
-
-} // namespace
 
 double resolved_contact_stiffness(const ImpactCaseDescription& d) {
   if (d.contact.k) return *d.contact.k;

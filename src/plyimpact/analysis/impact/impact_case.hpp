@@ -74,6 +74,9 @@ struct MeshUsed {
   double largest_element = 0.0;                        ///< longest side of the largest element [m]
 };
 
+/// The mesh `model` runs on; `graded`: built graded toward the impact point.
+[[nodiscard]] MeshUsed mesh_used(const DiscretePlate& model, bool graded);
+
 struct ImpactSettings {
   Impactor impactor;
   MeshUsed mesh; ///< filled by ImpactCase

@@ -28,6 +28,7 @@ ul.warnings li { color: #8a4b00; margin-bottom: 4px; }
 svg { display: block; margin: 8px 0; font-size: 12px; } figure { margin: 0; }
 svg .grid { stroke: #e5e5e5; } svg .frame { fill: none; stroke: #444; } svg .title { font-size: 14px; font-weight: bold; }
 svg .label { font-size: 13px; } svg .ply { stroke: #fff; stroke-width: 0.5; }
+pre { white-space: pre-wrap; font-size: 0.85em; }
 svg .element { fill: #f7f7f7; stroke: #bbb; stroke-width: 0.6; } svg .impact { stroke: #d62728; stroke-width: 2.5; }
 )";
 

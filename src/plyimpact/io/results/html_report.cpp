@@ -1,7 +1,10 @@
 #include "plyimpact/io/results/html_report.hpp"
 
+#include "plyimpact/analysis/contact/contact_rules.hpp"
 #include "plyimpact/io/results/damage_report.hpp"
 #include "plyimpact/io/results/html_page.hpp"
+#include "plyimpact/io/results/model_preview.hpp"
+#include "plyimpact/io/results/support_words.hpp"
 #include "plyimpact/io/results/svg_plot.hpp"
 #include "plyimpact/io/system/build_info.hpp"
 
@@ -26,48 +29,29 @@ std::string value(const nlohmann::json& j, const char* key, std::string_view uni
   return html_number(j[key].get<double>(), unit, scale);
 }
 
-/// "u, v, w held" for a restraint code "uvwθxθy" of 0/1 (fem/boundary.hpp); "nothing held" for 00000.
-std::string held_dofs(std::string_view code) {
-  constexpr std::array<std::string_view, 5> names = {"u", "v", "w", "θx", "θy"};
-  std::string held;
-  for (std::size_t i = 0; i < names.size() && i < code.size(); ++i)
-    if (code[i] == '1') held += fmt::format("{}{}", held.empty() ? "" : ", ", names[i]);
-  return held.empty() ? "nothing held" : held + " held";
+/// The cohesive interfaces of [delamination], 1-based under the ply they follow.
+std::vector<int> interfaces_after_ply(const Deck& d) {
+  std::vector<int> after;
+  if (d.delamination)
+    for (const int cut : d.delamination->stack.cuts)
+      after.push_back(cut + 1);
+  return after;
 }
 
-/// A support type of [boundary] in words, as a reader of the report who has not read docs/deck.md needs it
-/// (issue 82: "window: ss-soft, clamps: 11100" was printed unexplained).
-std::string restraint_words(std::string_view type) {
-  if (type == "free") return "free";
-  if (type == "clamped") return "clamped (u, v, w, θx, θy held)";
-  if (type == "ss")
-    return "simply supported, hard (w, the slope along the edge and the displacement along it held)";
-  if (type == "ss-soft") return "simply supported, soft (w held both ways)";
-  if (type == unilateral_support) return "unilateral (w held against pressing only: it may lift off)";
-  return fmt::format("{} ({})", type, held_dofs(type));
-}
-
-/// The supports, the sets of one type together in the order of their first: "x0, xa, y0, yb: simply
-/// supported, hard (…)".
-std::string supports(const Deck& deck) {
-  if (!deck.boundary || deck.boundary->sets.empty()) return "none (free plate)";
-  std::vector<std::pair<std::string, std::string>> by_type; // type, its sets
-  for (const SetRestraint& r : deck.boundary->sets) {
-    auto same = std::ranges::find_if(by_type, [&](const auto& t) { return t.first == r.type; });
-    if (same == by_type.end())
-      by_type.emplace_back(r.type, r.set);
-    else
-      same->second += ", " + r.set;
-  }
-  std::string s;
-  for (const auto& [type, sets] : by_type)
-    s +=
-        fmt::format("{}{}: {}", s.empty() ? "" : "; ", xml_escaped(sets), xml_escaped(restraint_words(type)));
-  if (deck.boundary->corners) {
-    const std::string code = deck.boundary->corners->code();
-    s += fmt::format("; corners: {} ({})", code, held_dofs(code));
-  }
-  return s;
+/// The plan of the plate as the preview draws it, with the largest contact circle of the run.
+std::string plan_of_the_run(const ImpactReportInput& in) {
+  const Impactor& i = in.settings.impactor;
+  const nlohmann::json& j = in.summary;
+  const double alpha = j.contains("max_indentation") && j["max_indentation"].is_number()
+                           ? j["max_indentation"].get<double>()
+                           : 0.0;
+  return svg_model_plan({.mesh = *in.mesh,
+                         .supports = in.deck.boundary ? support_marks(*in.mesh, *in.deck.boundary)
+                                                      : std::vector<SupportMarks>{},
+                         .rig = rig_outline(in.deck.rig),
+                         .impact_point = Eigen::Vector2d(i.x, i.y),
+                         .contact_radius = contact_radius(i, std::max(alpha, 0.0)),
+                         .contact_reached = true});
 }
 
 void case_section(std::string& h, const ImpactReportInput& in) {
@@ -97,7 +81,7 @@ void case_section(std::string& h, const ImpactReportInput& in) {
             fmt::format("{} {} elements{}, {:.3g} to {:.3g} mm", s.mesh.elements, to_string(s.mesh.element),
                         s.mesh.graded ? " graded toward the impact point" : "", s.mesh.smallest_element * 1e3,
                         s.mesh.largest_element * 1e3));
-  html_item(h, "supports", supports(d));
+  html_item(h, "supports", xml_escaped(d.boundary ? supports_in_words(*d.boundary) : "none (free plate)"));
   const Impactor& i = s.impactor;
   html_item(h, "impactor",
             fmt::format("{:.4g} kg sphere, R = {:.4g} mm, E = {:.4g} GPa, at ({:.4g}, {:.4g}) mm", i.mass,
@@ -116,7 +100,8 @@ void case_section(std::string& h, const ImpactReportInput& in) {
             fmt::format("{}{}", s.nonlinear ? "large deflections (non-linear)" : "linear",
                         s.progressive_damage ? ", progressive ply damage" : ""));
   h += "</dl>\n";
-  if (d.laminate) h += "<figure>" + svg_ply_stack(*d.laminate) + "</figure>\n";
+  if (d.laminate) h += "<figure>" + svg_ply_stack(*d.laminate, interfaces_after_ply(d)) + "</figure>\n";
+  if (in.mesh) h += "<figure>" + plan_of_the_run(in) + "</figure>\n";
   h += "</div></section>\n";
 }
 

@@ -5,6 +5,7 @@
 #include "plyimpact/io/results/laminate_report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <numbers>
 
@@ -49,7 +50,34 @@ std::string mesh_section(const DiscretePlate& model) {
   return s;
 }
 
-std::string impactor_section(const ImpactSettings& s) {
+std::string integrator_words(Integrator i) {
+  switch (i) {
+  case Integrator::implicit:
+    return "implicit (Newmark)";
+  case Integrator::lagged:
+    return "lagged (Newmark, the ply laws a step behind)";
+  case Integrator::central_difference:
+    return "explicit (central differences, lumped mass)";
+  }
+  return "";
+}
+
+/// The plate model's physics: kinematics, ply damage and the interfaces that may delaminate.
+std::string model_section(const ImpactSettings& s) {
+  std::string t = heading("PLATE MODEL");
+  t += fmt::format("  kinematics                  {}\n",
+                   s.nonlinear ? "large deflections (von Karman)" : "linear (small deflections)");
+  t += fmt::format("  ply damage                  {}\n",
+                   s.progressive_damage ? "progressive (docs/progressive_damage.md)" : "none");
+  if (!s.delamination) return t + "  delamination                none (one laminate)\n";
+  std::vector<int> after;
+  for (const int cut : s.delamination->stack.cuts)
+    after.push_back(cut + 1);
+  return t + fmt::format("  delamination                {} cohesive interfaces, under plies {}\n",
+                         after.size(), fmt::join(after, ", "));
+}
+
+std::string impactor_section(const ImpactSettings& s, bool stable_step_pending) {
   const Impactor& i = s.impactor;
   std::string t = heading("IMPACTOR AND CONTACT");
   t += fmt::format("  impactor mass               {:.6g} kg\n", i.mass);
@@ -77,11 +105,18 @@ std::string impactor_section(const ImpactSettings& s) {
   t += fmt::format("\n  contact load                {}\n",
                    s.contact.load == ContactLoad::point ? "point force" : "Hertz pressure");
   t += heading("TIME STEPPING");
-  t += fmt::format("  time increment dt           {:.6g} us\n", s.dt * 1e6);
+  if (stable_step_pending)
+    t += fmt::format(
+        "  time increment dt           at most {:.6g} us: the explicit stable step 0.9 * 2/omega_max, "
+        "found when the run starts\n",
+        s.dt * 1e6);
+  else
+    t += fmt::format("  time increment dt           {:.6g} us\n", s.dt * 1e6);
   t += fmt::format("  Newmark beta, gamma         {:.4g}, {:.4g}\n", s.newmark_beta, s.newmark_gamma);
   t += s.end ? fmt::format("  end                         {:.6g} us\n", *s.end * 1e6)
              : std::string("  end                         automatic (SPEC section 4)\n");
-  return t;
+  t += fmt::format("  integrator                  {}\n", integrator_words(s.integration));
+  return t + model_section(s);
 }
 
 std::string displacement_section(const DiscretePlate& model, const NodalSnapshot& snap) {
@@ -101,6 +136,17 @@ std::string displacement_section(const DiscretePlate& model, const NodalSnapshot
 
 } // namespace
 
+std::string plate_input_text(const Deck& deck, const DiscretePlate& model) {
+  std::string s = fmt::format("deck: {}\n", deck.source);
+  if (!deck.rig_description.empty()) s += fmt::format("rig: {}\n", deck.rig_description);
+  return s + heading("MATERIALS AND LAMINATE") + laminate_report_text(deck) + mesh_section(model);
+}
+
+std::string impact_input_text(const Deck& deck, const DiscretePlate& model, const ImpactSettings& settings,
+                              bool stable_step_pending) {
+  return plate_input_text(deck, model) + impactor_section(settings, stable_step_pending);
+}
+
 std::string impact_report_text(const Deck& deck, const DiscretePlate& model, const ImpactSettings& settings,
                                const ImpactResult& result, const std::vector<DamageOnset>& first_failures,
                                const std::vector<int>& clamp_tip_elements,
@@ -108,11 +154,7 @@ std::string impact_report_text(const Deck& deck, const DiscretePlate& model, con
                                const std::optional<NodalSnapshot>& displacements) {
   std::string s =
       fmt::format("***** plyimpact {}: IMPACT ANALYSIS OF A LAMINATED PLATE *****\n", PLYIMPACT_VERSION);
-  s += fmt::format("deck: {}\n", deck.source);
-  if (!deck.rig_description.empty()) s += fmt::format("rig: {}\n", deck.rig_description);
-  s += heading("MATERIALS AND LAMINATE") + laminate_report_text(deck);
-  s += mesh_section(model);
-  s += impactor_section(settings);
+  s += impact_input_text(deck, model, settings);
   s += heading("RESULTS") + impact_summary_text(settings, result);
   s += heading("FIRST FAILURES");
   s += deck.damage.criteria.empty() ? std::string("  no failure criteria requested ([damage] criteria)\n")

@@ -20,6 +20,16 @@ struct NodalSnapshot {
   Eigen::VectorXd u; ///< free DOFs of the DiscretePlate
 };
 
+/// What a static, modal or buckling deck's plate is: the materials, the laminate, the plate and its mesh
+/// with the restraint codes (the start of report.txt).
+[[nodiscard]] std::string plate_input_text(const Deck& deck, const DiscretePlate& model);
+/// The input echo of report.txt, every setting resolved as the run uses it: plate_input_text, the impactor
+/// and the contact law, the time stepping and integrator, and the plate model (kinematics, ply damage, the
+/// interfaces that may delaminate). What `plyimpact preview` prints before a run; `stable_step_pending`: an
+/// explicit run whose time step (at most settings.dt) is the stable step the run finds when it starts.
+[[nodiscard]] std::string impact_input_text(const Deck& deck, const DiscretePlate& model,
+                                            const ImpactSettings& settings, bool stable_step_pending = false);
+
 [[nodiscard]] std::string impact_report_text(const Deck& deck, const DiscretePlate& model,
                                              const ImpactSettings& settings, const ImpactResult& result,
                                              const std::vector<DamageOnset>& first_failures,

@@ -156,18 +156,6 @@ std::string svg_open(int width, int height, std::string_view kind, std::string_v
       kind, width, height, width, height, xml_escaped(label));
 }
 
-/// Orientation colours: 0° blue, 90° red, ±45° green and purple, others between by angle.
-std::string ply_color(double angle_deg) {
-  double a = std::fmod(angle_deg, 180.0);
-  if (a < -90.0) a += 180.0;
-  if (a > 90.0) a -= 180.0;
-  if (std::abs(a) < 1e-9) return "#4e79a7";
-  if (std::abs(std::abs(a) - 90.0) < 1e-9) return "#e15759";
-  if (std::abs(a - 45.0) < 1e-9) return "#59a14f";
-  if (std::abs(a + 45.0) < 1e-9) return "#b07aa1";
-  return fmt::format("hsl({:.0f}, 45%, 60%)", 200.0 + a);
-}
-
 /// Five-stop perceptual ramp (viridis) at t in [0, 1].
 std::string ramp(double t) {
   static constexpr double stops[5][3] = {
@@ -202,6 +190,26 @@ std::string svg_rig_outline(const RigOutline& rig, const ToX& X, const ToY& Y) {
 }
 
 } // namespace
+
+std::string ply_colour(double angle_deg) {
+  double a = std::fmod(angle_deg, 180.0);
+  if (a < -90.0) a += 180.0;
+  if (a > 90.0) a -= 180.0;
+  if (std::abs(a) < 1e-9) return "#4e79a7";
+  if (std::abs(std::abs(a) - 90.0) < 1e-9) return "#e15759";
+  if (std::abs(a - 45.0) < 1e-9) return "#59a14f";
+  if (std::abs(a + 45.0) < 1e-9) return "#b07aa1";
+  // hsl(200° + a, 45 %, 60 %) as RGB (the usual HSL to RGB conversion)
+  const double h = std::fmod(200.0 + a + 360.0, 360.0) / 60.0, l = 0.60, sat = 0.45;
+  const double c = (1.0 - std::abs(2.0 * l - 1.0)) * sat, x = c * (1.0 - std::abs(std::fmod(h, 2.0) - 1.0));
+  const double m = l - 0.5 * c;
+  const std::array<std::array<double, 3>, 6> sextant = {
+      {{c, x, 0.0}, {x, c, 0.0}, {0.0, c, x}, {0.0, x, c}, {x, 0.0, c}, {c, 0.0, x}}};
+  const auto& rgb = sextant[static_cast<std::size_t>(std::min(5.0, std::floor(h)))];
+  return fmt::format("#{:02x}{:02x}{:02x}", static_cast<int>(std::lround((rgb[0] + m) * 255.0)),
+                     static_cast<int>(std::lround((rgb[1] + m) * 255.0)),
+                     static_cast<int>(std::lround((rgb[2] + m) * 255.0)));
+}
 
 std::string xml_escaped(std::string_view text) {
   std::string s;
@@ -276,10 +284,11 @@ std::string svg_line_plot(const LinePlot& plot, int width, int height) {
   return s + "</svg>\n";
 }
 
-std::string svg_ply_stack(const Laminate& laminate) {
+std::string svg_ply_stack(const Laminate& laminate, const std::vector<int>& interfaces_after_ply) {
   const int n = static_cast<int>(laminate.ply_count());
   const double ply_h = std::clamp(360.0 / n, 4.0, 22.0);
-  const int width = 360, height = static_cast<int>(std::ceil(ply_h * n)) + 40;
+  const bool interfaces = !interfaces_after_ply.empty();
+  const int width = 360, height = static_cast<int>(std::ceil(ply_h * n)) + (interfaces ? 56 : 40);
   std::string s = svg_open(width, height, "plies", "ply stack, ply 1 (impacted face) on top");
   auto out = std::back_inserter(s);
   fmt::format_to(out, "<text x=\"10\" y=\"14\" class=\"label\">impacted face</text>\n");
@@ -288,13 +297,88 @@ std::string svg_ply_stack(const Laminate& laminate) {
     const double y = 20.0 + ply_h * k;
     fmt::format_to(
         out, "<rect x=\"10\" y=\"{:.1f}\" width=\"200\" height=\"{:.1f}\" fill=\"{}\" class=\"ply\"/>\n", y,
-        ply_h, ply_color(ply.angle_deg));
+        ply_h, ply_colour(ply.angle_deg));
     if (ply_h >= 9.0)
       fmt::format_to(out, "<text x=\"218\" y=\"{:.1f}\">{} {:g}° {}</text>\n", y + 0.5 * ply_h + 4.0, k + 1,
                      ply.angle_deg, xml_escaped(laminate.material_of(static_cast<std::size_t>(k)).name));
   }
+  for (const int after : interfaces_after_ply)
+    fmt::format_to(out,
+                   "<line class=\"interface\" x1=\"4\" y1=\"{0:.1f}\" x2=\"216\" y2=\"{0:.1f}\" "
+                   "stroke=\"#d62728\" stroke-width=\"2.5\"/>\n",
+                   20.0 + ply_h * after);
+  const double foot = 20.0 + ply_h * n + 14.0;
   fmt::format_to(out, "<text x=\"10\" y=\"{:.1f}\" class=\"label\">back face ({} plies, {:.3g} mm)</text>\n",
-                 20.0 + ply_h * n + 14.0, n, laminate.thickness() * 1e3);
+                 foot, n, laminate.thickness() * 1e3);
+  if (interfaces)
+    fmt::format_to(
+        out,
+        "<text x=\"10\" y=\"{:.1f}\"><tspan fill=\"#d62728\">━</tspan> the {} interface{} that may "
+        "delaminate</text>\n",
+        foot + 16.0, interfaces_after_ply.size(), interfaces_after_ply.size() == 1 ? "" : "s");
+  return s + "</svg>\n";
+}
+
+const char* support_colour(std::size_t k) {
+  static constexpr std::array<const char*, 6> colours = {"#1f77b4", "#2ca02c", "#9467bd",
+                                                         "#ff7f0e", "#8c564b", "#17becf"};
+  return colours[k % colours.size()];
+}
+
+std::string svg_model_plan(const ModelPlan& plan, int width) {
+  const Mesh& mesh = plan.mesh;
+  const BoundingBox& box = mesh.bounds();
+  const std::size_t legend_lines = plan.supports.size() + (plan.impact_point ? 1 : 0) +
+                                   (plan.rig.clamp_tips.empty() && plan.rig.window.empty() ? 0 : 1);
+  const double margin = 20.0, legend_h = 10.0 + 18.0 * static_cast<double>(legend_lines);
+  const double scale = (width - 2.0 * margin) / std::max(box.x_max - box.x_min, 1e-12);
+  const int height = static_cast<int>(std::ceil((box.y_max - box.y_min) * scale + 2.0 * margin + legend_h));
+  const auto X = [&](double x) { return margin + (x - box.x_min) * scale; };
+  const auto Y = [&](double y) { return height - legend_h - margin - (y - box.y_min) * scale; };
+  std::string s = svg_open(width, height, "plan", "the plate: mesh, supports and impact point");
+  auto out = std::back_inserter(s);
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    s += "<polygon class=\"element\" points=\"";
+    for (const auto& [xi, eta] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+      const Eigen::Vector2d p = mesh.map(e, xi, eta);
+      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+    }
+    s += "\"/>\n";
+  }
+  for (std::size_t k = 0; k < plan.supports.size(); ++k)
+    for (const Eigen::Vector2d& p : plan.supports[k].points)
+      fmt::format_to(
+          out, "<rect class=\"support\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"5\" height=\"5\" fill=\"{}\"/>\n",
+          X(p.x()) - 2.5, Y(p.y()) - 2.5, support_colour(k));
+  s += svg_rig_outline(plan.rig, X, Y);
+  if (plan.impact_point) {
+    const Eigen::Vector2d& p = *plan.impact_point;
+    fmt::format_to(out,
+                   "<circle class=\"contact\" cx=\"{0:.1f}\" cy=\"{1:.1f}\" r=\"{2:.2f}\" fill=\"#d62728\" "
+                   "fill-opacity=\"0.25\" stroke=\"#d62728\"/>\n"
+                   "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" class=\"impact\"/>\n",
+                   X(p.x()), Y(p.y()), plan.contact_radius * scale);
+  }
+  double ly = height - legend_h + 12.0;
+  for (std::size_t k = 0; k < plan.supports.size(); ++k, ly += 18.0)
+    fmt::format_to(out,
+                   "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"8\" height=\"8\" fill=\"{}\"/>"
+                   "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+                   margin, ly - 8.0, support_colour(k), margin + 14.0, ly,
+                   xml_escaped(plan.supports[k].label));
+  if (plan.impact_point) {
+    fmt::format_to(out,
+                   "<text x=\"{:.1f}\" y=\"{:.1f}\"><tspan fill=\"#d62728\">✕ ●</tspan> impact point "
+                   "({:.4g}, {:.4g}) mm and the largest contact circle {}, radius {:.3g} mm</text>\n",
+                   margin, ly, plan.impact_point->x() * 1e3, plan.impact_point->y() * 1e3,
+                   plan.contact_reached ? "of the run" : "expected", plan.contact_radius * 1e3);
+    ly += 18.0;
+  }
+  if (!plan.rig.clamp_tips.empty())
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">○ {}; - - window edge</text>\n", margin, ly,
+                   xml_escaped(clamp_tip_note));
+  else if (!plan.rig.window.empty())
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\">- - window edge</text>\n", margin, ly);
   return s + "</svg>\n";
 }
 

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,10 @@ struct LinePlot {
 /// Text safe inside HTML and SVG (&, <, >, " escaped).
 [[nodiscard]] std::string xml_escaped(std::string_view text);
 
+/// The colour of a ply of orientation `angle_deg` in the ply stacks (SVG and gnuplot), "#rrggbb": 0° blue,
+/// 90° red, ±45° green and purple, other angles between by their angle.
+[[nodiscard]] std::string ply_colour(double angle_deg);
+
 /// Tick positions covering [lo, hi] with a step of 1, 2 or 5 × 10^k and about `target` intervals; the
 /// first and last ticks enclose the range (a zero-width range is widened).
 [[nodiscard]] std::vector<double> nice_ticks(double lo, double hi, int target = 5);
@@ -42,8 +47,33 @@ struct LinePlot {
 [[nodiscard]] std::string svg_line_plot(const LinePlot& plot, int width = 640, int height = 360);
 
 /// The laminate as a stack of plies, ply 1 (the impacted face) on top, coloured by orientation and
-/// labelled with the angle and the material where there is room.
-[[nodiscard]] std::string svg_ply_stack(const Laminate& laminate);
+/// labelled with the angle and the material where there is room; a red line under each ply of
+/// `interfaces_after_ply` (1-based), the interfaces of a stacked plate that may delaminate.
+[[nodiscard]] std::string svg_ply_stack(const Laminate& laminate,
+                                        const std::vector<int>& interfaces_after_ply = {});
+
+/// The nodes of the supports of one type, drawn with one marker and named in the legend.
+struct SupportMarks {
+  std::string label; ///< the sets and the type in words: "x0, xa: simply supported, hard (…)"
+  std::vector<Eigen::Vector2d> points; ///< [m]
+};
+
+/// What the plan view of a model before its run shows (issue 82, `plyimpact preview`).
+struct ModelPlan {
+  const Mesh& mesh;
+  std::vector<SupportMarks> supports;
+  RigOutline rig;
+  std::optional<Eigen::Vector2d> impact_point; ///< [m]; none for a static, modal or buckling deck
+  double contact_radius = 0.0;  ///< the largest contact radius, drawn around the impact point [m]
+  bool contact_reached = false; ///< the radius a run reached (report.html), not the one expected (preview)
+};
+
+/// The colour of the `k`-th support type (0-based) in the plan view and its PNG.
+[[nodiscard]] const char* support_colour(std::size_t k);
+
+/// The plan view: the elements (corner to corner), the supported nodes by type, the rig's window and clamp
+/// tips, the impact point and the expected contact circle, with a legend under the plate.
+[[nodiscard]] std::string svg_model_plan(const ModelPlan& plan, int width = 640);
 
 /// The plate's elements (corner to corner) with every damage onset drawn at its Gauss point, coloured by
 /// its time (legend from the first to the last onset), the impact point marked, and the rig's window edge
