@@ -13,6 +13,7 @@
 #include "plyimpact/analysis/thresholds/threshold_search.hpp"
 #include "plyimpact/io/deck/case_from_deck.hpp"
 #include "plyimpact/io/deck/deck.hpp"
+#include "plyimpact/io/deck/deck_schema.hpp"
 #include "plyimpact/io/deck/material_library.hpp"
 #include "plyimpact/io/deck/starting_deck.hpp"
 #include "plyimpact/io/results/damage_report.hpp"
@@ -335,9 +336,9 @@ CLI::App* add_analysis(CLI::App& app, const std::string& name, const std::string
 }
 
 const std::vector<std::string>& command_names() {
-  static const std::vector<std::string> names{"laminate",     "static",    "modal", "buckling",
-                                              "impact",       "threshold", "plot",  "sweep",
-                                              "capabilities", "materials", "init",  "preview"};
+  static const std::vector<std::string> names{"laminate",  "static",  "modal", "buckling",     "impact",
+                                              "threshold", "plot",    "sweep", "capabilities", "materials",
+                                              "init",      "preview", "schema"};
   return names;
 }
 
@@ -424,6 +425,10 @@ int run(int argc, char** argv) {
                       "folder for the preview (default: <[output] dir>/<deck name>-preview)");
   preview->add_flag("--nonlinear", o.nonlinear, "preview the large-deflection (non-linear) plate");
   preview->add_flag("--strict", o.strict, "treat the deck's plausibility warnings (unit slips) as errors");
+  std::string schema_of = "deck";
+  CLI::App* schema = app.add_subcommand(
+      "schema", "The JSON Schema of a deck, for editors that complete and check TOML (docs/schemas.md)");
+  schema->add_option("of", schema_of, "deck (the default)")->check(CLI::IsMember({"deck"}));
   std::vector<std::string> plot_dirs;
   CLI::App* plot =
       app.add_subcommand("plot", "PNG and SVG plots of impact results (several folders: overlaid curves)");
@@ -476,6 +481,10 @@ int run(int argc, char** argv) {
     if (*buckling) return run_buckling(o);
     if (*plot) return run_plot(plot_dirs, o.output_dir);
     if (*preview) return run_preview(o);
+    if (*schema) {
+      fmt::print("{}\n", deck_json_schema().dump(2));
+      return 0;
+    }
     if (*sweep) return run_sweep_command(sweep_options, cli::interrupted());
   } catch (const DeckError& e) {
     fmt::print(stderr, "{}\n", e.what());

@@ -290,7 +290,7 @@ TEST(Cli, AnUnknownCommandIsNamedWithTheValidOnesAndExits2) {
   EXPECT_EQ(slip.out,
             "plyimpact: error: unknown command 'impactt' (did you mean 'impact'?); the commands are "
             "laminate, static, modal, buckling, impact, threshold, plot, sweep, capabilities, materials, "
-            "init, preview "
+            "init, preview, schema "
             "(plyimpact --help), "
             "or give a deck file: plyimpact DECK.toml\n");
   const CommandResult other = run("frobnicate");

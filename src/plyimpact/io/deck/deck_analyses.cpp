@@ -50,7 +50,7 @@ std::string unknown_threshold_criterion(std::string_view what, std::string_view 
 namespace plyimpact::deck_tables {
 
 StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& plate, const Mesh* file_mesh) {
-  t.only({"pressure", "point", "patch"});
+  t.only_keys_of("load");
   StaticLoad l;
   l.pressure = t.optional_number("pressure", "Pa").value_or(0.0);
   auto inside = [&](const TableReader& r, double x, double y) {
@@ -66,12 +66,12 @@ StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& p
     }
   };
   if (const auto p = t.optional_table("point")) {
-    p->only({"x", "y", "force"});
+    p->only_keys_of("load.point");
     l.point = PointLoad{p->number("x", "m"), p->number("y", "m"), p->number("force", "N")};
     inside(*p, l.point->x, l.point->y);
   }
   if (const auto p = t.optional_table("patch")) {
-    p->only({"x", "y", "dx", "dy", "force"});
+    p->only_keys_of("load.patch");
     l.patch = PatchLoad{p->number("x", "m"), p->number("y", "m"), p->positive("dx", "m"),
                         p->positive("dy", "m"), p->number("force", "N")};
     inside(*p, l.patch->x, l.patch->y);
@@ -83,7 +83,7 @@ StaticLoad read_load(const TableReader& t, const std::optional<PlateGeometry>& p
 
 ModalSettings read_modal(const TableReader& t) {
   ModalSettings m;
-  t.only({"count"});
+  t.only_keys_of("modal");
   const long n = t.optional_integer("count").value_or(10);
   if (n < 1 || n > 1000)
     t.fail_at("count", fmt::format("modal.count must lie between 1 and 1000, got {}", n));
@@ -92,7 +92,7 @@ ModalSettings read_modal(const TableReader& t) {
 }
 
 BucklingSettings read_buckling(const TableReader& t) {
-  t.only({"Nx", "Ny", "Nxy", "count"});
+  t.only_keys_of("buckling");
   BucklingSettings b;
   b.Nx = t.optional_number("Nx", "N/m").value_or(0.0);
   b.Ny = t.optional_number("Ny", "N/m").value_or(0.0);
@@ -146,8 +146,7 @@ std::optional<Integrator> optional_law_integrator(const TableReader& t) {
 
 DamageSettings read_damage(const TableReader& t, Deck& d) {
   DamageSettings damage;
-  t.only({"criteria", "every", "delamination_ply_n", "model", "viscosity", "alpha", "refactor_tolerance",
-          "area_threshold", "oversize", "integration", "ply_law"});
+  t.only_keys_of("damage");
   const bool progressive =
       t.optional_choice<bool>("model", {{"onset", false}, {"progressive", true}}).value_or(false);
   if (progressive) {
@@ -224,7 +223,7 @@ DamageSettings read_damage(const TableReader& t, Deck& d) {
 
 ThresholdSettings read_threshold(const TableReader& t, const Deck& d) {
   ThresholdSettings threshold;
-  t.only({"criterion", "tolerance", "max_velocity", "damage_area"});
+  t.only_keys_of("threshold");
   if (const auto c = t.optional_string("criterion")) {
     const auto damage = parse_damage_criterion(*c);
     if (!damage && !parse_criterion(*c))

@@ -119,8 +119,7 @@ CohesiveParameters read_law(const TableReader& t, const Laminate& laminate, cons
 } // namespace
 
 DelaminationSettings read_delamination(const TableReader& t, Deck& d, bool plies_given) {
-  t.only({"interfaces", "G_Ic", "G_IIc", "bk_exponent", "normal_strength", "shear_strength",
-          "penalty_stiffness", "onset", "integration", "points", "supports", "seed_radius"});
+  t.only_keys_of("delamination");
   if (!d.laminate) t.fail_here("[delamination] needs the [laminate] it cuts into sub-laminates");
   DelaminationSettings s;
   s.stack.cuts = read_interfaces(t, *d.laminate);

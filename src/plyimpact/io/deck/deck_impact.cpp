@@ -38,7 +38,7 @@ double read_impact_velocity(const TableReader& t, double mass, ImpactorInput& in
 
 Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>& plate, const Mesh* file_mesh,
                        ImpactorInput& input, const ImpactorDefaults& defaults) {
-  t.only({"mass", "density", "radius", "E", "nu", "velocity", "energy", "x", "y", "nose", "half_angle"});
+  t.only_keys_of("impactor");
   Impactor imp;
   imp.nose = t.optional_choice<NoseShape>("nose", {{"hemisphere", NoseShape::hemisphere},
                                                    {"flat", NoseShape::flat},
@@ -106,7 +106,7 @@ Impactor read_impactor(const TableReader& t, const std::optional<PlateGeometry>&
 }
 
 ContactLawParameters read_contact(const TableReader& t, NoseShape nose) {
-  t.only({"k", "unloading", "q", "beta", "alpha_cr", "load"});
+  t.only_keys_of("contact");
   ContactLawParameters c;
   c.k = t.positive_or_auto("k", contact_constant_unit(nose));
   const auto unloading = t.optional_choice<UnloadingLaw>(
@@ -211,8 +211,7 @@ void read_end(const TableReader& t, TimeStepping& ts) {
 } // namespace
 
 TimeStepping read_time(const TableReader& t) {
-  t.only({"dt", "end", "newmark_beta", "newmark_gamma", "max_steps", "adaptive", "tolerance", "levels",
-          "integration", "mass_scaling", "target_dt", "stop_at_energy_error"});
+  t.only_keys_of("time");
   TimeStepping ts;
   ts.integration =
       t.optional_choice<TimeScheme>(

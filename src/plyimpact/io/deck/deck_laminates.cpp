@@ -46,8 +46,7 @@ double read_reference_angle(const TableReader& t) {
 
 NamedLaminate read_laminate(const std::vector<Material>& materials, const TableReader& t, std::string name) {
   const std::string& file = t.file();
-  t.only({"material", "layup", "ply_thickness", "shear_correction", "reduced_stiffness", "override",
-          "reference_direction"});
+  t.only_keys_of("laminate");
   LaminateSpec spec;
   spec.material = t.string("material", "the name of a [materials.NAME] table");
   const std::size_t default_material = material_index(materials, t, "material", spec.material);
@@ -81,7 +80,7 @@ NamedLaminate read_laminate(const std::vector<Material>& materials, const TableR
                 fmt::format("{0}.override must be an array of tables: [[{0}.override]]", t.path()));
     for (const toml::node& item : *arr) {
       const TableReader o = t.nested(*item.as_table(), t.path() + ".override");
-      o.only({"plies", "material", "thickness"});
+      o.only_keys_of("laminate.override");
       PlyOverride po;
       const toml::node* pn = o.node("plies");
       if (pn == nullptr || pn->as_array() == nullptr || pn->as_array()->empty())
@@ -122,7 +121,7 @@ std::vector<Region> read_regions(const Deck& d, const TableReader& top) {
         "region must be an array of tables: [[region]] with laminate = \"NAME\", x = [x0, x1], y = [y0, y1]");
   for (const toml::node& item : *arr) {
     const TableReader t = top.nested(*item.as_table(), "region");
-    t.only({"laminate", "x", "y"});
+    t.only_keys_of("region");
     Region r;
     r.name = t.string("laminate", "the name of a [laminates.NAME] table");
     const auto it = std::find_if(d.laminates.begin(), d.laminates.end(),

@@ -31,9 +31,7 @@ TableReader library_card(const TableReader& t, const toml::table& library, const
 } // namespace
 
 Material read_material(const TableReader& t, const std::string& name) {
-  t.only({"library", "E1",   "E2",   "G12",         "G13",           "G23", "nu12", "rho",  "Xt",
-          "Xc",      "Yt",   "Yc",   "S12",         "S23",           "Zt",  "Da",   "G_ft", "G_fc",
-          "G_mt",    "G_mc", "G_ms", "bk_exponent", "fracture_angle"});
+  t.only_keys_of("material");
   // A library card gives what the deck's table leaves out; a key of the deck's table replaces the card's.
   // The library is parsed only for a table that names a card (it outlives `base`, which reads it).
   const std::optional<std::string> card = t.optional_string("library");

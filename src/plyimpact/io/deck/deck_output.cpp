@@ -71,15 +71,14 @@ void read_vtk_output(const TableReader& t, Deck& d) {
 } // namespace
 
 void read_output(const TableReader& t, Deck& d) {
-  t.only({"dir", "fields_at", "history_every", "probe", "vtk", "vtk_every", "vtk_at", "vtk_plies",
-          "vtk_interfaces", "vtk_thickness_scale", "report_displacements_at"});
+  t.only_keys_of("output");
   if (const toml::node* pr = t.node("probe")) {
     const toml::array* arr = pr->as_array();
     if (arr == nullptr || !arr->is_array_of_tables())
       t.fail_at("probe", "output.probe must be an array of tables: [[output.probe]]");
     for (const toml::node& item : *arr) {
       const TableReader p = t.nested(*item.as_table(), "output.probe");
-      p.only({"name", "x", "y", "ply", "interface", "position"});
+      p.only_keys_of("output.probe");
       StressProbeSpec spec;
       spec.x = p.number("x", "m");
       spec.y = p.number("y", "m");
@@ -116,7 +115,7 @@ void read_output(const TableReader& t, Deck& d) {
 }
 
 void read_run(const TableReader& t, Deck& d) {
-  t.only({"threads"});
+  t.only_keys_of("run");
   if (!t.has("threads")) return;
   const long threads = t.optional_integer("threads").value_or(0);
   if (threads < 1 || threads > max_run_threads)

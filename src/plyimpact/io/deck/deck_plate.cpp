@@ -11,7 +11,7 @@
 namespace plyimpact::deck_tables {
 
 PlateGeometry read_plate(const TableReader& t) {
-  t.only({"a", "b", "rigid"});
+  t.only_keys_of("plate");
   PlateGeometry plate{t.positive("a", "m"), t.positive("b", "m")};
   if (const toml::node* r = t.node("rigid")) {
     if (r->as_boolean() == nullptr) t.fail_at("rigid", "plate.rigid must be true or false");
@@ -73,8 +73,7 @@ std::optional<double> read_growth(const TableReader& t) {
 } // namespace
 
 MeshSpec read_mesh(const TableReader& t) {
-  t.only({"file", "geo", "nx", "ny", "mass", "element", "grading", "size_at_impact", "growth", "max_size",
-          "impact_offset"});
+  t.only_keys_of("mesh");
   MeshSpec m;
   if (t.has("file") && t.has("geo"))
     t.fail_at("geo", "give mesh.file (a mesh made by gmsh) or mesh.geo (a geometry to mesh), not both");
@@ -158,7 +157,7 @@ GeometryMeshing read_geometry_meshing(const TableReader& t, const std::optional<
 
 void read_rig(const TableReader& top, const TableReader& t, const std::optional<TableReader>& mesh,
               const std::optional<Eigen::Vector2d>& refine_at, Deck& d) {
-  t.only({"preset", "diameter"});
+  t.only_keys_of("rig");
   RigSpec spec;
   const auto kind = t.optional_choice<RigKind>("preset", {{"astm-d7136", RigKind::astm_d7136},
                                                           {"aitm-1-0010", RigKind::aitm_1_0010},
@@ -283,7 +282,7 @@ namespace {
 
 /// [boundary] of the structured rectangle: x0, xa, y0, yb (ss unless given) and corners.
 BoundaryConditions read_rectangle_boundary(const TableReader& t) {
-  t.only({"x0", "xa", "y0", "yb", "corners"});
+  t.only_keys_of("boundary");
   BoundaryConditions bc;
   for (const Edge e : {Edge::x0, Edge::xa, Edge::y0, Edge::yb}) {
     const std::string_view key = to_string(e);

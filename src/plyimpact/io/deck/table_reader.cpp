@@ -1,9 +1,15 @@
 #include "plyimpact/io/deck/table_reader.hpp"
 
+#include "plyimpact/io/deck/deck_keys.hpp"
+
 #include <cctype>
 #include <vector>
 
 namespace plyimpact {
+
+void TableReader::only_keys_of(std::string_view table) const {
+  only(deck_key_names(table));
+}
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);

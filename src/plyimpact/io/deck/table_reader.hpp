@@ -6,6 +6,7 @@
 #include "plyimpact/io/deck/deck_units.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -75,6 +76,11 @@ public:
 
   /// Every key must be one of `allowed`; otherwise an error with the closest allowed name.
   void only(std::initializer_list<std::string_view> allowed) const {
+    only(std::vector<std::string_view>(allowed));
+  }
+  /// Every key must be one of the keys of the deck's table `table` (io/deck/deck_keys.hpp).
+  void only_keys_of(std::string_view table) const;
+  void only(const std::vector<std::string_view>& allowed) const {
     for (auto&& [key, node] : table_) {
       const std::string_view k = key.str();
       if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
@@ -82,7 +88,7 @@ public:
       if (const auto best = closest_name(k, allowed))
         msg += fmt::format(" (did you mean '{}'?)", *best);
       else
-        msg += fmt::format(" (expected one of: {})", join(allowed));
+        msg += fmt::format(" (expected one of: {})", fmt::join(allowed, ", "));
       fail(file_, key.source().begin.line > 0 ? key.source() : node.source(), msg);
     }
   }

@@ -261,7 +261,7 @@ namespace {
 void read_sweep_table(const toml::table& sweep, const std::string& source, SweepSpec& spec) {
   const auto at = [&](const toml::node& n) { return located(source, n.source()); };
   const TableReader table(sweep, "sweep", source);
-  table.only({"mode", "analysis", "values", "random", "plate_response"});
+  table.only_keys_of("sweep");
   if (const auto mode = table.optional_choice<SweepMode>(
           "mode", {{"product", SweepMode::product}, {"zip", SweepMode::zip}}))
     spec.mode = *mode;

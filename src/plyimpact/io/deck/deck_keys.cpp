@@ -1,0 +1,208 @@
+#include "plyimpact/io/deck/deck_keys.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace plyimpact {
+
+namespace {
+
+using enum KeyKind;
+
+std::vector<DeckTable> all_tables() {
+  return {
+      {"",
+       {{"units", string},
+        {"analysis", string},
+        {"title", string},
+        {"materials", named_tables, "material"},
+        {"laminate", table, "laminate"},
+        {"laminates", named_tables, "laminate"},
+        {"region", array_of_tables, "region"},
+        {"plate", table, "plate"},
+        {"mesh", table, "mesh"},
+        {"boundary", table, "boundary"},
+        {"impactor", table, "impactor"},
+        {"contact", table, "contact"},
+        {"time", table, "time"},
+        {"load", table, "load"},
+        {"modal", table, "modal"},
+        {"buckling", table, "buckling"},
+        {"damage", table, "damage"},
+        {"threshold", table, "threshold"},
+        {"output", table, "output"},
+        {"nonlinear", boolean},
+        {"strain_measure", string},
+        {"load_steps", integer},
+        {"sweep", table, "sweep"},
+        {"rig", table, "rig"},
+        {"delamination", table, "delamination"},
+        {"run", table, "run"}}},
+      {"material",
+       {{"library", string},
+        {"E1", number},
+        {"E2", number},
+        {"G12", number},
+        {"G13", number},
+        {"G23", number},
+        {"nu12", number},
+        {"rho", number},
+        {"Xt", number},
+        {"Xc", number},
+        {"Yt", number},
+        {"Yc", number},
+        {"S12", number},
+        {"S23", number},
+        {"Zt", number},
+        {"Da", number},
+        {"G_ft", number},
+        {"G_fc", number},
+        {"G_mt", number},
+        {"G_mc", number},
+        {"G_ms", number},
+        {"bk_exponent", number},
+        {"fracture_angle", number}}},
+      {"laminate",
+       {{"material", string},
+        {"layup", string},
+        {"ply_thickness", number},
+        {"shear_correction", number},
+        {"reduced_stiffness", string},
+        {"override", array_of_tables, "laminate.override"},
+        {"reference_direction", numbers}}},
+      {"laminate.override", {{"plies", any}, {"material", string}, {"thickness", number}}},
+      {"region", {{"laminate", string}, {"x", numbers}, {"y", numbers}}},
+      {"plate", {{"a", number}, {"b", number}, {"rigid", boolean}}},
+      {"mesh",
+       {{"file", string},
+        {"geo", string},
+        {"nx", integer},
+        {"ny", integer},
+        {"mass", string},
+        {"element", string},
+        {"grading", string},
+        {"size_at_impact", number_or_string},
+        {"growth", number},
+        {"max_size", number_or_string},
+        {"impact_offset", numbers}}},
+      {"rig", {{"preset", string}, {"diameter", number}}},
+      {"boundary",
+       {{"x0", string}, {"xa", string}, {"y0", string}, {"yb", string}, {"corners", string}},
+       true},
+      {"impactor",
+       {{"mass", number},
+        {"density", number},
+        {"radius", number},
+        {"E", number},
+        {"nu", number},
+        {"velocity", number},
+        {"energy", number},
+        {"x", number},
+        {"y", number},
+        {"nose", string},
+        {"half_angle", number}}},
+      {"contact",
+       {{"k", number_or_string},
+        {"unloading", string},
+        {"q", number},
+        {"beta", number},
+        {"alpha_cr", number},
+        {"load", string}}},
+      {"time",
+       {{"dt", number_or_string},
+        {"end", number_or_string},
+        {"newmark_beta", number},
+        {"newmark_gamma", number},
+        {"max_steps", integer},
+        {"adaptive", boolean},
+        {"tolerance", number},
+        {"levels", integer},
+        {"integration", string},
+        {"mass_scaling", string},
+        {"target_dt", number},
+        {"stop_at_energy_error", number}}},
+      {"load", {{"pressure", number}, {"point", table, "load.point"}, {"patch", table, "load.patch"}}},
+      {"load.point", {{"x", number}, {"y", number}, {"force", number}}},
+      {"load.patch", {{"x", number}, {"y", number}, {"dx", number}, {"dy", number}, {"force", number}}},
+      {"modal", {{"count", integer}}},
+      {"buckling", {{"Nx", number}, {"Ny", number}, {"Nxy", number}, {"count", integer}}},
+      {"damage",
+       {{"criteria", strings},
+        {"every", integer},
+        {"delamination_ply_n", string},
+        {"model", string},
+        {"viscosity", number},
+        {"alpha", number},
+        {"refactor_tolerance", number},
+        {"area_threshold", number},
+        {"oversize", string},
+        {"integration", string},
+        {"ply_law", string}}},
+      {"threshold",
+       {{"criterion", string}, {"tolerance", number}, {"max_velocity", number}, {"damage_area", number}}},
+      {"delamination",
+       {{"interfaces", any},
+        {"G_Ic", number},
+        {"G_IIc", number},
+        {"bk_exponent", number},
+        {"normal_strength", number},
+        {"shear_strength", number},
+        {"penalty_stiffness", number_or_string},
+        {"onset", string},
+        {"integration", string},
+        {"points", string},
+        {"supports", string},
+        {"seed_radius", number}}},
+      {"output",
+       {{"dir", string},
+        {"fields_at", numbers},
+        {"history_every", integer},
+        {"probe", array_of_tables, "output.probe"},
+        {"vtk", boolean},
+        {"vtk_every", integer},
+        {"vtk_at", numbers},
+        {"vtk_plies", integers},
+        {"vtk_interfaces", integers},
+        {"vtk_thickness_scale", number},
+        {"report_displacements_at", number}}},
+      {"output.probe",
+       {{"name", string},
+        {"x", number},
+        {"y", number},
+        {"ply", integer},
+        {"interface", integer},
+        {"position", string}}},
+      {"run", {{"threads", integer}}},
+      {"sweep",
+       {{"mode", string},
+        {"analysis", string},
+        {"values", any},
+        {"random", any},
+        {"plate_response", string}}},
+  };
+}
+
+} // namespace
+
+const std::vector<DeckTable>& deck_key_tables() {
+  static const std::vector<DeckTable> tables = all_tables(); // constant data, built once
+  return tables;
+}
+
+const DeckTable& deck_table(std::string_view name) {
+  const auto& tables = deck_key_tables();
+  const auto it = std::ranges::find_if(tables, [&](const DeckTable& t) { return t.name == name; });
+  if (it == tables.end())
+    throw std::logic_error("no deck table '" + std::string(name) + "' in deck_keys.cpp");
+  return *it;
+}
+
+std::vector<std::string_view> deck_key_names(std::string_view table) {
+  std::vector<std::string_view> names;
+  for (const DeckKey& k : deck_table(table).keys)
+    names.push_back(k.name);
+  return names;
+}
+
+} // namespace plyimpact
