@@ -38,6 +38,14 @@ inline CommandResult shell(const std::string& command) {
   return r;
 }
 
+/// How many times `what` occurs in `text`, without overlaps (elements of a report or a picture).
+inline std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
+    ++n;
+  return n;
+}
+
 /// Runs `plyimpact ARGS`.
 inline CommandResult run(const std::string& args) {
   return shell(std::string(PLYIMPACT_EXE) + " " + args);

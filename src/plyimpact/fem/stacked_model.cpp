@@ -187,10 +187,10 @@ DelaminationResult InterfaceStates::result() const {
   const ProcessZone zone = plate_.process_zone();
   r.cohesive_zone_length = zone.length;
   r.interface_point_spacing = zone.point_spacing;
+  r.interface_after_ply = interfaces_after_ply(plate_.settings_.stack.cuts);
   for (int i = 0; i < stack.interface_count(); ++i) {
     const CohesiveInterface& ci = stack.interface(i);
     const std::vector<CohesiveState>& states = committed_.interfaces[static_cast<std::size_t>(i)];
-    r.interface_after_ply.push_back(plate_.settings_.stack.cuts[static_cast<std::size_t>(i)] + 1);
     r.angle_below_deg.push_back(stack.sublaminate(i + 1).laminate().plies().front().angle_deg);
     double softening = 0.0;
     const auto per_element = static_cast<std::size_t>(ci.points_per_element());

@@ -16,6 +16,14 @@ double slice_shear_correction(double z1, double z2, double h) {
   return Q * Q / ((s2 - s1) * (F2(s2) - F2(s1)));
 }
 
+std::vector<int> interfaces_after_ply(const std::vector<int>& cuts) {
+  std::vector<int> after;
+  after.reserve(cuts.size());
+  for (const int cut : cuts)
+    after.push_back(cut + 1);
+  return after;
+}
+
 std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector<int>& cuts,
                                      std::optional<double> shear_correction) {
   const int plies = static_cast<int>(laminate.ply_count());

@@ -44,6 +44,10 @@ namespace plyimpact {
 [[nodiscard]] std::vector<Laminate> split_laminate(const Laminate& laminate, const std::vector<int>& cuts,
                                                    std::optional<double> shear_correction = {});
 
+/// The ply (1-based, from the impacted face) that each interface of `cuts` lies under: a cut after 0-based
+/// ply k lies under ply k + 1. How results, reports and pictures name the interfaces.
+[[nodiscard]] std::vector<int> interfaces_after_ply(const std::vector<int>& cuts);
+
 /// The default cuts: every interface between plies of different orientation (issue 19).
 [[nodiscard]] std::vector<int> interfaces_between_orientations(const Laminate& laminate);
 

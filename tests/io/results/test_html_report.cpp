@@ -31,13 +31,6 @@ namespace {
 using namespace plyimpact;
 using namespace plyimpact::test;
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
-    ++n;
-  return n;
-}
-
 TEST(SvgPlot, TicksAreOneTwoFiveStepsThatEncloseTheRange) {
   // 12 661.7 N over about 5 intervals: raw step 2532 rounds up to 5000; 0 … 15 000 encloses it.
   EXPECT_EQ(nice_ticks(0.0, 12661.7), (std::vector<double>{0.0, 5000.0, 10000.0, 15000.0}));
@@ -77,8 +70,8 @@ TEST(SvgPlot, APointThatIsNotFiniteIsAGapBetweenTwoLines) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::string svg =
       svg_line_plot({"", "x", "y", {{"", {0.0, 1.0, nan, 3.0, 4.0}, {0.0, 1.0, 2.0, 1.0, 0.0}}}});
-  EXPECT_EQ(count(svg, "<polyline"), 2U);
-  EXPECT_EQ(count(svg, ","), 4U) << "one comma per point drawn";
+  EXPECT_EQ(occurrences(svg, "<polyline"), 2U);
+  EXPECT_EQ(occurrences(svg, ","), 4U) << "one comma per point drawn";
 }
 
 /// The first legend line's (x1, y1) in an SVG plot (the first 2 px wide line; the grid's are thinner).
@@ -127,12 +120,12 @@ TEST(SvgPlot, TheOnsetMapOnARigCirclesTheClampTipsAndDashesTheWindow) {
   rig.window = {{0.0125, 0.0125}, {0.1375, 0.0125}, {0.1375, 0.0875}, {0.0125, 0.0875}};
   rig.clamp_tips = {{0.025, 0.00625}, {0.125, 0.00625}, {0.125, 0.09375}, {0.025, 0.09375}};
   const std::string svg = svg_onset_map(mesh, {}, 0.075, 0.05, rig);
-  EXPECT_EQ(count(svg, "class=\"clamp\""), 4U);
-  EXPECT_EQ(count(svg, "class=\"window\""), 1U);
+  EXPECT_EQ(occurrences(svg, "class=\"clamp\""), 4U);
+  EXPECT_EQ(occurrences(svg, "class=\"window\""), 1U);
   EXPECT_NE(svg.find(xml_escaped(clamp_tip_note)), std::string::npos);
   const std::string bare = svg_onset_map(mesh, {}, 0.075, 0.05);
-  EXPECT_EQ(count(bare, "class=\"clamp\""), 0U);
-  EXPECT_EQ(count(bare, "class=\"window\""), 0U);
+  EXPECT_EQ(occurrences(bare, "class=\"clamp\""), 0U);
+  EXPECT_EQ(occurrences(bare, "class=\"window\""), 0U);
 }
 
 TEST(SvgPlot, TheCscanShowsTheShallowestDelaminatedInterfaceAtEachPoint) {
@@ -152,7 +145,7 @@ TEST(SvgPlot, TheCscanShowsTheShallowestDelaminatedInterfaceAtEachPoint) {
   const std::vector<int> after_ply{2, 4, 6};
   const std::string svg = svg_cscan_map({cells, area, shallowest, after_ply, 2e-3, 0.5e-3, {}});
   for (int i = 1; i <= 3; ++i)
-    EXPECT_EQ(count(svg, fmt::format("<polygon fill=\"{}\"", cscan_colour(i))), 1U) << i;
+    EXPECT_EQ(occurrences(svg, fmt::format("<polygon fill=\"{}\"", cscan_colour(i))), 1U) << i;
   EXPECT_NE(svg.find("interface after ply 2: 2 mm² seen"), std::string::npos) << svg;
   EXPECT_NE(svg.find("interface after ply 4: 3 mm² seen"), std::string::npos) << svg;
   EXPECT_NE(svg.find("interface after ply 6: 4 mm² seen"), std::string::npos) << svg;
@@ -199,18 +192,18 @@ TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
   const fs::path dir = thesis_4_3_results("content");
   const std::string html = read(dir / "report.html");
   ASSERT_FALSE(html.empty());
-  EXPECT_EQ(count(html, "<svg"), 6U) << "three curves, the ply stack, the plan and the onset map";
-  EXPECT_EQ(count(html, "class=\"plot\""), 3U);
-  EXPECT_EQ(count(html, "class=\"plies\""), 1U);
-  EXPECT_EQ(count(html, "class=\"plan\""), 1U);
-  EXPECT_EQ(count(html, "class=\"map\""), 1U);
-  EXPECT_EQ(count(html, "<table class=\"summary\">"), 1U);
-  EXPECT_EQ(count(html, "<table class=\"onsets\">"), 1U);
-  EXPECT_EQ(count(html, "<th>where</th>"), 0U) << "no rig, no clamp tips: no column for them";
+  EXPECT_EQ(occurrences(html, "<svg"), 6U) << "three curves, the ply stack, the plan and the onset map";
+  EXPECT_EQ(occurrences(html, "class=\"plot\""), 3U);
+  EXPECT_EQ(occurrences(html, "class=\"plies\""), 1U);
+  EXPECT_EQ(occurrences(html, "class=\"plan\""), 1U);
+  EXPECT_EQ(occurrences(html, "class=\"map\""), 1U);
+  EXPECT_EQ(occurrences(html, "<table class=\"summary\">"), 1U);
+  EXPECT_EQ(occurrences(html, "<table class=\"onsets\">"), 1U);
+  EXPECT_EQ(occurrences(html, "<th>where</th>"), 0U) << "no rig, no clamp tips: no column for them";
   // No script and nothing fetched: the only URL is the SVG namespace.
-  EXPECT_EQ(count(html, "<script"), 0U);
-  EXPECT_EQ(count(html, "http"), count(html, "xmlns=\"http://www.w3.org/2000/svg\""));
-  EXPECT_EQ(count(html, "src="), 0U);
+  EXPECT_EQ(occurrences(html, "<script"), 0U);
+  EXPECT_EQ(occurrences(html, "http"), occurrences(html, "xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_EQ(occurrences(html, "src="), 0U);
   // The numbers are summary.json's: the peak force to 5 digits.
   const nlohmann::json summary = nlohmann::json::parse(read(dir / "summary.json"));
   // The plan's contact circle is the run's largest, √(R α_max) with the deck's R = 6.35 mm, and the 127 mm
@@ -232,7 +225,7 @@ TEST(HtmlReport, IsOneSelfContainedFileWithEveryPlotAndTable) {
                             summary["load_drop"]["time_s"].get<double>() * 1e3)),
       std::string::npos);
   ASSERT_TRUE(summary["absorbed_energy_by_mechanism"].is_null());
-  EXPECT_EQ(count(html, "absorbed by ply damage"), 0U);
+  EXPECT_EQ(occurrences(html, "absorbed by ply damage"), 0U);
 }
 
 TEST(HtmlReport, FirstFailuresAtTheRigsClampTipsAreMarkedAndAreNotTheLaminatesFirstFailure) {
@@ -277,7 +270,7 @@ TEST(HtmlReport, FirstFailuresAtTheRigsClampTipsAreMarkedAndAreNotTheLaminatesFi
     }
   // The HTML marks the same rows and says which failure is the laminate's.
   const std::string html = read(dir / "out" / "report.html");
-  EXPECT_EQ(count(html, "<td>clamp tip</td>"), static_cast<std::size_t>(marked));
+  EXPECT_EQ(occurrences(html, "<td>clamp tip</td>"), static_cast<std::size_t>(marked));
   EXPECT_NE(html.find(fmt::format("The laminate's first failure: {} {} in ply {}, element {}",
                                   first["criterion"].get<std::string>(), first["mode"].get<std::string>(),
                                   first["ply"].get<int>(), first["element"].get<int>())),
@@ -331,7 +324,7 @@ TEST(HtmlReport, ForceDisplacementIsTheContactLoopWithoutTheReboundFlight) {
   EXPECT_LE(ticks_mm.front(), in_contact);
   EXPECT_GT(ticks_mm.front(), in_contact - step - 1e-9);
   EXPECT_LT(overall, ticks_mm.front() - 5.0) << "the flight, left out, goes far lower";
-  EXPECT_GE(count(svg, "<polyline"), 1U);
+  EXPECT_GE(occurrences(svg, "<polyline"), 1U);
   // The time plots end a fifth past the last contact (4.3 ms), not at the run's end (8.6 ms): the contact
   // force plot's last x tick is the first at or past 1.2 times the contact's end.
   const nlohmann::json run_summary = nlohmann::json::parse(read(dir / "summary.json"));
@@ -359,8 +352,8 @@ TEST(HtmlReport, ForceDisplacementIsTheContactLoopWithoutTheReboundFlight) {
   EXPECT_NE(html.find(fmt::format("left in plate vibration</th><td class=\"number\">{:.5g} J",
                                   mechanism["plate_vibration_J"].get<double>())),
             std::string::npos);
-  EXPECT_EQ(count(html, "absorbed by ply damage"), 1U);
-  EXPECT_EQ(count(html, "absorbed by delamination"), 1U);
+  EXPECT_EQ(occurrences(html, "absorbed by ply damage"), 1U);
+  EXPECT_EQ(occurrences(html, "absorbed by delamination"), 1U);
 }
 
 TEST(HtmlReport, OpensInHeadlessChromiumWithoutConsoleErrors) {
@@ -379,9 +372,9 @@ TEST(HtmlReport, OpensInHeadlessChromiumWithoutConsoleErrors) {
   // The DOM the browser built holds every plot and table.
   ASSERT_EQ(view.dom.status, 0) << view.dom.out;
   expect_no_console_errors(view.dom);
-  EXPECT_EQ(count(view.dom.out, "class=\"plot\""), 3U);
-  EXPECT_EQ(count(view.dom.out, "<table class=\"summary\">"), 1U);
-  EXPECT_EQ(count(view.dom.out, "<table class=\"onsets\">"), 1U);
+  EXPECT_EQ(occurrences(view.dom.out, "class=\"plot\""), 3U);
+  EXPECT_EQ(occurrences(view.dom.out, "<table class=\"summary\">"), 1U);
+  EXPECT_EQ(occurrences(view.dom.out, "<table class=\"onsets\">"), 1U);
   if (const char* keep = std::getenv("PLYIMPACT_KEEP_REPORT_PNG"))
     fs::copy_file(png, keep, fs::copy_options::overwrite_existing);
 }
@@ -405,9 +398,9 @@ TEST(HtmlReport, SweepReportOpensInHeadlessChromiumWithEveryPlotAndCase) {
   EXPECT_GT(fs::file_size(png), 50'000U);
   ASSERT_EQ(view.dom.status, 0) << view.dom.out;
   expect_no_console_errors(view.dom);
-  EXPECT_EQ(count(view.dom.out, "class=\"plot\""), 4U);
-  EXPECT_EQ(count(view.dom.out, "<table class=\"cases\">"), 1U);
-  EXPECT_EQ(count(view.dom.out, "<td>ok</td>"), 6U);
+  EXPECT_EQ(occurrences(view.dom.out, "class=\"plot\""), 4U);
+  EXPECT_EQ(occurrences(view.dom.out, "<table class=\"cases\">"), 1U);
+  EXPECT_EQ(occurrences(view.dom.out, "<td>ok</td>"), 6U);
   if (const char* keep = std::getenv("PLYIMPACT_KEEP_SWEEP_REPORT_PNG"))
     fs::copy_file(png, keep, fs::copy_options::overwrite_existing);
 }

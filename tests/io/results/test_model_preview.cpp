@@ -22,13 +22,6 @@ namespace {
 using namespace plyimpact;
 using namespace plyimpact::test;
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
-    ++n;
-  return n;
-}
-
 /// The number after `key="` in the first element that has it after `from`.
 double attribute(const std::string& svg, std::size_t from, const std::string& key) {
   const std::size_t at = svg.find(key + "=\"", from);
@@ -89,8 +82,8 @@ TEST(ModelPreview, ThePlanDrawsEveryElementAndSupportedNodeAndTheContactCircleTo
                                           .contact_radius = 3e-3,
                                           .contact_reached = false},
                                          width);
-  EXPECT_EQ(count(svg, "class=\"element\""), 20U);
-  EXPECT_EQ(count(svg, "class=\"support\""), marks[0].points.size() + marks[1].points.size());
+  EXPECT_EQ(occurrences(svg, "class=\"element\""), 20U);
+  EXPECT_EQ(occurrences(svg, "class=\"support\""), marks[0].points.size() + marks[1].points.size());
   // The picture maps 150 mm onto width − 2 · 20 px: the 3 mm radius is 3 · 600/150 = 12 px, centred at
   // x = 20 + 75 · 4 = 320 px.
   const std::size_t circle = svg.find("class=\"contact\"");
@@ -106,19 +99,19 @@ TEST(ModelPreview, ThePlanDrawsEveryElementAndSupportedNodeAndTheContactCircleTo
                                                  .impact_point = std::nullopt,
                                                  .contact_radius = 0.0,
                                                  .contact_reached = false});
-  EXPECT_EQ(count(plate_only, "class=\"contact\""), 0U);
-  EXPECT_EQ(count(plate_only, "class=\"impact\""), 0U);
+  EXPECT_EQ(occurrences(plate_only, "class=\"contact\""), 0U);
+  EXPECT_EQ(occurrences(plate_only, "class=\"impact\""), 0U);
 }
 
 TEST(ModelPreview, TheStackMarksEachInterfaceUnderThePlyItFollows) {
   const Laminate lam = cross_ply(); // 5 plies: ply height clamp(360/5, 4, 22) = 22 px from y = 20
   const std::string svg = svg_ply_stack(lam, {1, 3});
-  ASSERT_EQ(count(svg, "class=\"interface\""), 2U);
+  ASSERT_EQ(occurrences(svg, "class=\"interface\""), 2U);
   const std::size_t first = svg.find("class=\"interface\"");
   EXPECT_NEAR(attribute(svg, first, "y1"), 20.0 + 22.0 * 1, 1e-9);
   EXPECT_NEAR(attribute(svg, svg.find("class=\"interface\"", first + 1), "y1"), 20.0 + 22.0 * 3, 1e-9);
   EXPECT_NE(svg.find("the 2 interfaces that may delaminate"), std::string::npos);
-  EXPECT_EQ(count(svg_ply_stack(lam), "class=\"interface\""), 0U);
+  EXPECT_EQ(occurrences(svg_ply_stack(lam), "class=\"interface\""), 0U);
 }
 
 TEST(ModelPreview, PlyColoursAreHexForEveryAngle) {
@@ -142,8 +135,8 @@ TEST(ModelPreview, TheFilesAreWrittenAndThePngIsDrawn) {
                        .interfaces_after_ply = {2},
                        .settings = "SETTINGS & more\n"};
   const std::string script = model_preview_script(p, "a.svg", "a.png");
-  EXPECT_EQ(count(script, " rect from "), 2 * 5U);       // every ply, in the SVG and the PNG drawing
-  EXPECT_EQ(count(script, "lc rgb '#d62728' lw 3"), 2U); // the interface, twice
+  EXPECT_EQ(occurrences(script, " rect from "), 2 * 5U);       // every ply, in the SVG and the PNG drawing
+  EXPECT_EQ(occurrences(script, "lc rgb '#d62728' lw 3"), 2U); // the interface, twice
   const ModelPreviewFiles files = write_model_preview(dir, p);
   EXPECT_EQ(files.warning, "");
   for (const char* name : {"preview.txt", "preview.gp", "preview.svg", "preview.png", "preview.html"})
@@ -155,7 +148,7 @@ TEST(ModelPreview, TheFilesAreWrittenAndThePngIsDrawn) {
   const std::string html = read_text(dir / "preview.html");
   EXPECT_NE(html.find("Preview: a &lt;test&gt; plate"), std::string::npos);
   EXPECT_NE(html.find("SETTINGS &amp; more"), std::string::npos);
-  EXPECT_EQ(count(html, "class=\"element\""), 20U);
+  EXPECT_EQ(occurrences(html, "class=\"element\""), 20U);
   EXPECT_EQ(read_text(dir / "preview.txt"), p.settings);
 }
 

@@ -123,11 +123,7 @@ TEST(DeckPreview, EveryShippedExamplePreviews) {
       count_text = count_text.substr(eq + 1);
     const long elements = std::stol(count_text);
     const std::string html = read_text(out / "preview.html");
-    std::size_t polygons = 0;
-    for (std::size_t p = html.find("class=\"element\""); p != std::string::npos;
-         p = html.find("class=\"element\"", p + 1))
-      ++polygons;
-    EXPECT_EQ(static_cast<long>(polygons), elements) << name;
+    EXPECT_EQ(static_cast<long>(occurrences(html, "class=\"element\"")), elements) << name;
     fs::remove_all(out);
   }
   EXPECT_GE(decks, 80);

@@ -7,6 +7,7 @@
 #include "plyimpact/io/deck/case_from_deck.hpp"
 #include "plyimpact/io/results/impact_report.hpp"
 #include "plyimpact/io/sweeps/sweep_runner.hpp"
+#include "support/cli.hpp"
 #include "test_paths.hpp"
 
 #include <gtest/gtest.h>
@@ -524,13 +525,6 @@ TEST(SweepRun, OnsetRunsLeaveTheDamageColumnsEmpty) {
 
 // --- report.html (io/sweeps/sweep_report.hpp) -----------------------------------------------------------
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
-    ++n;
-  return n;
-}
-
 /// The cells of the report's case table, row by row (tags stripped).
 std::vector<std::vector<std::string>> case_table(const std::string& html) {
   std::vector<std::vector<std::string>> rows;
@@ -560,13 +554,15 @@ TEST(SweepReport, TabulatesEveryCaseAndPlotsEachResultAgainstEachSweptKey) {
   (void)run_in_process(s, dir, 2, true, &factorizations);
   const std::string html = read_text_file(dir / "report.html");
   ASSERT_FALSE(html.empty());
-  EXPECT_EQ(count(html, "class=\"plot\""), 4U) << "peak force and absorbed energy against mass and velocity";
-  EXPECT_EQ(count(html, "<polyline"), 2U * 3U + 2U * 2U) << "3 velocity lines against the mass, 2 mass lines";
-  EXPECT_EQ(count(html, "<circle"), 4U * 6U) << "every case a dot in every plot";
-  EXPECT_EQ(count(html, ">impactor.velocity = 2.92<"), 2U);
-  EXPECT_EQ(count(html, ">impactor.mass = 1.2<"), 2U);
-  EXPECT_EQ(count(html, "<script"), 0U);
-  EXPECT_EQ(count(html, "http"), count(html, "xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_EQ(test::occurrences(html, "class=\"plot\""), 4U)
+      << "peak force and absorbed energy against mass and velocity";
+  EXPECT_EQ(test::occurrences(html, "<polyline"), 2U * 3U + 2U * 2U)
+      << "3 velocity lines against the mass, 2 mass lines";
+  EXPECT_EQ(test::occurrences(html, "<circle"), 4U * 6U) << "every case a dot in every plot";
+  EXPECT_EQ(test::occurrences(html, ">impactor.velocity = 2.92<"), 2U);
+  EXPECT_EQ(test::occurrences(html, ">impactor.mass = 1.2<"), 2U);
+  EXPECT_EQ(test::occurrences(html, "<script"), 0U);
+  EXPECT_EQ(test::occurrences(html, "http"), test::occurrences(html, "xmlns=\"http://www.w3.org/2000/svg\""));
   EXPECT_EQ(html.find("did not complete"), std::string::npos);
   const auto rows = case_table(html);
   ASSERT_EQ(rows.size(), 7U);
@@ -589,7 +585,7 @@ TEST(SweepReport, ACaseThatFailedIsListedWithItsError) {
   const std::string html = read_text_file(dir / "report.html");
   EXPECT_NE(html.find("<li>case 1: failed: "), std::string::npos) << html;
   EXPECT_NE(html.find("impactor.velocity must be positive"), std::string::npos);
-  EXPECT_EQ(count(html, "<tr class=\"failed\">"), 1U);
+  EXPECT_EQ(test::occurrences(html, "<tr class=\"failed\">"), 1U);
   EXPECT_NE(html.find("2 (1 failed, 1 ok)"), std::string::npos);
 }
 
@@ -602,9 +598,9 @@ TEST(SweepReport, MonteCarloSamplesAreDotsNotLines) {
   int factorizations = 0;
   (void)run_in_process(s, dir, 1, true, &factorizations);
   const std::string html = read_text_file(dir / "report.html");
-  EXPECT_EQ(count(html, "class=\"plot\""), 2U);
-  EXPECT_EQ(count(html, "<polyline"), 0U);
-  EXPECT_EQ(count(html, "<circle"), 2U * 5U);
+  EXPECT_EQ(test::occurrences(html, "class=\"plot\""), 2U);
+  EXPECT_EQ(test::occurrences(html, "<polyline"), 0U);
+  EXPECT_EQ(test::occurrences(html, "<circle"), 2U * 5U);
   EXPECT_NE(html.find("uniform on [0.2, 1.2]"), std::string::npos);
   EXPECT_NE(html.find("5 per grid point, seed 7"), std::string::npos);
 }

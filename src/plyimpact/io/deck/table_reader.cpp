@@ -52,11 +52,4 @@ std::string type_name(const toml::node& n) {
   }
 }
 
-std::string join(std::initializer_list<std::string_view> names) {
-  std::string s;
-  for (const auto n : names)
-    s += (s.empty() ? "" : ", ") + std::string(n);
-  return s;
-}
-
 } // namespace plyimpact

@@ -29,9 +29,6 @@ namespace plyimpact {
 /// "a table", "a number", ... for messages.
 [[nodiscard]] std::string type_name(const toml::node& n);
 
-/// "a, b, c".
-[[nodiscard]] std::string join(std::initializer_list<std::string_view> names);
-
 /// The entry of `names` closest to `name` when it is close enough to be a slip of the keyboard
 /// (edit distance at most max(2, a third of the name)), for "did you mean" hints.
 template <class Names>

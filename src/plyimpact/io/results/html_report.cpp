@@ -29,15 +29,6 @@ std::string value(const nlohmann::json& j, const char* key, std::string_view uni
   return html_number(j[key].get<double>(), unit, scale);
 }
 
-/// The cohesive interfaces of [delamination], 1-based under the ply they follow.
-std::vector<int> interfaces_after_ply(const Deck& d) {
-  std::vector<int> after;
-  if (d.delamination)
-    for (const int cut : d.delamination->stack.cuts)
-      after.push_back(cut + 1);
-  return after;
-}
-
 /// The plan of the plate as the preview draws it, with the largest contact circle of the run.
 std::string plan_of_the_run(const ImpactReportInput& in) {
   const Impactor& i = in.settings.impactor;
@@ -100,7 +91,11 @@ void case_section(std::string& h, const ImpactReportInput& in) {
             fmt::format("{}{}", s.nonlinear ? "large deflections (non-linear)" : "linear",
                         s.progressive_damage ? ", progressive ply damage" : ""));
   h += "</dl>\n";
-  if (d.laminate) h += "<figure>" + svg_ply_stack(*d.laminate, interfaces_after_ply(d)) + "</figure>\n";
+  if (d.laminate)
+    h += "<figure>" +
+         svg_ply_stack(*d.laminate, d.delamination ? interfaces_after_ply(d.delamination->stack.cuts)
+                                                   : std::vector<int>{}) +
+         "</figure>\n";
   if (in.mesh) h += "<figure>" + plan_of_the_run(in) + "</figure>\n";
   h += "</div></section>\n";
 }

@@ -1,5 +1,6 @@
 #include "plyimpact/io/results/impact_text_report.hpp"
 
+#include "plyimpact/fem/stacked_plate.hpp"
 #include "plyimpact/io/results/damage_report.hpp"
 #include "plyimpact/io/results/impact_report.hpp"
 #include "plyimpact/io/results/laminate_report.hpp"
@@ -70,9 +71,7 @@ std::string model_section(const ImpactSettings& s) {
   t += fmt::format("  ply damage                  {}\n",
                    s.progressive_damage ? "progressive (docs/progressive_damage.md)" : "none");
   if (!s.delamination) return t + "  delamination                none (one laminate)\n";
-  std::vector<int> after;
-  for (const int cut : s.delamination->stack.cuts)
-    after.push_back(cut + 1);
+  const std::vector<int> after = interfaces_after_ply(s.delamination->stack.cuts);
   return t + fmt::format("  delamination                {} cohesive interfaces, under plies {}\n",
                          after.size(), fmt::join(after, ", "));
 }

@@ -168,16 +168,48 @@ std::string ramp(double t) {
                      stops[i][2] + u * (stops[i + 1][2] - stops[i][2]));
 }
 
-/// The rig's window edge (dashed) and clamp tips (open circles) over a map whose plate coordinates [m]
-/// `X`, `Y` map to the picture.
-template <class ToX, class ToY>
-std::string svg_rig_outline(const RigOutline& rig, const ToX& X, const ToY& Y) {
+/// A plate drawn to scale above its legend: the rectangle [x0, x1] × [y0, y1] [m] fills the width less a
+/// margin on each side, the legend (legend_h px) lies below it; X and Y map plate coordinates to the picture
+/// [px].
+struct PlateFrame {
+  static constexpr double margin = 20.0;
+  double x0, y0, legend_h, scale;
+  int height;
+  PlateFrame(double x_min, double x_max, double y_min, double y_max, double legend, int width)
+      : x0(x_min), y0(y_min), legend_h(legend),
+        scale((width - 2.0 * margin) / std::max(x_max - x_min, 1e-12)),
+        height(static_cast<int>(std::ceil((y_max - y_min) * scale + 2.0 * margin + legend_h))) {}
+  /// The frame of `mesh`'s bounding box.
+  PlateFrame(const Mesh& mesh, double legend, int width)
+      : PlateFrame(mesh.bounds().x_min, mesh.bounds().x_max, mesh.bounds().y_min, mesh.bounds().y_max, legend,
+                   width) {}
+  [[nodiscard]] double X(double x) const { return margin + (x - x0) * scale; }
+  [[nodiscard]] double Y(double y) const { return height - legend_h - margin - (y - y0) * scale; }
+};
+
+/// Every element of `mesh` as a polygon through its corners.
+std::string svg_elements(const Mesh& mesh, const PlateFrame& f) {
+  std::string s;
+  auto out = std::back_inserter(s);
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    s += "<polygon class=\"element\" points=\"";
+    for (const auto& [xi, eta] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+      const Eigen::Vector2d p = mesh.map(e, xi, eta);
+      fmt::format_to(out, "{:.1f},{:.1f} ", f.X(p.x()), f.Y(p.y()));
+    }
+    s += "\"/>\n";
+  }
+  return s;
+}
+
+/// The rig's window edge (dashed) and clamp tips (open circles) over a plate drawn in `f`.
+std::string svg_rig_outline(const RigOutline& rig, const PlateFrame& f) {
   std::string s;
   auto out = std::back_inserter(s);
   if (!rig.window.empty()) {
     s += "<polygon class=\"window\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"6 4\" points=\"";
     for (const Eigen::Vector2d& p : rig.window)
-      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
+      fmt::format_to(out, "{:.1f},{:.1f} ", f.X(p.x()), f.Y(p.y()));
     s += "\"/>\n";
   }
   for (const Eigen::Vector2d& p : rig.clamp_tips)
@@ -185,7 +217,7 @@ std::string svg_rig_outline(const RigOutline& rig, const ToX& X, const ToY& Y) {
         out,
         "<circle class=\"clamp\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"#000\" "
         "stroke-width=\"1.5\"/>\n",
-        X(p.x()), Y(p.y()));
+        f.X(p.x()), f.Y(p.y()));
   return s;
 }
 
@@ -327,39 +359,28 @@ const char* support_colour(std::size_t k) {
 
 std::string svg_model_plan(const ModelPlan& plan, int width) {
   const Mesh& mesh = plan.mesh;
-  const BoundingBox& box = mesh.bounds();
   const std::size_t legend_lines = plan.supports.size() + (plan.impact_point ? 1 : 0) +
                                    (plan.rig.clamp_tips.empty() && plan.rig.window.empty() ? 0 : 1);
-  const double margin = 20.0, legend_h = 10.0 + 18.0 * static_cast<double>(legend_lines);
-  const double scale = (width - 2.0 * margin) / std::max(box.x_max - box.x_min, 1e-12);
-  const int height = static_cast<int>(std::ceil((box.y_max - box.y_min) * scale + 2.0 * margin + legend_h));
-  const auto X = [&](double x) { return margin + (x - box.x_min) * scale; };
-  const auto Y = [&](double y) { return height - legend_h - margin - (y - box.y_min) * scale; };
-  std::string s = svg_open(width, height, "plan", "the plate: mesh, supports and impact point");
+  const PlateFrame f(mesh, 10.0 + 18.0 * static_cast<double>(legend_lines), width);
+  const double margin = PlateFrame::margin;
+  std::string s = svg_open(width, f.height, "plan", "the plate: mesh, supports and impact point");
   auto out = std::back_inserter(s);
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    s += "<polygon class=\"element\" points=\"";
-    for (const auto& [xi, eta] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
-      const Eigen::Vector2d p = mesh.map(e, xi, eta);
-      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
-    }
-    s += "\"/>\n";
-  }
+  s += svg_elements(mesh, f);
   for (std::size_t k = 0; k < plan.supports.size(); ++k)
     for (const Eigen::Vector2d& p : plan.supports[k].points)
       fmt::format_to(
           out, "<rect class=\"support\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"5\" height=\"5\" fill=\"{}\"/>\n",
-          X(p.x()) - 2.5, Y(p.y()) - 2.5, support_colour(k));
-  s += svg_rig_outline(plan.rig, X, Y);
+          f.X(p.x()) - 2.5, f.Y(p.y()) - 2.5, support_colour(k));
+  s += svg_rig_outline(plan.rig, f);
   if (plan.impact_point) {
     const Eigen::Vector2d& p = *plan.impact_point;
     fmt::format_to(out,
                    "<circle class=\"contact\" cx=\"{0:.1f}\" cy=\"{1:.1f}\" r=\"{2:.2f}\" fill=\"#d62728\" "
                    "fill-opacity=\"0.25\" stroke=\"#d62728\"/>\n"
                    "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" class=\"impact\"/>\n",
-                   X(p.x()), Y(p.y()), plan.contact_radius * scale);
+                   f.X(p.x()), f.Y(p.y()), plan.contact_radius * f.scale);
   }
-  double ly = height - legend_h + 12.0;
+  double ly = f.height - f.legend_h + 12.0;
   for (std::size_t k = 0; k < plan.supports.size(); ++k, ly += 18.0)
     fmt::format_to(out,
                    "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"8\" height=\"8\" fill=\"{}\"/>"
@@ -384,34 +405,23 @@ std::string svg_model_plan(const ModelPlan& plan, int width) {
 
 std::string svg_onset_map(const Mesh& mesh, const std::vector<DamageOnset>& onsets, double impact_x,
                           double impact_y, const RigOutline& rig, int width) {
-  const BoundingBox& box = mesh.bounds();
-  const double margin = 20.0, legend_h = 46.0;
-  const double scale = (width - 2.0 * margin) / std::max(box.x_max - box.x_min, 1e-12);
-  const int height = static_cast<int>(std::ceil((box.y_max - box.y_min) * scale + 2.0 * margin + legend_h));
-  const auto X = [&](double x) { return margin + (x - box.x_min) * scale; };
-  const auto Y = [&](double y) { return height - legend_h - margin - (y - box.y_min) * scale; };
-  std::string s = svg_open(width, height, "map", "damage onsets on the plate");
+  const PlateFrame f(mesh, 46.0, width);
+  const double margin = PlateFrame::margin;
+  std::string s = svg_open(width, f.height, "map", "damage onsets on the plate");
   auto out = std::back_inserter(s);
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    s += "<polygon class=\"element\" points=\"";
-    for (const auto& [xi, eta] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
-      const Eigen::Vector2d p = mesh.map(e, xi, eta);
-      fmt::format_to(out, "{:.1f},{:.1f} ", X(p.x()), Y(p.y()));
-    }
-    s += "\"/>\n";
-  }
+  s += svg_elements(mesh, f);
   double t0 = std::numeric_limits<double>::infinity(), t1 = -t0;
   for (const DamageOnset& o : onsets)
     t0 = std::min(t0, o.time), t1 = std::max(t1, o.time);
   for (const DamageOnset& o : onsets)
-    fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"/>\n", X(o.x), Y(o.y),
+    fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"/>\n", f.X(o.x), f.Y(o.y),
                    ramp(t1 > t0 ? (o.time - t0) / (t1 - t0) : 0.0));
-  s += svg_rig_outline(rig, X, Y);
+  s += svg_rig_outline(rig, f);
   fmt::format_to(out,
                  "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" class=\"impact\"/>"
                  "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
-                 X(impact_x), Y(impact_y), X(impact_x) + 9.0, Y(impact_y) - 9.0);
-  const double ly = height - legend_h + 8.0;
+                 f.X(impact_x), f.Y(impact_y), f.X(impact_x) + 9.0, f.Y(impact_y) - 9.0);
+  const double ly = f.height - f.legend_h + 8.0;
   for (int k = 0; k < 40; ++k)
     fmt::format_to(out, "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"5\" height=\"12\" fill=\"{}\"/>",
                    margin + 5.0 * k, ly, ramp(k / 39.0));
@@ -448,13 +458,9 @@ std::string svg_cscan_map(const CscanMap& map, int width) {
       x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
   for (const Eigen::Vector2d& p : map.rig.window)
     x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
-  const double margin = 20.0, row_h = 18.0;
-  const double legend_h = row_h * static_cast<double>(map.after_ply.size() + 2) + 8.0;
-  const double scale = (width - 2.0 * margin) / std::max(x1 - x0, 1e-12);
-  const int height = static_cast<int>(std::ceil((y1 - y0) * scale + 2.0 * margin + legend_h));
-  const auto X = [&](double x) { return margin + (x - x0) * scale; };
-  const auto Y = [&](double y) { return height - legend_h - margin - (y - y0) * scale; };
-  std::string s = svg_open(width, height, "map", "C-scan of the delaminations from the impacted face");
+  const double margin = PlateFrame::margin, row_h = 18.0;
+  const PlateFrame f(x0, x1, y0, y1, row_h * static_cast<double>(map.after_ply.size() + 2) + 8.0, width);
+  std::string s = svg_open(width, f.height, "map", "C-scan of the delaminations from the impacted face");
   auto out = std::back_inserter(s);
   std::vector<double> share(map.after_ply.size() + 1, 0.0); // projected area per interface [m²]
   for (std::size_t q = 0; q < map.cells.size(); ++q) {
@@ -463,20 +469,20 @@ std::string svg_cscan_map(const CscanMap& map, int width) {
     share[static_cast<std::size_t>(i)] += map.area[q];
     s += fmt::format("<polygon fill=\"{0}\" stroke=\"{0}\" stroke-width=\"0.6\" points=\"", cscan_colour(i));
     for (const Eigen::Vector2d& c : map.cells[q])
-      fmt::format_to(out, "{:.1f},{:.1f} ", X(c.x()), Y(c.y()));
+      fmt::format_to(out, "{:.1f},{:.1f} ", f.X(c.x()), f.Y(c.y()));
     s += "\"/>\n";
   }
   fmt::format_to(out,
                  "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
                  "stroke=\"#bbb\"/>\n",
-                 X(x0), Y(y1), X(x1) - X(x0), Y(y0) - Y(y1));
-  s += svg_rig_outline(map.rig, X, Y);
+                 f.X(x0), f.Y(y1), f.X(x1) - f.X(x0), f.Y(y0) - f.Y(y1));
+  s += svg_rig_outline(map.rig, f);
   fmt::format_to(
       out,
       "<path d=\"M{0:.1f},{1:.1f}m-7,-7l14,14m0,-14l-14,14\" stroke=\"#000\" stroke-width=\"2.5\"/>"
       "<text x=\"{2:.1f}\" y=\"{3:.1f}\">impact point</text>\n",
-      X(map.impact_x), Y(map.impact_y), X(map.impact_x) + 9.0, Y(map.impact_y) - 9.0);
-  double ly = height - legend_h + 8.0;
+      f.X(map.impact_x), f.Y(map.impact_y), f.X(map.impact_x) + 9.0, f.Y(map.impact_y) - 9.0);
+  double ly = f.height - f.legend_h + 8.0;
   fmt::format_to(
       out,
       "<text x=\"{:.1f}\" y=\"{:.1f}\">{:.4g} × {:.4g} mm; the shallowest delaminated interface:</text>\n",

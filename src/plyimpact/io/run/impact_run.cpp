@@ -4,6 +4,7 @@
 #include "plyimpact/analysis/impact/recorders.hpp"
 #include "plyimpact/analysis/plate_analyses/nonlinear_static.hpp"
 #include "plyimpact/analysis/thresholds/load_drop.hpp"
+#include "plyimpact/fem/stacked_plate.hpp"
 #include "plyimpact/io/deck/case_from_deck.hpp"
 #include "plyimpact/io/results/damage_maps.hpp"
 #include "plyimpact/io/results/damage_report.hpp"
@@ -90,9 +91,7 @@ HistoryLayout history_layout_of(const Deck& deck, const ImpactSettings& s) {
   HistoryLayout layout;
   if (deck.damage.progressive && deck.laminate)
     layout.damaged_plies = static_cast<int>(deck.laminate->ply_count());
-  if (s.delamination)
-    for (const int cut : s.delamination->stack.cuts)
-      layout.interfaces_after_ply.push_back(cut + 1); // the cut lies after ply cut + 1 (1-based)
+  if (s.delamination) layout.interfaces_after_ply = interfaces_after_ply(s.delamination->stack.cuts);
   return layout;
 }
 
