@@ -23,6 +23,7 @@
 #include "plyimpact/io/results/output_folder.hpp"
 #include "plyimpact/io/results/plots.hpp"
 #include "plyimpact/io/results/results.hpp"
+#include "plyimpact/io/results/summary_keys.hpp"
 #include "plyimpact/io/run/deck_preview.hpp"
 #include "plyimpact/io/run/impact_progress.hpp"
 #include "plyimpact/io/run/impact_run.hpp"
@@ -257,7 +258,7 @@ int run_threshold(const Options& o) {
   if (const auto out = results_folder(lock, deck)) {
     nlohmann::json j = threshold_summary_json(deck, criterion, options, r);
     j["wall_time"] = wall;
-    out->write_json("summary.json", j);
+    out->write_summary(j);
   }
   return 0; // no failure up to the limit is a result (threshold_velocity null), not an error
 }
@@ -427,8 +428,10 @@ int run(int argc, char** argv) {
   preview->add_flag("--strict", o.strict, "treat the deck's plausibility warnings (unit slips) as errors");
   std::string schema_of = "deck";
   CLI::App* schema = app.add_subcommand(
-      "schema", "The JSON Schema of a deck, for editors that complete and check TOML (docs/schemas.md)");
-  schema->add_option("of", schema_of, "deck (the default)")->check(CLI::IsMember({"deck"}));
+      "schema", "The JSON Schema of a deck (for editors that complete and check TOML) or of summary.json "
+                "(docs/schemas.md)");
+  schema->add_option("of", schema_of, "deck (the default) or summary")
+      ->check(CLI::IsMember({"deck", "summary"}));
   std::vector<std::string> plot_dirs;
   CLI::App* plot =
       app.add_subcommand("plot", "PNG and SVG plots of impact results (several folders: overlaid curves)");
@@ -482,7 +485,7 @@ int run(int argc, char** argv) {
     if (*plot) return run_plot(plot_dirs, o.output_dir);
     if (*preview) return run_preview(o);
     if (*schema) {
-      fmt::print("{}\n", deck_json_schema().dump(2));
+      fmt::print("{}\n", (schema_of == "summary" ? summary_json_schema() : deck_json_schema()).dump(2));
       return 0;
     }
     if (*sweep) return run_sweep_command(sweep_options, cli::interrupted());

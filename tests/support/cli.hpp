@@ -46,9 +46,14 @@ inline std::size_t occurrences(const std::string& text, const std::string& what)
   return n;
 }
 
-/// Runs `plyimpact ARGS`.
+/// Runs `plyimpact ARGS`. Every summary.json a test's run writes is checked by the program against the
+/// table of summary keys (io/results/summary_keys.hpp); a key outside it fails the test that ran it.
 inline CommandResult run(const std::string& args) {
-  return shell(std::string(PLYIMPACT_EXE) + " " + args);
+  CommandResult r = shell(std::string(PLYIMPACT_EXE) + " " + args);
+  EXPECT_EQ(r.out.find("plyimpact: warning: summary.json:"), std::string::npos)
+      << "plyimpact " << args << " wrote a summary key outside summary_keys.cpp:\n"
+      << r.out;
+  return r;
 }
 
 /// An empty folder under the system temporary folder.

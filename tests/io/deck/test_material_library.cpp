@@ -54,6 +54,31 @@ TEST(MaterialLibrary, EveryCardHasASourceAndOnlyMaterialKeysAndReadsAsADeckMater
   }
 }
 
+/// The World-Wide Failure Exercise's cards: its values typed again here from the public files the cards
+/// name (wrinkleFE's material.py; sanjayg0/ims ex23_2.m for AS4/3501-6), in GPa and MPa, and G23 from the
+/// transverse isotropy both cards state, E2 / (2 (1 + ν23)) with ν23 = 0.4.
+TEST(MaterialLibrary, TheWorldWideFailureExerciseCardsAreItsLaminaData) {
+  struct Wwfe {
+    const char* card;
+    double E1, E2, G12, nu12, Xt, Xc, Yt, Yc, S12;
+  };
+  for (const Wwfe& w : {Wwfe{"AS4-3501-6", 126, 11, 6.6, 0.28, 1950, 1480, 48, 200, 79},
+                        Wwfe{"T300-914", 138, 11, 5.5, 0.28, 1500, 900, 27, 200, 80}}) {
+    const Material m = deck_with("library = \"" + std::string(w.card) + "\"\nrho = 1550.0\n").materials[0];
+    EXPECT_DOUBLE_EQ(m.E1, w.E1 * 1e9) << w.card;
+    EXPECT_DOUBLE_EQ(m.E2, w.E2 * 1e9) << w.card;
+    EXPECT_DOUBLE_EQ(m.G12, w.G12 * 1e9) << w.card;
+    EXPECT_DOUBLE_EQ(m.G13, w.G12 * 1e9) << w.card;
+    EXPECT_NEAR(m.G23, w.E2 * 1e9 / (2.0 * 1.4), 1e-4 * m.G23) << w.card; // rounded to 5 digits in the card
+    EXPECT_DOUBLE_EQ(m.nu12, w.nu12) << w.card;
+    EXPECT_DOUBLE_EQ(m.strength.Xt.value_or(0.0), w.Xt * 1e6) << w.card;
+    EXPECT_DOUBLE_EQ(m.strength.Xc.value_or(0.0), w.Xc * 1e6) << w.card;
+    EXPECT_DOUBLE_EQ(m.strength.Yt.value_or(0.0), w.Yt * 1e6) << w.card;
+    EXPECT_DOUBLE_EQ(m.strength.Yc.value_or(0.0), w.Yc * 1e6) << w.card;
+    EXPECT_DOUBLE_EQ(m.strength.S12.value_or(0.0), w.S12 * 1e6) << w.card;
+  }
+}
+
 TEST(MaterialLibrary, TheT700M21CardIsTable1OfTanEtAl) {
   const Material m = deck_with("library = \"T700-M21\"\nrho = 1580.0\n").materials[0];
   const Material tan = test::t700_m21_tan2015();

@@ -67,6 +67,36 @@ G_ms = 788.0
 bk_exponent = 1.634
 fracture_angle = 52.998
 
+[AS4-3501-6]
+source = "the World-Wide Failure Exercise's lamina data (Soden, Hinton & Kaddour 1998, Compos. Sci. Technol. 58:1011), as two public files give it (we could not read the paper): wrinkleFE (github.com/elhajjar1/wrinkleFE, src/wrinklefe/core/material.py, commit 11b2634, cited there to Soden et al. 1998) and, for E1, E2, G12, nu12 and the five strengths, the same values in github.com/sanjayg0/ims MainBook/ex23_2.m (commit 2623413, a textbook example of AS4/3501-6): E1 126, E2 11, G12 6.6 GPa, nu12 0.28, nu23 0.4; Xt 1950, Xc 1480, Yt 48, Yc 200, S12 79 MPa"
+note = "G13 = G12 and G23 = E2 / (2 (1 + nu23)) (transverse isotropy, as the files take them). No density and no fracture toughnesses in these data: a deck gives rho, and G_ft ... G_ms for progressive damage, with their sources"
+E1 = 126.0e9
+E2 = 11.0e9
+G12 = 6.6e9
+G13 = 6.6e9
+G23 = 3.9286e9
+nu12 = 0.28
+Xt = 1950.0e6
+Xc = 1480.0e6
+Yt = 48.0e6
+Yc = 200.0e6
+S12 = 79.0e6
+
+[T300-914]
+source = "the World-Wide Failure Exercise's lamina data of T300/914C (Soden, Hinton & Kaddour 1998, Compos. Sci. Technol. 58:1011), as wrinkleFE gives it (github.com/elhajjar1/wrinkleFE, src/wrinklefe/core/material.py, commit 11b2634, cited there to Soden et al. 1998, WWFE-I; we could not read the paper): E1 138, E2 11, G12 5.5 GPa, nu12 0.28, nu23 0.4; Xt 1500, Xc 900, Yt 27, Yc 200, S12 80 MPa"
+note = "one public file only: check these values against the paper before relying on them. G13 = G12 and G23 = E2 / (2 (1 + nu23)) (transverse isotropy). No density and no fracture toughnesses in these data: a deck gives rho, and G_ft ... G_ms for progressive damage, with their sources"
+E1 = 138.0e9
+E2 = 11.0e9
+G12 = 5.5e9
+G13 = 5.5e9
+G23 = 3.9286e9
+nu12 = 0.28
+Xt = 1500.0e6
+Xc = 900.0e6
+Yt = 27.0e6
+Yc = 200.0e6
+S12 = 80.0e6
+
 [T700-M21]
 source = "Tan, Falzon, Chiu & Price, Composites Part A 71 (2015) 212-226, Table 1 (the Rivallant et al. 2013 coupon, 6.5, 17 and 29.5 J)"
 note = "no density in the paper: a deck gives rho with its source. bk_exponent is the paper's interface B-K exponent (1.45; Table 1 gives none for the ply's matrix crack). Not carried: the non-linear shear curve (c1 37 833, c2 16 512, c3 2 334.3 MPa), nu23 0.35 and the interface (G_Ic 500, G_IIc 1600 J/m^2, N 20, S 36 MPa), which belong to [delamination]"

@@ -480,7 +480,7 @@ void write_impact_results(const ResultsFolder& folder, const DiscretePlate* mode
   if (model != nullptr)
     for (const auto& f : r.fields)
       folder.write_nodal_field(fmt::format("field_t{:.6e}.csv", f.t), *model, f.u);
-  folder.write_json("summary.json", summary); // last: its presence marks a finished write
+  folder.write_summary(summary); // last: its presence marks a finished write
 }
 
 } // namespace plyimpact

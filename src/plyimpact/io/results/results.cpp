@@ -3,6 +3,7 @@
 #include "plyimpact/fem/discrete_plate.hpp"
 #include "plyimpact/io/deck/json_text.hpp"
 #include "plyimpact/io/deck/material_library.hpp"
+#include "plyimpact/io/results/summary_keys.hpp"
 #include "plyimpact/io/system/atomic_file.hpp"
 #include "plyimpact/io/system/build_info.hpp"
 
@@ -55,6 +56,15 @@ ResultsFolder::ResultsFolder(std::filesystem::path dir, const Deck& deck) : dir_
 
 void ResultsFolder::write_json(const std::string& name, const nlohmann::json& j) const {
   write_file_atomically(dir_ / name, json_text(j, 2) + "\n");
+}
+
+void ResultsFolder::write_summary(const nlohmann::json& summary) const {
+  write_json("summary.json", summary);
+  for (const std::string& slip : summary_slips(summary))
+    fmt::print(stderr,
+               "plyimpact: warning: summary.json: {} (src/plyimpact/io/results/summary_keys.cpp; a "
+               "slip of the program's, please report it)\n",
+               slip);
 }
 
 void ResultsFolder::write_text(const std::string& name, const std::string& text) const {

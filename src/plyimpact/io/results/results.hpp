@@ -21,6 +21,10 @@ public:
 
   [[nodiscard]] const std::filesystem::path& path() const { return dir_; }
   void write_json(const std::string& name, const nlohmann::json& j) const;
+  /// `summary.json`, checked against the table of its keys (summary_keys.hpp) once written: a key outside
+  /// the table, or of another type, is a slip of the program's, said on stderr (`plyimpact: warning:
+  /// summary.json: ...`) for the key to be added to the table and to docs/output.md.
+  void write_summary(const nlohmann::json& summary) const;
   void write_text(const std::string& name, const std::string& text) const;
   /// Nodal field CSV: node, x_m, y_m, u_m, v_m, w_m, thetax_rad, thetay_rad.
   void write_nodal_field(const std::string& name, const DiscretePlate& model, const Eigen::VectorXd& u) const;

@@ -95,7 +95,7 @@ AnalysisOutcome run_static_nonlinear(const Deck& deck, const std::optional<Resul
   if (folder) {
     folder->write_nodal_field("displacements.csv", model, r.state.u);
     if (deck.vtk.enabled) write_static_vtk(folder->path(), model, r.state.u, vtk_options(deck));
-    folder->write_json("summary.json", j);
+    folder->write_summary(j);
   }
   return out;
 }
@@ -120,7 +120,7 @@ AnalysisOutcome run_static_analysis(const Deck& deck, bool nonlinear,
     if (!r.support_contacts.empty())
       folder->write_text("support_contacts.csv", support_contacts_csv(model, r.support_contacts));
     if (deck.vtk.enabled) write_static_vtk(folder->path(), model, r.u, vtk_options(deck));
-    folder->write_json("summary.json", j);
+    folder->write_summary(j);
   }
   return out;
 }
@@ -139,7 +139,7 @@ AnalysisOutcome run_modal_analysis(const Deck& deck, const std::optional<Results
   if (folder) {
     folder->write_mode_shapes("modes.csv", model, r.modes, "mode");
     if (deck.vtk.enabled) write_modes_vtk(folder->path(), model, r.modes, vtk_options(deck));
-    folder->write_json("summary.json", j);
+    folder->write_summary(j);
   }
   return out;
 }
@@ -160,7 +160,7 @@ AnalysisOutcome run_buckling_analysis(const Deck& deck, const std::optional<Resu
   if (folder) {
     folder->write_mode_shapes("modes.csv", model, r.modes, "buckling");
     if (deck.vtk.enabled) write_modes_vtk(folder->path(), model, r.modes, vtk_options(deck));
-    folder->write_json("summary.json", j);
+    folder->write_summary(j);
   }
   return out;
 }

@@ -387,7 +387,7 @@ void run_threshold_case(const Deck& deck, nlohmann::json& record, const std::opt
     const ResultsFolder out(*case_dir, deck);
     nlohmann::json j = summary_header(deck, "threshold");
     put_threshold_summary(j, criterion, r);
-    out.write_json("summary.json", j);
+    out.write_summary(j);
   }
 }
 
