@@ -9,17 +9,28 @@
 namespace plyimpact {
 
 EquationPlace MechanicalModel::place_of(int i) const {
-  const auto [node, dof] = contact_plate().dofs().node_dof(contact_equations().model_equation(i));
-  return {0, node, dof};
+  const auto& blocks = equations_.blocks;
+  auto k = static_cast<int>(blocks.size()) - 1;
+  while (k > 0 && i < blocks[static_cast<std::size_t>(k)].first)
+    --k;
+  const auto& [first, plate] = blocks[static_cast<std::size_t>(k)];
+  const int local = k == 0 ? contact_equations().model_equation(i - first) : i - first;
+  const auto [node, dof] = plate->dofs().node_dof(local);
+  return {k, node, dof};
 }
 
 std::vector<EquationPlace> MechanicalModel::places() const {
-  const std::vector<std::pair<int, int>> of_equation = contact_plate().dofs().node_dofs();
-  const EquationSubset& subset = contact_equations();
-  std::vector<EquationPlace> out(static_cast<std::size_t>(size()));
-  for (int i = 0; i < size(); ++i) {
-    const auto [node, dof] = of_equation[static_cast<std::size_t>(subset.model_equation(i))];
-    out[static_cast<std::size_t>(i)] = {0, node, dof};
+  std::vector<EquationPlace> out;
+  out.reserve(static_cast<std::size_t>(size()));
+  const auto& blocks = equations_.blocks;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const std::vector<std::pair<int, int>> of_equation = blocks[k].second->dofs().node_dofs();
+    const int end = k + 1 < blocks.size() ? blocks[k + 1].first : size();
+    for (int i = blocks[k].first; i < end; ++i) {
+      const int local = k == 0 ? contact_equations().model_equation(i) : i - blocks[k].first;
+      const auto [node, dof] = of_equation[static_cast<std::size_t>(local)];
+      out.push_back({static_cast<int>(k), node, dof});
+    }
   }
   return out;
 }
@@ -29,6 +40,19 @@ SparseMatrix ModelState::iteration_matrix(const Eigen::VectorXd& /*u*/) const {
 }
 
 namespace {
+
+/// The equations of a single plate: one block, its mass and virgin stiffness over `equations`.
+ModelEquations single_plate_equations(const DiscretePlate& plate, const EquationSubset& equations,
+                                      const SparseMatrix& M, const SparseMatrix& K) {
+  ModelEquations e;
+  e.size = equations.size();
+  e.contact_plate = &plate;
+  e.contact_equations = &equations;
+  e.blocks = {{0, &plate}};
+  e.mass = &M;
+  e.initial_stiffness = &K;
+  return e;
+}
 
 // --- The linear elastic plate -----------------------------------------------------------------------
 
@@ -51,30 +75,24 @@ private:
 
 class ElasticPlateModel final : public MechanicalModel {
 public:
-  explicit ElasticPlateModel(const DiscretePlate& plate) : plate_(plate), equations_(plate.size()) {
+  explicit ElasticPlateModel(const DiscretePlate& plate) : equations_(plate.size()) {
     const SparseMatrix K = plate.stiffness(), M = plate.mass();
     equations_ = bending_equations_if_decoupled(plate, K, M);
     K_ = equations_.restrict(K);
     M_ = equations_.restrict(M);
+    set_equations(single_plate_equations(plate, equations_, M_, K_));
   }
-  [[nodiscard]] int size() const override { return equations_.size(); }
-  [[nodiscard]] const DiscretePlate& contact_plate() const override { return plate_; }
-  [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
-  [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
     if (equations_.all())
       out = u;
     else
       equations_.expand(u, out);
   }
-  [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
-  [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return K_; }
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
     return std::make_unique<ElasticState>(K_);
   }
 
 private:
-  const DiscretePlate& plate_;
   EquationSubset equations_;
   SparseMatrix K_, M_;
 };
@@ -102,13 +120,10 @@ private:
 class VonKarmanPlateModel final : public MechanicalModel {
 public:
   VonKarmanPlateModel(const DiscretePlate& plate, StrainMeasure measure)
-      : nonlinear_(plate, measure), equations_(plate.size()), K_(plate.stiffness()), M_(plate.mass()) {}
-  [[nodiscard]] int size() const override { return equations_.size(); }
-  [[nodiscard]] const DiscretePlate& contact_plate() const override { return nonlinear_.linear(); }
-  [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
+      : nonlinear_(plate, measure), equations_(plate.size()), K_(plate.stiffness()), M_(plate.mass()) {
+    set_equations(single_plate_equations(nonlinear_.linear(), equations_, M_, K_)); // K_T(0) = K
+  }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
-  [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
-  [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return K_; } // K_T(0) = K
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
     return std::make_unique<VonKarmanState>(nonlinear_);
   }
@@ -181,21 +196,15 @@ class DamagingPlateModel final : public MechanicalModel {
 public:
   DamagingPlateModel(const DiscretePlate& plate, const ProgressiveDamageSettings& settings,
                      Kinematics kinematics)
-      : damaged_(plate, settings, kinematics), equations_(plate.size()), M_(plate.mass()) {}
-  [[nodiscard]] int size() const override { return equations_.size(); }
-  [[nodiscard]] const DiscretePlate& contact_plate() const override { return damaged_.model(); }
-  [[nodiscard]] const EquationSubset& contact_equations() const override { return equations_; }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
-  [[nodiscard]] const SparseMatrix& mass() const override { return M_; }
-  [[nodiscard]] const SparseMatrix& initial_stiffness() const override {
-    return damaged_.undamaged_stiffness();
+      : damaged_(plate, settings, kinematics), equations_(plate.size()), M_(plate.mass()) {
+    ModelEquations e =
+        single_plate_equations(damaged_.model(), equations_, M_, damaged_.undamaged_stiffness());
+    if (auto w = damaged_.strength_reduction_warning()) e.warnings.push_back(std::move(*w));
+    set_equations(std::move(e));
   }
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { out = u; }
   [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
     return std::make_unique<DamagingState>(damaged_);
-  }
-  [[nodiscard]] std::vector<std::string> warnings() const override {
-    if (auto w = damaged_.strength_reduction_warning()) return {std::move(*w)};
-    return {};
   }
 
 private:

@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -43,6 +44,8 @@ public:
   virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
   /// The interfaces, whole.
   [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
+  /// Energy the model's laws have dissipated up to the committed state [J].
+  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
 };
 
 /// A low-rank change of a symmetric matrix in a factor: + C₊C₊ᵀ − C₋C₋ᵀ (columns of the matrix's rows).
@@ -78,8 +81,6 @@ public:
   virtual void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) = 0;
   /// Energy stored in the plate in the committed state, whose displacement is u [J].
   [[nodiscard]] virtual double stored_energy(const Eigen::VectorXd& u) const = 0;
-  /// Energy the model's laws have dissipated up to the committed state [J].
-  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
 
   // What an implicit integrator asks of the state (analysis/integrators/newton_newmark_step.cpp).
   /// The stiffness of an iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
@@ -115,12 +116,8 @@ public:
   /// being made at once: the matrix of held damage is that of the last trial, and where a trial costs
   /// little against a factorization (the stacked plate) the next iterate may converge without one.
   [[nodiscard]] virtual bool refresh_at_next_trial() const { return false; }
-  /// True where held trials may be the end forces of the step's mean (LawTrials::hold_step_mean), to be
-  /// solved in the trapezoidal rule's two-point form with start_force() (DL7, docs/delamination.md): the
-  /// stack, whose delaminated faces clapping under the law's end tractions create energy otherwise.
-  [[nodiscard]] virtual bool two_point_form() const { return false; }
-  /// With two_point_form(): the force at the step's start u_n with the laws held at the committed state,
-  /// into `f` (sized by the caller).
+  /// With ModelEquations::two_point_form: the force at the step's start u_n with the laws held at the
+  /// committed state, into `f` (sized by the caller).
   virtual void start_force(const Eigen::VectorXd& /*u_n*/, Eigen::VectorXd& /*f*/) {}
 };
 
@@ -150,7 +147,43 @@ struct EquationPlace {
   int dof = -1;
 };
 
-/// A plate model as an integrator sees it (built once per case, shared by the runs).
+/// What an integrator and its observers read of a model, which does not change during a run: the
+/// equations it moves and where they lie, the matrices it starts from, what building it changed about the
+/// case. Pointers into the model that holds it.
+struct ModelEquations {
+  /// Equations the integrator moves.
+  int size = 0;
+  /// The plate the impactor touches, whose mesh and numbering the contact samples (the top sub-laminate
+  /// of a stack).
+  const DiscretePlate* contact_plate = nullptr;
+  /// The equations of contact_plate that the integrator moves, the leading block of `size` (the in-plane
+  /// DOFs are left out where they are exactly decoupled from bending).
+  const EquationSubset* contact_equations = nullptr;
+  /// Where the sub-laminates' blocks of equations start, in order (one, at 0, for a single plate), each
+  /// in its sub-laminate's own numbering (the first through contact_equations).
+  std::vector<std::pair<int, const DiscretePlate*>> blocks;
+  /// The mass matrix over the integrator's equations.
+  const SparseMatrix* mass = nullptr;
+  /// The stiffness of the virgin, undeformed model: the highest frequency of the model is bounded with it
+  /// (damage only lowers the stiffness; membrane tension adds little at w ~ h).
+  const SparseMatrix* initial_stiffness = nullptr;
+  /// The part of initial_stiffness that ties the faces of neighbouring sub-laminates (a stack's intact
+  /// interfaces); null for a plate without: what selective mass scaling scales
+  /// (analysis/impact/mass_scaling.hpp).
+  const SparseMatrix* interface_stiffness = nullptr;
+  /// What building the model changed about the case that the user must know (strengths lowered to a band
+  /// limit).
+  std::vector<std::string> warnings;
+  /// True where held trials may be the end forces of the step's mean (LawTrials::hold_step_mean), to be
+  /// solved in the trapezoidal rule's two-point form with ModelState::start_force() (DL7,
+  /// docs/delamination.md): the stack, whose delaminated faces clapping under the law's end tractions
+  /// create energy otherwise.
+  bool two_point_form = false;
+};
+
+/// A plate model as an integrator sees it (built once per case, shared by the runs): its equations
+/// (ModelEquations, set once by the model's constructor), the displacement in the case's numbering, and a
+/// run's state.
 class MechanicalModel {
 public:
   virtual ~MechanicalModel() = default;
@@ -158,38 +191,33 @@ public:
   MechanicalModel(const MechanicalModel&) = delete;
   MechanicalModel& operator=(const MechanicalModel&) = delete;
 
-  /// Equations the integrator moves.
-  [[nodiscard]] virtual int size() const = 0;
-  /// The plate the impactor touches, whose mesh and numbering the contact samples (the top sub-laminate
-  /// of a stack).
-  [[nodiscard]] virtual const DiscretePlate& contact_plate() const = 0;
-  /// The equations of contact_plate() that the integrator moves, the leading block of its size()
-  /// (the in-plane DOFs are left out where they are exactly decoupled from bending).
-  [[nodiscard]] virtual const EquationSubset& contact_equations() const = 0;
+  [[nodiscard]] int size() const { return equations_.size; }
+  [[nodiscard]] const DiscretePlate& contact_plate() const { return *equations_.contact_plate; }
+  [[nodiscard]] const EquationSubset& contact_equations() const { return *equations_.contact_equations; }
   /// True where the in-plane DOFs are left out.
-  [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
-  /// Where equation `i` (the integrator's numbering) lies; by default in contact_plate(), through
-  /// contact_equations() (a search: for messages, not loops).
-  [[nodiscard]] virtual EquationPlace place_of(int i) const;
+  [[nodiscard]] bool inplane_eliminated() const { return !contact_equations().all(); }
+  /// Where equation `i` (the integrator's numbering) lies (a search: for messages, not loops).
+  [[nodiscard]] EquationPlace place_of(int i) const;
   /// place_of(i) of every equation i, in one pass (for tables over all equations).
-  [[nodiscard]] virtual std::vector<EquationPlace> places() const;
+  [[nodiscard]] std::vector<EquationPlace> places() const;
+  [[nodiscard]] const SparseMatrix& mass() const { return *equations_.mass; }
+  [[nodiscard]] const SparseMatrix& initial_stiffness() const { return *equations_.initial_stiffness; }
+  [[nodiscard]] const SparseMatrix* interface_stiffness() const { return equations_.interface_stiffness; }
+  [[nodiscard]] const std::vector<std::string>& warnings() const { return equations_.warnings; }
+  [[nodiscard]] bool two_point_form() const { return equations_.two_point_form; }
+
   /// The displacement u (the integrator's numbering) in the numbering of the case's plate, for observers
   /// (the top sub-laminate of a stack).
   virtual void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const = 0;
-  /// The mass matrix over the integrator's equations.
-  [[nodiscard]] virtual const SparseMatrix& mass() const = 0;
-  /// The stiffness of the virgin, undeformed model: the highest frequency of the model
-  /// is bounded with it (damage only lowers the stiffness; membrane tension adds little at w ~ h).
-  [[nodiscard]] virtual const SparseMatrix& initial_stiffness() const = 0;
-  /// The part of initial_stiffness() that ties the faces of neighbouring sub-laminates (a stack's intact
-  /// interfaces); null for a plate without: what selective mass scaling scales
-  /// (analysis/impact/mass_scaling.hpp).
-  [[nodiscard]] virtual const SparseMatrix* interface_stiffness() const { return nullptr; }
   /// A run's state: virgin and undeformed.
   [[nodiscard]] virtual std::unique_ptr<ModelState> virgin_state() const = 0;
-  /// What building the model changed about the case that the user must know (strengths lowered to a band
-  /// limit).
-  [[nodiscard]] virtual std::vector<std::string> warnings() const { return {}; }
+
+protected:
+  /// The model's equations, once its constructor has built what they point to.
+  void set_equations(ModelEquations equations) { equations_ = std::move(equations); }
+
+private:
+  ModelEquations equations_;
 };
 
 /// The linear elastic plate: f_int = K u, over its bending equations when the in-plane DOFs are exactly

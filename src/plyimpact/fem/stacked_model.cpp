@@ -280,7 +280,6 @@ public:
   /// interfaces' law, against a factorization. (The von Kármán stack refreshes at once: measured so, and
   /// kept so that its example's numbers stay.)
   [[nodiscard]] bool refresh_at_next_trial() const override;
-  [[nodiscard]] bool two_point_form() const override { return true; }
   void start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) override;
 
 private:
@@ -361,45 +360,33 @@ public:
       else if (large_deflection)
         von_karman_.push_back(std::make_unique<NonlinearPlate>(part, *large_deflection));
     }
+    set_equations(stack_equations());
   }
 
   /// The sub-laminates' force is not linear in u: their stored energy is the work of their forces.
   [[nodiscard]] bool large_deflection() const { return large_deflection_.has_value(); }
 
-  [[nodiscard]] int size() const override { return plate_.stack_.size(); }
-  [[nodiscard]] const DiscretePlate& contact_plate() const override { return plate_.stack_.sublaminate(0); }
-  [[nodiscard]] const EquationSubset& contact_equations() const override { return plate_.top_equations_; }
-  /// Sub-laminate k holds the stacked equations offset(k) … offset(k + 1) − 1, in its own numbering.
-  [[nodiscard]] EquationPlace place_of(int i) const override {
+  /// Sub-laminate k holds the stacked equations offset(k) … offset(k + 1) − 1, in its own numbering; the
+  /// impactor touches the top one, all of whose equations move.
+  [[nodiscard]] ModelEquations stack_equations() const {
     const StackedPlate& stack = plate_.stack_;
-    int k = stack.sublaminate_count() - 1;
-    while (k > 0 && i < stack.offset(k))
-      --k;
-    const auto [node, dof] = stack.sublaminate(k).dofs().node_dof(i - stack.offset(k));
-    return {k, node, dof};
-  }
-  [[nodiscard]] std::vector<EquationPlace> places() const override {
-    const StackedPlate& stack = plate_.stack_;
-    std::vector<EquationPlace> out;
-    out.reserve(static_cast<std::size_t>(size()));
+    ModelEquations e;
+    e.size = stack.size();
+    e.contact_plate = &stack.sublaminate(0);
+    e.contact_equations = &plate_.top_equations_;
     for (int k = 0; k < stack.sublaminate_count(); ++k)
-      for (const auto& [node, dof] : stack.sublaminate(k).dofs().node_dofs())
-        out.push_back({k, node, dof});
-    return out;
-  }
-  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
-    plate_.top_to_model(u, out);
-  }
-  [[nodiscard]] const SparseMatrix& mass() const override { return plate_.M_; }
-  [[nodiscard]] const SparseMatrix& initial_stiffness() const override { return initial_; }
-  [[nodiscard]] const SparseMatrix* interface_stiffness() const override { return &interfaces_; }
-  [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
-    return std::make_unique<StackedState>(*this);
+      e.blocks.emplace_back(stack.offset(k), &stack.sublaminate(k));
+    e.mass = &plate_.M_;
+    e.initial_stiffness = &initial_;
+    e.interface_stiffness = &interfaces_;
+    e.warnings = stack_warnings();
+    e.two_point_form = true;
+    return e;
   }
 
   /// The stack's warnings and the damaged sub-laminates' lowered strengths: once when every sub-laminate
   /// says the same, otherwise each with its sub-laminate.
-  [[nodiscard]] std::vector<std::string> warnings() const override {
+  [[nodiscard]] std::vector<std::string> stack_warnings() const {
     std::vector<std::string> w = plate_.stack_warnings();
     std::vector<std::optional<std::string>> lowered;
     for (const auto& part : damaged_)
@@ -412,6 +399,13 @@ public:
     for (std::size_t k = 0; k < lowered.size(); ++k)
       if (lowered[k]) w.push_back(fmt::format("sub-laminate {}: {}", k, *lowered[k]));
     return w;
+  }
+
+  void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override {
+    plate_.top_to_model(u, out);
+  }
+  [[nodiscard]] std::unique_ptr<ModelState> virgin_state() const override {
+    return std::make_unique<StackedState>(*this);
   }
 
   StackedImpactPlate plate_;

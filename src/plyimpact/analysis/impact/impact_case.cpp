@@ -348,8 +348,8 @@ ImpactResult ImpactCase::run(const RunRequest& request) const {
                                       settings_.contact.load))
       loop.warnings.push_back(std::move(*w));
   }
-  for (std::string& w : policy_->warnings())
-    loop.warnings.push_back(std::move(w));
+  const std::vector<std::string>& policy_warnings = policy_->warnings();
+  loop.warnings.insert(loop.warnings.end(), policy_warnings.begin(), policy_warnings.end());
 
   std::vector<ImpactObserver*> observers = request.observers;
   HistoryRecorder history(request.history_every);

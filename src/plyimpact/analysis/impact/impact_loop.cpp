@@ -173,7 +173,10 @@ public:
     if (!strain_) strain_ = stepper_.strain_energy(state_, force_);
     return *strain_;
   }
-  [[nodiscard]] double dissipated_energy() const override { return stepper_.dissipated_energy(); }
+  [[nodiscard]] double dissipated_energy() const override {
+    const ModelResults* r = stepper_.results();
+    return r ? r->dissipated_energy() : 0.0;
+  }
   [[nodiscard]] const PlyDamageView* damage() const override { return ply_damage_of(stepper_); }
   [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
     return delamination_of(stepper_);

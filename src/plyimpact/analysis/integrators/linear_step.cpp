@@ -63,12 +63,10 @@ public:
                    const SparseMatrix& M)
       : model_(model), options_(options), equations_(bending_equations_if_decoupled(model, K, M)),
         K_(equations_.restrict(K)), M_(equations_.restrict(M), 0.0) {
+    set_equations({equations_.size(), !equations_.all(), true, {}});
     std::call_once(once_[0], [this] { levels_[0] = factor_level(options_.newmark, true); });
   }
 
-  [[nodiscard]] int equations() const override { return equations_.size(); }
-  [[nodiscard]] bool inplane_eliminated() const override { return !equations_.all(); }
-  [[nodiscard]] bool variable_time_step() const override { return true; }
   [[nodiscard]] int factorizations() const override { return factorizations_.load(); }
   [[nodiscard]] std::optional<double> fundamental_period() const override {
     return plyimpact::fundamental_period(K_, M_.matrix()); // the time loop's equations, as assembled here

@@ -8,6 +8,7 @@
 #include "plyimpact/fem/mechanical_model.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,13 +27,13 @@ namespace plyimpact {
 class ModelPolicy : public StepPolicy {
 public:
   ModelPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options)
-      : model_(std::move(model)), options_(options), M_(integrator_mass(*model_)) {}
+      : ModelPolicy(std::move(model), options, std::nullopt) {}
   /// With the mass `M` in place of the model's (a scaled lumped mass, mass_scaling.hpp).
-  ModelPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options, MassOperator M)
-      : model_(std::move(model)), options_(options), M_(std::move(M)) {}
-  [[nodiscard]] int equations() const override { return model_->size(); }
-  [[nodiscard]] bool inplane_eliminated() const override { return model_->inplane_eliminated(); }
-  [[nodiscard]] std::vector<std::string> warnings() const override { return model_->warnings(); }
+  ModelPolicy(std::unique_ptr<const MechanicalModel> model, const StepPolicyOptions& options,
+              std::optional<MassOperator> M)
+      : model_(std::move(model)), options_(options), M_(M ? std::move(*M) : integrator_mass(*model_)) {
+    set_equations({model_->size(), model_->inplane_eliminated(), false, model_->warnings()});
+  }
 
   std::unique_ptr<const MechanicalModel> model_;
   StepPolicyOptions options_;
@@ -58,7 +59,6 @@ public:
   [[nodiscard]] double strain_energy(const PlateState& s, double /*force*/) const override {
     return state_->stored_energy(s.u);
   }
-  [[nodiscard]] double dissipated_energy() const override { return state_->dissipated_energy(); }
   [[nodiscard]] double contact_deflection(const Eigen::VectorXd& u) const override {
     return loading_.sampler().dot(u);
   }

@@ -95,7 +95,7 @@ public:
       : ModelPolicy(std::move(model), options), settings_(std::move(settings)),
         initial_(options.solver, options.ordering) {
     const std::unique_ptr<ModelState> virgin = model_->virgin_state();
-    trials_ = law_trials(*virgin, hold_laws);
+    trials_ = law_trials(hold_laws);
     virgin->set_law_trials(trials_);
     const SparseMatrix Kbar = iteration_kbar(*virgin, Eigen::VectorXd::Zero(model_->size()));
     if (options.memory_limit_bytes)
@@ -114,11 +114,11 @@ public:
 
   /// Held laws give the end forces of the trapezoid's two-point form (DL7) where the model has one and
   /// the Newmark parameters are the trapezoid's (β = ¼, γ = ½).
-  [[nodiscard]] LawTrials law_trials(const ModelState& state, bool hold_laws) const {
+  [[nodiscard]] LawTrials law_trials(bool hold_laws) const {
     if (!hold_laws) return LawTrials::advance;
     const NewmarkCoefficients& nc = options_.newmark;
-    return state.two_point_form() && nc.beta == 0.25 && nc.gamma == 0.5 ? LawTrials::hold_step_mean
-                                                                        : LawTrials::hold;
+    return model_->two_point_form() && nc.beta == 0.25 && nc.gamma == 0.5 ? LawTrials::hold_step_mean
+                                                                          : LawTrials::hold;
   }
 
   NewtonSettings settings_;

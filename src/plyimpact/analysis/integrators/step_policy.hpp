@@ -33,6 +33,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plyimpact {
@@ -68,10 +69,8 @@ public:
   [[nodiscard]] virtual double kinetic_energy(const PlateState& s) const = 0;
   /// The plate's elastic energy in state s with contact force F.
   [[nodiscard]] virtual double strain_energy(const PlateState& s, double force) const = 0;
-  /// Energy dissipated inside the plate (ply damage, interfaces) up to the last accepted step [J].
-  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
-  /// What observers read of the model after the last accepted step (the plies' damage, the interfaces),
-  /// asked for by type; null for a plate that has none of it.
+  /// What observers read of the model after the last accepted step (the energy its laws dissipated, the
+  /// plies' damage, the interfaces), asked for by type; null for a plate that has none of it.
   [[nodiscard]] virtual const ModelResults* results() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
@@ -89,6 +88,19 @@ public:
   }
 };
 
+/// What the time loop reads of a policy that does not change during a run.
+struct PolicyEquations {
+  /// Equations of the time loop (0 for a rigid target).
+  int equations = 0;
+  /// True when the in-plane DOFs are left out (exactly decoupled from bending: B = 0, I1 = 0).
+  bool inplane_eliminated = false;
+  /// True when its steppers take set_time_step_level() (error-controlled time steps).
+  bool variable_time_step = false;
+  /// What the policy changed about the case that the user must know (e.g. strengths lowered to a band
+  /// limit), for the run's warnings.
+  std::vector<std::string> warnings;
+};
+
 class StepPolicy {
 public:
   virtual ~StepPolicy() = default;
@@ -96,12 +108,11 @@ public:
   StepPolicy(const StepPolicy&) = delete;
   StepPolicy& operator=(const StepPolicy&) = delete;
 
-  /// Equations of the time loop (0 for a rigid target).
-  [[nodiscard]] virtual int equations() const = 0;
-  /// True when the in-plane DOFs are left out (exactly decoupled from bending: B = 0, I1 = 0).
-  [[nodiscard]] virtual bool inplane_eliminated() const { return false; }
-  /// True when its steppers take set_time_step_level() (error-controlled time steps).
-  [[nodiscard]] virtual bool variable_time_step() const { return false; }
+  [[nodiscard]] int equations() const { return equations_.equations; }
+  [[nodiscard]] bool inplane_eliminated() const { return equations_.inplane_eliminated; }
+  [[nodiscard]] bool variable_time_step() const { return equations_.variable_time_step; }
+  [[nodiscard]] const std::vector<std::string>& warnings() const { return equations_.warnings; }
+
   /// Factorizations of K̄ done so far for the error-controlled time steps (one per level used).
   [[nodiscard]] virtual int factorizations() const { return 0; }
   /// The plate's fundamental period from the matrices the policy holds (empty: it holds none that give
@@ -118,9 +129,13 @@ public:
   /// Seconds for one triangular solve pair with the factor of K̄, as the time loop solves (into kept
   /// buffers; median of `repeats`; benchmarks).
   [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
-  /// What the policy changed about the case that the user must know (e.g. strengths lowered to a band
-  /// limit), for the run's warnings.
-  [[nodiscard]] virtual std::vector<std::string> warnings() const { return {}; }
+
+protected:
+  /// The policy's equations, set once by its constructor.
+  void set_equations(PolicyEquations equations) { equations_ = std::move(equations); }
+
+private:
+  PolicyEquations equations_;
 };
 
 /// What the policies need to know of the run besides the plate.
