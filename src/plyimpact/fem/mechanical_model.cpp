@@ -2,11 +2,16 @@
 #include "plyimpact/fem/mechanical_model.hpp"
 
 #include "plyimpact/fem/nonlinear_plate.hpp"
+#include "plyimpact/fem/stacked_model.hpp"
 
 #include <stdexcept>
 #include <utility>
 
 namespace plyimpact {
+
+double ModelResults::dissipated_energy() const {
+  return (interfaces ? interfaces->dissipated() : 0.0) + (ply_damage ? ply_damage->dissipated().sum() : 0.0);
+}
 
 EquationPlace MechanicalModel::place_of(int i) const {
   const auto& blocks = equations_.blocks;
@@ -33,10 +38,6 @@ std::vector<EquationPlace> MechanicalModel::places() const {
     }
   }
   return out;
-}
-
-SparseMatrix ModelState::iteration_matrix(const Eigen::VectorXd& /*u*/) const {
-  throw std::logic_error("this model is driven by central differences only: it has no iteration matrix");
 }
 
 namespace {
@@ -139,8 +140,14 @@ private:
 class DamagingState final : public ModelState {
 public:
   explicit DamagingState(const DamagedPlate& plate)
-      : plate_(plate), field_(plate.virgin_field()), work_(plate.size()) {}
-  void set_law_trials(LawTrials trials) override { held_ = trials != LawTrials::advance; }
+      : plate_(plate), field_(plate.virgin_field()), work_(plate.size()) {
+    set_results({.ply_damage = &field_, .interfaces = nullptr});
+  }
+  /// Held damage: the matrix is that of the last trial.
+  IterationMatrixFacts set_law_trials(LawTrials trials) override {
+    held_ = trials != LawTrials::advance;
+    return {.symmetric = true, .refresh_at_next_trial = held_};
+  }
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override {
     dt_ = dt;
     if (held_)
@@ -162,10 +169,8 @@ public:
   }
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& /*u*/) const override {
     if (plate_.kinematics() == Kinematics::linear) return field_.stored_energy(); // ½ uᵀ K_s(d) u
-    return work_.work() - dissipated_energy(); // what the internal forces did not dissipate
+    return work_.work() - field_.dissipated().sum(); // what the internal forces did not dissipate
   }
-  [[nodiscard]] double dissipated_energy() const override { return field_.dissipated().sum(); }
-  [[nodiscard]] const PlyDamageView* ply_damage() const override { return &field_; }
 
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override {
     return plate_.iteration_matrix(u, field_);
@@ -174,9 +179,10 @@ public:
   [[nodiscard]] double drift_since_factorization() const override {
     return field_.growth_since_factorization();
   }
-  void matrix_factorized(const Eigen::VectorXd& /*u*/) override { field_.mark_factorized(); }
+  void matrix_in_factor(const Eigen::VectorXd& /*u*/, FactorChange how) override {
+    if (how == FactorChange::factorized) field_.mark_factorized();
+  }
   bool take_branch_changed() override { return held_ && field_.take_modes_changed(); }
-  [[nodiscard]] bool refresh_at_next_trial() const override { return held_; }
 
 private:
   void commit_with(const Eigen::VectorXd& u, const Eigen::VectorXd& f) {

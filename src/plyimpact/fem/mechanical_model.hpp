@@ -9,8 +9,8 @@
 //                     integrator's), the mass over them, the stiffness of the virgin undeformed model (the
 //                     bound of its highest frequency), the warnings its construction raised.
 //   ModelState        one run's state: the trial internal force f_int(u) from the committed state, the
-//                     commit, the stored and dissipated energies, and the results observers look at
-//                     (the plies' damage), asked for by type.
+//                     commit, the stored energy, and the results observers read (ModelResults: the
+//                     plies' damage, the interfaces, the dissipated energy).
 //
 // Behind it: the elastic plate (f_int = K u), the von Kármán plate (NonlinearPlate) and the plate
 // whose plies crack (DamagedPlate with its DamageField).
@@ -28,24 +28,18 @@
 
 namespace plyimpact {
 
-/// What observers read of a model's committed state, asked for by type: empty where the model has no
-/// such part. A run's ModelState is one.
-class ModelResults {
-public:
-  virtual ~ModelResults() = default;
-  ModelResults() = default;
-  ModelResults(const ModelResults&) = delete;
-  ModelResults& operator=(const ModelResults&) = delete;
+class InterfaceStates;
 
+/// What observers read of a model's committed state: pointers into a run's ModelState, set once by its
+/// constructor; null where the model has no such part.
+struct ModelResults {
   /// The plies' damage, for a model whose plies crack.
-  [[nodiscard]] virtual const PlyDamageView* ply_damage() const { return nullptr; }
-  /// The interfaces' areas and dissipation into `out` (its vectors reused from step to step); false
-  /// without interfaces.
-  virtual bool delamination_areas(DelaminationAreas& /*out*/) const { return false; }
-  /// The interfaces, whole.
-  [[nodiscard]] virtual std::optional<DelaminationResult> delamination() const { return std::nullopt; }
-  /// Energy the model's laws have dissipated up to the committed state [J].
-  [[nodiscard]] virtual double dissipated_energy() const { return 0.0; }
+  const PlyDamageView* ply_damage = nullptr;
+  /// The interfaces of a stack: their areas, dissipation and whole result (fem/stacked_model.hpp).
+  const InterfaceStates* interfaces = nullptr;
+  /// Energy the model's laws have dissipated up to the committed state: the interfaces' and the plies'
+  /// [J].
+  [[nodiscard]] double dissipated_energy() const;
 };
 
 /// A low-rank change of a symmetric matrix in a factor: + C₊C₊ᵀ − C₋C₋ᵀ (columns of the matrix's rows).
@@ -68,11 +62,34 @@ enum class LawTrials {
   hold_step_mean,
 };
 
+/// How the iteration matrix came into the integrator's factor (ModelState::matrix_in_factor).
+enum class FactorChange { factorized, updated };
+
+/// What the iteration matrix of a run's trials is, once the integrator has said what the trials do with
+/// the laws (ModelState::set_law_trials).
+struct IterationMatrixFacts {
+  /// False where iteration_matrix() may be unsymmetric (the tangent of interfaces that soften under mixed
+  /// mode with their damage iterated): the integrator then factors it by sparse LU instead of Cholesky.
+  bool symmetric = true;
+  /// True where a refresh of the iteration matrix waits for the trial at the next iterate instead of
+  /// being made at once: the matrix of held damage is that of the last trial, and where a trial costs
+  /// little against a factorization (the stacked plate) the next iterate may converge without one.
+  bool refresh_at_next_trial = false;
+};
+
 /// One run's state of a model's integration points.
-class ModelState : public ModelResults {
+class ModelState {
 public:
+  virtual ~ModelState() = default;
+  ModelState() = default;
+  ModelState(const ModelState&) = delete;
+  ModelState& operator=(const ModelState&) = delete;
+
   /// What the trials do with the laws' state; `advance` until told otherwise (before the first trial).
-  virtual void set_law_trials(LawTrials /*trials*/) {}
+  /// Returns what their iteration matrix then is.
+  virtual IterationMatrixFacts set_law_trials(LawTrials /*trials*/) { return {}; }
+  /// What observers read of the committed state.
+  [[nodiscard]] const ModelResults& results() const { return results_; }
   /// f_int(u) of a trial state from the committed one at u, over a step of dt (the viscous
   /// regularisation's time), into `f` (sized by the caller; no allocation). Does not commit.
   virtual void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) = 0;
@@ -85,40 +102,37 @@ public:
   // What an implicit integrator asks of the state (analysis/integrators/newton_newmark_step.cpp).
   /// The stiffness of an iteration at u, in the pattern of initial_stiffness(): the tangent K_T(u)
   /// of the von Kármán plate, the secant of the damage of the last trial, K of the elastic plate, the
-  /// stack's K_plates plus its interfaces' tangent. Throws std::logic_error on a model that only central
-  /// differences drive.
-  [[nodiscard]] virtual SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const;
-  /// False where iteration_matrix() may be unsymmetric (the tangent of interfaces that soften under mixed
-  /// mode with their damage iterated): the integrator then factors it by sparse LU instead of Cholesky.
-  [[nodiscard]] virtual bool iteration_matrix_symmetric() const { return true; }
+  /// stack's K_plates plus its interfaces' tangent.
+  [[nodiscard]] virtual SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const = 0;
   /// After a trial at u whose laws advanced: false where it left out a part that must join (an element
   /// whose plies have reached a failure surface at u), which joins now; the next trial includes it. True
   /// after a trial with held laws (their commit admits what has reached a surface).
   virtual bool admit(const Eigen::VectorXd& /*u*/) { return true; }
   /// How far the committed state has drifted from that of the last factored matrix: the largest growth of
-  /// a law's state variable since matrix_factorized() (a ply's damage); the integrator refactors before
-  /// a step beyond its tolerance.
+  /// a law's state variable since the matrix was last factored (a ply's damage); the integrator refactors
+  /// before a step beyond its tolerance.
   [[nodiscard]] virtual double drift_since_factorization() const { return 0.0; }
-  /// The iteration matrix at u has just been factored.
-  virtual void matrix_factorized(const Eigen::VectorXd& /*u*/) {}
   /// The iteration matrix at u as a low-rank change of the one in the factor (the last factored, with the
   /// changes since), K̄(u) = K̄_f + C₊C₊ᵀ − C₋C₋ᵀ, for an update of the factor instead of a new one (DL8,
   /// SpdSolver::modify); empty where it is not one, and the matrix is factored anew.
   [[nodiscard]] virtual std::optional<LowRankChange> matrix_change(const Eigen::VectorXd& /*u*/) {
     return std::nullopt;
   }
-  /// The last matrix_change() is in the factor now.
-  virtual void matrix_changed() {}
+  /// The iteration matrix at u is in the factor now: factored anew, or the last matrix_change() applied.
+  virtual void matrix_in_factor(const Eigen::VectorXd& /*u*/, FactorChange /*how*/) {}
   /// True once after a trial that changed which branch of a law holds at some point (a crack opened or
   /// closed under held damage): its matrix is then factored before the next correction.
   virtual bool take_branch_changed() { return false; }
-  /// True where a refresh of the iteration matrix waits for the trial at the next iterate instead of
-  /// being made at once: the matrix of held damage is that of the last trial, and where a trial costs
-  /// little against a factorization (the stacked plate) the next iterate may converge without one.
-  [[nodiscard]] virtual bool refresh_at_next_trial() const { return false; }
   /// With ModelEquations::two_point_form: the force at the step's start u_n with the laws held at the
   /// committed state, into `f` (sized by the caller).
   virtual void start_force(const Eigen::VectorXd& /*u_n*/, Eigen::VectorXd& /*f*/) {}
+
+protected:
+  /// The state's results, once its constructor has built what they point to.
+  void set_results(ModelResults results) { results_ = results; }
+
+private:
+  ModelResults results_;
 };
 
 /// The stored energy of a plate whose forces are not linear in u: the internal forces' work, trapezoidal

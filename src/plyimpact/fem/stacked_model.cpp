@@ -237,36 +237,26 @@ class StackedPlateModel;
 class StackedState final : public ModelState {
 public:
   explicit StackedState(const StackedPlateModel& model);
-  void set_law_trials(LawTrials trials) override { trials_ = trials; }
+  /// The tangent of damage iterated with the step is unsymmetric under mixed mode; the held one is not.
+  /// With ply damage the matrix is that of the last trial; the linear stack's trial is one product and the
+  /// interfaces' law, against a factorization. (The von Kármán stack refreshes at once: measured so, and
+  /// kept so that its example's numbers stay.)
+  IterationMatrixFacts set_law_trials(LawTrials trials) override;
   void internal_force(const Eigen::VectorXd& u, double dt, Eigen::VectorXd& f) override;
   void commit(const Eigen::VectorXd& u, const Eigen::VectorXd& f) override;
   /// ½ uᵀ K_plates u from the product the committed trial made, + the interfaces' stored energy.
   [[nodiscard]] double stored_energy(const Eigen::VectorXd& u) const override;
-  /// The interfaces' dissipation + the plies' (with ply damage).
-  [[nodiscard]] double dissipated_energy() const override {
-    return interfaces_.dissipated() + (plies_ ? plies_->dissipated().sum() : 0.0);
-  }
-  [[nodiscard]] const PlyDamageView* ply_damage() const override { return plies_ ? &*plies_ : nullptr; }
-  bool delamination_areas(DelaminationAreas& out) const override {
-    interfaces_.areas(out);
-    return true;
-  }
-  [[nodiscard]] std::optional<DelaminationResult> delamination() const override {
-    return interfaces_.result();
-  }
-
   // What an implicit integrator asks: with the laws advanced by each trial (iterated with the step), or
   // held at the committed state (plies and interfaces).
   /// K_plates, the interfaces' tangent (at their held damage where held) and the damaged sections'
   /// secant difference of the last trial, each sub-laminate on its diagonal block.
   [[nodiscard]] SparseMatrix iteration_matrix(const Eigen::VectorXd& u) const override;
-  /// The tangent of damage iterated with the step is unsymmetric under mixed mode; the held one is not.
-  [[nodiscard]] bool iteration_matrix_symmetric() const override { return held(); }
   /// The sub-laminates' largest.
   [[nodiscard]] double drift_since_factorization() const override;
-  void matrix_factorized(const Eigen::VectorXd& u) override;
   [[nodiscard]] std::optional<LowRankChange> matrix_change(const Eigen::VectorXd& u) override;
-  void matrix_changed() override;
+  /// Factored anew: the plies' drift and the interfaces' tangents in the factor start again; updated: the
+  /// last change's tangents are in it.
+  void matrix_in_factor(const Eigen::VectorXd& u, FactorChange how) override;
   bool take_branch_changed() override {
     bool changed = false;
     for (DamageField& field : fields_)
@@ -276,10 +266,6 @@ public:
   /// With the plies' laws advanced: false where an element has reached a Hashin surface at u (it joins,
   /// and the next trial includes it), as for one damaged plate.
   bool admit(const Eigen::VectorXd& u) override;
-  /// With ply damage the matrix is that of the last trial; the linear stack's trial is one product and the
-  /// interfaces' law, against a factorization. (The von Kármán stack refreshes at once: measured so, and
-  /// kept so that its example's numbers stay.)
-  [[nodiscard]] bool refresh_at_next_trial() const override;
   void start_force(const Eigen::VectorXd& u_n, Eigen::VectorXd& f) override;
 
 private:
@@ -424,6 +410,7 @@ public:
 StackedState::StackedState(const StackedPlateModel& model)
     : m_(model), interfaces_(model.plate_), Ku_(Eigen::VectorXd::Zero(model.size())),
       plate_work_(model.large_deflection() ? model.size() : 0) {
+  set_results({.ply_damage = nullptr, .interfaces = &interfaces_});
   const StackedPlate& stack = m_.plate_.stack_;
   for (const auto& part : m_.von_karman_) {
     u_parts_.emplace_back(Eigen::VectorXd::Zero(part->size()));
@@ -440,6 +427,12 @@ StackedState::StackedState(const StackedPlateModel& model)
   plies_.emplace(first_plies(stack), static_cast<int>(m_.plate_.model_.laminate().ply_count()),
                  m_.plate_.model_.mesh().element_count());
   plies_->gather(fields_);
+  set_results({.ply_damage = &*plies_, .interfaces = &interfaces_});
+}
+
+IterationMatrixFacts StackedState::set_law_trials(LawTrials trials) {
+  trials_ = trials;
+  return {.symmetric = held(), .refresh_at_next_trial = !fields_.empty() || !m_.large_deflection()};
 }
 
 template <class PartForce>
@@ -456,10 +449,6 @@ void StackedState::damaged_plate_forces(const Eigen::VectorXd& u, double dt) {
   sublaminate_forces(u, [&](std::size_t k) {
     m_.damaged_[k]->internal_force_into(u_parts_[k], dt, fields_[k], f_parts_[k]);
   });
-}
-
-bool StackedState::refresh_at_next_trial() const {
-  return !fields_.empty() || !m_.large_deflection();
 }
 
 bool StackedState::updates_factor() const {
@@ -559,7 +548,13 @@ double StackedState::drift_since_factorization() const {
   return drift;
 }
 
-void StackedState::matrix_factorized(const Eigen::VectorXd& u) {
+void StackedState::matrix_in_factor(const Eigen::VectorXd& u, FactorChange how) {
+  if (how == FactorChange::updated) {
+    for (const TangentChange& c : pending_)
+      factored_tangents_[c.interface][c.point] = c.tangent;
+    update_rank_ += pending_rank_;
+    return;
+  }
   for (DamageField& field : fields_)
     field.mark_factorized();
   if (!updates_factor()) return;
@@ -623,12 +618,6 @@ std::optional<LowRankChange> StackedState::matrix_change(const Eigen::VectorXd& 
   return change;
 }
 
-void StackedState::matrix_changed() {
-  for (const TangentChange& c : pending_)
-    factored_tangents_[c.interface][c.point] = c.tangent;
-  update_rank_ += pending_rank_;
-}
-
 void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/) {
   if (held() && !fields_.empty()) {
     // The plies' laws once, at u_{n+1} (elements that reached a surface there join first).
@@ -648,6 +637,7 @@ void StackedState::commit(const Eigen::VectorXd& u, const Eigen::VectorXd& /*f*/
   for (std::size_t k = 0; k < fields_.size(); ++k)
     m_.damaged_[k]->commit(u_parts_[k], f_parts_[k], fields_[k]);
   plies_->gather(fields_);
+  set_results({.ply_damage = &*plies_, .interfaces = &interfaces_});
 }
 
 double StackedState::stored_energy(const Eigen::VectorXd& u) const {

@@ -1,7 +1,7 @@
 // Newton's method written once (analysis/integrators/newton_solver.hpp), on problems whose roots and
 // convergence are known by hand: x³ = 2 (root 2^(1/3)), full Newton converging quadratically and a frozen
 // matrix converging linearly at the rate |1 − f'(x*)/f'(x₀)|; the modified-Newton refresh where that rate is
-// above refresh_ratio; a branch change, an admission refused, a correction that is not finite, and the
+// above refresh_ratio; a branch change, a deferred refresh, a correction that is not finite, and the
 // limit on corrections.
 #include "plyimpact/analysis/integrators/newton_solver.hpp"
 
@@ -24,7 +24,8 @@ public:
   Trial trial(int corrections) override {
     events_ += 't';
     residual_ = x_ * x_ * x_ - 2.0;
-    return corrections > 0 && std::abs(residual_) < 1e-13 ? Trial::converged : Trial::iterate;
+    if (corrections > 0 && std::abs(residual_) < 1e-13) return Trial::converged;
+    return std::exchange(branch_changed_, false) ? Trial::branch_changed : Trial::iterate;
   }
   void refactor() override {
     events_ += 'r';
@@ -39,16 +40,11 @@ public:
     corrections_.push_back(std::abs(dx));
     return std::abs(dx);
   }
-  bool admit() override { return admissions_refused_-- <= 0; }
-  bool take_branch_changed() override { return std::exchange(branch_changed_, false); }
-  bool defer_refresh() override { return defer_; }
 
   double x_, slope_, residual_ = 0.0;
   bool full_;
   int refactors_ = 0;
-  int admissions_refused_ = 0;
   bool branch_changed_ = false;
-  bool defer_ = false;
   std::vector<double> corrections_;
   std::string events_; ///< t: trial, r: refactor, c: correction
 };
@@ -97,20 +93,20 @@ TEST(NewtonSolver, RefreshesEveryNCorrectionsAndADeferredRefreshFollowsTheNextTr
   ASSERT_TRUE(solve_newton(now, every_two).converged);
   EXPECT_EQ(now.events_.substr(0, 12), "tctcrtctcrtc");
   CubeRoot deferred(1.5, false); // … after the trial at the next iterate
-  deferred.defer_ = true;
-  ASSERT_TRUE(solve_newton(deferred, every_two).converged);
+  NewtonControl every_two_deferred = every_two;
+  every_two_deferred.defer_refresh = true;
+  ASSERT_TRUE(solve_newton(deferred, every_two_deferred).converged);
   EXPECT_EQ(deferred.events_.substr(0, 12), "tctctrctctrc");
   EXPECT_NEAR(deferred.x_, root, 1e-13);
 }
 
-TEST(NewtonSolver, ABranchChangeRefactorsAtOnceAndARefusedIterateGoesOn) {
+TEST(NewtonSolver, ABranchChangeRefactorsBeforeTheNextCorrection) {
   CubeRoot p(1.5, false);
-  p.branch_changed_ = true;
-  p.admissions_refused_ = 1;
+  p.branch_changed_ = true; // said by the first trial
   const NewtonOutcome o = solve_newton(p, frozen);
   ASSERT_TRUE(o.converged);
   EXPECT_EQ(p.refactors_, 1);
-  EXPECT_EQ(p.admissions_refused_, -1); // asked twice: refused once, then admitted
+  EXPECT_EQ(p.events_.substr(0, 3), "trc");
 }
 
 TEST(NewtonSolver, GivesUpAfterTheLimitOrOnANonFiniteCorrection) {
@@ -118,12 +114,14 @@ TEST(NewtonSolver, GivesUpAfterTheLimitOrOnANonFiniteCorrection) {
   const NewtonOutcome o = solve_newton(p, NewtonControl{3, INFINITY, std::numeric_limits<int>::max()});
   EXPECT_FALSE(o.converged);
   EXPECT_EQ(o.corrections, 3);
+  EXPECT_FALSE(o.failed);
   EXPECT_EQ(o.why, "the Newton iterations did not converge after 3 solves");
 
   CubeRoot flat(0.0, false); // f'(0) = 0: the correction divides by zero
   const NewtonOutcome f = solve_newton(flat, frozen);
   EXPECT_FALSE(f.converged);
   EXPECT_EQ(f.corrections, 0);
+  EXPECT_TRUE(f.failed);
   EXPECT_EQ(f.why, "non-finite state");
 }
 

@@ -26,6 +26,7 @@ std::shared_ptr<const std::vector<double>> ContactPointResponse::at_least(std::s
 ContactPointStepper::ContactPointStepper(std::shared_ptr<const ContactPointResponse> response)
     : response_(std::move(response)), g_(response_->at_least(1)) {
   reversed_forces_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(g_->size()) + 1); // F = 0 from rest
+  set_facts({.contact_point_only = true});
 }
 
 void ContactPointStepper::store_force(long k, double force) {

@@ -283,10 +283,10 @@ ImpactCase::ImpactCase(ImpactCaseDescription description)
   naming_singular_causes(description_, [&] {
     policy_ = step_policy(*model_, options, plate_physics(description_), std::move(explicit_plate));
   });
-  if (!settings_.end) { // for the end-of-event rule
-    const std::optional<double> from_policy = policy_->fundamental_period();
-    fundamental_period_ = from_policy ? *from_policy : naming_singular_causes(description_, [&] {
-      return plyimpact::fundamental_period(*model_);
+  if (!settings_.end) {                                              // for the end-of-event rule
+    fundamental_period_ = naming_singular_causes(description_, [&] { // the time loop's matrices, if held
+      return policy_->stiffness() ? plyimpact::fundamental_period(*policy_->stiffness(), *policy_->mass())
+                                  : plyimpact::fundamental_period(*model_);
     });
   }
 }

@@ -170,7 +170,11 @@ public:
   /// Equations of the time loop.
   [[nodiscard]] int equations() const { return policy_->equations(); }
   /// Seconds for one triangular solve pair with the factor of K̄ (median of `repeats`; benchmarks).
-  [[nodiscard]] double time_one_solve(int repeats = 21) const { return policy_->time_one_solve(repeats); }
+  [[nodiscard]] double time_one_solve(int repeats = 21) const {
+    const SpdSolver* factor = policy_->shared_factor();
+    return factor && policy_->equations() > 0 ? factor->median_solve_seconds(policy_->equations(), repeats)
+                                              : 0.0;
+  }
 
 private:
   ImpactCaseDescription description_;

@@ -145,13 +145,13 @@ private:
 /// The plies' damage of the stepper's model after the last accepted step; null without.
 const PlyDamageView* ply_damage_of(const PlateStepper& stepper) {
   const ModelResults* r = stepper.results();
-  return r ? r->ply_damage() : nullptr;
+  return r ? r->ply_damage : nullptr;
 }
 
 /// Its interfaces; empty without.
 std::optional<DelaminationResult> delamination_of(const PlateStepper& stepper) {
   const ModelResults* r = stepper.results();
-  return r ? r->delamination() : std::nullopt;
+  return r && r->interfaces ? std::optional(r->interfaces->result()) : std::nullopt;
 }
 
 /// The plate's part of the step view: expanded displacements and energies, computed on demand.
@@ -184,7 +184,8 @@ public:
   [[nodiscard]] const DelaminationAreas* delamination_areas() const override {
     if (areas_state_ == unknown) {
       const ModelResults* r = stepper_.results();
-      areas_state_ = r && r->delamination_areas(areas_) ? known : none;
+      areas_state_ = r && r->interfaces ? known : none;
+      if (areas_state_ == known) r->interfaces->areas(areas_);
     }
     return areas_state_ == known ? &areas_ : nullptr;
   }
@@ -276,11 +277,9 @@ ImpactResult run_impact_loop(const StepPolicy& policy, const Impactor& imp, doub
     control.emplace(nc, *s.adaptive,
                     rigid_target_indentation(imp.mass, imp.velocity, k, contact_exponent(imp.nose)));
   }
-  std::unique_ptr<PlateStepper> plate;
-  if (s.contact_point_response && !control) plate = policy.start_at_contact_point(imp);
+  const std::unique_ptr<PlateStepper> plate = policy.start(imp, s.contact_point_response && !control);
   // The plate state (ws, ẇs, ẅs) of the contact point alone: no field, the plate's energy all strain.
-  const bool contact_point_only = plate != nullptr;
-  if (!plate) plate = policy.start(imp);
+  const bool contact_point_only = plate->contact_point_only();
   const auto equations = static_cast<Eigen::Index>(policy.equations());
   const bool rigid = equations == 0;
   const Eigen::Index n = contact_point_only ? 1 : equations; // the state's size

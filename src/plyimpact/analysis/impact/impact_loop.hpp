@@ -43,7 +43,7 @@ struct LoopSettings {
   /// target): a peak deflection above guards.hpp's max_linear_deflection of it warns [m].
   std::optional<double> linear_thickness;
   std::vector<std::string> warnings; ///< found before the run (guards.hpp): start ImpactResult::warnings
-  /// the plate followed at the contact point alone (StepPolicy::start_at_contact_point) where the policy
+  /// the plate followed at the contact point alone (StepPolicy::start) where the policy
   /// can; the observers must not ask for the field
   bool contact_point_response = false;
 };

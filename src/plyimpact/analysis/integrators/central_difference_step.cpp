@@ -72,9 +72,6 @@ public:
                          const Eigen::VectorXd& /*u_next*/, Eigen::VectorXd& a_next) const override {
     a_next = a_next_; // CD3: from the equation of motion, not from Newmark's (2.11)
   }
-  /// No solve and no factorization: all zero.
-  [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return NewtonStatistics{}; }
-  [[nodiscard]] std::optional<double> added_mass_kinetic_energy(const PlateState& s) const override;
 
 private:
   /// CD6: throws NewtonFailure, naming the step to use, where the contact spring of the step's secant
@@ -85,6 +82,7 @@ private:
   Eigen::VectorXd a_next_;
   Eigen::VectorXd force_;            ///< Fc s_load − f_int of the step (CD3), sized once
   double contact_flexibility_ = 0.0; ///< sᵀM⁻¹s, 1 / the mass the contact spring moves [1/kg]
+  NewtonStatistics no_iterations_;   ///< no solve and no factorization: all zero
 };
 
 /// Refuses, naming `key` (the deck key that chose central differences), a mass that is not diagonal with
@@ -97,7 +95,8 @@ public:
       : CentralDifferencePolicy(policy_mass(*model, options, key), std::move(model), options,
                                 std::move(key)) {}
 
-  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor,
+                                                    bool /*contact_point_suffices*/) const override {
     return std::make_unique<CentralDifferenceStepper>(*this, impactor);
   }
   [[nodiscard]] double dt() const { return options_.newmark.dt; }
@@ -169,7 +168,12 @@ CentralDifferenceStepper::CentralDifferenceStepper(const CentralDifferencePolicy
                                                    const Impactor& impactor)
     : ModelStepper(policy, impactor), p_(policy), a_next_(Eigen::VectorXd::Zero(policy.equations())),
       force_(Eigen::VectorXd::Zero(policy.equations())),
-      contact_flexibility_(contact_flexibility(policy, loading_.sampler())) {}
+      contact_flexibility_(contact_flexibility(policy, loading_.sampler())) {
+  const bool scaled = policy.mass_->report.kind != MassScalingKind::none;
+  set_facts({.results = &state_->results(),
+             .statistics = &no_iterations_,
+             .scaled_mass = scaled ? policy.mass_.get() : nullptr});
+}
 
 ContactSolution CentralDifferenceStepper::advance(long step, double t, const PlateState& s,
                                                   const CondensedContact& contact, Eigen::VectorXd& u_next) {
@@ -191,11 +195,6 @@ ContactSolution CentralDifferenceStepper::advance(long step, double t, const Pla
                     "the values, or give a shorter time.dt",
                     p_.key_, step, t));
   return cs;
-}
-
-std::optional<double> CentralDifferenceStepper::added_mass_kinetic_energy(const PlateState& s) const {
-  if (p_.mass_->report.kind == MassScalingKind::none) return std::nullopt;
-  return p_.mass_->added_kinetic_energy(s.v);
 }
 
 void CentralDifferenceStepper::check_contact(long step, double t, const ContactSolution& cs,

@@ -4,7 +4,6 @@
 #include "plyimpact/analysis/contact/contact_point_response.hpp"
 #include "plyimpact/analysis/impact/guards.hpp"
 #include "plyimpact/analysis/integrators/step_policy.hpp"
-#include "plyimpact/analysis/plate_analyses/modal_analysis.hpp"
 
 #include <fmt/format.h>
 
@@ -63,22 +62,20 @@ public:
                    const SparseMatrix& M)
       : model_(model), options_(options), equations_(bending_equations_if_decoupled(model, K, M)),
         K_(equations_.restrict(K)), M_(equations_.restrict(M), 0.0) {
-    set_equations({equations_.size(), !equations_.all(), true, {}});
     std::call_once(once_[0], [this] { levels_[0] = factor_level(options_.newmark, true); });
+    set_equations({.equations = equations_.size(),
+                   .inplane_eliminated = !equations_.all(),
+                   .variable_time_step = true,
+                   .warnings = {},
+                   .stiffness = &K_,
+                   .mass = &M_.matrix(),
+                   .shared_factor = &levels_[0]->factor,
+                   .factorizations = &factorizations_});
   }
 
-  [[nodiscard]] int factorizations() const override { return factorizations_.load(); }
-  [[nodiscard]] std::optional<double> fundamental_period() const override {
-    return plyimpact::fundamental_period(K_, M_.matrix()); // the time loop's equations, as assembled here
-  }
-  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
-    return std::make_unique<LinearStepper>(*this, impactor);
-  }
-  [[nodiscard]] std::unique_ptr<PlateStepper> start_at_contact_point(const Impactor& impactor) const override;
-
-  [[nodiscard]] double time_one_solve(int repeats) const override {
-    return equations() == 0 ? 0.0 : level(0).factor.median_solve_seconds(equations(), repeats);
-  }
+  /// The run's stepper; the contact point's alone where it suffices and is exact (CP1).
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor,
+                                                    bool contact_point_suffices) const override;
 
   /// Level k: Δt/2^k and its factor of K̄, factored on first use (once, whichever run asks first: runs
   /// on several threads share the policy).
@@ -251,13 +248,15 @@ LinearStepPolicy::contact_point_response(const Impactor& impactor) const {
   return response;
 }
 
-std::unique_ptr<PlateStepper> LinearStepPolicy::start_at_contact_point(const Impactor& impactor) const {
-  // Exact only where the load does not depend on the indentation, and the energy known only with the
-  // trapezoidal rule (contact_point_response.hpp).
+std::unique_ptr<PlateStepper> LinearStepPolicy::start(const Impactor& impactor,
+                                                      bool contact_point_suffices) const {
+  // The contact point alone is exact only where the load does not depend on the indentation, and its
+  // energy known only with the trapezoidal rule (contact_point_response.hpp).
   const NewmarkCoefficients& nc = options_.newmark;
-  if (options_.load != ContactLoad::point || nc.beta != 0.25 || nc.gamma != 0.5 || equations() == 0)
-    return nullptr;
-  return std::make_unique<ContactPointStepper>(contact_point_response(impactor));
+  if (contact_point_suffices && options_.load == ContactLoad::point && nc.beta == 0.25 && nc.gamma == 0.5 &&
+      equations() != 0)
+    return std::make_unique<ContactPointStepper>(contact_point_response(impactor));
+  return std::make_unique<LinearStepper>(*this, impactor);
 }
 
 } // namespace

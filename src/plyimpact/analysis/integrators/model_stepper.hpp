@@ -47,7 +47,9 @@ public:
       : model_(*policy.model_), loading_(model_.contact_plate(), model_.contact_equations(), impactor,
                                          policy.options_.load, model_.size()),
         state_(model_.virgin_state()), f_int_(Eigen::VectorXd::Zero(model_.size())), M_(policy.M_),
-        scratch_(model_.size()) {}
+        scratch_(model_.size()) {
+    set_facts({.results = &state_->results()});
+  }
 
   /// The trial of the accepted step, whose force f_int_ holds, is committed.
   void accept(const PlateState& /*before*/, const Eigen::VectorXd& u_next) override {
@@ -63,7 +65,6 @@ public:
     return loading_.sampler().dot(u);
   }
   void to_model(const Eigen::VectorXd& u, Eigen::VectorXd& out) const override { model_.to_model(u, out); }
-  [[nodiscard]] const ModelResults* results() const override { return state_.get(); }
 
 protected:
   const MechanicalModel& model_;

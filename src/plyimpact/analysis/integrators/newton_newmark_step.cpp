@@ -51,7 +51,6 @@ public:
   NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, const Impactor& impactor);
   ContactSolution advance(long step, double t, const PlateState& s, const CondensedContact& contact,
                           Eigen::VectorXd& u_next) override;
-  [[nodiscard]] std::optional<NewtonStatistics> statistics() const override { return stats_; }
 
 private:
   class StepProblem;
@@ -81,6 +80,8 @@ private:
   Eigen::VectorXd kbar_diagonal_;         // f_int_ holds with the two-point form f'(u) + f(u_n) − Fc_n s_n
   Eigen::VectorXd start_, previous_load_; ///< the two-point form's start terms
   const bool two_point_;                  ///< the steps are solved in the trapezoid's two-point form
+  IterationMatrixFacts matrix_;           ///< what the iteration matrix of the run's trials is
+  NewtonControl control_; ///< the settings' control, deferring refreshes where the model's trials give them
   long last_refresh_ = 0;
   bool needed_more_than_one_solve_ = false;
   NewtonStatistics stats_;
@@ -104,7 +105,8 @@ public:
     initial_diagonal_ = Kbar.diagonal();
   }
 
-  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor) const override {
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& impactor,
+                                                    bool /*contact_point_suffices*/) const override {
     return std::make_unique<NewtonNewmarkStepper>(*this, impactor);
   }
   /// K̄ = K + c0 M at u, K the iteration matrix of `state`.
@@ -133,9 +135,12 @@ NewtonNewmarkStepper::NewtonNewmarkStepper(const NewtonNewmarkPolicy& policy, co
       previous_load_(Eigen::VectorXd::Zero(policy.equations())),
       two_point_(policy.trials_ == LawTrials::hold_step_mean), iteration_(policy.equations()) {
   factor_.adopt_analysis_of(policy.initial_);
-  state_->set_law_trials(policy.trials_);
+  matrix_ = state_->set_law_trials(policy.trials_);
+  control_ = policy.settings_.control;
+  control_.defer_refresh = matrix_.refresh_at_next_trial;
   use_factor(Factor::shared);
   stats_.factorizations = 1; // the shared factor
+  set_facts({.results = &state_->results(), .statistics = &stats_});
   if (policy.settings_.max_halvings > 0) u_start_.resize(policy.equations());
 }
 
@@ -166,7 +171,7 @@ void NewtonNewmarkStepper::refactor(const Eigen::VectorXd& at) {
   if (in_use_ == Factor::cholesky && p_.settings_.update_factor && update_factor(at)) return;
   const SparseMatrix Kbar = p_.iteration_kbar(*state_, at);
   Factor factor = Factor::cholesky;
-  if (state_->iteration_matrix_symmetric()) {
+  if (matrix_.symmetric) {
     factor_.factorize(Kbar);
   } else {
     lu_.compute(Kbar);
@@ -176,7 +181,7 @@ void NewtonNewmarkStepper::refactor(const Eigen::VectorXd& at) {
     factor = Factor::lu;
   }
   kbar_diagonal_ = Kbar.diagonal();
-  state_->matrix_factorized(at);
+  state_->matrix_in_factor(at, FactorChange::factorized);
   use_factor(factor);
   ++stats_.factorizations;
 }
@@ -189,7 +194,7 @@ bool NewtonNewmarkStepper::update_factor(const Eigen::VectorXd& at) {
   if ((change->up.cols() > 0 && !factor_.modify(change->up, true)) ||
       (change->down.cols() > 0 && !factor_.modify(change->down, false)))
     return false;
-  state_->matrix_changed();
+  state_->matrix_in_factor(at, FactorChange::updated);
   kbar_diagonal_ += change->up.cwiseProduct(change->up) * Eigen::VectorXd::Ones(change->up.cols()) -
                     change->down.cwiseProduct(change->down) * Eigen::VectorXd::Ones(change->down.cols());
   use_factor(Factor::cholesky); // the responses recomputed
@@ -237,14 +242,15 @@ public:
     const NewtonSettings& ns = p_.p_.settings_;
     for (;;) {
       evaluate();
-      if (corrections == 0) return Trial::iterate;
+      if (corrections == 0) return not_converged();
       if (p_.iteration_.converged(p_.loading_, cs_, p_.f_int_, p_.kbar_diagonal_, ns.residual_tolerance,
-                                  ns.displacement_tolerance))
-        return Trial::converged;
-      if (!halve()) return Trial::iterate;
+                                  ns.displacement_tolerance)) {
+        if (p_.state_->admit(p_.iteration_.uk())) return Trial::converged;
+        continue; // an element joined the model at the iterate: evaluate again with it
+      }
+      if (!halve()) return not_converged();
     }
   }
-  bool admit() override { return p_.state_->admit(p_.iteration_.uk()); }
   void refactor() override { p_.refactor(p_.iteration_.uk()); }
   double correct() override {
     if (p_.p_.settings_.max_halvings > 0) {
@@ -256,11 +262,11 @@ public:
         [this](const Eigen::VectorXd& g, Eigen::VectorXd& x) { p_.solve(g, x); }, p_.loading_, contact_, cs_);
     return std::isfinite(cs_.force) ? correction : NAN;
   }
-  bool take_branch_changed() override { return p_.state_->take_branch_changed(); }
-  bool defer_refresh() override { return p_.state_->refresh_at_next_trial(); }
   [[nodiscard]] const ContactSolution& contact_solution() const { return cs_; }
 
 private:
+  /// Not converged, and whether the trial changed a law's branch.
+  Trial not_converged() { return p_.state_->take_branch_changed() ? Trial::branch_changed : Trial::iterate; }
   /// The model's trial force at the iterate (with the two-point form's start terms) and the step's inertia.
   void evaluate() {
     const NewmarkCoefficients& nc = p_.p_.options_.newmark;
@@ -300,7 +306,7 @@ ContactSolution NewtonNewmarkStepper::advance(long step, double t, const PlateSt
   refresh_before(step, s.u);
   StepProblem problem(*this, s, contact);
   const NewtonSettings& ns = p_.settings_;
-  const NewtonOutcome o = solve_newton(problem, ns.control);
+  const NewtonOutcome o = solve_newton(problem, control_);
   if (!o.converged)
     throw NewtonFailure(
         fmt::format("{}: {} in step {} (t = {:.6g} s); {}", ns.physics, o.why, step, t, ns.advice));

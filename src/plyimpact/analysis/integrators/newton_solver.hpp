@@ -4,23 +4,24 @@
 // step of the quasi-static von Kármán path (nonlinear_static.cpp) and of a step of the stacked plate's
 // displacement-controlled path (delamination_path.cpp).
 //
-// The problem owns its unknowns, its residual, its matrix and that matrix's factor; the solver decides
-//   - when the iterate is converged (the problem's test) and admitted (a part of the model that the
-//     trial left out has not joined it there),
+// The problem owns its unknowns, its residual, its matrix and that matrix's factor, and says when its
+// iterate is converged (its test) and admitted (a part of the model that the trial left out has not
+// joined it there); the solver decides
 //   - when a new matrix is factored (modified Newton): where the corrections stop contracting by
 //     `refresh_ratio`, after `refresh_after` corrections or every `refresh_every`, and after a trial that
-//     changed a law's branch; where the problem defers it (the matrix of lagged damage comes from a trial),
-//     after the next trial,
+//     changed a law's branch; where the control defers it (the matrix of lagged damage comes from a
+//     trial), after the next trial,
 //   - and when to give up: `max_iterations` corrections, or a correction that is not finite.
 // Full Newton (a new matrix before every correction) is a problem that factors in its own correct(); a
 // line search is the problem's too (its trial or its correction keeps the part of a correction that
 // lowers the residual).
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace plyimpact {
 
-/// What Newton's method asks of the problem it solves.
+/// What Newton's method asks of the problem it solves: three functions; the rest is data.
 class NewtonProblem {
 public:
   virtual ~NewtonProblem() = default;
@@ -28,27 +29,33 @@ public:
   NewtonProblem(const NewtonProblem&) = delete;
   NewtonProblem& operator=(const NewtonProblem&) = delete;
 
-  enum class Trial { iterate, converged, failed };
-  /// Evaluates the residual at the current iterate, `corrections` having been made: converged where the
-  /// problem's test holds (a test on the last correction's size asks for corrections > 0); failed where
-  /// the residual cannot be used (why_failed()).
+  enum class Trial {
+    iterate,        ///< not converged: a correction follows
+    branch_changed, ///< not converged, and the trial changed which branch of a law holds (a crack opened
+                    ///< or closed under held damage): a new matrix before the correction
+    converged,      ///< the problem's test holds and the iterate is admitted
+    failed,         ///< the residual cannot be used (why_failed())
+  };
+  /// Evaluates the residual at the current iterate, `corrections` having been made (a test on the last
+  /// correction's size asks for corrections > 0). Converged only once the iterate is admitted: where a
+  /// part of the model that the trial left out joins there (an element whose plies reach a failure
+  /// surface), the problem evaluates again with it before it answers.
   virtual Trial trial(int corrections) = 0;
-  /// Once converged: false where the iterate must go on (a part joined the model there).
-  virtual bool admit() { return true; }
   /// Factors the matrix at the current iterate.
   virtual void refactor() = 0;
   /// Solves for a correction with the current factor and applies it to the iterate; its norm (not
   /// finite: the step failed, why_failed()).
   virtual double correct() = 0;
-  /// True once after a trial that changed which branch of a law holds (a new matrix at once).
-  virtual bool take_branch_changed() { return false; }
-  /// The solver wants a new matrix: true where the problem defers it to the next trial (whose evaluation
-  /// gives the matrix: lagged damage), refactor() then following that trial.
-  virtual bool defer_refresh() { return false; }
-  /// Why the iterations stopped: no convergence after `max_iterations` corrections; a failed trial or a
-  /// correction that is not finite.
-  [[nodiscard]] virtual std::string why_not_converged(int max_iterations) const;
-  [[nodiscard]] virtual std::string why_failed() const { return "non-finite state"; }
+
+  /// Why the last trial failed or the last correction is not finite.
+  [[nodiscard]] const std::string& why_failed() const { return why_failed_; }
+
+protected:
+  /// The reason why_failed() gives, said by the problem where it knows it.
+  void set_why_failed(std::string why) { why_failed_ = std::move(why); }
+
+private:
+  std::string why_failed_ = "non-finite state";
 };
 
 /// When the solver refactors and when it gives up.
@@ -57,6 +64,10 @@ struct NewtonControl {
   double refresh_ratio = 0.25; ///< refactor when ‖Δu_k‖/‖Δu_{k−1}‖ exceeds this
   int refresh_after = std::numeric_limits<int>::max(); ///< … or after this many corrections
   int refresh_every = 0; ///< … or after every this many corrections (0: never)
+  /// A refresh waits for the trial at the next iterate, refactor() following it: the problem's matrix is
+  /// that of its last trial (held damage), and where a trial costs little against a factorization (the
+  /// stacked plate) the next iterate may converge without one.
+  bool defer_refresh = false;
   friend bool operator==(const NewtonControl&, const NewtonControl&) = default;
 };
 
@@ -69,6 +80,7 @@ struct NewtonControl {
 struct NewtonOutcome {
   bool converged = false;
   int corrections = 0; ///< finite corrections made
+  bool failed = false; ///< stopped on a failed trial or a correction that is not finite (else at the limit)
   std::string why;     ///< where not converged
 };
 

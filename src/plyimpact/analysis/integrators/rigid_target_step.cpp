@@ -22,7 +22,8 @@ public:
 class RigidTargetPolicy final : public StepPolicy {
 public:
   RigidTargetPolicy() { set_equations({0, false, true, {}}); } // nothing is factored: any step will do
-  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& /*impactor*/) const override {
+  [[nodiscard]] std::unique_ptr<PlateStepper> start(const Impactor& /*impactor*/,
+                                                    bool /*contact_point_suffices*/) const override {
     return std::make_unique<RigidStepper>();
   }
 };

@@ -29,6 +29,7 @@
 #include "plyimpact/fem/spd_solver.hpp"
 #include "plyimpact/fem/stacked_model.hpp"
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -39,11 +40,25 @@
 namespace plyimpact {
 
 class MechanicalModel;
-class ModelResults;
 
 /// Displacement, velocity and acceleration of the plate at the start of a step (policy numbering).
 struct PlateState {
   Eigen::VectorXd u, v, a;
+};
+
+/// What the time loop and its observers read of a stepper that does not change during its run: set once by
+/// its constructor.
+struct StepperFacts {
+  /// The state the stepper moves is the contact point's alone, (ws, ẇs, ẅs) (contact_point_response.hpp):
+  /// no field, the plate's energy all strain.
+  bool contact_point_only = false;
+  /// What observers read of the model after the last accepted step (the energy its laws dissipated, the
+  /// plies' damage, the interfaces), asked for by type; null for a plate that has none of it.
+  const ModelResults* results = nullptr;
+  /// The counts of Newton's iterations, kept by the stepper as it steps; null where it solves none by them.
+  const NewtonStatistics* statistics = nullptr;
+  /// The mass that mass scaling added (mass_scaling.hpp), for ½ vᵀΔMv; null where the run scales none.
+  const ScaledMass* scaled_mass = nullptr;
 };
 
 /// One run's plate: advances steps and reports energies.
@@ -69,9 +84,6 @@ public:
   [[nodiscard]] virtual double kinetic_energy(const PlateState& s) const = 0;
   /// The plate's elastic energy in state s with contact force F.
   [[nodiscard]] virtual double strain_energy(const PlateState& s, double force) const = 0;
-  /// What observers read of the model after the last accepted step (the energy its laws dissipated, the
-  /// plies' damage, the interfaces), asked for by type; null for a plate that has none of it.
-  [[nodiscard]] virtual const ModelResults* results() const { return nullptr; }
   /// ws = swᵀu.
   [[nodiscard]] virtual double contact_deflection(const Eigen::VectorXd& u) const = 0;
   /// u in the model's numbering.
@@ -81,11 +93,23 @@ public:
   virtual void set_time_step_level(int /*level*/) {
     throw std::logic_error("this step policy has a fixed time step");
   }
-  [[nodiscard]] virtual std::optional<NewtonStatistics> statistics() const { return std::nullopt; }
-  /// ½ vᵀΔMv of the mass that mass scaling added (mass_scaling.hpp) [J]; empty where the run scales none.
-  [[nodiscard]] virtual std::optional<double> added_mass_kinetic_energy(const PlateState& /*s*/) const {
-    return std::nullopt;
+
+  [[nodiscard]] bool contact_point_only() const { return facts_.contact_point_only; }
+  [[nodiscard]] const ModelResults* results() const { return facts_.results; }
+  [[nodiscard]] std::optional<NewtonStatistics> statistics() const {
+    return facts_.statistics ? std::optional(*facts_.statistics) : std::nullopt;
   }
+  /// ½ vᵀΔMv of the mass that mass scaling added (mass_scaling.hpp) [J]; empty where the run scales none.
+  [[nodiscard]] std::optional<double> added_mass_kinetic_energy(const PlateState& s) const {
+    return facts_.scaled_mass ? std::optional(facts_.scaled_mass->added_kinetic_energy(s.v)) : std::nullopt;
+  }
+
+protected:
+  /// The stepper's facts, once its constructor has built what they point to.
+  void set_facts(StepperFacts facts) { facts_ = facts; }
+
+private:
+  StepperFacts facts_;
 };
 
 /// What the time loop reads of a policy that does not change during a run.
@@ -99,6 +123,13 @@ struct PolicyEquations {
   /// What the policy changed about the case that the user must know (e.g. strengths lowered to a band
   /// limit), for the run's warnings.
   std::vector<std::string> warnings;
+  /// Where the policy holds them (the linear plate): the time loop's stiffness and mass, and the factor of
+  /// K̄ that every run solves its steps with.
+  const SparseMatrix* stiffness = nullptr;
+  const SparseMatrix* mass = nullptr;
+  const SpdSolver* shared_factor = nullptr;
+  /// The count of K̄'s factorizations of the error-controlled time steps, kept by the policy.
+  const std::atomic<int>* factorizations = nullptr;
 };
 
 class StepPolicy {
@@ -113,22 +144,23 @@ public:
   [[nodiscard]] bool variable_time_step() const { return equations_.variable_time_step; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return equations_.warnings; }
 
+  /// A stepper for a run with `impactor`. `contact_point_suffices`: the run looks at nothing but the
+  /// contact point, and the policy may follow that point alone through the plate's impulse response there
+  /// (contact_point_response.hpp; PlateStepper::contact_point_only()) where that is exact: the linear plate
+  /// under a point load with the trapezoidal rule.
+  [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor,
+                                                            bool contact_point_suffices) const = 0;
+
   /// Factorizations of K̄ done so far for the error-controlled time steps (one per level used).
-  [[nodiscard]] virtual int factorizations() const { return 0; }
-  /// The plate's fundamental period from the matrices the policy holds (empty: it holds none that give
-  /// it; the case then assembles them, modal_analysis.hpp) [s].
-  [[nodiscard]] virtual std::optional<double> fundamental_period() const { return std::nullopt; }
-  [[nodiscard]] virtual std::unique_ptr<PlateStepper> start(const Impactor& impactor) const = 0;
-  /// A stepper that follows only the contact point through the plate's impulse response there, computed
-  /// once per impact point and shared by the runs (contact_point_response.hpp); nullptr where that is not
-  /// exact (every policy but the linear plate under a point load with the trapezoidal rule).
-  [[nodiscard]] virtual std::unique_ptr<PlateStepper>
-  start_at_contact_point(const Impactor& /*impactor*/) const {
-    return nullptr;
+  [[nodiscard]] int factorizations() const {
+    return equations_.factorizations ? equations_.factorizations->load() : 0;
   }
-  /// Seconds for one triangular solve pair with the factor of K̄, as the time loop solves (into kept
-  /// buffers; median of `repeats`; benchmarks).
-  [[nodiscard]] virtual double time_one_solve(int /*repeats*/) const { return 0.0; }
+  /// The stiffness and mass over the time loop's equations, where the policy holds them (null: it holds
+  /// none; the case assembles them, modal_analysis.hpp).
+  [[nodiscard]] const SparseMatrix* stiffness() const { return equations_.stiffness; }
+  [[nodiscard]] const SparseMatrix* mass() const { return equations_.mass; }
+  /// The factor of K̄ that every run of the policy solves its steps with, where there is one.
+  [[nodiscard]] const SpdSolver* shared_factor() const { return equations_.shared_factor; }
 
 protected:
   /// The policy's equations, set once by its constructor.

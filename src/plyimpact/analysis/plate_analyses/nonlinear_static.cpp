@@ -29,7 +29,7 @@ public:
     r_ = lambda_ * f_ext_ - f_int_;
     r_norm_ = r_.norm();
     if (!std::isfinite(r_norm_)) {
-      why_ = "the residual is not finite";
+      set_why_failed("the residual is not finite");
       return Trial::failed;
     }
     return corrections > 0 && r_norm_ <= s_.residual_tolerance * f_norm_ &&
@@ -42,20 +42,21 @@ public:
     try {
       solver_.factorize(plate_.iteration_matrix(u_)); // K_T(u)
     } catch (const NotPositiveDefinite&) {
-      why_ = "the tangent stiffness is not positive definite (limit point or bifurcation)";
+      set_why_failed("the tangent stiffness is not positive definite (limit point or bifurcation)");
       return NAN;
     }
     const Eigen::VectorXd du = solver_.solve(r_);
     du_norm_ = du.norm();
-    if (!std::isfinite(du_norm_)) why_ = "the correction is not finite";
+    if (!std::isfinite(du_norm_)) set_why_failed("the correction is not finite");
     u_ += du;
     return du_norm_;
   }
-  [[nodiscard]] std::string why_not_converged(int max_iterations) const override {
+  /// Why the iterations of `o` stopped: the failure, or the residual left after `max_iterations`.
+  [[nodiscard]] std::string why(const NewtonOutcome& o, int max_iterations) const {
+    if (o.failed) return o.why;
     return fmt::format("no convergence in {} iterations (residual {:.3g} of the load)", max_iterations,
                        r_norm_ / f_norm_);
   }
-  [[nodiscard]] std::string why_failed() const override { return why_; }
 
 private:
   ModelState& plate_;
@@ -67,7 +68,6 @@ private:
   const double f_norm_;
   Eigen::VectorXd f_int_, r_;
   double r_norm_ = INFINITY, du_norm_ = INFINITY;
-  std::string why_;
 };
 
 /// The load factors to converge at: the given list, or `load_steps` equal increments.
@@ -128,7 +128,7 @@ NonlinearStaticResult solve_static_nonlinear(const DiscretePlate& model, const S
           throw NewtonFailure(fmt::format(
               "non-linear static: Newton-Raphson failed between load factors {:.6g} and {:.6g} even after {} "
               "step cuts: {}. Try more load steps (nonlinear_load_steps) or check the supports and the load",
-              lambda, target, s.max_step_cuts, o.why));
+              lambda, target, s.max_step_cuts, load_step.why(o, s.max_iterations)));
         increment /= 2.0; // automatic step cutting
         ++r.step_cuts;
         continue;
