@@ -17,17 +17,10 @@ import pathlib
 import subprocess
 import sys
 
-import jsonschema
+from shipped_schema import shipped_validator
 
 exe, root, scratch = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
-generated = json.loads(
-    subprocess.run([exe, "schema", "summary"], check=True, capture_output=True, text=True).stdout)
-shipped = json.loads((root / "schemas" / "summary.schema.json").read_text())
-if generated != shipped:
-    sys.exit("schemas/summary.schema.json is not what `plyimpact schema summary` writes: regenerate it "
-             "(build/release/plyimpact schema summary > schemas/summary.schema.json)")
-jsonschema.Draft7Validator.check_schema(shipped)
-validator = jsonschema.Draft7Validator(shipped)
+validator = shipped_validator(exe, root, ["schema", "summary"], "summary.schema.json")
 
 summaries = {f"reference {p.name}": json.loads(p.read_text())
              for p in sorted((root / "tests" / "reference" / "examples").glob("*.summary.json"))}
