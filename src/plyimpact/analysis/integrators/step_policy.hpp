@@ -52,8 +52,8 @@ struct StepperFacts {
   /// The state the stepper moves is the contact point's alone, (ws, ẇs, ẅs) (contact_point_response.hpp):
   /// no field, the plate's energy all strain.
   bool contact_point_only = false;
-  /// What observers read of the model after the last accepted step (the energy its laws dissipated, the
-  /// plies' damage, the interfaces), asked for by type; null for a plate that has none of it.
+  /// What observers read of the model after the last accepted step (the plies' damage, the interfaces, the
+  /// energy their laws dissipated); null for a plate that has no model state.
   const ModelResults* results = nullptr;
   /// The counts of Newton's iterations, kept by the stepper as it steps; null where it solves none by them.
   const NewtonStatistics* statistics = nullptr;
