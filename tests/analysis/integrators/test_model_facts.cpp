@@ -45,7 +45,8 @@ constexpr IterationMatrixFacts unsymmetric_after_the_next_trial{false, true};
 
 TEST(ModelFacts, TheElasticPlateHasASymmetricMatrixAndNothingForObservers) {
   const ExamplePlate plate("thesis-3.6-v268.toml");
-  const std::unique_ptr<ModelState> state = plate.model()->virgin_state();
+  const std::unique_ptr<MechanicalModel> model = plate.model(); // the state refers to it
+  const std::unique_ptr<ModelState> state = model->virgin_state();
   EXPECT_TRUE(state->set_law_trials(LawTrials::advance) == symmetric_at_once);
   EXPECT_TRUE(state->set_law_trials(LawTrials::hold) == symmetric_at_once);
   EXPECT_EQ(state->results().ply_damage, nullptr);
@@ -55,7 +56,8 @@ TEST(ModelFacts, TheElasticPlateHasASymmetricMatrixAndNothingForObservers) {
 
 TEST(ModelFacts, HeldPlyDamageRefreshesAfterTheNextTrialAndItsPliesAreObserved) {
   const ExamplePlate plate("damage-progressive.toml");
-  const std::unique_ptr<ModelState> state = plate.model()->virgin_state();
+  const std::unique_ptr<MechanicalModel> model = plate.model(); // the state refers to it
+  const std::unique_ptr<ModelState> state = model->virgin_state();
   EXPECT_TRUE(state->set_law_trials(LawTrials::advance) == symmetric_at_once);
   EXPECT_TRUE(state->set_law_trials(LawTrials::hold) == symmetric_after_the_next_trial);
   EXPECT_NE(state->results().ply_damage, nullptr);
@@ -65,7 +67,8 @@ TEST(ModelFacts, HeldPlyDamageRefreshesAfterTheNextTrialAndItsPliesAreObserved) 
 
 TEST(ModelFacts, InterfacesIteratedWithTheStepGiveAnUnsymmetricTangentAndHeldOnesDoNot) {
   const ExamplePlate plate("impact-delamination-damage.toml", true);
-  const std::unique_ptr<ModelState> state = plate.model()->virgin_state();
+  const std::unique_ptr<MechanicalModel> model = plate.model(); // the state refers to it
+  const std::unique_ptr<ModelState> state = model->virgin_state();
   EXPECT_TRUE(state->set_law_trials(LawTrials::advance) == unsymmetric_after_the_next_trial);
   EXPECT_TRUE(state->set_law_trials(LawTrials::hold_step_mean) == symmetric_after_the_next_trial);
   EXPECT_EQ(state->results().ply_damage, nullptr);
@@ -74,7 +77,8 @@ TEST(ModelFacts, InterfacesIteratedWithTheStepGiveAnUnsymmetricTangentAndHeldOne
 
 TEST(ModelFacts, AStackWithCrackingPliesShowsBothItsPliesAndItsInterfaces) {
   const ExamplePlate plate("impact-delamination-damage.toml");
-  const std::unique_ptr<ModelState> state = plate.model()->virgin_state();
+  const std::unique_ptr<MechanicalModel> model = plate.model(); // the state refers to it
+  const std::unique_ptr<ModelState> state = model->virgin_state();
   EXPECT_TRUE(state->set_law_trials(LawTrials::hold_step_mean) == symmetric_after_the_next_trial);
   EXPECT_NE(state->results().ply_damage, nullptr);
   EXPECT_NE(state->results().interfaces, nullptr);
